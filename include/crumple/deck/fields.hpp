@@ -1,0 +1,100 @@
+#pragma once
+// Cards and their fields. A card is one keyword line and the data lines that follow it up to the next keyword.
+// Starter data lines are fixed width (integers in 10 columns, reals in 20, on a 100-column line); engine data
+// lines are free format (fields separated by blanks). A blank field takes the card's default.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "crumple/deck/error.hpp"
+#include "crumple/deck/source.hpp"
+#include "crumple/deck/units.hpp"
+
+namespace crumple {
+
+// Fortran-style real: 1.5, .3, -8, 205, 1E-6, 1.D-3, 1.00000002E20. nullopt for anything else.
+std::optional<double> parse_fortran_real(std::string_view text);
+// Optional sign and digits only. nullopt for anything else (a real in an integer field is an error).
+std::optional<std::int64_t> parse_integer(std::string_view text);
+std::string_view trim(std::string_view text);
+
+struct Card {
+  std::string keyword;                  // keyword line as written, trimmed, e.g. "/MAT/PLAS_JOHNS/1"
+  std::vector<std::string> path;        // its parts: {"MAT", "PLAS_JOHNS", "1"}
+  SourceLocation where;                 // the keyword line
+  std::vector<const SourceLine*> lines; // data lines, comments removed, blank lines kept
+  bool engine = false;                  // true for the engine (run control) part
+};
+
+// Splits a source text into cards. Comment lines (# or $) are dropped. The starter part ends at /END; what
+// follows it (the engine part of a single-file deck, or the engine file) is engine part until /END/ENGINE.
+// Lines before the first keyword must be blank or comments.
+std::vector<Card> split_cards(const SourceText& text, std::int32_t first_engine_file);
+
+class CardReader;
+
+// One data line of a card, with typed field access that reports errors with file, line, keyword and field.
+class Line {
+ public:
+  Line(const CardReader& reader, const SourceLine& source) : reader_(&reader), source_(&source) {}
+
+  // Fixed-width fields; `column` is 1-based.
+  std::int64_t integer(int column, int width, std::string_view name, std::int64_t fallback = 0) const;
+  double real(int column, int width, std::string_view name, Dimension d, double fallback = 0.0) const;
+  std::string text(int column, int width) const;  // trimmed
+  std::string raw(int column, int width) const;   // as written, padded with blanks to `width`
+
+  // Free-format fields (engine cards); `index` is 0-based.
+  std::size_t token_count() const;
+  double token_real(std::size_t index, std::string_view name, Dimension d, std::optional<double> fallback) const;
+  std::int64_t token_integer(std::size_t index, std::string_view name, std::optional<std::int64_t> fallback) const;
+
+  bool blank() const;
+  SourceLocation where() const;
+  const std::string& content() const { return source_->text; }
+
+  // An error about the field at `column`..`column+width-1` (or the whole line when width is 0).
+  [[noreturn]] void fail(int column, int width, std::string_view name, std::string_view expected) const;
+  [[noreturn]] void fail_value(std::string_view name, std::string_view expected, std::string_view found) const;
+
+ private:
+  std::string field_label(int column, int width, std::string_view name) const;
+  const CardReader* reader_;
+  const SourceLine* source_;
+};
+
+// Walks the data lines of one card.
+class CardReader {
+ public:
+  CardReader(const Card& card, const SourceText& text, const UnitSystem& units)
+      : card_(&card), text_(&text), units_(&units) {}
+
+  const Card& card() const { return *card_; }
+  const UnitSystem& units() const { return *units_; }
+  const SourceText& text() const { return *text_; }
+
+  bool at_end() const { return next_ >= card_->lines.size(); }
+  // True when at least one non-blank line remains.
+  bool has_data() const;
+  // The next data line; a missing line is a "truncated card" error naming what the line should hold.
+  Line next(std::string_view what);
+  // The next non-blank line, for list cards (node lists, id lists) that tolerate blank lines.
+  std::optional<Line> next_nonblank();
+  // Error when non-blank lines remain after the last line the card layout defines.
+  void finish() const;
+
+  // Integer path part (id, unit id...) of the keyword line; `index` counts from 0 over card().path.
+  std::int64_t path_id(std::size_t index, std::string_view name, bool required) const;
+
+  [[noreturn]] void fail(std::string_view field, std::string_view expected, std::string_view found) const;
+
+ private:
+  const Card* card_;
+  const SourceText* text_;
+  const UnitSystem* units_;
+  std::size_t next_ = 0;
+};
+
+}  // namespace crumple

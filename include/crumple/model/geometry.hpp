@@ -1,0 +1,66 @@
+#pragma once
+// Element geometry used by the reader's checks, the mass and the time-step estimate
+// (docs/theory/geometry.md). Plain functions over coordinates, no allocation.
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace crumple::geometry {
+
+using Point = std::array<double, 3>;
+
+inline Point sub(const Point& a, const Point& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+inline Point cross(const Point& a, const Point& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+inline double dot(const Point& a, const Point& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+inline double norm(const Point& a) { return std::sqrt(dot(a, a)); }
+
+// Area of a quadrilateral from its diagonals: A = |d13 x d24| / 2 (exact for a flat quad).
+inline double quad_area(const Point& p1, const Point& p2, const Point& p3, const Point& p4) {
+  return 0.5 * norm(cross(sub(p3, p1), sub(p4, p2)));
+}
+inline double triangle_area(const Point& p1, const Point& p2, const Point& p3) {
+  return 0.5 * norm(cross(sub(p2, p1), sub(p3, p1)));
+}
+
+// Signed volume of an 8-node brick in Radioss/LS-DYNA numbering (1-4 bottom face, 5-8 top), from the one-point
+// Jacobian: V = 8 det J(0). Negative for an inverted element.
+inline double brick_volume(const std::array<Point, 8>& p) {
+  Point g1{}, g2{}, g3{};  // derivatives of x with respect to the natural coordinates at the centre, times 8
+  constexpr double s1[8] = {-1, 1, 1, -1, -1, 1, 1, -1};
+  constexpr double s2[8] = {-1, -1, 1, 1, -1, -1, 1, 1};
+  constexpr double s3[8] = {-1, -1, -1, -1, 1, 1, 1, 1};
+  for (int a = 0; a < 8; ++a)
+    for (int k = 0; k < 3; ++k) {
+      g1[k] += s1[a] * p[a][k];
+      g2[k] += s2[a] * p[a][k];
+      g3[k] += s3[a] * p[a][k];
+    }
+  // J = g/8; V = 8 det(J) = det(g) / 64.
+  return dot(g1, cross(g2, g3)) / 64.0;
+}
+
+// Characteristic length of a 4-node shell for the critical time step: L = A / longest side
+// (docs/theory/time-step.md); for a square it is the side.
+inline double quad_characteristic_length(const Point& p1, const Point& p2, const Point& p3, const Point& p4) {
+  const double area = quad_area(p1, p2, p3, p4);
+  const double longest_side = std::max(std::max(norm(sub(p2, p1)), norm(sub(p3, p2))),
+                                       std::max(norm(sub(p4, p3)), norm(sub(p1, p4))));
+  return area / longest_side;
+}
+// Triangle: twice the area over the longest side, the smallest height.
+inline double triangle_characteristic_length(const Point& p1, const Point& p2, const Point& p3) {
+  const double area = triangle_area(p1, p2, p3);
+  const double longest_side = std::max(std::max(norm(sub(p2, p1)), norm(sub(p3, p2))), norm(sub(p1, p3)));
+  return 2.0 * area / longest_side;
+}
+// Brick: volume over the largest face area.
+inline double brick_characteristic_length(const std::array<Point, 8>& p) {
+  constexpr int faces[6][4] = {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+  double largest = 0.0;
+  for (const auto& f : faces) largest = std::max(largest, quad_area(p[f[0]], p[f[1]], p[f[2]], p[f[3]]));
+  return largest > 0.0 ? brick_volume(p) / largest : 0.0;
+}
+
+}  // namespace crumple::geometry

@@ -1,0 +1,79 @@
+#pragma once
+// The model: everything the deck defines, in working units, with user ids resolved to dense indices.
+// Built once by the deck reader (deck/ -> model/build) and read-only to the solver kernels afterwards.
+#include <array>
+#include <cstdint>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "crumple/deck/units.hpp"
+#include "crumple/model/elements.hpp"
+#include "crumple/model/functions.hpp"
+#include "crumple/model/interfaces.hpp"
+#include "crumple/model/loads.hpp"
+#include "crumple/model/materials.hpp"
+#include "crumple/model/nodes.hpp"
+#include "crumple/model/output_requests.hpp"
+#include "crumple/model/properties.hpp"
+#include "crumple/model/rigid.hpp"
+#include "crumple/model/run_control.hpp"
+#include "crumple/model/sets.hpp"
+
+namespace crumple {
+
+using IdMap = std::unordered_map<std::int64_t, std::int32_t>;  // user id -> dense index
+
+struct Model {
+  std::string run_name;  // from /BEGIN
+  std::string title;     // from /TITLE
+  int input_version = 0; // Invers of /BEGIN
+  UnitSystem units;
+
+  Nodes nodes;
+  std::array<ElementTable, kElementKinds> elements{
+      ElementTable{ElementKind::Shell4, {}, {}, {}}, ElementTable{ElementKind::Shell3, {}, {}, {}},
+      ElementTable{ElementKind::Brick8, {}, {}, {}}};
+  std::vector<ElementGroup> element_groups;
+
+  std::vector<Part> parts;
+  std::vector<Property> properties;
+  std::vector<ResolvedFormulation> formulations;  // one per property: effective element flags
+  std::vector<Material> materials;
+  std::vector<Function> functions;
+  ShellDefaults shell_defaults;
+  SolidDefaults solid_defaults;
+
+  std::vector<NodeGroup> node_groups;
+  std::vector<ShellGroup> shell_groups;
+  std::vector<Surface> surfaces;
+  std::vector<Subset> subsets;
+
+  std::vector<BoundaryCondition> boundary_conditions;
+  std::vector<ImposedMotion> imposed;  // /IMPVEL, /IMPDISP, /CLOAD
+  std::vector<InitialVelocity> initial_velocities;
+  std::vector<Gravity> gravity;
+  std::vector<AddedMass> added_masses;
+  std::vector<RigidWall> rigid_walls;
+  std::vector<RigidBody> rigid_bodies;
+  std::vector<Type7Interface> type7_interfaces;
+  std::vector<TimeHistoryRequest> histories;
+  std::vector<Section> sections;
+
+  RunControl run;
+
+  // Lumped nodal mass [M]: element mass plus /ADMAS and /RBODY mass (model build, docs/theory/mass.md).
+  std::vector<double> nodal_mass;
+  double element_mass = 0.0;  // sum of element masses [M]
+  double added_mass = 0.0;    // /ADMAS and /RBODY masses [M]
+
+  struct Index {
+    IdMap nodes, parts, properties, materials, functions, node_groups, shell_groups, surfaces, subsets,
+        rigid_walls, rigid_bodies, interfaces, sections;
+    std::array<IdMap, kElementKinds> elements;
+  } index;
+
+  double total_mass() const { return element_mass + added_mass; }
+};
+
+}  // namespace crumple

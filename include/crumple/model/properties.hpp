@@ -1,0 +1,64 @@
+#pragma once
+// Properties (/PROP) and the global element defaults (/DEF_SHELL, /DEF_SOLID). The flags keep the values the
+// deck gave (0 = default); the model build resolves them into the effective formulation fields.
+#include <cstdint>
+#include <string>
+
+#include "crumple/deck/error.hpp"
+
+namespace crumple {
+
+struct ShellSection {  // /PROP/TYPE1 (= /PROP/SHELL)
+  int ishell = 0;          // 4-node formulation: 1 Belytschko-Tsay with hourglass control, 24 QEPH (default)
+  int ismstr = 0;          // small-strain flag
+  int ish3n = 0;           // 3-node formulation: 1 or 2 (default 2)
+  int idrill = 0;          // drilling dof flag
+  double hm = 0.0, hf = 0.0, hr = 0.0;  // membrane, flexural, rotational hourglass coefficients
+  double dm = 0.0, dn = 0.0;            // membrane and numerical damping
+  int n_points = 0;        // integration points through the thickness (0 -> default)
+  int istrain = 0;
+  double thickness = 0.0;  // [L], > 0
+  double ashear = 0.0;     // shear factor (0 -> 5/6)
+  int ithick = 0;          // thickness change flag
+  int iplas = 0;           // plane-stress plasticity algorithm flag
+};
+
+struct SolidSection {  // /PROP/TYPE14 (= /PROP/SOLID)
+  int isolid = 0;  // 1 one point with viscous hourglass (default), 14 fully integrated, 24 physically stabilised
+  int ismstr = 0;
+  int icpre = 0;
+  int iframe = 0;
+  int inpts = 0;   // integration points for Isolid 14
+  double qa = 0.0, qb = 0.0;  // bulk viscosity coefficients (0 -> 1.1 and 0.05)
+  double dn = 0.0;            // numerical damping
+  double h = 0.0;             // hourglass coefficient (0 -> 0.1)
+};
+
+enum class PropertyKind : std::uint8_t { Shell, Solid };
+
+struct Property {
+  SourceLocation where;
+  std::int64_t user_id = 0;
+  std::string title;
+  PropertyKind kind = PropertyKind::Shell;
+  ShellSection shell;
+  SolidSection solid;
+};
+
+struct ShellDefaults {  // /DEF_SHELL
+  int ishell = 0, ismstr = 0, ithick = 0, iplas = 0, istrain = 0, ish3n = 0, idrill = 0;
+};
+struct SolidDefaults {  // /DEF_SOLID
+  int isolid = 0, ismstr = 0, istrain = 0, iframe = 0;
+};
+
+// Effective element formulations after property, /DEF_SHELL or /DEF_SOLID and the built-in defaults.
+struct ResolvedFormulation {
+  int ishell = 24;  // 4-node shells: 1 or 24
+  int ish3n = 2;    // 3-node shells: 1 or 2
+  int isolid = 1;   // bricks: 1, 14 or 24
+  int ismstr = 0;   // small-strain flag after /DEF_SHELL or /DEF_SOLID
+  int n_points = 0; // shells: through-thickness points; 0 = global (stress-resultant) plasticity
+};
+
+}  // namespace crumple

@@ -1,0 +1,69 @@
+#pragma once
+// Parts and the sets that cards refer to: node groups, shell groups, surfaces, subsets.
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "crumple/deck/error.hpp"
+#include "crumple/model/elements.hpp"
+
+namespace crumple {
+
+struct Part {
+  SourceLocation where;
+  std::int64_t user_id = 0;
+  std::string title;
+  std::int64_t property_id = 0;
+  std::int64_t material_id = 0;
+  std::int64_t subset_id = 0;
+  std::int32_t property = -1;  // dense index (model build)
+  std::int32_t material = -1;  // dense index (model build)
+};
+
+// How a group card lists its members: explicit ids, the parts whose elements give the members, or other groups.
+enum class SetSource : std::uint8_t { Ids, Parts, Groups };
+
+struct NodeGroup {  // /GRNOD/NODE, /GRNOD/PART, /GRNOD/GRNOD
+  SourceLocation where;
+  std::int64_t user_id = 0;
+  std::string title;
+  SetSource source = SetSource::Ids;
+  std::vector<std::int64_t> items;  // user ids of nodes, parts or node groups; negative removes (docs/deck-format.md)
+  std::vector<std::int32_t> nodes;  // dense node indices, sorted, unique (model build)
+};
+
+struct ShellGroup {  // /GRSHEL/SHEL, /GRSHEL/PART
+  SourceLocation where;
+  std::int64_t user_id = 0;
+  std::string title;
+  SetSource source = SetSource::Ids;
+  std::vector<std::int64_t> items;      // user ids of shells or parts
+  std::vector<std::int32_t> elements;   // dense indices into the Shell4 table (model build)
+};
+
+// A surface segment: 4 nodes (a triangle repeats its third node), oriented by the owning element.
+struct Segment {
+  std::array<std::int32_t, 4> nodes;  // dense node indices
+  ElementRef owner;                    // element the segment belongs to (for thickness, gap, deletion)
+};
+
+struct Surface {  // /SURF/PART, /SURF/SEG
+  SourceLocation where;
+  std::int64_t user_id = 0;
+  std::string title;
+  SetSource source = SetSource::Ids;
+  std::vector<std::int64_t> parts;                    // /SURF/PART: part user ids
+  std::vector<std::array<std::int64_t, 4>> raw_segments;  // /SURF/SEG: node user ids (n4 = 0 for triangles)
+  std::vector<SourceLocation> raw_segment_where;
+  std::vector<Segment> segments;                      // model build
+};
+
+struct Subset {  // /SUBSET
+  SourceLocation where;
+  std::int64_t user_id = 0;
+  std::string title;
+  std::vector<std::int64_t> children;  // subset user ids
+};
+
+}  // namespace crumple

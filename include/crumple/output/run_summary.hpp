@@ -1,0 +1,42 @@
+#pragma once
+// NAME.summary.json: the contract for batch regression (README, "Run summary"). Energies [M L^2 T^-2],
+// masses [M], times [T], all in the deck's working units.
+#include <filesystem>
+#include <string>
+
+namespace crumple {
+
+enum class RunStatus { Normal, Error, Stopped };
+
+struct EnergyBalance {
+  double internal = 0.0;
+  double kinetic_translational = 0.0;
+  double kinetic_rotational = 0.0;
+  double contact = 0.0;
+  double hourglass = 0.0;
+  double external_work = 0.0;
+  double total = 0.0;
+  double error_percent = 0.0;  // (E_int + E_kin + E_hg + E_contact - E_kin0 - W_ext) / (E_kin0 + W_ext) * 100
+};
+
+struct RunSummary {
+  std::string name;
+  long long cycles = 0;
+  double time = 0.0;
+  double dt = 0.0;
+  EnergyBalance energy;
+  double mass_total = 0.0;
+  double mass_added = 0.0;  // mass added by time-step control (mass scaling)
+  double wall_seconds = 0.0;
+  double element_cycles_per_second = 0.0;
+  int ranks = 1;
+  std::string precision = "double";
+  RunStatus status = RunStatus::Normal;
+  std::string message;  // why the run ended when status is not normal
+};
+
+std::string to_json(const RunSummary& summary);
+void write_summary(const RunSummary& summary, const std::filesystem::path& file);
+const char* status_name(RunStatus status);
+
+}  // namespace crumple

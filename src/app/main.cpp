@@ -1,0 +1,73 @@
+// crumple: command-line entry point. Turns library errors into messages and exit codes (exit_codes.hpp);
+// nothing below this file calls exit().
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <iostream>
+
+#include "app/check.hpp"
+#include "app/exit_codes.hpp"
+#include "app/run.hpp"
+#include "crumple/deck/reader.hpp"
+
+namespace {
+
+int report_deck_errors(const std::vector<crumple::DeckError>& errors) {
+  for (const auto& e : errors) fmt::print(stderr, "error: {}\n", e.what());
+  fmt::print(stderr, "crumple: {} error{} in the deck; nothing was computed\n", errors.size(),
+             errors.size() == 1 ? "" : "s");
+  return crumple::app::kExitBadInput;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace crumple;
+  CLI::App cli{"Crumple - explicit finite-element crash solver for Radioss block-format decks"};
+  cli.set_version_flag("--version", std::string("crumple ") + CRUMPLE_VERSION);
+  cli.require_subcommand(1);
+
+  std::string deck_path;
+  bool skip_unknown = false;
+  app::RunOptions run_options;
+
+  CLI::App* check = cli.add_subcommand("check", "Read and validate a deck and print a model summary");
+  check->add_option("DECK", deck_path, "Starter deck (NAME_0000.rad); NAME_0001.rad beside it is read too")
+      ->required();
+  check->add_flag("--skip-unknown", skip_unknown, "Warn about unknown keywords instead of failing");
+
+  CLI::App* run = cli.add_subcommand("run", "Run a deck: writes NAME.h5, NAME.out and NAME.summary.json");
+  run->add_option("DECK", deck_path, "Starter deck (NAME_0000.rad) with its engine deck beside it")->required();
+  run->add_option("-o,--output", run_options.output_directory, "Output directory (default: current directory)");
+  run->add_flag("--skip-unknown", skip_unknown, "Warn about unknown keywords instead of failing");
+
+  try {
+    cli.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = cli.exit(e);
+    return code == 0 ? app::kExitNormal : app::kExitBadInput;
+  }
+
+  try {
+    if (check->parsed()) {
+      ReadOptions options;
+      options.skip_unknown = skip_unknown;
+      const Deck deck = read_deck(deck_path, options);
+      app::print_check_report(deck, std::cout);
+      return app::kExitNormal;
+    }
+    run_options.deck = deck_path;
+    run_options.skip_unknown = skip_unknown;
+    return app::run_deck(run_options, std::cout, std::cerr);
+  } catch (const DeckErrors& e) {
+    return report_deck_errors(e.errors());
+  } catch (const DeckError& e) {
+    return report_deck_errors({e});
+  } catch (const std::bad_alloc&) {
+    fmt::print(stderr, "crumple: out of memory\n");
+    return app::kExitRunFailed;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "crumple: internal error: {}\n", e.what());
+    return app::kExitInternal;
+  }
+}

@@ -1,0 +1,70 @@
+#pragma once
+// Internal to the deck reader: what keyword handlers share while a deck is read.
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <string_view>
+#include <vector>
+
+#include "crumple/deck/fields.hpp"
+#include "crumple/deck/reader.hpp"
+#include "crumple/model/model.hpp"
+
+namespace crumple::deck {
+
+// Elements as read, with node and part user ids; the model build resolves and groups them.
+struct RawElements {
+  std::vector<std::int64_t> user_id;
+  std::vector<std::int64_t> part_id;
+  std::vector<std::int64_t> node_ids;  // nodes_per_element per element
+  std::vector<SourceLocation> where;
+};
+
+struct DeckContext {
+  Model& model;
+  DeckReport& report;
+  std::array<RawElements, kElementKinds> raw_elements;
+  std::vector<SourceLocation> node_where;  // location of each /NODE line, parallel to model.nodes
+  bool begin_seen = false;
+  bool run_seen = false;
+
+  void warn(const SourceLocation& where, std::string_view keyword, std::string message) {
+    report.warnings.push_back({where, std::string(keyword), std::move(message)});
+  }
+};
+
+using KeywordHandler = std::function<void(CardReader&, DeckContext&)>;
+
+enum class DeckPart : std::uint8_t { Starter, Engine };
+
+struct KeywordSpec {
+  std::string_view name;  // leading path parts, e.g. "/MAT/PLAS_JOHNS"
+  DeckPart part;
+  KeywordHandler handler;  // empty: accepted without effect (listed in the report)
+};
+
+using KeywordTable = std::vector<KeywordSpec>;
+
+// Each family of keywords registers its handlers (src/deck/keywords/*.cpp).
+void register_control_keywords(KeywordTable& table);
+void register_mesh_keywords(KeywordTable& table);
+void register_material_keywords(KeywordTable& table);
+void register_property_keywords(KeywordTable& table);
+void register_function_keywords(KeywordTable& table);
+void register_set_keywords(KeywordTable& table);
+void register_load_keywords(KeywordTable& table);
+void register_rigid_keywords(KeywordTable& table);
+void register_interface_keywords(KeywordTable& table);
+void register_output_keywords(KeywordTable& table);
+void register_engine_keywords(KeywordTable& table);
+
+const KeywordTable& keyword_table();
+
+// Shared card pieces.
+std::string read_title(CardReader& reader);  // the title line that follows many keyword lines (may be blank)
+// Integer ids in 10-column fields, 10 per line, until the end of the card; blank fields are skipped.
+std::vector<std::int64_t> read_id_list(CardReader& reader, std::string_view name);
+// The keyword's object id (path part `index`); must be positive.
+std::int64_t object_id(CardReader& reader, std::size_t index);
+
+}  // namespace crumple::deck

@@ -1,0 +1,259 @@
+#include "crumple/deck/fields.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+
+namespace crumple {
+
+std::string_view trim(std::string_view text) {
+  const auto first = text.find_first_not_of(" \t\r");
+  if (first == std::string_view::npos) return {};
+  const auto last = text.find_last_not_of(" \t\r");
+  return text.substr(first, last - first + 1);
+}
+
+std::optional<double> parse_fortran_real(std::string_view raw) {
+  const std::string_view text = trim(raw);
+  if (text.empty() || text.size() > 64) return std::nullopt;
+  // Grammar: [sign] (digits [. digits*] | . digits) [(E|e|D|d) [sign] digits]
+  std::string normal;
+  std::size_t i = 0;
+  auto digit = [&](std::size_t k) { return k < text.size() && std::isdigit(static_cast<unsigned char>(text[k])); };
+  if (text[i] == '-') normal += '-';
+  if (text[i] == '+' || text[i] == '-') ++i;
+  if (i < text.size() && text[i] == '.') normal += '0';  // from_chars needs a digit before the point
+  std::size_t mantissa_digits = 0;
+  while (digit(i)) normal += text[i++], ++mantissa_digits;
+  if (i < text.size() && text[i] == '.') {
+    normal += text[i++];
+    if (!digit(i)) normal += '0';
+    while (digit(i)) normal += text[i++], ++mantissa_digits;
+  }
+  if (mantissa_digits == 0) return std::nullopt;
+  if (i < text.size()) {
+    const char e = text[i];
+    if (e != 'E' && e != 'e' && e != 'D' && e != 'd') return std::nullopt;
+    normal += 'e';
+    ++i;
+    if (i < text.size() && (text[i] == '+' || text[i] == '-')) normal += text[i++];
+    if (!digit(i)) return std::nullopt;
+    while (digit(i)) normal += text[i++];
+    if (i != text.size()) return std::nullopt;
+  }
+  double value = 0.0;
+  const auto [end, ec] = std::from_chars(normal.data(), normal.data() + normal.size(), value);
+  if (ec == std::errc::result_out_of_range) return std::nullopt;
+  if (ec != std::errc() || end != normal.data() + normal.size() || !std::isfinite(value)) return std::nullopt;
+  return value;
+}
+
+std::optional<std::int64_t> parse_integer(std::string_view raw) {
+  std::string_view text = trim(raw);
+  if (text.empty()) return std::nullopt;
+  if (text.front() == '+') text.remove_prefix(1);
+  std::int64_t value = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (ec != std::errc() || end != text.data() + text.size()) return std::nullopt;
+  return value;
+}
+
+namespace {
+
+std::string upper(std::string_view s) {
+  std::string out(s);
+  std::transform(out.begin(), out.end(), out.begin(), [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+  return out;
+}
+
+std::vector<std::string> split_path(std::string_view keyword) {
+  std::vector<std::string> parts;
+  std::size_t start = 1;  // skip the leading '/'
+  while (start <= keyword.size()) {
+    const auto slash = keyword.find('/', start);
+    const auto end = slash == std::string_view::npos ? keyword.size() : slash;
+    parts.emplace_back(trim(keyword.substr(start, end - start)));
+    if (slash == std::string_view::npos) break;
+    start = slash + 1;
+  }
+  return parts;
+}
+
+bool is_comment(const std::string& text) { return !text.empty() && (text[0] == '#' || text[0] == '$'); }
+
+std::string quote_text(std::string_view s) {
+  std::string out = "'";
+  for (char c : s) {
+    const auto u = static_cast<unsigned char>(c);
+    if (u < 32 || u >= 127) out += fmt::format("\\x{:02x}", u);
+    else out += c;
+  }
+  return out + "'";
+}
+
+}  // namespace
+
+std::vector<Card> split_cards(const SourceText& text, std::int32_t first_engine_file) {
+  std::vector<Card> cards;
+  bool after_starter_end = false;
+  for (const SourceLine& line : text.lines) {
+    if (is_comment(line.text)) continue;
+    const bool engine_file = first_engine_file >= 0 && line.file >= first_engine_file;
+    if (!line.text.empty() && line.text[0] == '/') {
+      Card card;
+      const std::string_view keyword = trim(line.text);
+      card.keyword = std::string(keyword);
+      card.path = split_path(keyword);
+      for (auto& part : card.path) part = upper(part);
+      card.where = text.where(line);
+      card.engine = engine_file || after_starter_end;
+      if (!card.engine && card.path.size() == 1 && card.path[0] == "END") after_starter_end = true;
+      cards.push_back(std::move(card));
+      continue;
+    }
+    if (cards.empty()) {
+      if (trim(line.text).empty()) continue;
+      throw DeckError(text.where(line), "", "", "a keyword line starting with '/' or a comment",
+                      "data " + quote_text(trim(line.text).substr(0, 40)) + " before any keyword");
+    }
+    cards.back().lines.push_back(&line);
+  }
+  return cards;
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// Line
+
+SourceLocation Line::where() const { return reader_->text().where(*source_); }
+
+bool Line::blank() const { return trim(source_->text).empty(); }
+
+std::string Line::raw(int column, int width) const {
+  const auto& s = source_->text;
+  const auto begin = static_cast<std::size_t>(column - 1);
+  std::string out = begin < s.size() ? s.substr(begin, static_cast<std::size_t>(width)) : std::string();
+  out.resize(static_cast<std::size_t>(width), ' ');
+  return out;
+}
+
+std::string Line::text(int column, int width) const { return std::string(trim(raw(column, width))); }
+
+std::string Line::field_label(int column, int width, std::string_view name) const {
+  if (width <= 0) return std::string(name);
+  return fmt::format("{} (columns {}-{})", name, column, column + width - 1);
+}
+
+void Line::fail(int column, int width, std::string_view name, std::string_view expected) const {
+  const std::string found = width > 0 ? quote_text(trim(raw(column, width))) : quote_text(trim(source_->text));
+  throw DeckError(where(), reader_->card().keyword, field_label(column, width, name), std::string(expected), found);
+}
+
+void Line::fail_value(std::string_view name, std::string_view expected, std::string_view found) const {
+  throw DeckError(where(), reader_->card().keyword, std::string(name), std::string(expected), std::string(found));
+}
+
+std::int64_t Line::integer(int column, int width, std::string_view name, std::int64_t fallback) const {
+  const std::string field = raw(column, width);
+  if (trim(field).empty()) return fallback;
+  if (auto v = parse_integer(field)) return *v;
+  fail(column, width, name, "an integer");
+}
+
+double Line::real(int column, int width, std::string_view name, Dimension d, double fallback) const {
+  const std::string field = raw(column, width);
+  if (trim(field).empty()) return fallback * reader_->units().factor(d);
+  if (auto v = parse_fortran_real(field)) return *v * reader_->units().factor(d);
+  fail(column, width, name, "a real number");
+}
+
+namespace {
+std::vector<std::string_view> tokens_of(const std::string& text) {
+  std::vector<std::string_view> out;
+  std::string_view s(text);
+  std::size_t i = 0;
+  while (i < s.size()) {
+    while (i < s.size() && (s[i] == ' ' || s[i] == '\t' || s[i] == ',')) ++i;
+    const std::size_t start = i;
+    while (i < s.size() && s[i] != ' ' && s[i] != '\t' && s[i] != ',') ++i;
+    if (i > start) out.push_back(s.substr(start, i - start));
+  }
+  return out;
+}
+}  // namespace
+
+std::size_t Line::token_count() const { return tokens_of(source_->text).size(); }
+
+double Line::token_real(std::size_t index, std::string_view name, Dimension d, std::optional<double> fallback) const {
+  const auto tokens = tokens_of(source_->text);
+  if (index >= tokens.size()) {
+    if (fallback) return *fallback * reader_->units().factor(d);
+    fail_value(fmt::format("{} (value {})", name, index + 1), "a real number", "end of line");
+  }
+  if (auto v = parse_fortran_real(tokens[index])) return *v * reader_->units().factor(d);
+  fail_value(fmt::format("{} (value {})", name, index + 1), "a real number", quote_text(tokens[index]));
+}
+
+std::int64_t Line::token_integer(std::size_t index, std::string_view name, std::optional<std::int64_t> fallback) const {
+  const auto tokens = tokens_of(source_->text);
+  if (index >= tokens.size()) {
+    if (fallback) return *fallback;
+    fail_value(fmt::format("{} (value {})", name, index + 1), "an integer", "end of line");
+  }
+  if (auto v = parse_integer(tokens[index])) return *v;
+  fail_value(fmt::format("{} (value {})", name, index + 1), "an integer", quote_text(tokens[index]));
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// CardReader
+
+bool CardReader::has_data() const {
+  for (std::size_t i = next_; i < card_->lines.size(); ++i)
+    if (!trim(card_->lines[i]->text).empty()) return true;
+  return false;
+}
+
+Line CardReader::next(std::string_view what) {
+  if (at_end()) {
+    const SourceLocation where =
+        card_->lines.empty() ? card_->where : text_->where(*card_->lines.back());
+    throw DeckError(where, card_->keyword, "", fmt::format("a line with {} (truncated card)", what),
+                    "end of card");
+  }
+  return Line(*this, *card_->lines[next_++]);
+}
+
+std::optional<Line> CardReader::next_nonblank() {
+  while (!at_end()) {
+    Line line(*this, *card_->lines[next_++]);
+    if (!line.blank()) return line;
+  }
+  return std::nullopt;
+}
+
+void CardReader::finish() const {
+  for (std::size_t i = next_; i < card_->lines.size(); ++i) {
+    const SourceLine& line = *card_->lines[i];
+    if (!trim(line.text).empty())
+      throw DeckError(text_->where(line), card_->keyword, "", "no more data lines for this keyword",
+                      quote_text(trim(line.text).substr(0, 40)));
+  }
+}
+
+std::int64_t CardReader::path_id(std::size_t index, std::string_view name, bool required) const {
+  if (index >= card_->path.size() || card_->path[index].empty()) {
+    if (!required) return 0;
+    throw DeckError(card_->where, card_->keyword, std::string(name), "an id in the keyword line", "none");
+  }
+  if (auto v = parse_integer(card_->path[index]); v && *v >= 0) return *v;
+  throw DeckError(card_->where, card_->keyword, std::string(name), "a non-negative integer id in the keyword line",
+                  quote_text(card_->path[index]));
+}
+
+void CardReader::fail(std::string_view field, std::string_view expected, std::string_view found) const {
+  throw DeckError(card_->where, card_->keyword, std::string(field), std::string(expected), std::string(found));
+}
+
+}  // namespace crumple

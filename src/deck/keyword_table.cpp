@@ -1,0 +1,50 @@
+#include <fmt/format.h>
+
+#include "context.hpp"
+
+namespace crumple::deck {
+
+const KeywordTable& keyword_table() {
+  static const KeywordTable table = [] {
+    KeywordTable t;
+    register_control_keywords(t);
+    register_mesh_keywords(t);
+    register_material_keywords(t);
+    register_property_keywords(t);
+    register_function_keywords(t);
+    register_set_keywords(t);
+    register_load_keywords(t);
+    register_rigid_keywords(t);
+    register_interface_keywords(t);
+    register_output_keywords(t);
+    register_engine_keywords(t);
+    return t;
+  }();
+  return table;
+}
+
+std::string read_title(CardReader& reader) {
+  if (reader.at_end()) return {};
+  return reader.next("the title").text(1, 100);
+}
+
+std::vector<std::int64_t> read_id_list(CardReader& reader, std::string_view name) {
+  std::vector<std::int64_t> ids;
+  while (auto line = reader.next_nonblank()) {
+    for (int column = 1; column <= 91; column += 10) {
+      const std::int64_t id = line->integer(column, 10, name, 0);
+      if (id != 0) ids.push_back(id);
+    }
+    if (line->content().size() > 100 && !trim(std::string_view(line->content()).substr(100)).empty())
+      line->fail(101, static_cast<int>(line->content().size()) - 100, name, "at most 10 ids of 10 columns per line");
+  }
+  return ids;
+}
+
+std::int64_t object_id(CardReader& reader, std::size_t index) {
+  const std::int64_t id = reader.path_id(index, "id", true);
+  if (id <= 0) reader.fail("id", "a positive id in the keyword line", fmt::format("{}", id));
+  return id;
+}
+
+}  // namespace crumple::deck

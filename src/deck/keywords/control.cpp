@@ -1,0 +1,85 @@
+// /BEGIN, /TITLE, /DEF_SHELL, /DEF_SOLID and the control keywords accepted without effect.
+#include <fmt/format.h>
+
+#include <optional>
+
+#include "../context.hpp"
+
+namespace crumple::deck {
+namespace {
+
+void read_begin(CardReader& reader, DeckContext& context) {
+  if (context.begin_seen) reader.fail("", "a single /BEGIN", "a second /BEGIN");
+  context.begin_seen = true;
+  Model& model = context.model;
+  model.run_name = reader.next("Runname").text(1, 80);
+  const Line version = reader.next("Invers, Irun");
+  model.input_version = static_cast<int>(version.integer(1, 10, "Invers"));
+  version.integer(11, 10, "Irun");
+  // Unit lines: mass, length, time in 20-column fields, a code or a real (SI size). A blank working unit is
+  // the SI unit; a blank input unit is the working unit.
+  const char* names[2][3] = {{"Input_mass_unit", "Input_length_unit", "Input_time_unit"},
+                             {"Work_mass_unit", "Work_length_unit", "Work_time_unit"}};
+  std::optional<Line> lines[2];
+  for (auto& line : lines)
+    if (!reader.at_end()) line = reader.next("units");
+  for (int system : {1, 0}) {
+    for (int base = 0; base < 3; ++base) {
+      const int column = 1 + 20 * base;
+      double& target = system == 0 ? model.units.input[base] : model.units.work[base];
+      if (!lines[system] || lines[system]->text(column, 20).empty()) {
+        target = system == 0 ? model.units.work[base] : 1.0;
+        continue;
+      }
+      const auto size = parse_unit(lines[system]->raw(column, 20), base);
+      if (!size)
+        lines[system]->fail(column, 20, names[system][base],
+                            "a unit code (kg, g, Mg, m, mm, s, ms, lb, in...) or a positive real");
+      target = *size;
+    }
+  }
+  reader.finish();
+}
+
+void read_title_card(CardReader& reader, DeckContext& context) {
+  context.model.title = read_title(reader);
+}
+
+void read_def_shell(CardReader& reader, DeckContext& context) {
+  ShellDefaults& d = context.model.shell_defaults;
+  if (reader.at_end()) return;
+  const Line line = reader.next("Ishell, Ismstr, Ithick, Iplas, Istrain, Ish3n, Idrill");
+  d.ishell = static_cast<int>(line.integer(1, 10, "Ishell"));
+  d.ismstr = static_cast<int>(line.integer(11, 10, "Ismstr"));
+  d.ithick = static_cast<int>(line.integer(21, 10, "Ithick"));
+  d.iplas = static_cast<int>(line.integer(31, 10, "Iplas"));
+  d.istrain = static_cast<int>(line.integer(41, 10, "Istrain"));
+  d.ish3n = static_cast<int>(line.integer(71, 10, "Ish3n"));
+  d.idrill = static_cast<int>(line.integer(81, 10, "Idrill"));
+  reader.finish();
+}
+
+void read_def_solid(CardReader& reader, DeckContext& context) {
+  SolidDefaults& d = context.model.solid_defaults;
+  if (reader.at_end()) return;
+  const Line line = reader.next("Isolid, Ismstr, Istrain, Iframe");
+  d.isolid = static_cast<int>(line.integer(1, 10, "Isolid"));
+  d.ismstr = static_cast<int>(line.integer(11, 10, "Ismstr"));
+  d.istrain = static_cast<int>(line.integer(31, 10, "Istrain"));
+  d.iframe = static_cast<int>(line.integer(71, 10, "Iframe"));
+  reader.finish();
+}
+
+}  // namespace
+
+void register_control_keywords(KeywordTable& table) {
+  table.push_back({"/BEGIN", DeckPart::Starter, read_begin});
+  table.push_back({"/TITLE", DeckPart::Starter, read_title_card});
+  table.push_back({"/DEF_SHELL", DeckPart::Starter, read_def_shell});
+  table.push_back({"/DEF_SOLID", DeckPart::Starter, read_def_solid});
+  // Accepted with no effect on results (deck.md); /RANDOM in particular must not perturb: runs stay deterministic.
+  for (std::string_view name : {"/ANALY", "/IOFLAG", "/SPMD", "/PROC", "/RANDOM", "/SHFRA", "/VERS", "/MEMORY"})
+    table.push_back({name, DeckPart::Starter, {}});
+}
+
+}  // namespace crumple::deck

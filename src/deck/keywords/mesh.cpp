@@ -1,0 +1,77 @@
+// /NODE, /SHELL, /SH3N, /BRICK, /PART (docs/deck-format.md).
+#include <fmt/format.h>
+
+#include "../context.hpp"
+
+namespace crumple::deck {
+namespace {
+
+void read_nodes(CardReader& reader, DeckContext& context) {
+  Nodes& nodes = context.model.nodes;
+  reader.path_id(1, "unit id", false);
+  while (auto line = reader.next_nonblank()) {
+    const std::int64_t id = line->integer(1, 10, "node_ID");
+    if (id <= 0) line->fail(1, 10, "node_ID", "a positive node id");
+    nodes.user_id.push_back(id);
+    nodes.x.push_back(line->real(11, 20, "X", dim::length));
+    nodes.y.push_back(line->real(31, 20, "Y", dim::length));
+    nodes.z.push_back(line->real(51, 20, "Z", dim::length));
+    context.node_where.push_back(line->where());
+  }
+}
+
+// Elements: "id n1 .. nk" in 10-column fields; shells may add an orthotropy angle and a thickness.
+void read_elements(CardReader& reader, DeckContext& context, ElementKind kind) {
+  const std::int64_t part_id = object_id(reader, 1);
+  RawElements& raw = context.raw_elements[static_cast<int>(kind)];
+  const int n = nodes_per_element(kind);
+  while (auto line = reader.next_nonblank()) {
+    const std::int64_t id = line->integer(1, 10, "elem_ID");
+    if (id <= 0) line->fail(1, 10, "elem_ID", "a positive element id");
+    for (int k = 0; k < n; ++k) {
+      const std::string name = fmt::format("node_ID{}", k + 1);
+      const std::int64_t node = line->integer(11 + 10 * k, 10, name);
+      if (node <= 0) line->fail(11 + 10 * k, 10, name, "a positive node id");
+      raw.node_ids.push_back(node);
+    }
+    if (kind != ElementKind::Brick8) {
+      const int after = 11 + 10 * n;  // orthotropy angle (20 columns), then element thickness (20 columns)
+      line->real(after, 20, "Phi", dim::none);
+      if (line->real(after + 20, 20, "Thick", dim::length) != 0.0)
+        line->fail(after + 20, 20, "Thick", "blank (element thickness overrides are not supported; use /PROP)");
+    }
+    raw.user_id.push_back(id);
+    raw.part_id.push_back(part_id);
+    raw.where.push_back(line->where());
+  }
+}
+
+void read_part(CardReader& reader, DeckContext& context) {
+  Part part;
+  part.where = reader.card().where;
+  part.user_id = object_id(reader, 1);
+  part.title = read_title(reader);
+  const Line line = reader.next("prop_ID, mat_ID, subset_ID");
+  part.property_id = line.integer(1, 10, "prop_ID");
+  part.material_id = line.integer(11, 10, "mat_ID");
+  part.subset_id = line.integer(21, 10, "subset_ID");
+  if (part.property_id <= 0) line.fail(1, 10, "prop_ID", "a positive property id");
+  if (part.material_id <= 0) line.fail(11, 10, "mat_ID", "a positive material id");
+  reader.finish();
+  context.model.parts.push_back(std::move(part));
+}
+
+}  // namespace
+
+void register_mesh_keywords(KeywordTable& table) {
+  table.push_back({"/NODE", DeckPart::Starter, read_nodes});
+  table.push_back({"/SHELL", DeckPart::Starter,
+                   [](CardReader& r, DeckContext& c) { read_elements(r, c, ElementKind::Shell4); }});
+  table.push_back({"/SH3N", DeckPart::Starter,
+                   [](CardReader& r, DeckContext& c) { read_elements(r, c, ElementKind::Shell3); }});
+  table.push_back({"/BRICK", DeckPart::Starter,
+                   [](CardReader& r, DeckContext& c) { read_elements(r, c, ElementKind::Brick8); }});
+  table.push_back({"/PART", DeckPart::Starter, read_part});
+}
+
+}  // namespace crumple::deck

@@ -1,0 +1,90 @@
+// Groups and surfaces: /GRNOD, /GRSHEL, /SURF, /SUBSET (docs/deck-format.md).
+#include <fmt/format.h>
+
+#include "../context.hpp"
+
+namespace crumple::deck {
+namespace {
+
+std::vector<std::int64_t> positive_ids(CardReader& reader, std::string_view name) {
+  std::vector<std::int64_t> ids = read_id_list(reader, name);
+  for (std::int64_t id : ids)
+    if (id < 0) reader.fail(name, "positive ids (removing members with negative ids is not supported)",
+                            fmt::format("{}", id));
+  return ids;
+}
+
+template <class Group>
+Group begin_group(CardReader& reader, SetSource source) {
+  Group g;
+  g.where = reader.card().where;
+  g.user_id = object_id(reader, 2);
+  g.source = source;
+  g.title = read_title(reader);
+  return g;
+}
+
+void read_node_group(CardReader& reader, DeckContext& context, SetSource source, std::string_view item) {
+  auto g = begin_group<NodeGroup>(reader, source);
+  g.items = positive_ids(reader, item);
+  context.model.node_groups.push_back(std::move(g));
+}
+
+void read_shell_group(CardReader& reader, DeckContext& context, SetSource source, std::string_view item) {
+  auto g = begin_group<ShellGroup>(reader, source);
+  g.items = positive_ids(reader, item);
+  context.model.shell_groups.push_back(std::move(g));
+}
+
+void read_surface_parts(CardReader& reader, DeckContext& context) {
+  auto s = begin_group<Surface>(reader, SetSource::Parts);
+  s.parts = positive_ids(reader, "part_ID");
+  context.model.surfaces.push_back(std::move(s));
+}
+
+void read_surface_segments(CardReader& reader, DeckContext& context) {
+  auto s = begin_group<Surface>(reader, SetSource::Ids);
+  while (auto line = reader.next_nonblank()) {
+    line->integer(1, 10, "seg_ID");
+    std::array<std::int64_t, 4> nodes{};
+    for (int k = 0; k < 4; ++k) {
+      const std::string name = fmt::format("node_ID{}", k + 1);
+      nodes[static_cast<std::size_t>(k)] = line->integer(11 + 10 * k, 10, name);
+      if (nodes[static_cast<std::size_t>(k)] < 0 || (k < 3 && nodes[static_cast<std::size_t>(k)] == 0))
+        line->fail(11 + 10 * k, 10, name, k < 3 ? "a positive node id" : "a positive node id or blank (triangle)");
+    }
+    s.raw_segments.push_back(nodes);
+    s.raw_segment_where.push_back(line->where());
+  }
+  context.model.surfaces.push_back(std::move(s));
+}
+
+void read_subset(CardReader& reader, DeckContext& context) {
+  Subset s;
+  s.where = reader.card().where;
+  s.user_id = object_id(reader, 1);
+  s.title = read_title(reader);
+  s.children = positive_ids(reader, "subset_ID");
+  context.model.subsets.push_back(std::move(s));
+}
+
+}  // namespace
+
+void register_set_keywords(KeywordTable& table) {
+  auto node_group = [](SetSource source, std::string_view item) {
+    return [source, item](CardReader& r, DeckContext& c) { read_node_group(r, c, source, item); };
+  };
+  auto shell_group = [](SetSource source, std::string_view item) {
+    return [source, item](CardReader& r, DeckContext& c) { read_shell_group(r, c, source, item); };
+  };
+  table.push_back({"/GRNOD/NODE", DeckPart::Starter, node_group(SetSource::Ids, "node_ID")});
+  table.push_back({"/GRNOD/PART", DeckPart::Starter, node_group(SetSource::Parts, "part_ID")});
+  table.push_back({"/GRNOD/GRNOD", DeckPart::Starter, node_group(SetSource::Groups, "grnod_ID")});
+  table.push_back({"/GRSHEL/SHEL", DeckPart::Starter, shell_group(SetSource::Ids, "shell_ID")});
+  table.push_back({"/GRSHEL/PART", DeckPart::Starter, shell_group(SetSource::Parts, "part_ID")});
+  table.push_back({"/SURF/PART", DeckPart::Starter, read_surface_parts});
+  table.push_back({"/SURF/SEG", DeckPart::Starter, read_surface_segments});
+  table.push_back({"/SUBSET", DeckPart::Starter, read_subset});
+}
+
+}  // namespace crumple::deck

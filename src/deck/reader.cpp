@@ -1,0 +1,163 @@
+// read_deck: source text -> cards -> keyword handlers (records with user ids) -> resolve (dense indices, checks).
+#include "crumple/deck/reader.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "context.hpp"
+#include "resolve.hpp"
+
+namespace crumple {
+namespace deck {
+namespace {
+
+constexpr std::size_t kMaxErrors = 100;
+
+std::vector<std::string_view> name_parts(std::string_view name) {
+  std::vector<std::string_view> parts;
+  std::size_t start = 1;
+  while (start <= name.size()) {
+    const auto slash = name.find('/', start);
+    const auto end = slash == std::string_view::npos ? name.size() : slash;
+    parts.push_back(name.substr(start, end - start));
+    if (slash == std::string_view::npos) break;
+    start = slash + 1;
+  }
+  return parts;
+}
+
+// The spec whose name is the longest prefix of the card's path, in the requested deck part.
+const KeywordSpec* find_spec(const Card& card, DeckPart part) {
+  const KeywordSpec* best = nullptr;
+  std::size_t best_length = 0;
+  for (const KeywordSpec& spec : keyword_table()) {
+    if (spec.part != part) continue;
+    const auto parts = name_parts(spec.name);
+    if (parts.size() > card.path.size() || parts.size() <= best_length) continue;
+    if (std::equal(parts.begin(), parts.end(), card.path.begin())) {
+      best = &spec;
+      best_length = parts.size();
+    }
+  }
+  return best;
+}
+
+// Keyword name without ids: the leading path parts that are not numbers.
+std::string keyword_name(const Card& card) {
+  std::string name;
+  for (const auto& part : card.path) {
+    if (!part.empty() && (std::isdigit(static_cast<unsigned char>(part[0])) || part[0] == '-')) break;
+    name += "/" + part;
+  }
+  return name.empty() ? card.keyword : name;
+}
+
+void note_once(std::vector<std::string>& list, const std::string& name) {
+  if (std::find(list.begin(), list.end(), name) == list.end()) list.push_back(name);
+}
+
+bool is_card(const Card& card, std::initializer_list<std::string_view> path) {
+  return card.path.size() == path.size() && std::equal(path.begin(), path.end(), card.path.begin());
+}
+
+}  // namespace
+}  // namespace deck
+
+std::filesystem::path engine_deck_for(const std::filesystem::path& starter) {
+  const std::string stem = starter.stem().string();
+  if (stem.size() < 5 || stem.substr(stem.size() - 5) != "_0000") return {};
+  auto engine = starter;
+  engine.replace_filename(stem.substr(0, stem.size() - 5) + "_0001" + starter.extension().string());
+  std::error_code ec;
+  return std::filesystem::is_regular_file(engine, ec) ? engine : std::filesystem::path{};
+}
+
+Deck read_deck(const std::filesystem::path& starter, const ReadOptions& options) {
+  using namespace deck;
+  SourceText text = read_source(starter);
+  std::int32_t first_engine_file = -1;
+  if (const auto engine = engine_deck_for(starter); !engine.empty()) {
+    first_engine_file = static_cast<std::int32_t>(text.files.size());
+    append_source(text, engine);
+  }
+  const std::vector<Card> cards = split_cards(text, first_engine_file);
+
+  Deck deck;
+  deck.report.files = text.files;
+  DeckContext context{deck.model, deck.report, {}, {}};
+  std::vector<DeckError> errors;
+  auto record = [&](const DeckError& e) {
+    if (errors.size() < kMaxErrors) errors.push_back(e);
+  };
+
+  bool starter_ended = false;
+  bool engine_seen = false;
+  bool begin_first = false;
+  std::vector<std::string> unknown_reported;
+  for (std::size_t i = 0; i < cards.size(); ++i) {
+    const Card& card = cards[i];
+    if (!card.engine && is_card(card, {"END"})) {
+      starter_ended = true;
+      continue;
+    }
+    if (card.engine && is_card(card, {"END", "ENGINE"})) continue;
+    if (card.engine) engine_seen = true;
+    if (!card.engine && i == 0 && is_card(card, {"BEGIN"})) begin_first = true;
+
+    const DeckPart part = card.engine ? DeckPart::Engine : DeckPart::Starter;
+    const KeywordSpec* spec = find_spec(card, part);
+    const std::string name = keyword_name(card);
+    if (spec == nullptr) {
+      const KeywordSpec* other = find_spec(card, card.engine ? DeckPart::Starter : DeckPart::Engine);
+      if (other != nullptr) {
+        record(DeckError(card.where, card.keyword, "",
+                         card.engine ? "an engine keyword (this one belongs to the starter deck, before /END)"
+                                     : "a starter keyword (this one belongs to the engine deck, after /END)",
+                         "'" + card.keyword + "'"));
+        continue;
+      }
+      if (options.skip_unknown) {
+        if (std::find(unknown_reported.begin(), unknown_reported.end(), name) == unknown_reported.end()) {
+          unknown_reported.push_back(name);
+          context.warn(card.where, card.keyword, "unknown keyword skipped (--skip-unknown)");
+        }
+        continue;
+      }
+      record(DeckError(card.where, card.keyword, "", "a supported keyword (or --skip-unknown to skip it)",
+                       "unknown keyword '" + card.keyword + "'"));
+      continue;
+    }
+    note_once(deck.report.keywords_read, name);
+    if (!spec->handler) {
+      note_once(deck.report.accepted_without_effect, name);
+      continue;
+    }
+    try {
+      CardReader reader(card, text, deck.model.units);
+      spec->handler(reader, context);
+    } catch (const DeckError& e) {
+      record(e);
+    }
+  }
+
+  const SourceLocation starter_file{text.files.front(), 0};
+  if (!begin_first)
+    errors.insert(errors.begin(), DeckError(cards.empty() ? starter_file : cards.front().where, "/BEGIN", "",
+                                            "/BEGIN as the first keyword of the starter deck",
+                                            cards.empty() ? "no keyword" : "'" + cards.front().keyword + "'"));
+  if (!starter_ended)
+    record(DeckError(starter_file, "/END", "", "/END closing the starter deck", "end of file without /END"));
+  if (engine_seen && !context.run_seen)
+    record(DeckError(SourceLocation{text.files.back(), 0}, "/RUN", "", "a /RUN card in the engine deck",
+                     "an engine deck without /RUN"));
+  if (options.require_engine && !engine_seen)
+    record(DeckError(starter_file, "/RUN", "",
+                     "an engine deck (NAME_0001.rad beside NAME_0000.rad, or engine cards after /END)", "none"));
+  if (!errors.empty()) throw DeckErrors(std::move(errors));
+
+  resolve_model(context);
+  return deck;
+}
+
+}  // namespace crumple

@@ -1,0 +1,85 @@
+// Nodes, functions, materials, properties and parts: indices, duplicates, cross-references, formulations.
+#include <fmt/format.h>
+
+#include "resolve.hpp"
+
+namespace crumple::deck {
+namespace {
+
+bool one_of(int value, std::initializer_list<int> allowed) {
+  for (int a : allowed)
+    if (value == a) return true;
+  return false;
+}
+
+std::string keyword_of(const Property& p) {
+  return fmt::format("/PROP/{}/{}", p.kind == PropertyKind::Shell ? "SHELL" : "SOLID", p.user_id);
+}
+
+// Property flag, else /DEF_SHELL or /DEF_SOLID, else the built-in default (Radioss defaults).
+ResolvedFormulation formulation_of(Resolver& r, const Property& p) {
+  const ShellDefaults& ds = r.model.shell_defaults;
+  const SolidDefaults& dv = r.model.solid_defaults;
+  auto pick = [](int property_value, int global_value, int builtin) {
+    return property_value != 0 ? property_value : global_value != 0 ? global_value : builtin;
+  };
+  ResolvedFormulation f;
+  if (p.kind == PropertyKind::Shell) {
+    f.ishell = pick(p.shell.ishell, ds.ishell, 24);
+    f.ish3n = pick(p.shell.ish3n, ds.ish3n, 2);
+    f.ismstr = pick(p.shell.ismstr, ds.ismstr, 0);
+    f.n_points = p.shell.n_points;
+    if (!one_of(f.ishell, {1, 24}))
+      r.error(p.where, keyword_of(p), "Ishell", "a supported 4-node shell formulation: 1 (Belytschko-Tsay) or 24 (QEPH)",
+              std::to_string(f.ishell));
+    if (!one_of(f.ish3n, {1, 2}))
+      r.error(p.where, keyword_of(p), "Ish3n", "a supported 3-node shell formulation: 1 or 2 (C0 triangle)",
+              std::to_string(f.ish3n));
+  } else {
+    f.isolid = pick(p.solid.isolid, dv.isolid, 1);
+    f.ismstr = pick(p.solid.ismstr, dv.ismstr, 0);
+    if (!one_of(f.isolid, {1, 14, 24}))
+      r.error(p.where, keyword_of(p), "Isolid",
+              "a supported brick formulation: 1 (one point), 14 (fully integrated) or 24 (physically stabilised)",
+              std::to_string(f.isolid));
+  }
+  return f;
+}
+
+}  // namespace
+
+void resolve_definitions(Resolver& r) {
+  Model& m = r.model;
+  // Nodes: duplicates named with both lines.
+  m.index.nodes.reserve(m.nodes.size());
+  for (std::size_t i = 0; i < m.nodes.size(); ++i) {
+    const auto [it, inserted] = m.index.nodes.emplace(m.nodes.user_id[i], static_cast<std::int32_t>(i));
+    if (!inserted) {
+      const auto& first = r.context.node_where[static_cast<std::size_t>(it->second)];
+      r.error(r.context.node_where[i], "/NODE", "node_ID", "a node id not used by another node",
+              fmt::format("node {} already defined at {}:{}", m.nodes.user_id[i], first.file, first.line));
+    }
+  }
+  r.index(m.functions, m.index.functions, "/FUNCT");
+  r.index(m.materials, m.index.materials, "/MAT");
+  r.index(m.properties, m.index.properties, "/PROP");
+  r.index(m.parts, m.index.parts, "/PART");
+
+  m.formulations.clear();
+  for (const Property& p : m.properties) m.formulations.push_back(formulation_of(r, p));
+
+  for (Part& part : m.parts) {
+    const std::string keyword = fmt::format("/PART/{}", part.user_id);
+    part.property = r.find(m.index.properties, part.property_id, part.where, keyword, "prop_ID", "property");
+    part.material = r.find(m.index.materials, part.material_id, part.where, keyword, "mat_ID", "material");
+  }
+  for (Material& mat : m.materials) {
+    if (mat.law != MaterialLaw::Tabulated) continue;
+    const std::string keyword = fmt::format("/MAT/PLAS_TAB/{}", mat.user_id);
+    for (std::size_t k = 0; k < mat.tabulated.function_id.size(); ++k)
+      mat.tabulated.function.push_back(r.find(m.index.functions, mat.tabulated.function_id[k], mat.where, keyword,
+                                              fmt::format("fct_ID{}", k + 1), "function"));
+  }
+}
+
+}  // namespace crumple::deck

@@ -1,0 +1,128 @@
+// Elements: node and part references, repeated nodes, property kind, positive area or volume; then the tables
+// ordered by part and cut into ElementGroups of at most kElementGroupSize elements.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <numeric>
+
+#include "crumple/model/geometry.hpp"
+#include "resolve.hpp"
+
+namespace crumple::deck {
+namespace {
+
+geometry::Point point(const Nodes& nodes, std::int32_t i) {
+  const auto k = static_cast<std::size_t>(i);
+  return {nodes.x[k], nodes.y[k], nodes.z[k]};
+}
+
+// Area (shells) or one-point volume (bricks) of an element given by dense node indices.
+double measure(const Nodes& nodes, ElementKind kind, const std::int32_t* n) {
+  switch (kind) {
+    case ElementKind::Shell4:
+      return geometry::quad_area(point(nodes, n[0]), point(nodes, n[1]), point(nodes, n[2]), point(nodes, n[3]));
+    case ElementKind::Shell3:
+      return geometry::triangle_area(point(nodes, n[0]), point(nodes, n[1]), point(nodes, n[2]));
+    case ElementKind::Brick8: {
+      std::array<geometry::Point, 8> p;
+      for (int a = 0; a < 8; ++a) p[static_cast<std::size_t>(a)] = point(nodes, n[a]);
+      return geometry::brick_volume(p);
+    }
+  }
+  return 0.0;
+}
+
+void resolve_kind(Resolver& r, ElementKind kind) {
+  Model& m = r.model;
+  const RawElements& raw = r.context.raw_elements[static_cast<int>(kind)];
+  const int n = nodes_per_element(kind);
+  const std::string_view name = element_kind_name(kind);
+  const std::size_t count = raw.user_id.size();
+
+  std::vector<std::int32_t> part(count, -1);
+  std::vector<std::int32_t> connectivity(count * static_cast<std::size_t>(n), -1);
+  IdMap seen;
+  seen.reserve(count);
+  for (std::size_t e = 0; e < count; ++e) {
+    const SourceLocation& where = raw.where[e];
+    const std::string keyword = fmt::format("/{}/{}", name, raw.part_id[e]);
+    const auto [first, inserted] = seen.emplace(raw.user_id[e], static_cast<std::int32_t>(e));
+    if (!inserted) {
+      const auto& other = raw.where[static_cast<std::size_t>(first->second)];
+      r.error(where, keyword, "elem_ID", fmt::format("an id not used by another {}", name),
+              fmt::format("{} {} already defined at {}:{}", name, raw.user_id[e], other.file, other.line));
+    }
+    part[e] = r.find(m.index.parts, raw.part_id[e], where, keyword, "part_ID (keyword line)", "part");
+    bool nodes_ok = true;
+    for (int k = 0; k < n; ++k) {
+      const std::int64_t id = raw.node_ids[e * static_cast<std::size_t>(n) + static_cast<std::size_t>(k)];
+      const std::int32_t node = r.find(m.index.nodes, id, where, keyword, fmt::format("node_ID{}", k + 1), "node");
+      connectivity[e * static_cast<std::size_t>(n) + static_cast<std::size_t>(k)] = node;
+      nodes_ok = nodes_ok && node >= 0;
+      for (int j = 0; j < k; ++j)
+        if (raw.node_ids[e * static_cast<std::size_t>(n) + static_cast<std::size_t>(j)] == id) {
+          r.error(where, keyword, fmt::format("node_ID{}", k + 1),
+                  fmt::format("{} distinct nodes in {} {}", n, name, raw.user_id[e]),
+                  fmt::format("node {} repeated (node_ID{} and node_ID{})", id, j + 1, k + 1));
+          nodes_ok = false;
+          break;
+        }
+    }
+    if (part[e] >= 0) {
+      const Part& p = m.parts[static_cast<std::size_t>(part[e])];
+      if (p.property >= 0) {
+        const PropertyKind want = kind == ElementKind::Brick8 ? PropertyKind::Solid : PropertyKind::Shell;
+        if (m.properties[static_cast<std::size_t>(p.property)].kind != want)
+          r.error(where, keyword, "part_ID (keyword line)",
+                  fmt::format("a part with a {} property for {} {}",
+                              want == PropertyKind::Shell ? "shell (/PROP/TYPE1)" : "solid (/PROP/TYPE14)", name,
+                              raw.user_id[e]),
+                  fmt::format("part {} with property {}", p.user_id, p.property_id));
+      }
+    }
+    if (nodes_ok) {
+      const double size = measure(m.nodes, kind, &connectivity[e * static_cast<std::size_t>(n)]);
+      if (!(size > 0.0))
+        r.error(where, keyword, "node_ID1..", kind == ElementKind::Brick8 ? "a brick of positive volume (nodes 1-4 "
+                                                                             "one face, 5-8 the opposite face)"
+                                                                           : "a shell of positive area",
+                fmt::format("{} {} with {} {:.6g}", name, raw.user_id[e],
+                            kind == ElementKind::Brick8 ? "volume" : "area", size));
+    }
+  }
+  if (!r.errors.empty()) return;
+
+  // Order by part (stable: deck order within a part) so that every group is one contiguous range.
+  std::vector<std::size_t> order(count);
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return part[a] < part[b]; });
+  ElementTable& table = m.elements[static_cast<int>(kind)];
+  table.user_id.resize(count);
+  table.part.resize(count);
+  table.connectivity.resize(connectivity.size());
+  IdMap& index = m.index.elements[static_cast<int>(kind)];
+  index.reserve(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::size_t e = order[i];
+    table.user_id[i] = raw.user_id[e];
+    table.part[i] = part[e];
+    std::copy_n(&connectivity[e * static_cast<std::size_t>(n)], n, &table.connectivity[i * static_cast<std::size_t>(n)]);
+    index.emplace(raw.user_id[e], static_cast<std::int32_t>(i));
+  }
+  for (std::size_t begin = 0; begin < count;) {
+    std::size_t end = begin;
+    while (end < count && table.part[end] == table.part[begin] && end - begin < kElementGroupSize) ++end;
+    const Part& p = m.parts[static_cast<std::size_t>(table.part[begin])];
+    m.element_groups.push_back({kind, table.part[begin], p.property, p.material, static_cast<std::int32_t>(begin),
+                                static_cast<std::int32_t>(end)});
+    begin = end;
+  }
+}
+
+}  // namespace
+
+void resolve_elements(Resolver& r) {
+  for (ElementKind kind : {ElementKind::Shell4, ElementKind::Shell3, ElementKind::Brick8}) resolve_kind(r, kind);
+}
+
+}  // namespace crumple::deck

@@ -1,0 +1,176 @@
+// Node groups, shell groups, surfaces and subsets: members resolved to dense indices.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <map>
+
+#include "resolve.hpp"
+
+namespace crumple::deck {
+namespace {
+
+void sort_unique(std::vector<std::int32_t>& v) {
+  std::sort(v.begin(), v.end());
+  v.erase(std::unique(v.begin(), v.end()), v.end());
+}
+
+// Dense indices of the parts listed by a set card.
+std::vector<std::int32_t> parts_of(Resolver& r, const std::vector<std::int64_t>& ids, const SourceLocation& where,
+                                   const std::string& keyword) {
+  std::vector<std::int32_t> parts;
+  for (std::int64_t id : ids)
+    if (const auto p = r.find(r.model.index.parts, id, where, keyword, "part_ID", "part"); p >= 0) parts.push_back(p);
+  return parts;
+}
+
+template <class Visit>
+void for_each_element_of_parts(const Model& m, const std::vector<std::int32_t>& parts, Visit visit) {
+  for (const ElementGroup& g : m.element_groups)
+    if (std::find(parts.begin(), parts.end(), g.part) != parts.end())
+      for (std::int32_t e = g.begin; e < g.end; ++e) visit(g.kind, e);
+}
+
+void resolve_node_group(Resolver& r, std::size_t g, std::vector<int>& state) {
+  Model& m = r.model;
+  NodeGroup& group = m.node_groups[g];
+  if (state[g] == 2) return;
+  const std::string keyword = fmt::format("/GRNOD/{}/{}", group.source == SetSource::Ids     ? "NODE"
+                                                          : group.source == SetSource::Parts ? "PART"
+                                                                                             : "GRNOD",
+                                          group.user_id);
+  if (state[g] == 1) {
+    r.error(group.where, keyword, "grnod_ID", "groups that do not contain themselves", "a cycle of /GRNOD/GRNOD");
+    return;
+  }
+  state[g] = 1;
+  switch (group.source) {
+    case SetSource::Ids:
+      for (std::int64_t id : group.items)
+        if (const auto n = r.find(m.index.nodes, id, group.where, keyword, "node_ID", "node"); n >= 0)
+          group.nodes.push_back(n);
+      break;
+    case SetSource::Parts:
+      for_each_element_of_parts(m, parts_of(r, group.items, group.where, keyword), [&](ElementKind kind, std::int32_t e) {
+        const ElementTable& t = m.elements[static_cast<int>(kind)];
+        const std::int32_t* nodes = t.nodes_of(static_cast<std::size_t>(e));
+        group.nodes.insert(group.nodes.end(), nodes, nodes + nodes_per_element(kind));
+      });
+      break;
+    case SetSource::Groups:
+      for (std::int64_t id : group.items) {
+        const auto child = r.find(m.index.node_groups, id, group.where, keyword, "grnod_ID", "node group");
+        if (child < 0) continue;
+        resolve_node_group(r, static_cast<std::size_t>(child), state);
+        const auto& nodes = m.node_groups[static_cast<std::size_t>(child)].nodes;
+        group.nodes.insert(group.nodes.end(), nodes.begin(), nodes.end());
+      }
+      break;
+  }
+  sort_unique(group.nodes);
+  state[g] = 2;
+}
+
+void resolve_shell_group(Resolver& r, ShellGroup& group) {
+  Model& m = r.model;
+  const std::string keyword =
+      fmt::format("/GRSHEL/{}/{}", group.source == SetSource::Ids ? "SHEL" : "PART", group.user_id);
+  if (group.source == SetSource::Ids) {
+    for (std::int64_t id : group.items)
+      if (const auto e = r.find(m.index.elements[static_cast<int>(ElementKind::Shell4)], id, group.where, keyword,
+                                "shell_ID", "4-node shell");
+          e >= 0)
+        group.elements.push_back(e);
+  } else {
+    for_each_element_of_parts(m, parts_of(r, group.items, group.where, keyword), [&](ElementKind kind, std::int32_t e) {
+      if (kind == ElementKind::Shell4) group.elements.push_back(e);
+    });
+  }
+  sort_unique(group.elements);
+}
+
+using FaceKey = std::array<std::int32_t, 4>;
+FaceKey face_key(std::array<std::int32_t, 4> nodes) {
+  std::sort(nodes.begin(), nodes.end());
+  return nodes;
+}
+
+// Outer faces of bricks (faces used once within the set) and both-sided shell segments of the listed parts.
+void surface_from_parts(Resolver& r, Surface& s) {
+  Model& m = r.model;
+  const std::string keyword = fmt::format("/SURF/PART/{}", s.user_id);
+  const auto parts = parts_of(r, s.parts, s.where, keyword);
+  constexpr int brick_faces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+  std::map<FaceKey, std::pair<int, Segment>> brick_face_use;
+  for_each_element_of_parts(m, parts, [&](ElementKind kind, std::int32_t e) {
+    const std::int32_t* n = m.elements[static_cast<int>(kind)].nodes_of(static_cast<std::size_t>(e));
+    if (kind == ElementKind::Shell4) s.segments.push_back({{n[0], n[1], n[2], n[3]}, {kind, e}});
+    else if (kind == ElementKind::Shell3) s.segments.push_back({{n[0], n[1], n[2], n[2]}, {kind, e}});
+    else
+      for (const auto& f : brick_faces) {
+        const Segment seg{{n[f[0]], n[f[1]], n[f[2]], n[f[3]]}, {kind, e}};
+        auto& use = brick_face_use[face_key(seg.nodes)];
+        if (use.first++ == 0) use.second = seg;
+      }
+  });
+  for (const auto& [key, use] : brick_face_use)
+    if (use.first == 1) s.segments.push_back(use.second);
+  if (s.segments.empty())
+    r.error(s.where, keyword, "part_ID", "parts with elements", "a surface without segments");
+}
+
+void surface_from_segments(Resolver& r, Surface& s) {
+  Model& m = r.model;
+  const std::string keyword = fmt::format("/SURF/SEG/{}", s.user_id);
+  // Owner lookup: a segment belongs to the shell with the same nodes or to the brick with that face.
+  std::map<FaceKey, ElementRef> owners;
+  constexpr int brick_faces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+  for (const ElementGroup& g : m.element_groups)
+    for (std::int32_t e = g.begin; e < g.end; ++e) {
+      const std::int32_t* n = m.elements[static_cast<int>(g.kind)].nodes_of(static_cast<std::size_t>(e));
+      if (g.kind == ElementKind::Shell4) owners.emplace(face_key({n[0], n[1], n[2], n[3]}), ElementRef{g.kind, e});
+      else if (g.kind == ElementKind::Shell3) owners.emplace(face_key({n[0], n[1], n[2], n[2]}), ElementRef{g.kind, e});
+      else
+        for (const auto& f : brick_faces)
+          owners.emplace(face_key({n[f[0]], n[f[1]], n[f[2]], n[f[3]]}), ElementRef{g.kind, e});
+    }
+  for (std::size_t k = 0; k < s.raw_segments.size(); ++k) {
+    Segment seg{{-1, -1, -1, -1}, {ElementKind::Shell4, -1}};
+    bool ok = true;
+    for (std::size_t j = 0; j < 4; ++j) {
+      const std::int64_t id = s.raw_segments[k][j];
+      if (id == 0) {
+        seg.nodes[j] = seg.nodes[2];  // triangle
+        continue;
+      }
+      seg.nodes[j] = r.find(m.index.nodes, id, s.raw_segment_where[k], keyword, fmt::format("node_ID{}", j + 1), "node");
+      ok = ok && seg.nodes[j] >= 0;
+    }
+    if (!ok) continue;
+    if (const auto it = owners.find(face_key(seg.nodes)); it != owners.end()) seg.owner = it->second;
+    s.segments.push_back(seg);
+  }
+}
+
+}  // namespace
+
+void resolve_sets(Resolver& r) {
+  Model& m = r.model;
+  r.index(m.node_groups, m.index.node_groups, "/GRNOD");
+  r.index(m.shell_groups, m.index.shell_groups, "/GRSHEL");
+  r.index(m.surfaces, m.index.surfaces, "/SURF");
+  r.index(m.subsets, m.index.subsets, "/SUBSET");
+  std::vector<int> state(m.node_groups.size(), 0);
+  for (std::size_t g = 0; g < m.node_groups.size(); ++g) resolve_node_group(r, g, state);
+  for (ShellGroup& g : m.shell_groups) resolve_shell_group(r, g);
+  for (Surface& s : m.surfaces) {
+    if (s.source == SetSource::Parts) surface_from_parts(r, s);
+    else surface_from_segments(r, s);
+  }
+  for (const Subset& s : m.subsets)
+    for (std::int64_t child : s.children)
+      r.find(m.index.subsets, child, s.where, fmt::format("/SUBSET/{}", s.user_id), "subset_ID", "subset");
+  for (const Part& p : m.parts)
+    r.find_optional(m.index.subsets, p.subset_id, p.where, fmt::format("/PART/{}", p.user_id), "subset_ID", "subset");
+}
+
+}  // namespace crumple::deck

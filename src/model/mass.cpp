@@ -1,0 +1,69 @@
+#include "crumple/model/mass.hpp"
+
+#include "crumple/model/geometry.hpp"
+
+namespace crumple {
+namespace {
+
+geometry::Point point(const Nodes& nodes, std::int32_t i) {
+  const auto k = static_cast<std::size_t>(i);
+  return {nodes.x[k], nodes.y[k], nodes.z[k]};
+}
+
+const Part& part_of(const Model& model, ElementKind kind, std::size_t element) {
+  return model.parts[static_cast<std::size_t>(model.elements[static_cast<int>(kind)].part[element])];
+}
+
+}  // namespace
+
+double element_mass(const Model& model, ElementKind kind, std::size_t element) {
+  const Part& part = part_of(model, kind, element);
+  const Material& material = model.materials[static_cast<std::size_t>(part.material)];
+  const Property& property = model.properties[static_cast<std::size_t>(part.property)];
+  const std::int32_t* n = model.elements[static_cast<int>(kind)].nodes_of(element);
+  const Nodes& x = model.nodes;
+  switch (kind) {
+    case ElementKind::Shell4:
+      return material.density * property.shell.thickness *
+             geometry::quad_area(point(x, n[0]), point(x, n[1]), point(x, n[2]), point(x, n[3]));
+    case ElementKind::Shell3:
+      return material.density * property.shell.thickness *
+             geometry::triangle_area(point(x, n[0]), point(x, n[1]), point(x, n[2]));
+    case ElementKind::Brick8: {
+      std::array<geometry::Point, 8> p;
+      for (int a = 0; a < 8; ++a) p[static_cast<std::size_t>(a)] = point(x, n[a]);
+      return material.density * geometry::brick_volume(p);
+    }
+  }
+  return 0.0;
+}
+
+void compute_mass(Model& model) {
+  model.nodal_mass.assign(model.nodes.size(), 0.0);
+  model.element_mass = 0.0;
+  model.added_mass = 0.0;
+  for (const ElementGroup& g : model.element_groups) {
+    const int n = nodes_per_element(g.kind);
+    const ElementTable& table = model.elements[static_cast<int>(g.kind)];
+    for (std::int32_t e = g.begin; e < g.end; ++e) {
+      const double mass = element_mass(model, g.kind, static_cast<std::size_t>(e));
+      model.element_mass += mass;
+      const std::int32_t* nodes = table.nodes_of(static_cast<std::size_t>(e));
+      for (int a = 0; a < n; ++a) model.nodal_mass[static_cast<std::size_t>(nodes[a])] += mass / n;
+    }
+  }
+  for (const AddedMass& a : model.added_masses) {
+    const auto& nodes = model.node_groups[static_cast<std::size_t>(a.node_group)].nodes;
+    if (nodes.empty()) continue;
+    // Type 0: the mass is added to each node; type 1: the mass is shared equally by the nodes of the group.
+    const double per_node = a.type == 0 ? a.mass : a.mass / static_cast<double>(nodes.size());
+    for (std::int32_t node : nodes) model.nodal_mass[static_cast<std::size_t>(node)] += per_node;
+    model.added_mass += per_node * static_cast<double>(nodes.size());
+  }
+  for (const RigidBody& b : model.rigid_bodies) {
+    model.nodal_mass[static_cast<std::size_t>(b.main_node)] += b.mass;
+    model.added_mass += b.mass;
+  }
+}
+
+}  // namespace crumple

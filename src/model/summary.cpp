@@ -1,0 +1,72 @@
+#include "crumple/model/summary.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "crumple/model/geometry.hpp"
+
+namespace crumple {
+namespace {
+
+geometry::Point point(const Nodes& nodes, std::int32_t i) {
+  const auto k = static_cast<std::size_t>(i);
+  return {nodes.x[k], nodes.y[k], nodes.z[k]};
+}
+
+}  // namespace
+
+double initial_element_time_step(const Model& model, ElementKind kind, std::size_t element) {
+  const ElementTable& table = model.elements[static_cast<int>(kind)];
+  const Part& part = model.parts[static_cast<std::size_t>(table.part[element])];
+  const Material& mat = model.materials[static_cast<std::size_t>(part.material)];
+  const std::int32_t* n = table.nodes_of(element);
+  const Nodes& x = model.nodes;
+  switch (kind) {
+    case ElementKind::Shell4: {
+      const double c = std::sqrt(mat.young / (mat.density * (1.0 - mat.poisson * mat.poisson)));
+      return geometry::quad_characteristic_length(point(x, n[0]), point(x, n[1]), point(x, n[2]), point(x, n[3])) / c;
+    }
+    case ElementKind::Shell3: {
+      const double c = std::sqrt(mat.young / (mat.density * (1.0 - mat.poisson * mat.poisson)));
+      return geometry::triangle_characteristic_length(point(x, n[0]), point(x, n[1]), point(x, n[2])) / c;
+    }
+    case ElementKind::Brick8: {
+      const double c = std::sqrt((mat.bulk_modulus() + 4.0 / 3.0 * mat.shear_modulus()) / mat.density);
+      std::array<geometry::Point, 8> p;
+      for (int a = 0; a < 8; ++a) p[static_cast<std::size_t>(a)] = point(x, n[a]);
+      return geometry::brick_characteristic_length(p) / c;
+    }
+  }
+  return 0.0;
+}
+
+ControllingElement smallest_element_time_step(const Model& model) {
+  ControllingElement best;
+  double smallest = std::numeric_limits<double>::infinity();
+  for (const ElementGroup& g : model.element_groups)
+    for (std::int32_t e = g.begin; e < g.end; ++e) {
+      const double dt = initial_element_time_step(model, g.kind, static_cast<std::size_t>(e));
+      if (dt < smallest) {
+        smallest = dt;
+        const ElementTable& table = model.elements[static_cast<int>(g.kind)];
+        best = {dt, g.kind, table.user_id[static_cast<std::size_t>(e)],
+                model.parts[static_cast<std::size_t>(g.part)].user_id};
+      }
+    }
+  return best;
+}
+
+BoundingBox bounding_box(const Nodes& nodes) {
+  BoundingBox box;
+  if (nodes.size() == 0) return box;
+  const std::vector<double>* axes[3] = {&nodes.x, &nodes.y, &nodes.z};
+  for (int k = 0; k < 3; ++k) {
+    const auto [lo, hi] = std::minmax_element(axes[k]->begin(), axes[k]->end());
+    box.min[static_cast<std::size_t>(k)] = *lo;
+    box.max[static_cast<std::size_t>(k)] = *hi;
+  }
+  return box;
+}
+
+}  // namespace crumple

@@ -1,0 +1,63 @@
+#include "crumple/output/run_summary.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <fstream>
+#include <stdexcept>
+
+namespace crumple {
+namespace {
+
+// JSON has no NaN or Inf: a non-finite value (an unstable run) is written as null.
+std::string number(double v) { return std::isfinite(v) ? fmt::format("{:.17g}", v) : "null"; }
+
+std::string escaped(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    switch (c) {
+      case '"': out += "\\\""; break;
+      case '\\': out += "\\\\"; break;
+      case '\n': out += "\\n"; break;
+      case '\t': out += "\\t"; break;
+      default:
+        if (static_cast<unsigned char>(c) < 0x20) out += fmt::format("\\u{:04x}", static_cast<unsigned char>(c));
+        else out += c;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+const char* status_name(RunStatus status) {
+  switch (status) {
+    case RunStatus::Normal: return "normal";
+    case RunStatus::Error: return "error";
+    case RunStatus::Stopped: return "stopped";
+  }
+  return "error";
+}
+
+std::string to_json(const RunSummary& s) {
+  const EnergyBalance& e = s.energy;
+  return fmt::format(
+      "{{\n  \"name\": \"{}\",\n  \"cycles\": {},\n  \"time\": {},\n  \"dt\": {},\n  \"energy\": {{\n"
+      "    \"internal\": {},\n    \"kinetic_translational\": {},\n    \"kinetic_rotational\": {},\n"
+      "    \"contact\": {},\n    \"hourglass\": {},\n    \"external_work\": {},\n    \"total\": {},\n"
+      "    \"error_percent\": {}\n  }},\n  \"mass\": {{\n    \"total\": {},\n    \"added\": {}\n  }},\n"
+      "  \"wall_seconds\": {},\n  \"element_cycles_per_second\": {},\n  \"ranks\": {},\n  \"precision\": \"{}\",\n"
+      "  \"status\": \"{}\",\n  \"message\": \"{}\"\n}}\n",
+      escaped(s.name), s.cycles, number(s.time), number(s.dt), number(e.internal), number(e.kinetic_translational),
+      number(e.kinetic_rotational), number(e.contact), number(e.hourglass), number(e.external_work), number(e.total),
+      number(e.error_percent), number(s.mass_total), number(s.mass_added), number(s.wall_seconds),
+      number(s.element_cycles_per_second), s.ranks, escaped(s.precision), status_name(s.status), escaped(s.message));
+}
+
+void write_summary(const RunSummary& summary, const std::filesystem::path& file) {
+  std::ofstream out(file);
+  if (!out) throw std::runtime_error("cannot write " + file.string());
+  out << to_json(summary);
+}
+
+}  // namespace crumple

@@ -1,0 +1,64 @@
+#include <gtest/gtest.h>
+
+#include "crumple/model/summary.hpp"
+#include "deck_files.hpp"
+
+using namespace crumple;
+using test::I;
+using test::R;
+
+TEST(MeshKeywords, PlateDeckReads) {
+  test::TempDir dir;
+  const Deck d = read_deck(test::write_deck(dir));
+  const Model& m = d.model;
+  EXPECT_EQ(m.nodes.size(), 6u);
+  EXPECT_EQ(m.elements[static_cast<int>(ElementKind::Shell4)].size(), 2u);
+  EXPECT_EQ(m.element_groups.size(), 1u);
+  EXPECT_EQ(m.parts.size(), 1u);
+  EXPECT_EQ(m.formulations[0].ishell, 24);
+  // 2 elements of 1e-4 m^2, 1 mm thick, 7800 kg/m^3; a corner node carries a quarter of one element.
+  EXPECT_NEAR(m.total_mass(), 2 * 7800.0 * 1e-3 * 1e-4, 1e-12);
+  EXPECT_NEAR(m.nodal_mass[0], 0.25 * 7800.0 * 1e-3 * 1e-4, 1e-15);
+  EXPECT_NEAR(m.nodal_mass[1], 0.5 * 7800.0 * 1e-3 * 1e-4, 1e-15);
+}
+
+TEST(MeshKeywords, ElementsOrderedByPartInGroupsOfAtMost128) {
+  test::TempDir dir;
+  std::string extra = "/NODE\n";
+  // A strip of 300 shells in part 2 after the plate's part 1.
+  for (int i = 0; i <= 300; ++i)
+    extra += I(100 + i) + R(0.01 * i) + R(1.0) + R(0.0) + "\n" + I(1000 + i) + R(0.01 * i) + R(1.01) + R(0.0) + "\n";
+  extra += "/SHELL/2\n";
+  for (int i = 0; i < 300; ++i) extra += I(500 + i) + I(100 + i) + I(101 + i) + I(1001 + i) + I(1000 + i) + "\n";
+  extra += "/PART/2\nstrip\n" + I(1) + I(1) + "\n";
+  const Deck d = read_deck(test::write_deck(dir, extra));
+  const auto& groups = d.model.element_groups;
+  ASSERT_EQ(groups.size(), 4u);  // 2 | 128 128 44
+  EXPECT_EQ(groups[0].end - groups[0].begin, 2);
+  for (const auto& g : groups) {
+    EXPECT_LE(g.end - g.begin, kElementGroupSize);
+    for (int e = g.begin; e < g.end; ++e)
+      EXPECT_EQ(d.model.elements[0].part[static_cast<std::size_t>(e)], g.part);
+  }
+}
+
+TEST(MeshKeywords, IncludeIsExpandedRelativeToTheIncludingFile) {
+  test::TempDir dir;
+  dir.write("parts/mat.inc", "/MAT/ELAST/1\nsteel\n" + R(7800.0) + "\n" + R(2.1e11) + R(0.3) + "\n");
+  std::string plate = test::plate_cards();
+  plate = plate.substr(0, plate.find("/MAT/ELAST"));
+  dir.write("TEST_0001.rad", test::engine_cards());
+  const auto path = dir.write("TEST_0000.rad", test::begin_card() + plate + "#include parts/mat.inc\n/END\n");
+  const Deck d = read_deck(path);
+  EXPECT_EQ(d.model.materials.size(), 1u);
+  EXPECT_EQ(d.report.files.size(), 3u);
+}
+
+TEST(MeshKeywords, SmallestTimeStepNamesTheElement) {
+  test::TempDir dir;
+  const Deck d = read_deck(test::write_deck(dir));
+  const ControllingElement c = smallest_element_time_step(d.model);
+  const double wave = std::sqrt(2.1e11 / (7800.0 * (1 - 0.09)));
+  EXPECT_NEAR(c.time_step, 0.01 / wave, 1e-12);
+  EXPECT_EQ(c.part_user_id, 1);
+}
