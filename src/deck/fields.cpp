@@ -121,6 +121,14 @@ std::vector<Card> split_cards(const SourceText& text, std::int32_t first_engine_
     }
     cards.back().lines.push_back(&line);
   }
+  // Radioss single-file form: engine cards first, closed by /END/ENGINE, then /BEGIN ... /END.
+  for (std::size_t k = 0; k < cards.size() && !cards[k].engine; ++k) {
+    if (cards[k].path.size() == 1 && cards[k].path[0] == "BEGIN") break;
+    if (cards[k].path.size() == 2 && cards[k].path[0] == "END" && cards[k].path[1] == "ENGINE") {
+      for (std::size_t j = 0; j <= k; ++j) cards[j].engine = true;
+      break;
+    }
+  }
   return cards;
 }
 

@@ -94,6 +94,8 @@ Deck read_deck(const std::filesystem::path& starter, const ReadOptions& options)
   bool starter_ended = false;
   bool engine_seen = false;
   bool begin_first = false;
+  bool starter_started = false;
+  const Card* first_starter_card = nullptr;
   std::vector<std::string> unknown_reported;
   for (std::size_t i = 0; i < cards.size(); ++i) {
     const Card& card = cards[i];
@@ -103,7 +105,11 @@ Deck read_deck(const std::filesystem::path& starter, const ReadOptions& options)
     }
     if (card.engine && is_card(card, {"END", "ENGINE"})) continue;
     if (card.engine) engine_seen = true;
-    if (!card.engine && i == 0 && is_card(card, {"BEGIN"})) begin_first = true;
+    if (!card.engine && !starter_started) {
+      starter_started = true;
+      begin_first = is_card(card, {"BEGIN"});
+      first_starter_card = &card;
+    }
 
     const DeckPart part = card.engine ? DeckPart::Engine : DeckPart::Starter;
     const KeywordSpec* spec = find_spec(card, part);
@@ -143,9 +149,10 @@ Deck read_deck(const std::filesystem::path& starter, const ReadOptions& options)
 
   const SourceLocation starter_file{text.files.front(), 0};
   if (!begin_first)
-    errors.insert(errors.begin(), DeckError(cards.empty() ? starter_file : cards.front().where, "/BEGIN", "",
-                                            "/BEGIN as the first keyword of the starter deck",
-                                            cards.empty() ? "no keyword" : "'" + cards.front().keyword + "'"));
+    errors.insert(errors.begin(),
+                  DeckError(first_starter_card ? first_starter_card->where : starter_file, "/BEGIN", "",
+                            "/BEGIN as the first keyword of the starter deck",
+                            first_starter_card ? "'" + first_starter_card->keyword + "'" : "no starter keyword"));
   if (!starter_ended)
     record(DeckError(starter_file, "/END", "", "/END closing the starter deck", "end of file without /END"));
   if (engine_seen && !context.run_seen)

@@ -28,8 +28,9 @@ struct Card {
   bool engine = false;                  // true for the engine (run control) part
 };
 
-// Splits a source text into cards. Comment lines (# or $) are dropped. The starter part ends at /END; what
-// follows it (the engine part of a single-file deck, or the engine file) is engine part until /END/ENGINE.
+// Splits a source text into cards. Comment lines (# or $) are dropped. The starter part runs from /BEGIN to
+// /END. Engine cards are those of the engine file (from `first_engine_file` on), those after the starter's /END
+// (single-file deck, deck.md) and those before /BEGIN closed by /END/ENGINE (Radioss single-file form).
 // Lines before the first keyword must be blank or comments.
 std::vector<Card> split_cards(const SourceText& text, std::int32_t first_engine_file);
 

@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# Quick start, command 2: build and run the whole test suite through ctest.
+#  1. Release build: every test.
+#  2. Debug build with AddressSanitizer and UndefinedBehaviorSanitizer: unit, bad-input and fuzz tests.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/install-deps.sh
+jobs=$(nproc 2>/dev/null || echo 2)
+
+cmake --preset release
+cmake --build --preset release -j "$jobs"
+ctest --preset release
+
+if [ "${CRUMPLE_SKIP_SANITIZERS:-0}" != "1" ]; then
+  cmake --preset debug
+  cmake --build --preset debug -j "$jobs"
+  ctest --preset debug -L "unit|badinput|fuzz|cli"
+fi
