@@ -3,6 +3,7 @@
 #include <fmt/ostream.h>
 
 #include "app/exit_codes.hpp"
+#include "crumple/solver/solver.hpp"
 
 namespace crumple::app {
 
@@ -12,9 +13,27 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
   read.require_engine = true;
   const Deck deck = read_deck(options.deck, read);
   for (const auto& w : deck.report.warnings) fmt::print(err, "warning: {}\n", w.text());
-  fmt::print(out, "crumple run: deck {} read ({} nodes)\n", options.deck.string(), deck.model.nodes.size());
-  fmt::print(err, "crumple run: the explicit solver is not part of this build yet; nothing was computed\n");
-  return kExitRunFailed;
+
+  std::error_code ec;
+  std::filesystem::create_directories(options.output_directory, ec);
+  if (ec) {
+    fmt::print(err, "crumple: cannot create the output directory {}: {}\n", options.output_directory.string(),
+               ec.message());
+    return kExitBadInput;
+  }
+  SolverOptions solver;
+  solver.name = deck.model.run.run_name.empty() ? deck.model.run_name : deck.model.run.run_name;
+  solver.output_directory = options.output_directory;
+  const RunSummary summary = run_simulation(deck.model, solver, out);
+  write_summary(summary, options.output_directory / (solver.name + ".summary.json"));
+  fmt::print(out, "crumple run {}: {} after {} cycles, time {:.6g}, energy error {:.3g} %, {:.2f} s\n", solver.name,
+             status_name(summary.status), summary.cycles, summary.time, summary.energy.error_percent,
+             summary.wall_seconds);
+  if (summary.status != RunStatus::Normal) {
+    fmt::print(err, "crumple: run ended abnormally: {}\n", summary.message);
+    return kExitRunFailed;
+  }
+  return kExitNormal;
 }
 
 }  // namespace crumple::app

@@ -54,6 +54,6 @@ TEST_P(QaCheck, CountsAndMassMatchTheReference) {
 INSTANTIATE_TEST_SUITE_P(SharedQa, QaCheck,
                          ::testing::Values(QaCase{"ball_on_wall", "BOULE1V4", 149, 113},
                                            QaCase{"box_crush", "BOX1BL", 155, 140}),
-                         [](const auto& info) { return std::string(info.param.folder); });
+                         [](const auto& test_info) { return std::string(test_info.param.folder); });
 
 }  // namespace

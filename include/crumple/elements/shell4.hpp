@@ -1,0 +1,47 @@
+#pragma once
+// 4-node shell, one-point Belytschko-Tsay formulation with hourglass stiffness (docs/theory/shell4.md).
+#include <cstdint>
+
+#include "crumple/materials/hardening.hpp"
+#include "crumple/model/elements.hpp"
+#include "crumple/solver/nodal_state.hpp"
+#include "crumple/solver/shell_state.hpp"
+
+namespace crumple {
+
+// Everything a shell kernel needs about a group that is the same for all its elements.
+struct ShellGroupParameters {
+  materials::Hardening hardening;
+  double young = 0.0, poisson = 0.0, density = 0.0;
+  double shear_factor = 5.0 / 6.0;  // transverse shear correction
+  double hm = 0.01, hf = 0.01, hr = 0.01;  // hourglass stiffness coefficients (membrane, out-of-plane, rotation)
+  int points = 1;                          // through-thickness integration points
+  std::size_t first_point = 0;             // ShellState index of the group's first element's first point
+  const double* zeta = nullptr;            // point heights in units of the thickness, in [-1/2, 1/2]
+  const double* membrane_weight = nullptr; // N = t sum w_i sigma_i (weights sum to 1)
+  const double* bending_weight = nullptr;  // M = t^2 sum b_i sigma_i
+  bool thickness_update = false;           // Ithick = 1
+  double failure_strain = 0.0;             // plastic strain that deletes the element (0: none)
+};
+
+struct GroupStepResult {
+  double min_dt = 1e300;           // smallest critical step of the group's active elements [T]
+  std::int32_t controlling = -1;   // element (ElementTable index) with that step
+  double internal_energy = 0.0;    // increment of the cycle [M L^2 T^-2]
+  double hourglass_energy = 0.0;   // increment of the cycle
+  std::int32_t failed = 0;         // elements deleted during the cycle
+  std::int32_t inverted = -1;      // an element whose area became zero or negative (-1: none)
+};
+
+// Updates the stresses of the group's elements over the step dt (the velocities of `nodes` act over dt), then
+// adds their internal forces and moments (with a minus sign) to the nodal force and moment accumulators.
+GroupStepResult shell4_forces(const ElementTable& table, const ElementGroup& group, const ShellGroupParameters& p,
+                              NodalState& nodes, ShellState& state, double dt);
+
+// Through-thickness rule for n = 1..10 points (docs/theory/shell4.md, eq. S-4): n equally spaced points from the
+// lower to the upper surface; the stress between points is taken linear, so the membrane weights are the
+// integrals of the hat functions and the bending weights the integrals of z times them. n = 1: the mid-plane,
+// membrane only.
+void through_thickness_rule(int n, double* zeta, double* membrane_weight, double* bending_weight);
+
+}  // namespace crumple

@@ -1,0 +1,28 @@
+#pragma once
+// Yield stress of the elasto-plastic laws as a function of equivalent plastic strain and strain rate
+// (docs/theory/materials.md, "Hardening"): law 2 Johnson-Cook, law 36 tabulated; law 1 never yields.
+#include <vector>
+
+#include "crumple/model/functions.hpp"
+#include "crumple/model/materials.hpp"
+
+namespace crumple::materials {
+
+struct Hardening {
+  MaterialLaw law = MaterialLaw::Elastic;
+  const JohnsonCookParameters* johnson_cook = nullptr;
+  const TabulatedHardening* tabulated = nullptr;
+  const std::vector<Function>* functions = nullptr;
+
+  static Hardening of(const Material& material, const std::vector<Function>& functions);
+
+  bool plastic() const { return law != MaterialLaw::Elastic; }
+  // Flow stress sigma_y(eps_p, eps_rate) [stress]; eps_rate is the equivalent strain rate [1/T] (>= 0).
+  double yield(double eps_p, double eps_rate) const;
+  // d sigma_y / d eps_p at fixed rate (for the return mapping's Newton iteration).
+  double slope(double eps_p, double eps_rate) const;
+  // Plastic strain at which the element fails and is deleted (0: never).
+  double failure_strain() const;
+};
+
+}  // namespace crumple::materials

@@ -1,0 +1,30 @@
+#pragma once
+// Plane-stress J2 plasticity with isotropic hardening for shells (docs/theory/materials.md, "Plane stress").
+#include "crumple/materials/hardening.hpp"
+
+namespace crumple::materials {
+
+struct PlaneStressElastic {
+  double young;    // E
+  double poisson;  // nu
+};
+
+struct PlaneStressResult {
+  double plastic_strain_increment;  // equivalent plastic strain increment
+  double thickness_strain;          // through-thickness strain increment (elastic + plastic)
+};
+
+// Updates the stress (sxx, syy, sxy) at one point for the strain increment (dexx, deyy, dgxy = 2 dexy) by an
+// elastic predictor and, when the trial stress is outside the von Mises cylinder, the exact plane-stress
+// return of Simo and Taylor (one scalar equation in the plastic multiplier, solved by safeguarded Newton).
+// eps_p is the point's equivalent plastic strain; rate the equivalent strain rate used by the hardening law.
+PlaneStressResult plane_stress_update(const PlaneStressElastic& elastic, const Hardening& hardening, double dexx,
+                                      double deyy, double dgxy, double rate, double eps_p, double& sxx, double& syy,
+                                      double& sxy);
+
+inline double von_mises_plane_stress(double sxx, double syy, double sxy) {
+  const double v = sxx * sxx - sxx * syy + syy * syy + 3.0 * sxy * sxy;
+  return v > 0.0 ? __builtin_sqrt(v) : 0.0;
+}
+
+}  // namespace crumple::materials

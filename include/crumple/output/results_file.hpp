@@ -1,0 +1,46 @@
+#pragma once
+// NAME.h5: field results at /ANIM/DT times and time histories at /TFILE times (docs/output-format.md).
+// Opened once before the first cycle; frames and history rows are appended outside the hot loops.
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "crumple/model/model.hpp"
+#include "crumple/solver/solver_state.hpp"
+
+namespace crumple {
+
+// One row of global histories: time, energies and per-object values the /TH cards ask for.
+struct HistoryRow {
+  double time = 0.0;
+  double dt = 0.0;
+  double internal = 0.0, kinetic_translational = 0.0, kinetic_rotational = 0.0, hourglass = 0.0, contact = 0.0,
+         external_work = 0.0, total = 0.0;
+  std::vector<double> rigid_wall_force;  // 3 per rigid wall (force of the wall on its nodes)
+  std::vector<double> node_values;       // per /TH/NODE node: x y z vx vy vz (6 values)
+  std::vector<double> rigid_body_values; // per rigid body: x y z vx vy vz wx wy wz (9 values)
+};
+
+class ResultsFile {
+ public:
+  // Creates the file and writes the mesh (coordinates, connectivity, user ids). Throws std::runtime_error.
+  ResultsFile(const std::filesystem::path& path, const Model& model);
+  ~ResultsFile();
+  ResultsFile(const ResultsFile&) = delete;
+  ResultsFile& operator=(const ResultsFile&) = delete;
+
+  // Appends a field frame: displacements, velocities, shell stresses (mid-point), plastic strain, thickness,
+  // deleted flags, at time `time` of cycle `cycle`.
+  void write_frame(double time, long long cycle, const Model& model, const SolverState& state);
+  // Appends a history row.
+  void write_history(const HistoryRow& row);
+  std::size_t frames() const;
+  void close();
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace crumple

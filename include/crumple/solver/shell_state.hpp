@@ -1,0 +1,28 @@
+#pragma once
+// State owned by the 4-node and 3-node shell kernels: stresses at the through-thickness points and the
+// element histories. Point arrays are element-major within a group: point k of element e of group g is at
+// point_offset[g] + (e - group.begin) * points[g] + k.
+#include <cstdint>
+#include <vector>
+
+namespace crumple {
+
+struct ShellState {
+  // Per element group (index into Model::element_groups; unused for other kinds).
+  std::vector<std::size_t> point_offset;  // index of the group's first point
+  std::vector<int> points;                // through-thickness points of the group's elements
+
+  // Per through-thickness point, in the element's co-rotational frame [stress].
+  std::vector<double> sxx, syy, sxy;
+  std::vector<double> eps_p;  // equivalent plastic strain
+
+  // Per element (index in the kind's ElementTable).
+  std::vector<double> qx, qy;           // transverse shear resultants (per unit length) [M T^-2]
+  std::vector<double> thickness;        // current thickness [L]
+  std::vector<double> hourglass;        // 5 hourglass generalized stresses per element (membrane x, y, w, rx, ry)
+  std::vector<double> internal_energy;  // [M L^2 T^-2]
+  std::vector<double> hourglass_energy; // [M L^2 T^-2]
+  std::vector<std::uint8_t> deleted;    // 1 once the element has failed
+};
+
+}  // namespace crumple

@@ -1,0 +1,24 @@
+#pragma once
+// The explicit time loop (docs/theory/time-loop.md): central difference with velocities at half steps.
+#include <filesystem>
+#include <iosfwd>
+#include <string>
+
+#include "crumple/model/model.hpp"
+#include "crumple/output/run_summary.hpp"
+
+namespace crumple {
+
+struct SolverOptions {
+  std::string name;                          // run name: output files are NAME.out, NAME.h5, NAME.summary.json
+  std::filesystem::path output_directory = ".";
+  bool write_results = true;                 // NAME.h5 (field frames and histories)
+  long long max_cycles = -1;                 // stop after this many cycles (tests); -1: no limit
+};
+
+// Runs the model to its end time and writes the listing and results. Returns the summary; a run that ends
+// abnormally (NaN, inverted element, time step below the minimum, /STOP limit) returns status error or stopped
+// with the reason in `message`, after writing the last good state.
+RunSummary run_simulation(const Model& model, const SolverOptions& options, std::ostream& console);
+
+}  // namespace crumple

@@ -1,0 +1,64 @@
+#pragma once
+// Everything the time loop advances: nodal state, element state, rigid bodies, walls and the energy balance.
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "crumple/elements/shell4.hpp"
+#include "crumple/model/model.hpp"
+#include "crumple/solver/nodal_state.hpp"
+#include "crumple/solver/shell_state.hpp"
+
+namespace crumple {
+
+struct EnergyBalanceState {
+  double internal = 0.0;          // element internal energy (stress work)
+  double hourglass = 0.0;         // hourglass energy
+  double kinetic_translational = 0.0;
+  double kinetic_rotational = 0.0;
+  double external_work = 0.0;     // work of loads and of kinematic conditions (rigid walls, imposed motion)
+  double contact = 0.0;
+  double initial_kinetic = 0.0;   // E_kin0
+  // (E_int + E_kin + E_hg + E_contact - E_kin0 - W_ext) / (E_kin0 + W_ext) in percent (docs/theory/energy.md)
+  double error_percent() const;
+};
+
+struct RigidBodyState {
+  std::int32_t main_node = -1;
+  std::vector<std::int32_t> secondary;  // secondary nodes (without the main node)
+  std::vector<double> rx, ry, rz;       // secondary node positions relative to the centre of mass, body frame
+  double mass = 0.0;                     // total mass [M]
+  std::array<double, 9> inertia_body{};  // inertia tensor about the centre of mass in the body frame [M L^2]
+  std::array<double, 9> inertia_added{}; // the card's Jxx..Jxz part of it (not carried by nodal masses)
+  std::array<double, 9> rotation{1, 0, 0, 0, 1, 0, 0, 0, 1};  // body frame -> global
+  std::array<double, 3> velocity{};          // velocity of the centre of mass at t^(n-1/2)
+  std::array<double, 3> momentum_angular{};  // angular momentum about the centre of mass (global) at t^(n-1/2)
+  std::array<double, 3> omega{};             // angular velocity (global) at t^(n-1/2)
+};
+
+struct RigidWallState {
+  std::vector<std::int32_t> nodes;   // candidate secondary nodes
+  std::vector<std::uint8_t> tied;    // tied walls: 1 once the node touched
+  std::array<double, 3> force{};     // force of the wall on the nodes during the last cycle [F]
+  std::array<double, 3> velocity{};  // wall velocity
+  std::array<double, 3> origin{};    // current point M
+};
+
+struct SolverState {
+  NodalState nodes;
+  std::vector<double> x0, y0, z0;                  // initial coordinates
+  std::vector<std::uint8_t> fixed;                  // per node: bit k set when dof k (x y z rx ry rz) is fixed
+  ShellState shells;
+  std::vector<ShellGroupParameters> shell_groups;  // per element group (meaningful for shell groups only)
+  std::vector<double> shell_zeta, shell_membrane_weight, shell_bending_weight;  // through-thickness rules, 11 per n
+  std::vector<RigidBodyState> bodies;
+  std::vector<RigidWallState> walls;
+  std::vector<std::int32_t> rigid_owner;           // per node: rigid body index, -1 when none
+  double time = 0.0;
+  double dt = 0.0;        // step of the last position update dt^(n-1/2) [T]
+  long long cycle = 0;
+  EnergyBalanceState energy;
+  double mass_initial = 0.0;
+};
+
+}  // namespace crumple

@@ -1,0 +1,219 @@
+// Belytschko-Tsay 4-node shell (docs/theory/shell4.md): co-rotational element frame, one quadrature point in
+// the plane, `points` through the thickness, plane-stress material, elastic transverse shear, hourglass
+// stiffness on the five one-point hourglass modes.
+#include <algorithm>
+#include <cmath>
+
+#include "crumple/elements/shell4.hpp"
+#include "crumple/materials/plane_stress.hpp"
+
+namespace crumple {
+namespace {
+
+struct Vec {
+  double x, y, z;
+};
+inline Vec operator-(Vec a, Vec b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+inline Vec operator+(Vec a, Vec b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+inline double dot(Vec a, Vec b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+inline Vec cross(Vec a, Vec b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
+inline Vec scaled(Vec a, double s) { return {a.x * s, a.y * s, a.z * s}; }
+inline Vec unit(Vec a) { return scaled(a, 1.0 / std::sqrt(dot(a, a))); }
+
+}  // namespace
+
+void through_thickness_rule(int n, double* zeta, double* membrane_weight, double* bending_weight) {
+  if (n <= 1) {
+    zeta[0] = 0.0, membrane_weight[0] = 1.0, bending_weight[0] = 0.0;
+    return;
+  }
+  const double h = 1.0 / (n - 1);
+  for (int i = 0; i < n; ++i) {
+    const double z = -0.5 + i * h;
+    zeta[i] = z;
+    // Hat function of point i: 1 at z, 0 at the neighbours. Integrals over the half-hat on each side:
+    // int phi dz = h/2, int z phi dz = h/2 (z -+ h/3).
+    double w = 0.0, b = 0.0;
+    if (i > 0) w += 0.5 * h, b += 0.5 * h * (z - h / 3.0);
+    if (i < n - 1) w += 0.5 * h, b += 0.5 * h * (z + h / 3.0);
+    membrane_weight[i] = w;
+    bending_weight[i] = b;
+  }
+}
+
+GroupStepResult shell4_forces(const ElementTable& table, const ElementGroup& group, const ShellGroupParameters& p,
+                              NodalState& nodes, ShellState& state, double dt) {
+  GroupStepResult result;
+  const double E = p.young, nu = p.poisson, G = E / (2.0 * (1.0 + nu));
+  const double wave_speed = std::sqrt(E / (p.density * (1.0 - nu * nu)));  // plate wave speed
+  const materials::PlaneStressElastic elastic{E, nu};
+  const int np = p.points;
+  constexpr double h[4] = {1.0, -1.0, 1.0, -1.0};  // hourglass base vector of the one-point quadrilateral
+
+  for (std::int32_t e = group.begin; e < group.end; ++e) {
+    const auto ue = static_cast<std::size_t>(e);
+    if (state.deleted[ue]) continue;
+    const std::int32_t* n = table.nodes_of(ue);
+    Vec x[4], v[4], w[4];
+    for (int a = 0; a < 4; ++a) {
+      const auto k = static_cast<std::size_t>(n[a]);
+      x[a] = {nodes.x[k], nodes.y[k], nodes.z[k]};
+      v[a] = {nodes.vx[k], nodes.vy[k], nodes.vz[k]};
+      w[a] = {nodes.wx[k], nodes.wy[k], nodes.wz[k]};
+    }
+    // Co-rotational frame (eq. S-1): normal from the diagonals, e1 along the mean of the sides 1-2 and 4-3.
+    const Vec normal = cross(x[2] - x[0], x[3] - x[1]);
+    const double normal_length = std::sqrt(dot(normal, normal));
+    if (!(normal_length > 0.0)) {
+      result.inverted = e;
+      continue;
+    }
+    const Vec e3 = scaled(normal, 1.0 / normal_length);
+    const Vec side = (x[1] - x[0]) + (x[2] - x[3]);
+    const Vec e1 = unit(side - scaled(e3, dot(side, e3)));
+    const Vec e2 = cross(e3, e1);
+    const Vec centre = scaled(x[0] + x[1] + x[2] + x[3], 0.25);
+    double lx[4], ly[4], vx[4], vy[4], vz[4], tx[4], ty[4];
+    for (int a = 0; a < 4; ++a) {
+      const Vec r = x[a] - centre;
+      lx[a] = dot(r, e1);
+      ly[a] = dot(r, e2);
+      vx[a] = dot(v[a], e1);
+      vy[a] = dot(v[a], e2);
+      vz[a] = dot(v[a], e3);
+      tx[a] = dot(w[a], e1);
+      ty[a] = dot(w[a], e2);
+    }
+    const double area = 0.5 * ((lx[2] - lx[0]) * (ly[3] - ly[1]) - (lx[3] - lx[1]) * (ly[2] - ly[0]));
+    if (!(area > 0.0)) {
+      result.inverted = e;
+      continue;
+    }
+    // One-point gradient operator (eq. S-2).
+    const double inv2a = 0.5 / area;
+    const double b1[4] = {(ly[1] - ly[3]) * inv2a, (ly[2] - ly[0]) * inv2a, (ly[3] - ly[1]) * inv2a,
+                          (ly[0] - ly[2]) * inv2a};
+    const double b2[4] = {(lx[3] - lx[1]) * inv2a, (lx[0] - lx[2]) * inv2a, (lx[1] - lx[3]) * inv2a,
+                          (lx[2] - lx[0]) * inv2a};
+    // Membrane strain rates, curvature rates, transverse shear strain rates (eq. S-3).
+    double dxx = 0, dyy = 0, gxy = 0, kxx = 0, kyy = 0, kxy = 0, gxz = 0, gyz = 0;
+    for (int a = 0; a < 4; ++a) {
+      dxx += b1[a] * vx[a];
+      dyy += b2[a] * vy[a];
+      gxy += b2[a] * vx[a] + b1[a] * vy[a];
+      kxx += b1[a] * ty[a];
+      kyy -= b2[a] * tx[a];
+      kxy += b2[a] * ty[a] - b1[a] * tx[a];
+      gxz += b1[a] * vz[a] + 0.25 * ty[a];
+      gyz += b2[a] * vz[a] - 0.25 * tx[a];
+    }
+    const double t = state.thickness[ue];
+
+    // Stress update at the through-thickness points, resultants per unit length (eq. S-4).
+    double nxx = 0, nyy = 0, nxy = 0, mxx = 0, myy = 0, mxy = 0;
+    double old_n[3] = {0, 0, 0}, old_m[3] = {0, 0, 0};
+    double work = 0.0, thickness_strain = 0.0;
+    bool failed = false;
+    const std::size_t first = p.first_point + static_cast<std::size_t>(e - group.begin) * static_cast<std::size_t>(np);
+    for (int k = 0; k < np; ++k) {
+      const std::size_t ip = first + static_cast<std::size_t>(k);
+      const double z = p.zeta[k] * t;
+      const double wn = p.membrane_weight[k] * t, wm = p.bending_weight[k] * t * t;
+      double sxx = state.sxx[ip], syy = state.syy[ip], sxy = state.sxy[ip];
+      old_n[0] += wn * sxx, old_n[1] += wn * syy, old_n[2] += wn * sxy;
+      old_m[0] += wm * sxx, old_m[1] += wm * syy, old_m[2] += wm * sxy;
+      if (dt > 0.0) {
+        const double ex = (dxx + z * kxx) * dt, ey = (dyy + z * kyy) * dt, g = (gxy + z * kxy) * dt;
+        const double rate = std::sqrt(2.0 / 3.0 * (ex * ex + ey * ey + (ex + ey) * (ex + ey) + 0.5 * g * g)) / dt;
+        const auto r = materials::plane_stress_update(elastic, p.hardening, ex, ey, g, rate, state.eps_p[ip], sxx,
+                                                      syy, sxy);
+        state.eps_p[ip] += r.plastic_strain_increment;
+        thickness_strain += p.membrane_weight[k] * r.thickness_strain;
+        if (p.failure_strain > 0.0 && state.eps_p[ip] >= p.failure_strain) failed = true;
+        state.sxx[ip] = sxx, state.syy[ip] = syy, state.sxy[ip] = sxy;
+      }
+      nxx += wn * sxx, nyy += wn * syy, nxy += wn * sxy;
+      mxx += wm * sxx, myy += wm * syy, mxy += wm * sxy;
+    }
+    // Internal energy: mid-step resultants times the generalized strain increments (eq. S-6).
+    work += 0.5 * dt * ((old_n[0] + nxx) * dxx + (old_n[1] + nyy) * dyy + (old_n[2] + nxy) * gxy +
+                        (old_m[0] + mxx) * kxx + (old_m[1] + myy) * kyy + (old_m[2] + mxy) * kxy);
+    // Transverse shear: elastic, constant through the thickness with the shear correction factor.
+    const double shear_stiffness = p.shear_factor * G * t;
+    const double old_qx = state.qx[ue], old_qy = state.qy[ue];
+    state.qx[ue] += shear_stiffness * gxz * dt;
+    state.qy[ue] += shear_stiffness * gyz * dt;
+    const double qx = state.qx[ue], qy = state.qy[ue];
+    work += 0.5 * (old_qx + qx) * gxz * dt + 0.5 * (old_qy + qy) * gyz * dt;
+    if (p.thickness_update && dt > 0.0) state.thickness[ue] = t * std::exp(thickness_strain);
+
+    // Hourglass stiffness on the five one-point hourglass modes (eq. S-5).
+    double hx = 0, hy = 0;
+    for (int a = 0; a < 4; ++a) hx += h[a] * lx[a], hy += h[a] * ly[a];
+    double gamma[4];
+    double bb = 0.0;
+    for (int a = 0; a < 4; ++a) {
+      gamma[a] = 0.25 * (h[a] - hx * b1[a] - hy * b2[a]);
+      bb += b1[a] * b1[a] + b2[a] * b2[a];
+    }
+    double rates[5] = {0, 0, 0, 0, 0};
+    for (int a = 0; a < 4; ++a) {
+      rates[0] += gamma[a] * vx[a];
+      rates[1] += gamma[a] * vy[a];
+      rates[2] += gamma[a] * vz[a];
+      rates[3] += gamma[a] * tx[a];
+      rates[4] += gamma[a] * ty[a];
+    }
+    // Each coefficient is the fraction of the element's own stiffness for the matching deformation: membrane
+    // E t A |B|^2, bending D A |B|^4 for the transverse mode and D A |B|^2 for the rotation modes (D = E t^3 / 12).
+    const double plate = E * t * t * t / 12.0;
+    const double membrane = p.hm * E * t * area * bb;
+    const double bending = p.hf * plate * area * bb * bb;
+    const double rotation = p.hr * plate * area * bb;
+    const double stiffness[5] = {membrane, membrane, bending, rotation, rotation};
+    double* hq = &state.hourglass[ue * 5];
+    double hourglass_work = 0.0;
+    for (int m = 0; m < 5; ++m) {
+      const double old = hq[m];
+      hq[m] += stiffness[m] * rates[m] * dt;
+      hourglass_work += 0.5 * (old + hq[m]) * rates[m] * dt;
+    }
+
+    // Nodal forces and moments in the element frame (eq. S-5, S-7), back to global, subtracted.
+    for (int a = 0; a < 4; ++a) {
+      const double fx = area * (b1[a] * nxx + b2[a] * nxy) + gamma[a] * hq[0];
+      const double fy = area * (b2[a] * nyy + b1[a] * nxy) + gamma[a] * hq[1];
+      const double fz = area * (b1[a] * qx + b2[a] * qy) + gamma[a] * hq[2];
+      const double mx = area * (-b2[a] * myy - b1[a] * mxy - 0.25 * qy) + gamma[a] * hq[3];
+      const double my = area * (b1[a] * mxx + b2[a] * mxy + 0.25 * qx) + gamma[a] * hq[4];
+      const auto k = static_cast<std::size_t>(n[a]);
+      nodes.fx[k] -= fx * e1.x + fy * e2.x + fz * e3.x;
+      nodes.fy[k] -= fx * e1.y + fy * e2.y + fz * e3.y;
+      nodes.fz[k] -= fx * e1.z + fy * e2.z + fz * e3.z;
+      nodes.mx[k] -= mx * e1.x + my * e2.x;
+      nodes.my[k] -= mx * e1.y + my * e2.y;
+      nodes.mz[k] -= mx * e1.z + my * e2.z;
+    }
+    const double internal = work * area;
+    state.internal_energy[ue] += internal;
+    state.hourglass_energy[ue] += hourglass_work;
+    result.internal_energy += internal;
+    result.hourglass_energy += hourglass_work;
+
+    // Critical step: characteristic length (area over the longest side) over the plate wave speed (eq. T-1).
+    double longest = 0.0;
+    for (int a = 0; a < 4; ++a) {
+      const double sx = lx[(a + 1) % 4] - lx[a], sy = ly[(a + 1) % 4] - ly[a];
+      longest = std::max(longest, sx * sx + sy * sy);
+    }
+    const double step = area / std::sqrt(longest) / wave_speed;
+    if (step < result.min_dt) result.min_dt = step, result.controlling = e;
+    if (failed) {
+      state.deleted[ue] = 1;
+      ++result.failed;
+    }
+  }
+  return result;
+}
+
+}  // namespace crumple

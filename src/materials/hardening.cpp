@@ -1,0 +1,108 @@
+#include "crumple/materials/hardening.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace crumple::materials {
+namespace {
+
+// Johnson-Cook without temperature (docs/theory/materials.md, eq. JC):
+//   sigma_y = (a + b eps_p^n) (1 + c ln(max(eps_rate / eps_dot_0, 1))), capped by sig_max0 when given.
+double jc_rate_factor(const JohnsonCookParameters& p, double rate) {
+  if (p.c <= 0.0 || p.eps_dot_0 <= 0.0 || rate <= p.eps_dot_0) return 1.0;
+  return 1.0 + p.c * std::log(rate / p.eps_dot_0);
+}
+
+double jc_static(const JohnsonCookParameters& p, double eps_p) {
+  return p.a + (eps_p > 0.0 ? p.b * std::pow(eps_p, p.n) : 0.0);
+}
+
+// The cap follows the strain rate too unless ICC = 2 (ICC 0 is 1): sigma_max = sig_max0 (1 + c ln(...)).
+double cap(const JohnsonCookParameters& p, double rate_factor) {
+  return p.icc == 2 ? p.sig_max0 : p.sig_max0 * rate_factor;
+}
+double capped(const JohnsonCookParameters& p, double sigma, double rate_factor) {
+  return p.sig_max0 > 0.0 ? std::min(sigma, cap(p, rate_factor)) : sigma;
+}
+
+// Law 36: curve k gives sigma_y(eps_p) at strain rate rate_k; linear interpolation between the two curves that
+// bracket the current rate, the first or last curve outside their range.
+template <class Eval>
+double interpolate_rates(const TabulatedHardening& t, double rate, Eval eval) {
+  const std::size_t n = t.function.size();
+  if (n == 1 || rate <= t.strain_rate.front()) return eval(0);
+  if (rate >= t.strain_rate.back()) return eval(n - 1);
+  std::size_t k = 1;
+  while (k < n - 1 && t.strain_rate[k] < rate) ++k;
+  const double w = (rate - t.strain_rate[k - 1]) / (t.strain_rate[k] - t.strain_rate[k - 1]);
+  return (1.0 - w) * eval(k - 1) + w * eval(k);
+}
+
+}  // namespace
+
+Hardening Hardening::of(const Material& material, const std::vector<Function>& functions_of_model) {
+  Hardening h;
+  h.law = material.law;
+  h.johnson_cook = &material.johnson_cook;
+  h.tabulated = &material.tabulated;
+  h.functions = &functions_of_model;
+  return h;
+}
+
+double Hardening::yield(double eps_p, double eps_rate) const {
+  switch (law) {
+    case MaterialLaw::Elastic: return std::numeric_limits<double>::infinity();
+    case MaterialLaw::JohnsonCook: {
+      const auto& p = *johnson_cook;
+      const double factor = jc_rate_factor(p, eps_rate);
+      return capped(p, jc_static(p, eps_p) * factor, factor);
+    }
+    case MaterialLaw::Tabulated: {
+      const auto& t = *tabulated;
+      return interpolate_rates(t, eps_rate, [&](std::size_t k) {
+        const Function& f = (*functions)[static_cast<std::size_t>(t.function[k])];
+        return t.scale[k] * f(eps_p);
+      });
+    }
+  }
+  return std::numeric_limits<double>::infinity();
+}
+
+double Hardening::slope(double eps_p, double eps_rate) const {
+  switch (law) {
+    case MaterialLaw::Elastic: return 0.0;
+    case MaterialLaw::JohnsonCook: {
+      const auto& p = *johnson_cook;
+      const double factor = jc_rate_factor(p, eps_rate);
+      if (p.sig_max0 > 0.0 && jc_static(p, eps_p) * factor >= cap(p, factor)) return 0.0;
+      // d/d eps (b eps^n) = b n eps^(n-1), unbounded at 0 for n < 1: evaluate a little above zero.
+      const double e = std::max(eps_p, 1e-6);
+      return p.b * p.n * std::pow(e, p.n - 1.0) * factor;
+    }
+    case MaterialLaw::Tabulated: {
+      const auto& t = *tabulated;
+      return interpolate_rates(t, eps_rate, [&](std::size_t k) {
+        const Function& f = (*functions)[static_cast<std::size_t>(t.function[k])];
+        // Slope of the segment that holds eps_p (0 beyond the last point: constant extrapolation).
+        const auto& x = f.x;
+        if (x.size() < 2 || eps_p >= x.back()) return 0.0;
+        std::size_t i = 1;
+        while (i < x.size() - 1 && x[i] <= eps_p) ++i;
+        return t.scale[k] * (f.y[i] - f.y[i - 1]) / (x[i] - x[i - 1]);
+      });
+    }
+  }
+  return 0.0;
+}
+
+double Hardening::failure_strain() const {
+  switch (law) {
+    case MaterialLaw::Elastic: return 0.0;
+    case MaterialLaw::JohnsonCook: return johnson_cook->eps_p_max;
+    case MaterialLaw::Tabulated: return tabulated->eps_p_max;
+  }
+  return 0.0;
+}
+
+}  // namespace crumple::materials

@@ -1,0 +1,32 @@
+#pragma once
+// Internal to the solver: the steps of one cycle, each a plain function over the solver state.
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "crumple/model/model.hpp"
+#include "crumple/solver/solver_state.hpp"
+
+namespace crumple::solver {
+
+SolverState make_state(const Model& model, std::vector<std::string>& notes);
+void setup_rigid_bodies(const Model& model, SolverState& state);
+void setup_rigid_walls(const Model& model, SolverState& state);
+
+// Translational and rotational kinetic energy of the current half-step velocities.
+std::pair<double, double> kinetic_energy(const SolverState& state);
+
+// Adds /CLOAD and /GRAV forces at time t; returns nothing (their work is counted with the velocity update).
+void add_external_forces(const Model& model, SolverState& state, double time);
+
+// Moves the secondary nodes' forces and moments to their rigid body's centre (after the element forces).
+void gather_rigid_body_forces(SolverState& state);
+// Rigid bodies after the free velocity update: new momentum, rotation and the secondary nodes' velocities.
+void update_rigid_bodies(SolverState& state, double dt_average, double dt_next);
+
+// Kinematic conditions on the half-step velocities v^(n+1/2): fixed dofs, imposed velocity and displacement at
+// time t_next = t^(n+1) (the position the step reaches), then rigid walls.
+void impose_kinematics(const Model& model, SolverState& state, double time, double dt_next);
+void apply_rigid_walls(const Model& model, SolverState& state, double dt_average, double dt_next);
+
+}  // namespace crumple::solver

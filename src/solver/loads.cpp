@@ -1,0 +1,90 @@
+// External forces (/CLOAD, /GRAV) and kinematic conditions (/BCS, /IMPVEL, /IMPDISP) (docs/theory/loads.md).
+#include "solver/internal.hpp"
+
+namespace crumple::solver {
+namespace {
+
+// Value of a time function card: scale_y * f(t / scale_x).
+double curve(const Model& m, std::int32_t function, double scale_x, double scale_y, double t) {
+  return scale_y * m.functions[static_cast<std::size_t>(function)](t / scale_x);
+}
+
+std::vector<double>* translation(NodalState& n, Dof dof) {
+  switch (dof) {
+    case Dof::X: return &n.vx;
+    case Dof::Y: return &n.vy;
+    case Dof::Z: return &n.vz;
+    case Dof::XX: return &n.wx;
+    case Dof::YY: return &n.wy;
+    case Dof::ZZ: return &n.wz;
+  }
+  return &n.vx;
+}
+
+std::vector<double>* force(NodalState& n, Dof dof) {
+  switch (dof) {
+    case Dof::X: return &n.fx;
+    case Dof::Y: return &n.fy;
+    case Dof::Z: return &n.fz;
+    case Dof::XX: return &n.mx;
+    case Dof::YY: return &n.my;
+    case Dof::ZZ: return &n.mz;
+  }
+  return &n.fx;
+}
+
+}  // namespace
+
+void add_external_forces(const Model& m, SolverState& s, double t) {
+  for (const ImposedMotion& im : m.imposed) {
+    if (im.kind != ImposedKind::Force || t < im.t_start || t > im.t_stop) continue;
+    const double value = curve(m, im.function, im.scale_x, im.scale_y, t);
+    auto& f = *force(s.nodes, im.dof);
+    for (std::int32_t node : m.node_groups[static_cast<std::size_t>(im.node_group)].nodes)
+      f[static_cast<std::size_t>(node)] += value;
+  }
+  for (const Gravity& g : m.gravity) {
+    const double acceleration = curve(m, g.function, g.scale_x, g.scale_y, t);
+    auto& f = *force(s.nodes, g.dof);
+    for (std::int32_t node : m.node_groups[static_cast<std::size_t>(g.node_group)].nodes)
+      f[static_cast<std::size_t>(node)] += s.nodes.mass[static_cast<std::size_t>(node)] * acceleration;
+  }
+}
+
+void impose_kinematics(const Model& m, SolverState& s, double t, double dt_next) {
+  NodalState& n = s.nodes;
+  for (std::size_t k = 0; k < n.size(); ++k) {
+    const std::uint8_t mask = s.fixed[k];
+    if (mask == 0) continue;
+    if (mask & 1u) n.vx[k] = 0.0;
+    if (mask & 2u) n.vy[k] = 0.0;
+    if (mask & 4u) n.vz[k] = 0.0;
+    if (mask & 8u) n.wx[k] = 0.0;
+    if (mask & 16u) n.wy[k] = 0.0;
+    if (mask & 32u) n.wz[k] = 0.0;
+  }
+  const double t_half = t + 0.5 * dt_next;
+  for (const ImposedMotion& im : m.imposed) {
+    if (im.kind == ImposedKind::Force) continue;
+    auto& v = *translation(n, im.dof);
+    const auto& nodes = m.node_groups[static_cast<std::size_t>(im.node_group)].nodes;
+    if (im.kind == ImposedKind::Velocity) {
+      if (t_half < im.t_start || t_half > im.t_stop) continue;
+      const double value = curve(m, im.function, im.scale_x, im.scale_y, t_half);
+      for (std::int32_t node : nodes) v[static_cast<std::size_t>(node)] = value;
+    } else {
+      // Imposed displacement: the velocity that brings the node to u(t + dt) during the step.
+      if (t + dt_next < im.t_start || t > im.t_stop || dt_next <= 0.0) continue;
+      const double target = curve(m, im.function, im.scale_x, im.scale_y, t + dt_next);
+      const std::vector<double>* x = im.dof == Dof::X ? &n.x : im.dof == Dof::Y ? &n.y : &n.z;
+      const std::vector<double>* x0 = im.dof == Dof::X ? &s.x0 : im.dof == Dof::Y ? &s.y0 : &s.z0;
+      if (im.dof == Dof::XX || im.dof == Dof::YY || im.dof == Dof::ZZ) continue;  // rotations: rejected by reader
+      for (std::int32_t node : nodes) {
+        const auto k = static_cast<std::size_t>(node);
+        v[k] = (target - ((*x)[k] - (*x0)[k])) / dt_next;
+      }
+    }
+  }
+}
+
+}  // namespace crumple::solver

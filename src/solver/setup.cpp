@@ -1,0 +1,125 @@
+// Builds the solver state from the model once, before the first cycle (docs/theory/time-loop.md, "Start").
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "crumple/model/geometry.hpp"
+#include "crumple/model/mass.hpp"
+#include "solver/internal.hpp"
+
+namespace crumple::solver {
+namespace {
+
+constexpr double kDefaultHourglass = 0.01;  // Radioss default hm, hf, hr for 4-node shells
+
+void setup_nodes(const Model& m, SolverState& s) {
+  const std::size_t n = m.nodes.size();
+  s.nodes.resize(n);
+  s.nodes.x = m.nodes.x, s.nodes.y = m.nodes.y, s.nodes.z = m.nodes.z;
+  s.x0 = m.nodes.x, s.y0 = m.nodes.y, s.z0 = m.nodes.z;
+  s.nodes.mass = m.nodal_mass;
+  s.fixed.assign(n, 0);
+  s.rigid_owner.assign(n, -1);
+  for (const InitialVelocity& iv : m.initial_velocities)
+    for (std::int32_t node : m.node_groups[static_cast<std::size_t>(iv.node_group)].nodes) {
+      const auto k = static_cast<std::size_t>(node);
+      s.nodes.vx[k] = iv.velocity[0], s.nodes.vy[k] = iv.velocity[1], s.nodes.vz[k] = iv.velocity[2];
+    }
+  for (const BoundaryCondition& bc : m.boundary_conditions) {
+    std::uint8_t mask = 0;
+    for (int d = 0; d < 3; ++d) {
+      if (bc.fixed_translation[static_cast<std::size_t>(d)]) mask |= static_cast<std::uint8_t>(1u << d);
+      if (bc.fixed_rotation[static_cast<std::size_t>(d)]) mask |= static_cast<std::uint8_t>(1u << (d + 3));
+    }
+    for (std::int32_t node : m.node_groups[static_cast<std::size_t>(bc.node_group)].nodes)
+      s.fixed[static_cast<std::size_t>(node)] |= mask;
+  }
+}
+
+void setup_shells(const Model& m, SolverState& s, std::vector<std::string>& notes) {
+  const ElementTable& table = m.elements[static_cast<int>(ElementKind::Shell4)];
+  const std::size_t n = table.size();
+  ShellState& st = s.shells;
+  st.qx.assign(n, 0.0), st.qy.assign(n, 0.0), st.thickness.assign(n, 0.0), st.hourglass.assign(5 * n, 0.0);
+  st.internal_energy.assign(n, 0.0), st.hourglass_energy.assign(n, 0.0), st.deleted.assign(n, 0);
+  s.shell_groups.assign(m.element_groups.size(), ShellGroupParameters{});
+  st.point_offset.assign(m.element_groups.size(), 0);
+  st.points.assign(m.element_groups.size(), 0);
+  s.shell_zeta.assign(11 * 11, 0.0);
+  s.shell_membrane_weight.assign(11 * 11, 0.0);
+  s.shell_bending_weight.assign(11 * 11, 0.0);
+  for (int np = 1; np <= 10; ++np) {
+    const auto at = static_cast<std::size_t>(np) * 11;
+    through_thickness_rule(np, &s.shell_zeta[at], &s.shell_membrane_weight[at], &s.shell_bending_weight[at]);
+  }
+
+  std::size_t total_points = 0;
+  bool global_plasticity_noted = false, qeph_noted = false;
+  for (std::size_t g = 0; g < m.element_groups.size(); ++g) {
+    const ElementGroup& group = m.element_groups[g];
+    if (group.kind != ElementKind::Shell4) continue;
+    const Property& prop = m.properties[static_cast<std::size_t>(group.property)];
+    const ResolvedFormulation& f = m.formulations[static_cast<std::size_t>(group.property)];
+    const Material& mat = m.materials[static_cast<std::size_t>(group.material)];
+    ShellGroupParameters& p = s.shell_groups[g];
+    p.hardening = materials::Hardening::of(mat, m.functions);
+    p.young = mat.young, p.poisson = mat.poisson, p.density = mat.density;
+    p.shear_factor = prop.shell.ashear > 0.0 ? prop.shell.ashear : 5.0 / 6.0;
+    p.hm = prop.shell.hm > 0.0 ? prop.shell.hm : kDefaultHourglass;
+    p.hf = prop.shell.hf > 0.0 ? prop.shell.hf : kDefaultHourglass;
+    p.hr = prop.shell.hr > 0.0 ? prop.shell.hr : kDefaultHourglass;
+    int np = f.n_points;
+    if (np == 0) {
+      // N = 0 asks for stress-resultant (global) plasticity; until it exists, 5 points integrate it.
+      np = 5;
+      if (!global_plasticity_noted)
+        notes.push_back("shell property N = 0 (global plasticity) is integrated with 5 points through the thickness");
+      global_plasticity_noted = true;
+    }
+    if (f.ishell == 24 && !qeph_noted) {
+      notes.push_back("Ishell 24 (QEPH) runs with the Belytschko-Tsay kernel and hourglass stiffness");
+      qeph_noted = true;
+    }
+    p.points = np;
+    p.zeta = &s.shell_zeta[static_cast<std::size_t>(np) * 11];
+    p.membrane_weight = &s.shell_membrane_weight[static_cast<std::size_t>(np) * 11];
+    p.bending_weight = &s.shell_bending_weight[static_cast<std::size_t>(np) * 11];
+    const int ithick = prop.shell.ithick != 0 ? prop.shell.ithick : m.shell_defaults.ithick;
+    p.thickness_update = ithick == 1;
+    p.failure_strain = p.hardening.failure_strain() >= 1e20 ? 0.0 : p.hardening.failure_strain();
+    p.first_point = total_points;
+    st.point_offset[g] = total_points;
+    st.points[g] = np;
+    total_points += static_cast<std::size_t>(group.end - group.begin) * static_cast<std::size_t>(np);
+    for (std::int32_t e = group.begin; e < group.end; ++e) {
+      st.thickness[static_cast<std::size_t>(e)] = prop.shell.thickness;
+      // Lumped rotational inertia of the shell's nodes: m/4 (t^2 + A)/12 (docs/theory/shell4.md, eq. S-8),
+      // large enough that rotations never control the time step.
+      const double mass = element_mass(m, ElementKind::Shell4, static_cast<std::size_t>(e));
+      const std::int32_t* nodes = table.nodes_of(static_cast<std::size_t>(e));
+      const double area = mass / (mat.density * prop.shell.thickness);
+      for (int a = 0; a < 4; ++a)
+        s.nodes.inertia[static_cast<std::size_t>(nodes[a])] +=
+            0.25 * mass * (prop.shell.thickness * prop.shell.thickness + area) / 12.0;
+    }
+  }
+  st.sxx.assign(total_points, 0.0), st.syy.assign(total_points, 0.0), st.sxy.assign(total_points, 0.0);
+  st.eps_p.assign(total_points, 0.0);
+}
+
+}  // namespace
+
+SolverState make_state(const Model& m, std::vector<std::string>& notes) {
+  SolverState s;
+  setup_nodes(m, s);
+  setup_shells(m, s, notes);
+  setup_rigid_bodies(m, s);
+  setup_rigid_walls(m, s);
+  s.mass_initial = 0.0;
+  for (double mass : s.nodes.mass) s.mass_initial += mass;
+  s.energy.initial_kinetic = kinetic_energy(s).first;
+  return s;
+}
+
+}  // namespace crumple::solver

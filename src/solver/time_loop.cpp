@@ -1,0 +1,275 @@
+// The explicit time loop (docs/theory/time-loop.md). One cycle:
+//   1. element internal forces at x^n with the stress update over dt^(n-1/2), element critical steps
+//   2. external forces at t^n, rigid-body force gathering
+//   3. dt^(n+1/2) = scale * min critical step
+//   4. v^(n+1/2) = v^(n-1/2) + dt^n a^n with dt^n = (dt^(n-1/2) + dt^(n+1/2)) / 2   (central difference)
+//   5. rigid bodies, fixed dofs, imposed velocity and displacement, rigid walls on v^(n+1/2)
+//   6. x^(n+1) = x^n + dt^(n+1/2) v^(n+1/2)
+#include <fmt/format.h>
+#include <fmt/ostream.h>
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <optional>
+
+#include "crumple/output/listing.hpp"
+#include "crumple/output/results_file.hpp"
+#include "crumple/solver/solver.hpp"
+#include "solver/internal.hpp"
+
+namespace crumple {
+namespace {
+
+struct Scratch {  // velocities before the update and after the free update, for the work of constraints
+  std::vector<double> v_old[6], v_free[6];
+  explicit Scratch(std::size_t n) {
+    for (auto& v : v_old) v.assign(n, 0.0);
+    for (auto& v : v_free) v.assign(n, 0.0);
+  }
+};
+
+std::array<std::vector<double>*, 6> velocities(NodalState& n) { return {&n.vx, &n.vy, &n.vz, &n.wx, &n.wy, &n.wz}; }
+
+// Power of the /CLOAD and /GRAV loads on the mid-step velocities, times the step.
+double load_work(const Model& m, const SolverState& s, const Scratch& scratch, double t, double dt_average) {
+  double work = 0.0;
+  const NodalState& n = s.nodes;
+  const std::vector<double>* now[6] = {&n.vx, &n.vy, &n.vz, &n.wx, &n.wy, &n.wz};
+  auto mean_velocity = [&](Dof dof, std::size_t k) {
+    const auto d = static_cast<std::size_t>(dof);
+    return 0.5 * ((*now[d])[k] + scratch.v_old[d][k]);
+  };
+  for (const ImposedMotion& im : m.imposed) {
+    if (im.kind != ImposedKind::Force || t < im.t_start || t > im.t_stop) continue;
+    const double value = im.scale_y * m.functions[static_cast<std::size_t>(im.function)](t / im.scale_x);
+    for (std::int32_t node : m.node_groups[static_cast<std::size_t>(im.node_group)].nodes)
+      work += value * mean_velocity(im.dof, static_cast<std::size_t>(node)) * dt_average;
+  }
+  for (const Gravity& g : m.gravity) {
+    const double a = g.scale_y * m.functions[static_cast<std::size_t>(g.function)](t / g.scale_x);
+    for (std::int32_t node : m.node_groups[static_cast<std::size_t>(g.node_group)].nodes) {
+      const auto k = static_cast<std::size_t>(node);
+      work += n.mass[k] * a * mean_velocity(g.dof, k) * dt_average;
+    }
+  }
+  return work;
+}
+
+// Work of the kinematic conditions: the impulse that changed the free velocity, on the mid-step velocity.
+double constraint_work(SolverState& s, const Scratch& scratch) {
+  double work = 0.0;
+  NodalState& n = s.nodes;
+  auto v = velocities(n);
+  for (std::size_t k = 0; k < n.size(); ++k) {
+    for (std::size_t d = 0; d < 3; ++d) {
+      const double dv = (*v[d])[k] - scratch.v_free[d][k];
+      if (dv != 0.0) work += n.mass[k] * dv * 0.5 * ((*v[d])[k] + scratch.v_old[d][k]);
+    }
+    if (n.inertia[k] > 0.0)
+      for (std::size_t d = 3; d < 6; ++d) {
+        const double dv = (*v[d])[k] - scratch.v_free[d][k];
+        if (dv != 0.0) work += n.inertia[k] * dv * 0.5 * ((*v[d])[k] + scratch.v_old[d][k]);
+      }
+  }
+  return work;
+}
+
+}  // namespace
+
+RunSummary run_simulation(const Model& m, const SolverOptions& options, std::ostream& console) {
+  const auto started = std::chrono::steady_clock::now();
+  std::vector<std::string> notes;
+  SolverState s = solver::make_state(m, notes);
+  NodalState& n = s.nodes;
+  const RunControl& rc = m.run;
+  const std::string name = options.name.empty() ? m.run_name : options.name;
+  Listing listing(options.output_directory / (name + ".out"));
+  std::optional<ResultsFile> results;
+  if (options.write_results) results.emplace(options.output_directory / (name + ".h5"), m);
+
+  listing.line(fmt::format("Crumple explicit run {}  ({})", name, m.title));
+  listing.line(fmt::format("nodes {}  4-node shells {}  element groups {}  end time {:g}", m.nodes.size(),
+                           m.elements[0].size(), m.element_groups.size(), rc.end_time));
+  for (const auto& note : notes) listing.line("NOTE: " + note);
+  for (const auto& note : notes) fmt::print(console, "note: {}\n", note);
+  listing.table_header();
+
+  const double scale = rc.dt.scale > 0.0 ? rc.dt.scale : 0.9;
+  const double dt_minimum = rc.dt.minimum;
+  const long long print_every = rc.print_every != 0 ? std::llabs(rc.print_every) : 100;
+  double next_frame = rc.anim_interval > 0.0 ? rc.anim_start : std::numeric_limits<double>::infinity();
+  double next_history = rc.history_interval > 0.0 ? 0.0 : std::numeric_limits<double>::infinity();
+  std::size_t element_count = 0;
+  for (const auto& table : m.elements) element_count += table.size();
+
+  Scratch scratch(n.size());
+  RunSummary summary;
+  summary.name = name;
+  std::string controlling = "-";
+  double dt_next = 0.0;
+
+  auto record = [&](bool to_listing) {
+    const auto [kt, kr] = solver::kinetic_energy(s);
+    s.energy.kinetic_translational = kt;
+    s.energy.kinetic_rotational = kr;
+    double total_mass = 0.0;
+    for (double mass : n.mass) total_mass += mass;
+    if (to_listing) {
+      ListingRow row{s.cycle, s.time, dt_next, controlling, s.energy.error_percent(), s.energy.internal, kt, kr,
+                     s.energy.external_work, s.energy.hourglass, s.energy.contact,
+                     (total_mass - s.mass_initial) / s.mass_initial, total_mass, 0.0};
+      listing.row(row);
+    }
+  };
+  auto write_history = [&]() {
+    if (!results) return;
+    HistoryRow row;
+    row.time = s.time, row.dt = dt_next;
+    row.internal = s.energy.internal, row.kinetic_translational = s.energy.kinetic_translational;
+    row.kinetic_rotational = s.energy.kinetic_rotational, row.hourglass = s.energy.hourglass;
+    row.contact = s.energy.contact, row.external_work = s.energy.external_work;
+    row.total = row.internal + row.kinetic_translational + row.kinetic_rotational + row.hourglass + row.contact;
+    for (const auto& w : s.walls) row.rigid_wall_force.insert(row.rigid_wall_force.end(), w.force.begin(), w.force.end());
+    for (const auto& b : s.bodies) {
+      const auto k = static_cast<std::size_t>(b.main_node);
+      for (double v : {n.x[k], n.y[k], n.z[k], n.vx[k], n.vy[k], n.vz[k], b.omega[0], b.omega[1], b.omega[2]})
+        row.rigid_body_values.push_back(v);
+    }
+    results->write_history(row);
+  };
+
+  RunStatus status = RunStatus::Normal;
+  std::string message = "normal termination";
+  for (;;) {
+    // 1. Internal forces and critical steps of the elements.
+    n.clear_forces();
+    double dt_elements = std::numeric_limits<double>::infinity();
+    for (std::size_t g = 0; g < m.element_groups.size(); ++g) {
+      const ElementGroup& group = m.element_groups[g];
+      if (group.kind != ElementKind::Shell4) continue;
+      const GroupStepResult r = shell4_forces(m.elements[0], group, s.shell_groups[g], n, s.shells, s.dt);
+      s.energy.internal += r.internal_energy;
+      s.energy.hourglass += r.hourglass_energy;
+      if (r.inverted >= 0) {
+        status = RunStatus::Error;
+        message = fmt::format("shell {} of part {} inverted (zero or negative area) at cycle {}",
+                              m.elements[0].user_id[static_cast<std::size_t>(r.inverted)],
+                              m.parts[static_cast<std::size_t>(group.part)].user_id, s.cycle);
+      }
+      if (r.min_dt < dt_elements) {
+        dt_elements = r.min_dt;
+        controlling = fmt::format("SHELL {}", m.elements[0].user_id[static_cast<std::size_t>(r.controlling)]);
+      }
+    }
+    if (status != RunStatus::Normal) break;
+    // 2. External forces; rigid bodies collect their nodes' forces.
+    solver::add_external_forces(m, s, s.time);
+    solver::gather_rigid_body_forces(s);
+    // 3. Time step.
+    dt_next = std::isfinite(dt_elements) ? scale * dt_elements : rc.end_time - s.time;
+    if (dt_minimum > 0.0 && dt_next < dt_minimum) {
+      status = RunStatus::Error;
+      message = fmt::format("time step {:.4e} below the minimum {:.4e} ({}) at cycle {}", dt_next, dt_minimum,
+                            controlling, s.cycle);
+      break;
+    }
+    if (s.time + dt_next > rc.end_time) dt_next = std::max(rc.end_time - s.time, 0.0);
+    const double dt_average = s.cycle == 0 ? 0.5 * dt_next : 0.5 * (s.dt + dt_next);
+    // 4. Central-difference velocity update.
+    auto v = velocities(n);
+    for (std::size_t d = 0; d < 6; ++d) std::copy(v[d]->begin(), v[d]->end(), scratch.v_old[d].begin());
+    for (std::size_t k = 0; k < n.size(); ++k) {
+      const double inverse_mass = n.mass[k] > 0.0 ? 1.0 / n.mass[k] : 0.0;
+      n.vx[k] += dt_average * n.fx[k] * inverse_mass;
+      n.vy[k] += dt_average * n.fy[k] * inverse_mass;
+      n.vz[k] += dt_average * n.fz[k] * inverse_mass;
+      if (n.inertia[k] > 0.0) {
+        const double inverse_inertia = 1.0 / n.inertia[k];
+        n.wx[k] += dt_average * n.mx[k] * inverse_inertia;
+        n.wy[k] += dt_average * n.my[k] * inverse_inertia;
+        n.wz[k] += dt_average * n.mz[k] * inverse_inertia;
+      }
+    }
+    for (std::size_t d = 0; d < 6; ++d) std::copy(v[d]->begin(), v[d]->end(), scratch.v_free[d].begin());
+    // 5. Kinematic conditions.
+    solver::update_rigid_bodies(s, dt_average, dt_next);
+    for (std::size_t d = 0; d < 6; ++d)  // rigid-body motion is internal to the body: not a constraint's work
+      for (const auto& b : s.bodies) {
+        for (std::int32_t node : b.secondary) scratch.v_free[d][static_cast<std::size_t>(node)] = (*v[d])[static_cast<std::size_t>(node)];
+        scratch.v_free[d][static_cast<std::size_t>(b.main_node)] = (*v[d])[static_cast<std::size_t>(b.main_node)];
+      }
+    solver::impose_kinematics(m, s, s.time, dt_next);
+    solver::apply_rigid_walls(m, s, dt_average, dt_next);
+    s.energy.external_work += load_work(m, s, scratch, s.time, dt_average) + constraint_work(s, scratch);
+    // 6. Positions.
+    for (std::size_t k = 0; k < n.size(); ++k) {
+      n.x[k] += dt_next * n.vx[k];
+      n.y[k] += dt_next * n.vy[k];
+      n.z[k] += dt_next * n.vz[k];
+    }
+    s.time += dt_next;
+    s.dt = dt_next;
+    ++s.cycle;
+
+    const bool finished = s.time >= rc.end_time * (1.0 - 1e-12) || dt_next <= 0.0 ||
+                          (options.max_cycles >= 0 && s.cycle >= options.max_cycles);
+    const bool print = s.cycle % print_every == 0 || finished;
+    const bool frame = s.time >= next_frame * (1.0 - 1e-12);
+    const bool history = s.time >= next_history * (1.0 - 1e-12);
+    if (print || frame || history || s.cycle % 64 == 0) {
+      record(print);
+      const double total = s.energy.internal + s.energy.kinetic_translational + s.energy.kinetic_rotational;
+      if (!std::isfinite(total)) {
+        status = RunStatus::Error;
+        message = fmt::format("NaN or Inf in the energy balance at cycle {} (time {:.4e})", s.cycle, s.time);
+        break;
+      }
+      const double ratio = std::abs(s.energy.error_percent()) / 100.0;
+      if (rc.stop_energy_error > 0.0 && ratio > rc.stop_energy_error) {
+        status = RunStatus::Stopped;
+        message = fmt::format("/STOP: energy error {:.3g} % exceeds the limit at cycle {}", 100.0 * ratio, s.cycle);
+        break;
+      }
+    }
+    if (frame && results) {
+      results->write_frame(s.time, s.cycle, m, s);
+      while (next_frame <= s.time * (1.0 + 1e-12)) next_frame += rc.anim_interval;
+    }
+    if (history) {
+      write_history();
+      while (next_history <= s.time * (1.0 + 1e-12)) next_history += rc.history_interval;
+    }
+    if (finished) break;
+  }
+  record(true);
+  if (results) {
+    if (status != RunStatus::Normal) results->write_frame(s.time, s.cycle, m, s);  // the last good state
+    results->close();
+  }
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  listing.line(status == RunStatus::Normal ? "NORMAL TERMINATION" : "ERROR TERMINATION: " + message);
+  listing.line(fmt::format("TOTAL NUMBER OF CYCLES {}   ELAPSED {:.3f} s", s.cycle, wall));
+
+  summary.cycles = s.cycle;
+  summary.time = s.time;
+  summary.dt = dt_next;
+  summary.energy.internal = s.energy.internal;
+  summary.energy.kinetic_translational = s.energy.kinetic_translational;
+  summary.energy.kinetic_rotational = s.energy.kinetic_rotational;
+  summary.energy.contact = s.energy.contact;
+  summary.energy.hourglass = s.energy.hourglass;
+  summary.energy.external_work = s.energy.external_work;
+  summary.energy.total = s.energy.internal + s.energy.kinetic_translational + s.energy.kinetic_rotational +
+                         s.energy.hourglass + s.energy.contact;
+  summary.energy.error_percent = s.energy.error_percent();
+  for (double mass : n.mass) summary.mass_total += mass;
+  summary.mass_added = 0.0;
+  summary.wall_seconds = wall;
+  summary.element_cycles_per_second = wall > 0.0 ? static_cast<double>(element_count) * static_cast<double>(s.cycle) / wall : 0.0;
+  summary.status = status;
+  summary.message = message;
+  return summary;
+}
+
+}  // namespace crumple
