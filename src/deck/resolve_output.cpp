@@ -1,4 +1,4 @@
-// References held by contact interfaces, output requests and run control.
+// References held by contact interfaces, output requests and run control; run-control times to working units.
 #include <fmt/format.h>
 
 #include "resolve.hpp"
@@ -6,6 +6,48 @@
 namespace crumple::deck {
 namespace {
 
+// Engine cards keep their times in input units (keywords/engine.cpp): in the Radioss single-file form they are
+// read before /BEGIN sets the units. Every time of the run control is converted here, once.
+void convert_run_times(RunControl& run, const UnitSystem& units) {
+  const double t = units.factor(dim::time);
+  run.end_time *= t;
+  run.history_interval *= t;
+  run.anim_start *= t;
+  run.anim_interval *= t;
+  for (TimeStepControl* c : {&run.dt, &run.dt_nodal_cst, &run.dt_shell, &run.dt_brick, &run.dt_sh3n,
+                             &run.dt_inter_del, &run.dt_inter_cst})
+    c->minimum *= t;
+}
+
+const IdMap* history_map(const Model::Index& ix, HistoryObject object, std::string_view& what) {
+  switch (object) {
+    case HistoryObject::Node: what = "node"; return &ix.nodes;
+    case HistoryObject::Part: what = "part"; return &ix.parts;
+    case HistoryObject::RigidWall: what = "rigid wall"; return &ix.rigid_walls;
+    case HistoryObject::Interface: what = "interface"; return &ix.interfaces;
+    case HistoryObject::Shell: what = "shell"; return &ix.elements[static_cast<int>(ElementKind::Shell4)];
+    case HistoryObject::Sh3n: what = "3-node shell"; return &ix.elements[static_cast<int>(ElementKind::Shell3)];
+    case HistoryObject::Brick: what = "brick"; return &ix.elements[static_cast<int>(ElementKind::Brick8)];
+    case HistoryObject::Subset: what = "subset"; return &ix.subsets;
+    case HistoryObject::Section: what = "section"; return &ix.sections;
+    case HistoryObject::RigidBody: what = "rigid body"; return &ix.rigid_bodies;
+  }
+  return nullptr;
+}
+
+void resolve_run_control(Resolver& r) {
+  Model& m = r.model;
+  RunControl& run = m.run;
+  convert_run_times(run, m.units);
+  for (std::size_t k = 0; k < run.rbody_on.size(); ++k)
+    r.find(m.index.rigid_bodies, run.rbody_on[k], run.rbody_on_where[k], "/RBODY/ON", "RBID", "rigid body");
+  for (std::size_t k = 0; k < run.rbody_off.size(); ++k)
+    r.find(m.index.rigid_bodies, run.rbody_off[k], run.rbody_off_where[k], "/RBODY/OFF", "RBID", "rigid body");
+  // Radioss pairs the engine deck with the starter by run name; a different name usually means a stray file.
+  if (run.present && !m.run_name.empty() && run.run_name != m.run_name)
+    r.context.warn(run.where, "/RUN",
+                   fmt::format("run name '{}' differs from the /BEGIN run name '{}'", run.run_name, m.run_name));
+}
 
 }  // namespace
 
@@ -14,13 +56,11 @@ void resolve_output_references(Resolver& r) {
   r.index(m.type7_interfaces, m.index.interfaces, "/INTER");
   r.index(m.sections, m.index.sections, "/SECT");
   const auto& ix = m.index;
+  // Unsupported TYPE7 options (sensors, friction functions, /FRICTION...) are rejected by the card reader.
   for (Type7Interface& i : m.type7_interfaces) {
     const std::string kw = fmt::format("/INTER/TYPE7/{}", i.user_id);
     i.secondary_group = r.find(ix.node_groups, i.secondary_group_id, i.where, kw, "Slav_id", "node group");
     i.main_surface = r.find(ix.surfaces, i.main_surface_id, i.where, kw, "Mast_id", "surface");
-    r.require_zero(i.sensor_id, i.where, kw, "sens_ID", "sensors are");
-    r.require_zero(i.friction_function_id, i.where, kw, "fct_IDf", "friction scale functions are");
-    r.require_zero(i.friction_id, i.where, kw, "fric_ID", "/FRICTION definitions are");
   }
   for (Section& s : m.sections) {
     const std::string kw = fmt::format("/SECT/{}", s.user_id);
@@ -28,29 +68,18 @@ void resolve_output_references(Resolver& r) {
       r.find_optional(ix.nodes, s.node_ids[k], s.where, kw, fmt::format("node_ID{}", k + 1), "node");
     s.node_group = r.find_optional(ix.node_groups, s.node_group_id, s.where, kw, "grnod_ID", "node group");
     s.shell_group = r.find_optional(ix.shell_groups, s.shell_group_id, s.where, kw, "grshel_ID", "shell group");
+    s.interfaces.clear();
+    for (std::size_t k = 0; k < s.interface_ids.size(); ++k)
+      s.interfaces.push_back(
+          r.find(ix.interfaces, s.interface_ids[k], s.where, kw, fmt::format("int_ID{}", k + 1), "interface"));
   }
   for (TimeHistoryRequest& th : m.histories) {
-    const std::string& kw = th.keyword;
-    const IdMap* map = nullptr;
     std::string_view what;
-    switch (th.object) {
-      case HistoryObject::Node: map = &ix.nodes, what = "node"; break;
-      case HistoryObject::Part: map = &ix.parts, what = "part"; break;
-      case HistoryObject::RigidWall: map = &ix.rigid_walls, what = "rigid wall"; break;
-      case HistoryObject::Interface: map = &ix.interfaces, what = "interface"; break;
-      case HistoryObject::Shell: map = &ix.elements[static_cast<int>(ElementKind::Shell4)], what = "shell"; break;
-      case HistoryObject::Sh3n: map = &ix.elements[static_cast<int>(ElementKind::Shell3)], what = "3-node shell"; break;
-      case HistoryObject::Brick: map = &ix.elements[static_cast<int>(ElementKind::Brick8)], what = "brick"; break;
-      case HistoryObject::Subset: map = &ix.subsets, what = "subset"; break;
-      case HistoryObject::Section: map = &ix.sections, what = "section"; break;
-      case HistoryObject::RigidBody: map = &ix.rigid_bodies, what = "rigid body"; break;
-    }
-    for (std::int64_t id : th.object_ids) th.objects.push_back(r.find(*map, id, th.where, kw, "Obj_ID", what));
+    const IdMap* map = history_map(ix, th.object, what);
+    th.objects.clear();
+    for (std::int64_t id : th.object_ids) th.objects.push_back(r.find(*map, id, th.where, th.keyword, "Obj_ID", what));
   }
-  for (std::int64_t id : m.run.rbody_on)
-    r.find(ix.rigid_bodies, id, m.run.where, "/RBODY/ON", "RBID", "rigid body");
-  for (std::int64_t id : m.run.rbody_off)
-    r.find(ix.rigid_bodies, id, m.run.where, "/RBODY/OFF", "RBID", "rigid body");
+  resolve_run_control(r);
 }
 
 }  // namespace crumple::deck

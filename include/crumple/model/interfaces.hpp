@@ -1,6 +1,8 @@
 #pragma once
-// Contact interfaces as read from the deck (/INTER/TYPE7, ../shared/spec/type7.md §1). Zero means default;
-// the contact module applies the defaults.
+// Contact interfaces as read from the deck (/INTER/TYPE7, ../shared/spec/type7.md §1; exact columns in
+// docs/cards/loads-output-engine.md §5). Values are in working units. Zero means default; the contact module
+// applies the defaults. The manual's "1000" codes of Istf, Igap, Idel and Inacti (= the default behaviour) are
+// stored as 0, so that 0 is the only default code the contact module sees.
 #include <array>
 #include <cstdint>
 #include <string>
@@ -18,29 +20,46 @@ struct Type7Interface {
   std::int64_t main_surface_id = 0;     // Mast_id: main surface
   std::int32_t secondary_group = -1;
   std::int32_t main_surface = -1;
-  int istf = 0, ithe = 0, igap = 0, ibag = 0, idel = 0, icurv = 0, iadm = 0;
+  int istf = 0;   // 0 stiffness from the main side (Stfac scales it), 1 Stfac is the stiffness, 2..5 combined
+  int ithe = 0;   // always 0 (thermal contact is rejected by the reader)
+  int igap = 0;   // 0 constant gap, 1 variable, 2 variable and scaled
+  int ibag = 0;   // 0 or 2 (no vent closure; 1 is rejected)
+  int idel = 0;   // 0 none, 1 segment removed when all its elements are deleted, 2 when one is
+  int icurv = 0;  // always 0 (curvature is rejected by the reader)
+  int iadm = 0;   // always 0 (adaptive meshing is rejected by the reader)
   // line 2
   double fscale_gap = 0.0, gap_max = 0.0 /*[L]*/, fpenmax = 0.0;
+  int itied = 0;  // 2020+ decks only; always 0 (tied contact is rejected)
   // line 3
   double stmin = 0.0, stmax = 0.0;  // [M T^-2]
   double mesh_size_percent = 0.0;
   double dtmin = 0.0;               // [T]
-  int irem_gap = 0, irem_i2 = 0;
+  int irem_gap = 0;                 // 0 or 1 (2 is rejected)
+  int irem_i2 = 0;                  // 0 or 3 (no change; 1 refers to /INTER/TYPE2, which Crumple has not)
+  // optional line (Icurv = 1 or 2): curvature centre or axis nodes
+  std::array<std::int64_t, 2> curvature_node_ids{};
   // line 4
-  double stfac = 0.0, fric = 0.0, gapmin = 0.0 /*[L]*/, tstart = 0.0 /*[T]*/, tstop = 0.0 /*[T]*/;
+  double stfac = 0.0;  // a factor, or a stiffness [M T^-2] when istf == 1
+  double fric = 0.0, gapmin = 0.0 /*[L]*/, tstart = 0.0 /*[T]*/, tstop = 0.0 /*[T]*/;
   // line 5
   std::array<bool, 3> ibc{};        // release boundary conditions of secondary nodes in x, y, z at impact
-  int inacti = 0;
+  int inacti = 0;                   // 0 none, 1, 2, 3, 5, 6 (type7.md §7)
   double viss = 0.0, visf = 0.0, bumult = 0.0;
   // line 6
   int ifric = 0, ifiltr = 0;
-  double xfreq = 0.0;
+  double xfreq = 0.0;  // Ifiltr 1: a factor in (0, 1]; 2: a period [T]; 3: a frequency [T^-1]
   int iform = 0;
-  std::int64_t sensor_id = 0, friction_function_id = 0;
+  std::int64_t sensor_id = 0, friction_function_id = 0;  // always 0 (rejected by the reader)
   double ascale_f = 0.0;
-  std::int64_t friction_id = 0;
-  // line 7 (Ifric > 0)
-  std::array<double, 6> friction_c{};  // C1..C6
+  std::int64_t friction_id = 0;                           // always 0 (rejected by the reader)
+  // line 7 (C1..C5 when Ifric > 0) and line 8 (C6 when Ifric > 1); dimensions depend on the law:
+  // Ifric 1 (generalized viscous): C1 [1/P], C2 [1/V], C3 [1/(P V)], C4 [1/P^2], C5 [1/V^2];
+  // Ifric 2 (Darmstad): C1 [1/P^2], C2 [1/V], C3 [1/P], C4 [1/V], C5 [-], C6 [1/V];
+  // Ifric 3 (Renard): C1..C4 [-], C5 and C6 [V].
+  std::array<double, 6> friction_c{};
+  // optional line (Iadm = 2); kept for messages, the reader rejects Iadm != 0
+  int nradm = 0;
+  double padm = 0.0, angladm = 0.0;
 };
 
 }  // namespace crumple

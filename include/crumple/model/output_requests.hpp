@@ -10,17 +10,23 @@ namespace crumple {
 
 enum class HistoryObject : std::uint8_t { Node, Part, RigidWall, Interface, Shell, Sh3n, Brick, Subset, Section, RigidBody };
 
+// Layouts and accepted variable names: docs/cards/loads-output-engine.md §6.1. Variables are kept as written
+// (upper case, each once, group names such as DEF not expanded); objects are kept once each, in deck order.
 struct TimeHistoryRequest {  // /TH/...
   SourceLocation where;
-  std::string keyword;  // the card's keyword line, for messages
+  std::string keyword;  // the card's keyword line, e.g. "/TH/SHELL/3", for messages
   std::int64_t user_id = 0;
   std::string title;
   HistoryObject object = HistoryObject::Node;
   std::vector<std::string> variables;   // e.g. "DEF"
   std::vector<std::int64_t> object_ids; // user ids of the objects
+  std::vector<std::string> object_names;  // /TH/NODE, /TH/SHEL(L), /TH/SH3N, /TH/BRIC: the name of each object
+                                          // (may be empty), parallel to object_ids; empty for the other kinds
   std::vector<std::int32_t> objects;    // dense indices (model build)
 };
 
+// /SECT (docs/cards/loads-output-engine.md §6.2). The reader accepts ISAVE = 0 only, no moving frame, and a
+// 4-node shell group (/GRSHEL) as the only element group; the other element-group ids stay 0.
 struct Section {  // /SECT
   SourceLocation where;
   std::int64_t user_id = 0;
@@ -35,10 +41,12 @@ struct Section {  // /SECT
   std::int64_t brick_group_id = 0, shell_group_id = 0, truss_group_id = 0, beam_group_id = 0,
                spring_group_id = 0, sh3n_group_id = 0;
   int ninter = 0;
-  int iframe = 0;
-  std::vector<std::int64_t> interface_ids;
+  int iframe = 0;  // moment reference: 0 origin of the N1N2N3 frame, 1 geometric centre, 2 centre of gravity,
+                   // 3 point (0,0,0) of the frame; 10..13 the same in the global frame
+  std::vector<std::int64_t> interface_ids;  // Ninter ids of interfaces whose forces cross the cut
   std::int32_t node_group = -1;
   std::int32_t shell_group = -1;
+  std::vector<std::int32_t> interfaces;  // dense indices (model build)
 };
 
 }  // namespace crumple

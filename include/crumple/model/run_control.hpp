@@ -1,5 +1,6 @@
 #pragma once
-// Run control from the engine deck. Zero or negative means "not given"; the solver applies the defaults.
+// Run control from the engine deck (docs/cards/loads-output-engine.md §7). Values are in working units once
+// read_deck returns. Zero means "not given"; the solver applies the defaults.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -8,34 +9,49 @@
 
 namespace crumple {
 
+// What happens when an element reaches Δt_min (/DT/<type>/<Keyword3>). Default: bricks stop the run, shells
+// (4- and 3-node) delete the controlling element.
+enum class TimeStepAction : std::uint8_t { Default, Stop, Delete, SmallStrain };
+
 struct TimeStepControl {  // /DT, /DT/NODA/CST, /DT/SHELL, /DT/BRICK, /DT/INTER/..., /DT/SH_3N
-  double scale = 0.0;     // Δt_sca (0: default 0.9)
+  double scale = 0.0;     // Δt_sca in (0, 1] (0: default 0.9)
   double minimum = 0.0;   // Δt_min [T]
+  TimeStepAction action = TimeStepAction::Default;  // /DT/SHELL, /DT/BRICK, /DT/SH_3N only
   bool given = false;
+  SourceLocation where;   // the card
 };
 
 struct RunControl {
-  bool present = false;         // an engine part was read
+  bool present = false;         // the engine part has its /RUN card
   SourceLocation where;         // its /RUN card
   std::string run_name;
   int run_number = 1;
   double end_time = 0.0;        // [T]
-  double history_interval = 0.0;   // /TFILE [T]
-  double anim_start = 0.0, anim_interval = 0.0;  // /ANIM/DT [T]
-  std::vector<std::string> anim_element_fields, anim_vector_fields, anim_nodal_fields;
+  double history_interval = 0.0;   // /TFILE [T] (0: no time-history file)
+  int history_format = 0;          // /TFILE/type: 1 binary, 2 coded ASCII, 3 ASCII, 4 IEEE 32-bit (0: no /TFILE)
+  double anim_start = 0.0, anim_interval = 0.0;  // /ANIM/DT [T] (interval 0: no field output)
+  std::vector<std::string> anim_element_fields, anim_vector_fields, anim_nodal_fields;  // each once, upper case
   bool anim_gzip = false;
-  std::int64_t print_every = 0;  // /PRINT: listing every n cycles (negative: also on screen)
+  int anim_version = 0;           // /ANIM/VERS/n
+  std::int64_t print_every = 0;   // /PRINT/n: listing every |n| cycles (negative: also on screen)
+  int print_header_lines = 0;     // /PRINT/n/Nline: repeat the column header every Nline lines
   TimeStepControl dt;             // /DT
   TimeStepControl dt_nodal_cst;   // /DT/NODA/CST
   TimeStepControl dt_shell, dt_brick, dt_sh3n;
   TimeStepControl dt_inter_del, dt_inter_cst;
   bool parith = true;
   bool monitor = false;
-  double stop_energy_error = 0.0;  // /STOP Emax [%] (0: none)
-  double stop_mass_error = 0.0;    // /STOP Mmax (0: none)
-  std::int64_t stop_nodes = 0;
-  std::int64_t restart_every = 0;  // /RFILE
-  std::vector<std::int64_t> rbody_on, rbody_off;
+  double stop_energy_error = 0.0;      // /STOP Emax: energy error ratio (0: no limit)
+  double stop_mass_error = 0.0;        // /STOP Mmax: total added mass / initial mass (0: no limit)
+  double stop_node_mass_error = 0.0;   // /STOP Nmax: largest nodal added mass / initial nodal mass (0: no limit)
+  bool stop_write_history = false;     // /STOP NTH: write a time-history point when stopping
+  bool stop_write_animation = false;   // /STOP NANIM: write field output when stopping
+  bool stop_positive_error_only = false;  // /STOP NERR_POSIT: only a positive energy error counts
+  std::int64_t restart_every = 0;  // /RFILE Ncycle (0: no restart files)
+  int restart_sets = 0;            // /RFILE/n: rotating restart sets (0: one)
+  int engine_version = 0;          // /VERS/n of the engine deck (no effect)
+  std::vector<std::int64_t> rbody_on, rbody_off;     // /RBODY/ON, /RBODY/OFF rigid body ids
+  std::vector<SourceLocation> rbody_on_where, rbody_off_where;  // the line of each id, parallel
 };
 
 }  // namespace crumple

@@ -1,7 +1,390 @@
+// Engine deck (NAME_0001.rad): run control. Layouts: docs/cards/loads-output-engine.md §7.
+// Engine data lines are free format (values separated by blanks or commas, in any columns) and blank lines are
+// skipped. Times are kept in input units here and converted to working units in resolve_output.cpp: in the
+// Radioss single-file form the engine cards come before /BEGIN, whose units are not known yet when they are read.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <optional>
+#include <span>
+
 #include "../context.hpp"
 
 namespace crumple::deck {
+namespace {
 
-void register_engine_keywords(KeywordTable& table) { (void)table; }
+// Result names Crumple can write as field output. Anything else is an error rather than a missing field.
+constexpr std::array<std::string_view, 16> kElementFields{"EPSP", "VONM", "ENER", "HOURG", "DENS",  "P",
+                                                          "THIC", "DT",   "OFF",  "SIGX",  "SIGY",  "SIGZ",
+                                                          "SIGXY", "SIGYZ", "SIGZX", "EPSD"};
+constexpr std::array<std::string_view, 13> kVectorFields{"VEL",  "DISP", "ACC",  "CONT", "CONT2", "FINT", "FEXT",
+                                                         "FOPT", "PCONT", "VROT", "DROT", "FREAC", "MREAC"};
+constexpr std::array<std::string_view, 3> kNodalFields{"DT", "DMAS", "DINER"};
+
+std::string in_quotes(std::string_view s) { return fmt::format("'{}'", s); }
+
+// Path part `index` of the keyword line as written (Card::path is upper-cased; a run name keeps its case).
+std::string written_part(const Card& card, std::size_t index) {
+  std::string_view rest(card.keyword);
+  for (std::size_t k = 0; k <= index; ++k) {
+    const auto slash = rest.find('/');
+    if (slash == std::string_view::npos) return {};
+    rest.remove_prefix(slash + 1);
+  }
+  return std::string(trim(rest.substr(0, rest.find('/'))));
+}
+
+std::string path_prefix(const Card& card, std::size_t count) {
+  std::string out;
+  for (std::size_t k = 0; k < count && k < card.path.size(); ++k) out.append("/").append(card.path[k]);
+  return out;
+}
+
+// More path parts than `count` is another form of the keyword, which Crumple does not read.
+void path_at_most(CardReader& reader, std::size_t count) {
+  const Card& card = reader.card();
+  if (card.path.size() > count)
+    reader.fail("keyword", fmt::format("nothing after {}", path_prefix(card, count)), in_quotes(card.path[count]));
+}
+
+// An integer path part (may be negative: /PRINT/-100); nullopt when absent.
+std::optional<std::int64_t> path_integer(CardReader& reader, std::size_t index, std::string_view name) {
+  const Card& card = reader.card();
+  if (index >= card.path.size() || card.path[index].empty()) return std::nullopt;
+  if (auto v = parse_integer(card.path[index])) return *v;
+  reader.fail(name, "an integer in the keyword line", in_quotes(card.path[index]));
+}
+
+void note_without_effect(DeckContext& context, const Card& card) {
+  auto& list = context.report.accepted_without_effect;
+  const std::string name = fmt::format("/{}", card.path[0]);
+  if (std::find(list.begin(), list.end(), name) == list.end()) list.push_back(name);
+}
+
+// The next data line. A '/' inside it would end Radioss list-directed input and drop the rest of the line
+// silently: reject it.
+std::optional<Line> next_line(CardReader& reader) {
+  auto line = reader.next_nonblank();
+  if (line && line->content().find('/') != std::string::npos)
+    line->fail_value("data line", "values separated by blanks or commas (a '/' ends the line's input in Radioss)",
+                     in_quotes(trim(line->content())));
+  return line;
+}
+
+Line required_line(CardReader& reader, std::string_view what) {
+  if (auto line = next_line(reader)) return *line;
+  reader.fail(what, fmt::format("a data line with {}", what), "end of card");
+}
+
+void at_most(const Line& line, std::size_t count, std::string_view fields) {
+  if (line.token_count() > count)
+    line.fail_value(fields, fmt::format("at most {} value{} ({})", count, count == 1 ? "" : "s", fields),
+                    fmt::format("{} values", line.token_count()));
+}
+
+bool positive(double v) { return v > 0.0; }
+bool not_negative(double v) { return v >= 0.0; }
+bool unit_interval(double v) { return v >= 0.0 && v <= 1.0; }
+
+// A real of a free-format line that must lie in a range; the message names the field and its position.
+double checked_real(const Line& line, std::size_t index, std::string_view name, std::optional<double> fallback,
+                    bool (*ok)(double), std::string_view expected) {
+  const double value = line.token_real(index, name, dim::none, fallback);
+  if (!ok(value)) line.fail_value(fmt::format("{} (value {})", name, index + 1), expected, fmt::format("{}", value));
+  return value;
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// /RUN, /TFILE, /PRINT, /VERS, /TITLE
+
+void read_run(CardReader& reader, DeckContext& context) {
+  const Card& card = reader.card();
+  RunControl& run = context.model.run;
+  if (context.run_seen) reader.fail("", "a single /RUN card", "a second /RUN");
+  context.run_seen = true;  // even if the card is malformed below: its own error says what is wrong with it
+  path_at_most(reader, 4);
+  run.run_name = written_part(card, 1);
+  if (run.run_name.empty() || parse_integer(run.run_name))
+    reader.fail("Runname", "/RUN/Runname/run_number with a run name", in_quotes(card.keyword));
+  const auto number = path_integer(reader, 2, "run_number");
+  if (!number) reader.fail("run_number", "/RUN/Runname/1 (the run number)", "none");
+  // Runs 2, 3... and the restart letter continue from a restart file, which Crumple does not read.
+  if (*number != 1) reader.fail("run_number", "1 (restart runs are not supported)", fmt::format("{}", *number));
+  if (card.path.size() > 3)
+    reader.fail("restart letter", "nothing (restart files are not read)", in_quotes(card.path[3]));
+  const Line line = required_line(reader, "Tstop");
+  at_most(line, 1, "Tstop");
+  run.end_time = checked_real(line, 0, "Tstop", std::nullopt, positive, "a positive end time");
+  reader.finish();
+  run.run_number = 1;
+  run.present = true;
+  run.where = card.where;
+}
+
+void read_tfile(CardReader& reader, DeckContext& context) {
+  RunControl& run = context.model.run;
+  if (run.history_format != 0) reader.fail("", "a single /TFILE card", "a second /TFILE");
+  path_at_most(reader, 2);
+  const std::int64_t format = path_integer(reader, 1, "type").value_or(0);
+  if (format < 0 || format > 4)
+    reader.fail("type", "0 to 4 (1 binary, 2 coded ASCII, 3 ASCII, 4 IEEE binary)", fmt::format("{}", format));
+  const Line line = required_line(reader, "dT_his");
+  at_most(line, 1, "dT_his");
+  run.history_interval = checked_real(line, 0, "dT_his", std::nullopt, positive, "a positive time-history interval");
+  reader.finish();
+  run.history_format = format == 0 ? 4 : static_cast<int>(format);  // blank or 0: IEEE binary (manual)
+}
+
+void read_print(CardReader& reader, DeckContext& context) {
+  RunControl& run = context.model.run;
+  path_at_most(reader, 3);
+  const auto every = path_integer(reader, 1, "Nprint");
+  if (!every || *every == 0) reader.fail("Nprint", "/PRINT/n with n a non-zero number of cycles", "none or 0");
+  const std::int64_t lines = path_integer(reader, 2, "Nline").value_or(0);
+  if (lines < 0 || lines > 1000000) reader.fail("Nline", "0 to 1000000 lines", fmt::format("{}", lines));
+  reader.finish();
+  run.print_every = *every;
+  run.print_header_lines = static_cast<int>(lines);
+}
+
+void read_engine_version(CardReader& reader, DeckContext& context) {
+  path_at_most(reader, 2);
+  const auto version = path_integer(reader, 1, "version");
+  if (!version || *version <= 0 || *version > 100000)
+    reader.fail("version", "/VERS/n with n a positive input version", "none");
+  reader.finish();
+  context.model.run.engine_version = static_cast<int>(*version);
+  note_without_effect(context, reader.card());
+}
+
+void read_engine_title(CardReader& reader, DeckContext& context) {
+  path_at_most(reader, 1);
+  reader.next_nonblank();  // the title: free text, a '/' is allowed here
+  reader.finish();
+  note_without_effect(context, reader.card());
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// /ANIM/...
+
+void read_anim_dt(CardReader& reader, DeckContext& context) {
+  RunControl& run = context.model.run;
+  path_at_most(reader, 2);
+  if (run.anim_interval > 0.0) reader.fail("", "a single /ANIM/DT card", "a second /ANIM/DT");
+  const Line line = required_line(reader, "Tstart, Tfreq");
+  at_most(line, 2, "Tstart, Tfreq");
+  run.anim_start = checked_real(line, 0, "Tstart", std::nullopt, not_negative, "a non-negative start time");
+  run.anim_interval = checked_real(line, 1, "Tfreq", std::nullopt, positive, "a positive interval");
+  reader.finish();
+}
+
+void read_anim_fields(CardReader& reader, std::vector<std::string>& fields, std::span<const std::string_view> known) {
+  const Card& card = reader.card();
+  if (card.path.size() < 3 || card.path[2].empty())
+    reader.fail("restype", fmt::format("{}/<result name>", path_prefix(card, 2)), "no result name");
+  path_at_most(reader, 3);
+  const std::string& name = card.path[2];
+  if (std::find(known.begin(), known.end(), name) == known.end()) {
+    const std::string list = fmt::format("{}", fmt::join(known, " "));
+    reader.fail("restype", fmt::format("a result Crumple writes for {}: {}", path_prefix(card, 2), list),
+                in_quotes(name));
+  }
+  reader.finish();
+  if (std::find(fields.begin(), fields.end(), name) == fields.end()) fields.push_back(name);
+}
+
+void read_anim_gzip(CardReader& reader, DeckContext& context) {
+  path_at_most(reader, 2);
+  reader.finish();
+  context.model.run.anim_gzip = true;
+}
+
+void read_anim_version(CardReader& reader, DeckContext& context) {
+  path_at_most(reader, 3);
+  const auto version = path_integer(reader, 2, "n");
+  if (!version || *version <= 0 || *version > 100000)
+    reader.fail("n", "/ANIM/VERS/n with n a positive format version", "none");
+  reader.finish();
+  context.model.run.anim_version = static_cast<int>(*version);
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// /DT family
+
+// `DTsca DTmin` on one line. `minimum_required`: cards that act only through DTmin (/DT/NODA/CST, /DT/INTER/...)
+// would do nothing without it, which is almost certainly not what the deck's author meant.
+void read_dt_values(CardReader& reader, TimeStepControl& target, TimeStepAction action, bool minimum_required) {
+  const Card& card = reader.card();
+  if (target.given)
+    reader.fail("", fmt::format("a single {} card", path_prefix(card, card.path.size())), "a second one");
+  const Line line = required_line(reader, "DTsca, DTmin");
+  at_most(line, 2, "DTsca, DTmin");
+  target.scale = checked_real(line, 0, "DTsca", 0.0, unit_interval, "a time-step scale in (0, 1] (0: default 0.9)");
+  target.minimum = checked_real(line, 1, "DTmin", 0.0, not_negative, "a non-negative time step");
+  if (minimum_required && target.minimum <= 0.0)
+    line.fail_value("DTmin (value 2)", fmt::format("a positive minimum time step (without it {} has no effect)",
+                                                   path_prefix(card, card.path.size())),
+                    fmt::format("{}", target.minimum));
+  reader.finish();
+  target.action = action;
+  target.given = true;
+  target.where = card.where;
+}
+
+// Iflag (path part 3) selects extra input lines that Crumple does not read.
+void no_iflag(CardReader& reader) {
+  if (path_integer(reader, 3, "Iflag").value_or(0) != 0)
+    reader.fail("Iflag", "0 or nothing (the extra Iflag = 1 input is not supported)", in_quotes(reader.card().path[3]));
+  path_at_most(reader, 4);
+}
+
+void read_dt_element(CardReader& reader, TimeStepControl& target, bool small_strain_allowed) {
+  const Card& card = reader.card();
+  TimeStepAction action = TimeStepAction::Default;
+  const std::string keyword3 = card.path.size() > 2 ? card.path[2] : std::string();
+  if (keyword3 == "STOP") action = TimeStepAction::Stop;
+  else if (keyword3 == "DEL") action = TimeStepAction::Delete;
+  else if (keyword3 == "CST" && small_strain_allowed) action = TimeStepAction::SmallStrain;
+  else if (!keyword3.empty())
+    reader.fail("Keyword3", small_strain_allowed ? "STOP, DEL or CST" : "STOP or DEL", in_quotes(keyword3));
+  no_iflag(reader);
+  read_dt_values(reader, target, action, false);
+}
+
+void read_dt(CardReader& reader, DeckContext& context) {
+  const Card& card = reader.card();
+  RunControl& run = context.model.run;
+  if (card.path.size() == 1) return read_dt_values(reader, run.dt, TimeStepAction::Default, false);
+  const std::string& type = card.path[1];
+  const std::string keyword3 = card.path.size() > 2 ? card.path[2] : std::string();
+  if (type == "SHELL") return read_dt_element(reader, run.dt_shell, true);
+  if (type == "BRICK") return read_dt_element(reader, run.dt_brick, true);
+  if (type == "SH_3N" || type == "SH3N") return read_dt_element(reader, run.dt_sh3n, false);
+  if (type == "NODA") {
+    // CST is Radioss' name for CST2 (mass added to keep DTmin); CST1, SET and STOP are other methods.
+    if (keyword3 != "CST" && keyword3 != "CST2")
+      reader.fail("Keyword3", "/DT/NODA/CST (added mass; the other nodal time-step methods are not supported)",
+                  in_quotes(card.keyword));
+    no_iflag(reader);
+    return read_dt_values(reader, run.dt_nodal_cst, TimeStepAction::Default, true);
+  }
+  if (type == "INTER") {
+    path_at_most(reader, 3);
+    if (keyword3 == "DEL") return read_dt_values(reader, run.dt_inter_del, TimeStepAction::Default, true);
+    if (keyword3 == "CST" || keyword3 == "CST2")
+      return read_dt_values(reader, run.dt_inter_cst, TimeStepAction::Default, true);
+    reader.fail("Keyword3", "/DT/INTER/DEL or /DT/INTER/CST", in_quotes(card.keyword));
+  }
+  reader.fail("Eltyp", "/DT, /DT/SHELL, /DT/BRICK, /DT/SH_3N, /DT/NODA/CST, /DT/INTER/DEL or /DT/INTER/CST",
+              in_quotes(card.keyword));
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// Switches, /STOP, /RFILE, /RBODY/ON|OFF
+
+// `/PARITH/ON|OFF`, `/MON/ON|OFF`.
+bool read_switch(CardReader& reader) {
+  const Card& card = reader.card();
+  path_at_most(reader, 2);
+  const std::string value = card.path.size() > 1 ? card.path[1] : std::string();
+  if (value != "ON" && value != "OFF")
+    reader.fail("keyword", fmt::format("/{}/ON or /{}/OFF", card.path[0], card.path[0]), in_quotes(card.keyword));
+  reader.finish();
+  return value == "ON";
+}
+
+bool zero_or_one(const Line& line, std::size_t index, std::string_view name) {
+  const std::int64_t v = line.token_integer(index, name, 0);
+  if (v != 0 && v != 1) line.fail_value(fmt::format("{} (value {})", name, index + 1), "0 or 1", fmt::format("{}", v));
+  return v == 1;
+}
+
+void read_stop(CardReader& reader, DeckContext& context) {
+  RunControl& run = context.model.run;
+  path_at_most(reader, 1);  // /STOP/LSENSOR (sensor stop) is another card
+  const Line line = required_line(reader, "Emax, Mmax, Nmax, NTH, NANIM, NERR_POSIT");
+  at_most(line, 6, "Emax, Mmax, Nmax, NTH, NANIM, NERR_POSIT");
+  auto limit = [&](std::size_t index, std::string_view name) {
+    return checked_real(line, index, name, 0.0, not_negative, "a non-negative limit (0: none)");
+  };
+  run.stop_energy_error = limit(0, "Emax");
+  run.stop_mass_error = limit(1, "Mmax");
+  run.stop_node_mass_error = limit(2, "Nmax");
+  run.stop_write_history = zero_or_one(line, 3, "NTH");
+  run.stop_write_animation = zero_or_one(line, 4, "NANIM");
+  run.stop_positive_error_only = zero_or_one(line, 5, "NERR_POSIT");
+  reader.finish();
+}
+
+void read_rfile(CardReader& reader, DeckContext& context) {
+  RunControl& run = context.model.run;
+  const Card& card = reader.card();
+  path_at_most(reader, 2);
+  if (card.path.size() > 1 && card.path[1] == "OFF") {  // OpenRadioss form: no restart files at all
+    reader.finish();
+    run.restart_every = 0;
+    run.restart_sets = 0;
+    return;
+  }
+  const std::int64_t sets = path_integer(reader, 1, "n").value_or(0);
+  if (sets < 0 || sets > 26) reader.fail("n", "0 to 26 rotating restart sets", fmt::format("{}", sets));
+  std::int64_t every = 1000000;  // the manual's default when no cycle count is given
+  if (auto line = next_line(reader)) {
+    at_most(*line, 1, "Ncycle");
+    every = line->token_integer(0, "Ncycle", 0);
+    if (every < 0) line->fail_value("Ncycle (value 1)", "a positive number of cycles", fmt::format("{}", every));
+    if (every == 0) every = 1000000;
+  }
+  reader.finish();
+  run.restart_every = every;
+  run.restart_sets = static_cast<int>(sets);
+}
+
+void read_rbody_switch(CardReader& reader, std::vector<std::int64_t>& ids, std::vector<SourceLocation>& where) {
+  path_at_most(reader, 2);
+  const std::size_t before = ids.size();
+  while (auto line = next_line(reader)) {
+    for (std::size_t k = 0; k < line->token_count(); ++k) {
+      const std::int64_t id = line->token_integer(k, "RBID", std::nullopt);
+      if (id <= 0)
+        line->fail_value(fmt::format("RBID (value {})", k + 1), "a positive rigid body id", fmt::format("{}", id));
+      ids.push_back(id);
+      where.push_back(line->where());
+    }
+  }
+  if (ids.size() == before) reader.fail("RBID", "at least one rigid body id", "none");
+}
+
+}  // namespace
+
+void register_engine_keywords(KeywordTable& table) {
+  auto fields = [](std::vector<std::string> RunControl::*member, std::span<const std::string_view> known) {
+    return [member, known](CardReader& r, DeckContext& c) { read_anim_fields(r, c.model.run.*member, known); };
+  };
+  const DeckPart E = DeckPart::Engine;
+  table.push_back({"/RUN", E, read_run});
+  table.push_back({"/TFILE", E, read_tfile});
+  table.push_back({"/PRINT", E, read_print});
+  table.push_back({"/VERS", E, read_engine_version});
+  table.push_back({"/TITLE", E, read_engine_title});
+  table.push_back({"/ANIM/DT", E, read_anim_dt});
+  table.push_back({"/ANIM/ELEM", E, fields(&RunControl::anim_element_fields, kElementFields)});
+  table.push_back({"/ANIM/VECT", E, fields(&RunControl::anim_vector_fields, kVectorFields)});
+  table.push_back({"/ANIM/NODA", E, fields(&RunControl::anim_nodal_fields, kNodalFields)});
+  table.push_back({"/ANIM/GZIP", E, read_anim_gzip});
+  table.push_back({"/ANIM/VERS", E, read_anim_version});
+  table.push_back({"/DT", E, read_dt});
+  table.push_back({"/PARITH", E, [](CardReader& r, DeckContext& c) { c.model.run.parith = read_switch(r); }});
+  table.push_back({"/MON", E, [](CardReader& r, DeckContext& c) { c.model.run.monitor = read_switch(r); }});
+  table.push_back({"/STOP", E, read_stop});
+  table.push_back({"/RFILE", E, read_rfile});
+  table.push_back({"/RBODY/ON", E, [](CardReader& r, DeckContext& c) {
+                     read_rbody_switch(r, c.model.run.rbody_on, c.model.run.rbody_on_where);
+                   }});
+  table.push_back({"/RBODY/OFF", E, [](CardReader& r, DeckContext& c) {
+                     read_rbody_switch(r, c.model.run.rbody_off, c.model.run.rbody_off_where);
+                   }});
+}
 
 }  // namespace crumple::deck

@@ -1,0 +1,271 @@
+// Engine deck (run control): free-format data lines, every card of docs/cards/loads-output-engine.md §7,
+// conversion of times from the starter's input units (also when the engine part comes before /BEGIN), and the
+// errors for malformed cards.
+#include <gtest/gtest.h>
+
+#include "deck_files.hpp"
+
+using namespace crumple;
+using test::I;
+using test::R;
+
+namespace {
+
+std::string gram_mm_ms_begin() {
+  return "/BEGIN\nTEST\n      2019         0\n" + R("g") + R("mm") + R("ms") + "\n" + R("kg") + R("m") + R("s") + "\n";
+}
+
+// The engine deck of the QA deck box_crush, with this test's run name.
+const char* const kQaEngine =
+    "#---1----|----2----|----3----|----4----|----5----|----6----|----7----|----8----|----9----|---10----|\n"
+    "/ANIM/DT\n"
+    "#   TSTART     TFREQ\n"
+    "0.000000 0.010000\n"
+    "/ANIM/GZIP\n"
+    "/DT\n"
+    "0.100000 0.000000\n"
+    "/MON/ON\n"
+    "/PARITH/ON\n"
+    "/PRINT/-1/55\n"
+    "/RUN/TEST/1\n"
+    "             0.10001\n"
+    "/TFILE/4\n"
+    "#            dT_HIS\n"
+    "0.001000\n"
+    "/VERS/2019\n";
+
+RunControl run_of(const std::string& engine, const std::string& extra = "") {
+  test::TempDir dir;
+  return read_deck(test::write_deck(dir, extra, engine)).model.run;
+}
+
+std::string error_of(const std::string& engine, const std::string& extra = "") {
+  test::TempDir dir;
+  return test::first_error(test::write_deck(dir, extra, engine));
+}
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+const std::string kRun = "/RUN/TEST/1\n1e-3\n";
+
+// A rigid body 7 (free node 7, secondary nodes 3 and 6) for /RBODY/ON and /RBODY/OFF.
+std::string rigid_body() {
+  return "/NODE\n" + I(7) + R(0.05) + R(0.0) + R(0.1) + "\n/GRNOD/NODE/14\nedge\n" + I(3) + I(6) + "\n" +
+         "/RBODY/7\nbody\n" + I(7) + I(0) + I(0) + I(0) + R(3.0) + I(14) + I(0) + I(0) + I(0) + "\n" + R(0.0) + "\n" +
+         R(0.0) + "\n" + I(0) + I(0) + "\n";
+}
+
+}  // namespace
+
+TEST(EngineKeywords, QaEngineDeckReads) {
+  test::TempDir dir;
+  const Deck d = read_deck(test::write_deck(dir, "", kQaEngine));
+  const RunControl& run = d.model.run;
+  EXPECT_TRUE(run.present);
+  EXPECT_TRUE(contains(run.where.file, "TEST_0001.rad")) << run.where.file;
+  EXPECT_EQ(run.where.line, 11);
+  EXPECT_EQ(run.run_name, "TEST");
+  EXPECT_EQ(run.run_number, 1);
+  EXPECT_DOUBLE_EQ(run.end_time, 0.10001);
+  EXPECT_DOUBLE_EQ(run.history_interval, 0.001);
+  EXPECT_EQ(run.history_format, 4);
+  EXPECT_DOUBLE_EQ(run.anim_start, 0.0);
+  EXPECT_DOUBLE_EQ(run.anim_interval, 0.01);
+  EXPECT_TRUE(run.anim_gzip);
+  EXPECT_TRUE(run.dt.given);
+  EXPECT_DOUBLE_EQ(run.dt.scale, 0.1);
+  EXPECT_DOUBLE_EQ(run.dt.minimum, 0.0);
+  EXPECT_TRUE(run.monitor);
+  EXPECT_TRUE(run.parith);
+  EXPECT_EQ(run.print_every, -1);
+  EXPECT_EQ(run.print_header_lines, 55);
+  EXPECT_EQ(run.engine_version, 2019);
+  const auto& ignored = d.report.accepted_without_effect;
+  EXPECT_NE(std::find(ignored.begin(), ignored.end(), "/VERS"), ignored.end());
+}
+
+TEST(EngineKeywords, AbsentCardsLeaveDefaults) {
+  const RunControl run = run_of(kRun);
+  EXPECT_TRUE(run.present);
+  EXPECT_DOUBLE_EQ(run.end_time, 1e-3);
+  EXPECT_EQ(run.history_interval, 0.0);
+  EXPECT_EQ(run.history_format, 0);
+  EXPECT_EQ(run.anim_interval, 0.0);
+  EXPECT_FALSE(run.dt.given);
+  EXPECT_FALSE(run.dt_inter_del.given);
+  EXPECT_TRUE(run.parith);
+  EXPECT_FALSE(run.monitor);
+  EXPECT_EQ(run.print_every, 0);
+  EXPECT_EQ(run.restart_every, 0);
+  EXPECT_TRUE(run.anim_element_fields.empty());
+  // /TFILE without a type writes the default IEEE binary format.
+  EXPECT_EQ(run_of(kRun + "/TFILE\n1e-4\n").history_format, 4);
+}
+
+// Engine values are in the starter's input units: a g-mm-ms deck gives times in ms.
+TEST(EngineKeywords, TimesConvertedFromStarterUnits) {
+  test::TempDir dir;
+  dir.write("TEST_0001.rad", "/RUN/TEST/1\n100\n/TFILE\n0.5\n/ANIM/DT\n1 2\n/DT\n0.9 1e-3\n/DT/INTER/DEL\n0.5 1e-4\n");
+  const auto path = dir.write("TEST_0000.rad", gram_mm_ms_begin() + test::plate_cards() + "/END\n");
+  const RunControl run = read_deck(path).model.run;
+  EXPECT_NEAR(run.end_time, 0.1, 1e-15);
+  EXPECT_NEAR(run.history_interval, 5e-4, 1e-18);
+  EXPECT_NEAR(run.anim_start, 1e-3, 1e-18);
+  EXPECT_NEAR(run.anim_interval, 2e-3, 1e-18);
+  EXPECT_DOUBLE_EQ(run.dt.scale, 0.9);  // a ratio: not converted
+  EXPECT_NEAR(run.dt.minimum, 1e-6, 1e-20);
+  EXPECT_NEAR(run.dt_inter_del.minimum, 1e-7, 1e-21);
+}
+
+// Radioss single-file form: engine cards first, closed by /END/ENGINE, then /BEGIN: the units come later but
+// the times are still converted with them.
+TEST(EngineKeywords, EngineBeforeBeginIsConvertedWithTheStarterUnits) {
+  test::TempDir dir;
+  const auto path = dir.write("ONE_0000.rad", "/RUN/ONE/1\n100\n/TFILE\n0.5\n/END/ENGINE\n" + gram_mm_ms_begin() +
+                                                  test::plate_cards() + "/END\n");
+  const RunControl run = read_deck(path).model.run;
+  EXPECT_TRUE(run.present);
+  EXPECT_NEAR(run.end_time, 0.1, 1e-15);
+  EXPECT_NEAR(run.history_interval, 5e-4, 1e-18);
+}
+
+TEST(EngineKeywords, EveryRunControlCardReads) {
+  const std::string engine = kRun +
+                             "/DT/NODA/CST\n0.67 1e-7\n"
+                             "/DT/SHELL/DEL\n0.8, 1e-8\n"
+                             "/DT/BRICK/STOP\n0.7\n"
+                             "/DT/SH_3N\n\n0.6 2e-8\n"  // a blank line inside an engine card is skipped
+                             "/DT/INTER/DEL\n0.5 1e-6\n"
+                             "/DT/INTER/CST\n0.4 2e-6\n"
+                             "/PARITH/OFF\n/MON/OFF\n"
+                             "/STOP\n0.1, 0.05, 2 1 1 1\n"
+                             "/RFILE/5\n1000\n"
+                             "/ANIM/ELEM/EPSP\n/ANIM/ELEM/vonm\n/ANIM/ELEM/EPSP\n/ANIM/VECT/VEL\n/ANIM/VECT/CONT\n"
+                             "/ANIM/NODA/DMAS\n/ANIM/VERS/44\n"
+                             "/TITLE\nrun 1/2 of the study\n";
+  test::TempDir dir;
+  const Deck d = read_deck(test::write_deck(dir, "", engine));
+  const RunControl& run = d.model.run;
+  EXPECT_DOUBLE_EQ(run.dt_nodal_cst.scale, 0.67);
+  EXPECT_DOUBLE_EQ(run.dt_nodal_cst.minimum, 1e-7);
+  EXPECT_EQ(run.dt_shell.action, TimeStepAction::Delete);
+  EXPECT_DOUBLE_EQ(run.dt_shell.minimum, 1e-8);
+  EXPECT_EQ(run.dt_brick.action, TimeStepAction::Stop);
+  EXPECT_DOUBLE_EQ(run.dt_brick.scale, 0.7);
+  EXPECT_DOUBLE_EQ(run.dt_brick.minimum, 0.0);
+  EXPECT_EQ(run.dt_sh3n.action, TimeStepAction::Default);
+  EXPECT_DOUBLE_EQ(run.dt_sh3n.minimum, 2e-8);
+  EXPECT_DOUBLE_EQ(run.dt_inter_del.minimum, 1e-6);
+  EXPECT_DOUBLE_EQ(run.dt_inter_cst.scale, 0.4);
+  EXPECT_DOUBLE_EQ(run.dt_inter_cst.minimum, 2e-6);
+  EXPECT_FALSE(run.dt.given);
+  EXPECT_FALSE(run.parith);
+  EXPECT_FALSE(run.monitor);
+  EXPECT_DOUBLE_EQ(run.stop_energy_error, 0.1);
+  EXPECT_DOUBLE_EQ(run.stop_mass_error, 0.05);
+  EXPECT_DOUBLE_EQ(run.stop_node_mass_error, 2.0);
+  EXPECT_TRUE(run.stop_write_history && run.stop_write_animation && run.stop_positive_error_only);
+  EXPECT_EQ(run.restart_every, 1000);
+  EXPECT_EQ(run.restart_sets, 5);
+  EXPECT_EQ(run.anim_element_fields, (std::vector<std::string>{"EPSP", "VONM"}));
+  EXPECT_EQ(run.anim_vector_fields, (std::vector<std::string>{"VEL", "CONT"}));
+  EXPECT_EQ(run.anim_nodal_fields, (std::vector<std::string>{"DMAS"}));
+  EXPECT_EQ(run.anim_version, 44);
+  const auto& ignored = d.report.accepted_without_effect;
+  EXPECT_NE(std::find(ignored.begin(), ignored.end(), "/TITLE"), ignored.end());
+}
+
+TEST(EngineKeywords, StopAndRestartShortForms) {
+  const RunControl stop = run_of(kRun + "/STOP\n0.2 0.1 0\n");
+  EXPECT_DOUBLE_EQ(stop.stop_energy_error, 0.2);
+  EXPECT_FALSE(stop.stop_write_history);
+  EXPECT_EQ(run_of(kRun + "/RFILE\n").restart_every, 1000000);
+  EXPECT_EQ(run_of(kRun + "/RFILE/OFF\n").restart_every, 0);
+}
+
+TEST(EngineKeywords, RigidBodiesSwitchedOnAndOff) {
+  const RunControl run = run_of(kRun + "/RBODY/OFF\n7\n/RBODY/ON\n7 7\n", rigid_body());
+  EXPECT_EQ(run.rbody_off, (std::vector<std::int64_t>{7}));
+  EXPECT_EQ(run.rbody_on, (std::vector<std::int64_t>{7, 7}));
+  EXPECT_EQ(run.rbody_on_where.size(), 2u);
+  const std::string e = error_of(kRun + "/RBODY/ON\n7\n99\n", rigid_body());
+  EXPECT_TRUE(contains(e, "rigid body 99 not defined")) << e;
+  EXPECT_TRUE(contains(e, "TEST_0001.rad:5")) << e;  // the line that holds the id
+}
+
+TEST(EngineKeywords, RunNameDifferentFromBeginIsAWarning) {
+  test::TempDir dir;
+  const Deck d = read_deck(test::write_deck(dir, "", "/RUN/OTHER/1\n1e-3\n"));
+  ASSERT_FALSE(d.report.warnings.empty());
+  EXPECT_TRUE(contains(d.report.warnings.back().text(), "differs")) << d.report.warnings.back().text();
+}
+
+TEST(EngineKeywords, MalformedCardsAreErrorsNamingTheField) {
+  const std::pair<std::string, std::string> cases[] = {
+      {"/TFILE\n1e-4\n", "an engine deck without /RUN"},
+      {"/RUN/TEST/1\n0\n", "field Tstop"},
+      {"/RUN/TEST/1\n-1e-3\n", "field Tstop"},
+      {"/RUN/TEST/1\n", "field Tstop"},
+      {"/RUN/TEST/1\n1e-3 2e-3\n", "at most 1 value"},
+      {"/RUN/TEST/2\n1e-3\n", "field run_number"},
+      {"/RUN/TEST\n1e-3\n", "field run_number"},
+      {"/RUN/TEST/1/J\n1e-3\n", "restart letter"},
+      {kRun + kRun, "a single /RUN"},
+      {kRun + "/DT\n1.5\n", "field DTsca"},
+      {kRun + "/DT\n-0.5\n", "field DTsca"},
+      {kRun + "/DT\nabc\n", "field DTsca"},
+      {kRun + "/DT\n0.5 -1\n", "field DTmin"},
+      {kRun + "/DT\n0.5/0.1\n", "'/'"},
+      {kRun + "/DT\n0.9\n/DT\n0.8\n", "a single /DT"},
+      {kRun + "/DT\n", "field DTsca, DTmin"},
+      {kRun + "/DT/NODA/CST\n0.5 0\n", "field DTmin"},
+      {kRun + "/DT/INTER/DEL\n0.5\n", "field DTmin"},
+      {kRun + "/DT/INTER/STOP\n0.5 1e-6\n", "field Keyword3"},
+      {kRun + "/DT/QUAD\n0.5\n", "field Eltyp"},
+      {kRun + "/DT/NODA/SET\n0.5 1e-6\n", "field Keyword3"},
+      {kRun + "/DT/NODA/CST/1\n0.5 1e-6\n", "field Iflag"},
+      {kRun + "/DT/SH_3N/CST\n0.5\n", "field Keyword3"},
+      {kRun + "/DT/BRICK/CST/1\n0.5\n", "field Iflag"},
+      {kRun + "/TFILE\n0\n", "field dT_his"},
+      {kRun + "/TFILE/7\n1e-4\n", "field type"},
+      {kRun + "/ANIM/DT\n0\n", "field Tfreq"},
+      {kRun + "/ANIM/DT\n0 -1\n", "field Tfreq"},
+      {kRun + "/ANIM/DT\n-1 1e-4\n", "field Tstart"},
+      {kRun + "/ANIM/ELEM/FOO\n", "field restype"},
+      {kRun + "/ANIM/ELEM\n", "field restype"},
+      {kRun + "/ANIM/GZIP\n1\n", "no more data lines"},
+      {kRun + "/ANIM/VERS\n", "field n"},
+      {kRun + "/PRINT/0\n", "field Nprint"},
+      {kRun + "/PRINT\n", "field Nprint"},
+      {kRun + "/PRINT/-100/-5\n", "field Nline"},
+      {kRun + "/STOP\n0 0 0 2\n", "field NTH"},
+      {kRun + "/STOP\n-1\n", "field Emax"},
+      {kRun + "/STOP\n0 0 0 0 0 0 0\n", "at most 6 values"},
+      {kRun + "/STOP/LSENSOR\n1\n", "field keyword"},
+      {kRun + "/PARITH/MAYBE\n", "/PARITH/ON or /PARITH/OFF"},
+      {kRun + "/MON\n", "/MON/ON or /MON/OFF"},
+      {kRun + "/RFILE/30\n", "field n"},
+      {kRun + "/RFILE\n-5\n", "field Ncycle"},
+      {kRun + "/RBODY/ON\n", "field RBID"},
+      {kRun + "/RBODY/OFF\n0\n", "field RBID"},
+      {kRun + "/VERS\n", "field version"},
+      {kRun + "/NODE\n", "belongs to the starter"},
+      {kRun + "/ANIM/TENS/STRESS\n", "unknown keyword"},
+  };
+  for (const auto& [engine, expected] : cases) {
+    const std::string e = error_of(engine);
+    EXPECT_TRUE(contains(e, expected)) << engine << "-> " << e;
+  }
+}
+
+// A malformed /RUN is reported once, for what is wrong with it, not also as a missing /RUN.
+TEST(EngineKeywords, MalformedRunIsNotAlsoAMissingRun) {
+  test::TempDir dir;
+  try {
+    read_deck(test::write_deck(dir, "", "/RUN/TEST/1\n0\n"));
+    FAIL() << "the deck should not read";
+  } catch (const DeckErrors& e) {
+    ASSERT_EQ(e.errors().size(), 1u) << e.what();
+    EXPECT_EQ(e.errors()[0].field(), "Tstop (value 1)");
+  }
+}

@@ -1,0 +1,222 @@
+// Output requests: /TH/... (variable lines, object lines, names, resolution to dense indices) and /SECT (every
+// line, including the blank file-name line), with the errors for malformed cards.
+#include <gtest/gtest.h>
+
+#include "deck_files.hpp"
+
+using namespace crumple;
+using test::blank;
+using test::I;
+using test::R;
+
+namespace {
+
+std::string vec(double x, double y, double z) { return R(x) + R(y) + R(z) + "\n"; }
+
+// Objects for the requests to refer to, on top of the plate (nodes 1-6, shells 1-2, part 1): node 7, node groups
+// 10 (plate) and 14 (nodes 3, 6), shell group 6, surface 20, subset 30, rigid wall 1, rigid body 7, interface 5.
+std::string references() {
+  std::string s = "/NODE\n" + I(7) + R(0.05) + R(0.0) + R(0.1) + "\n";
+  s += "/GRNOD/NODE/10\nplate\n" + I(1) + I(2) + I(3) + I(4) + I(5) + I(6) + "\n";
+  s += "/GRNOD/NODE/14\nedge\n" + I(3) + I(6) + "\n";
+  s += "/GRSHEL/SHEL/6\nshells\n" + I(1) + I(2) + "\n";
+  s += "/SURF/PART/20\nsurface\n" + I(1) + "\n";
+  s += "/SUBSET/30\nsubset\n";
+  s += "/RWALL/PLANE/1\nwall\n" + I(0) + I(0) + I(10) + I(0) + "\n" + vec(0, 0, 0) + vec(0, 0, -1) + vec(0, 0, 0);
+  s += "/RBODY/7\nbody\n" + I(7) + I(0) + I(0) + I(0) + R(3.0) + I(14) + I(0) + I(0) + I(0) + "\n" + vec(0, 0, 0) +
+       vec(0, 0, 0) + I(0) + I(0) + "\n";
+  s += "/INTER/TYPE7/5\ncontact\n" + I(10) + I(20) + "\n\n\n\n" + "       000\n\n";
+  return s;
+}
+
+// A section cut through the plate, as in the QA deck box_crush (blank file-name line).
+std::string section(long long id, const std::string& groups_line = I(0) + I(0) + I(6) + I(0) + I(0) + I(0) + I(0) +
+                                                                       I(0) + I(0) + I(1),
+                    const std::string& frame_line = I(1) + I(2) + I(4) + I(10) + I(0) + I(0) + R(0.0) + R(0.0)) {
+  return "/SECT/" + std::to_string(id) + "\nsection_" + std::to_string(id) + "\n" + frame_line + "\n" + blank(100) +
+         "\n" + groups_line + "\n";
+}
+
+std::filesystem::path starter(const test::TempDir& dir, const std::string& cards) {
+  return dir.write("T_0000.rad", test::begin_card() + test::plate_cards() + references() + cards + "/END\n");
+}
+
+Deck read(const std::string& cards) {
+  test::TempDir dir;
+  return read_deck(starter(dir, cards));
+}
+
+std::string error_of(const std::string& cards) {
+  test::TempDir dir;
+  return test::first_error(starter(dir, cards));
+}
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+std::string th(const std::string& keyword, const std::string& variables, const std::string& objects) {
+  return keyword + "\ngroup title\n" + variables + "\n" + objects;
+}
+
+std::string var(const std::string& name) { return name + blank(10 - static_cast<int>(name.size())); }
+
+}  // namespace
+
+TEST(OutputKeywords, NodeHistoryOneObjectPerLineWithName) {
+  const std::string objects = I(6) + I(0) + blank(20) + "corner" + "\n" + I(1) + I(0) + blank(80) + "\n";
+  const Deck d = read(th("/TH/NODE/2", var("DEF") + var("ax") + var("REACX"), objects));
+  ASSERT_EQ(d.model.histories.size(), 1u);
+  const TimeHistoryRequest& h = d.model.histories[0];
+  EXPECT_EQ(h.keyword, "/TH/NODE/2");
+  EXPECT_EQ(h.user_id, 2);
+  EXPECT_EQ(h.title, "group title");
+  EXPECT_EQ(h.object, HistoryObject::Node);
+  EXPECT_EQ(h.variables, (std::vector<std::string>{"DEF", "AX", "REACX"}));
+  EXPECT_EQ(h.object_ids, (std::vector<std::int64_t>{6, 1}));
+  EXPECT_EQ(h.object_names, (std::vector<std::string>{"corner", ""}));
+  EXPECT_EQ(h.objects, (std::vector<std::int32_t>{5, 0}));
+}
+
+TEST(OutputKeywords, ListHistoriesReadTenIdsPerLineOverSeveralLines) {
+  const std::string cards = th("/TH/PART/1", var("DEF"), I(1) + "\n") +
+                            th("/TH/RWALL/3", var("FNX") + var("FNY"), I(1) + "\n") +
+                            th("/TH/RBODY/4", var("DEF") + var("F"), I(7) + "\n") +
+                            th("/TH/INTER/5", var("DEF") + var("|FNX|") + var("CE_ELAST"), I(5) + "\n") +
+                            th("/TH/SUBS/8", var("IE"), I(30) + "\n") + section(11) + section(12) +
+                            th("/TH/SECTIO/6", var("DEF") + "\n" + var("WORK"),
+                               I(11) + "\n" + blank(10) + I(12) + "\n");
+  const Deck d = read(cards);
+  const auto& h = d.model.histories;
+  ASSERT_EQ(h.size(), 6u);
+  EXPECT_EQ(h[0].object, HistoryObject::Part);
+  EXPECT_EQ(h[1].object, HistoryObject::RigidWall);
+  EXPECT_EQ(h[1].objects, (std::vector<std::int32_t>{0}));
+  EXPECT_EQ(h[2].object, HistoryObject::RigidBody);
+  EXPECT_EQ(h[2].objects, (std::vector<std::int32_t>{0}));
+  EXPECT_EQ(h[3].object, HistoryObject::Interface);
+  EXPECT_EQ(h[3].variables, (std::vector<std::string>{"DEF", "|FNX|", "CE_ELAST"}));
+  EXPECT_EQ(h[4].object, HistoryObject::Subset);
+  EXPECT_EQ(h[5].object, HistoryObject::Section);
+  EXPECT_EQ(h[5].variables, (std::vector<std::string>{"DEF", "WORK"}));  // two variable lines
+  EXPECT_EQ(h[5].object_ids, (std::vector<std::int64_t>{11, 12}));
+  EXPECT_EQ(h[5].objects, (std::vector<std::int32_t>{0, 1}));
+  EXPECT_TRUE(h[0].object_names.empty());
+}
+
+// /TH/SHELL is the spelling HyperCrash writes (QA box_crush); it reads as /TH/SHEL and keeps its keyword text.
+TEST(OutputKeywords, ShellHistoryAcceptsBothSpellings) {
+  const std::string objects = I(2) + I(0) + blank(20) + "mid" + "\n";
+  const Deck d = read(th("/TH/SHELL/3", var("DEF"), objects) + th("/TH/SHEL/4", var("STRESS") + var("EMAX"), objects));
+  const auto& h = d.model.histories;
+  ASSERT_EQ(h.size(), 2u);
+  EXPECT_EQ(h[0].keyword, "/TH/SHELL/3");
+  EXPECT_EQ(h[0].object, HistoryObject::Shell);
+  EXPECT_EQ(h[1].object, HistoryObject::Shell);
+  EXPECT_EQ(h[0].objects, (std::vector<std::int32_t>{1}));
+  EXPECT_EQ(h[1].object_names, (std::vector<std::string>{"mid"}));
+}
+
+TEST(OutputKeywords, ElementHistoriesLookInTheirOwnElementTable) {
+  // Shell 1 exists, but no 3-node shell or brick does: each request resolves against its own element kind.
+  const std::string sh3n = error_of(th("/TH/SH3N/3", var("DEF"), I(1) + I(0) + "\n"));
+  EXPECT_TRUE(contains(sh3n, "3-node shell 1 not defined")) << sh3n;
+  const std::string bric = error_of(th("/TH/BRIC/3", var("DEF") + var("SX"), I(1) + blank(10) + "solid\n"));
+  EXPECT_TRUE(contains(bric, "brick 1 not defined")) << bric;
+  const std::string bric_columns = error_of(th("/TH/BRIC/3", var("DEF"), I(1) + I(5) + "\n"));
+  EXPECT_TRUE(contains(bric_columns, "columns 11-20")) << bric_columns;
+}
+
+TEST(OutputKeywords, DuplicateObjectIsKeptOnceWithAWarning) {
+  const Deck d = read(th("/TH/PART/1", var("DEF"), I(1) + I(1) + "\n"));
+  EXPECT_EQ(d.model.histories[0].object_ids, (std::vector<std::int64_t>{1}));
+  ASSERT_FALSE(d.report.warnings.empty());
+  EXPECT_TRUE(contains(d.report.warnings.back().text(), "listed twice")) << d.report.warnings.back().text();
+}
+
+TEST(OutputKeywords, MalformedHistoriesAreErrorsNamingTheField) {
+  const std::string unknown = error_of(th("/TH/NODE/2", var("DEF") + var("TEMP"), I(1) + "\n"));
+  EXPECT_TRUE(contains(unknown, "field var_ID2")) << unknown;
+  EXPECT_TRUE(contains(unknown, "'TEMP'")) << unknown;
+  const std::string no_variables = error_of("/TH/PART/1\ntitle\n" + I(1) + "\n");
+  EXPECT_TRUE(contains(no_variables, "var_ID1")) << no_variables;
+  const std::string nothing = error_of("/TH/PART/1\ntitle\n");
+  EXPECT_TRUE(contains(nothing, "var_ID1")) << nothing;
+  const std::string negative = error_of(th("/TH/PART/1", var("DEF"), I(-1) + "\n"));
+  EXPECT_TRUE(contains(negative, "Obj_ID")) << negative;
+  const std::string late_variable = error_of(th("/TH/PART/1", var("DEF"), I(1) + "\n" + var("IE") + "\n"));
+  EXPECT_TRUE(contains(late_variable, "Obj_ID")) << late_variable;
+  const std::string skew = error_of(th("/TH/NODE/2", var("DEF"), I(1) + I(3) + "\n"));
+  EXPECT_TRUE(contains(skew, "skew_ID")) << skew;
+  const std::string missing = error_of(th("/TH/NODE/2", var("DEF"), I(99) + "\n"));
+  EXPECT_TRUE(contains(missing, "node 99 not defined")) << missing;
+  const std::string no_id = error_of(th("/TH/NODE", var("DEF"), I(1) + "\n"));
+  EXPECT_TRUE(contains(no_id, "an id in the keyword line")) << no_id;
+  const std::string past_100 = error_of(th("/TH/PART/1", var("DEF"), I(1) + blank(90) + "7\n"));
+  EXPECT_TRUE(contains(past_100, "column 100")) << past_100;
+}
+
+TEST(OutputKeywords, HistoryWithoutObjectsIsAWarning) {
+  const Deck d = read(th("/TH/PART/1", var("DEF"), ""));
+  ASSERT_EQ(d.model.histories.size(), 1u);
+  EXPECT_TRUE(d.model.histories[0].object_ids.empty());
+  EXPECT_TRUE(contains(d.report.warnings.back().text(), "no objects")) << d.report.warnings.back().text();
+}
+
+// QA box_crush layout: the all-blank file-name line is a data line; without it the group line would be misread.
+TEST(OutputKeywords, SectionReadsEveryLine) {
+  const std::string frame = I(1) + I(2) + I(4) + I(10) + I(0) + I(0) + R(1e-4) + R(0.5);
+  const Deck d = read(section(8, I(0) + I(0) + I(6) + I(0) + I(0) + I(0) + I(0) + I(1) + I(0) + I(12), frame) +
+                      I(5) + "\n");
+  ASSERT_EQ(d.model.sections.size(), 1u);
+  const Section& s = d.model.sections[0];
+  EXPECT_EQ(s.user_id, 8);
+  EXPECT_EQ(s.title, "section_8");
+  EXPECT_EQ(s.node_ids[0], 1);
+  EXPECT_EQ(s.node_ids[1], 2);
+  EXPECT_EQ(s.node_ids[2], 4);
+  EXPECT_EQ(s.node_group_id, 10);
+  EXPECT_DOUBLE_EQ(s.dt, 1e-4);
+  EXPECT_DOUBLE_EQ(s.alpha, 0.5);
+  EXPECT_EQ(s.file_name, "");
+  EXPECT_EQ(s.shell_group_id, 6);
+  EXPECT_EQ(s.ninter, 1);
+  EXPECT_EQ(s.iframe, 12);
+  EXPECT_EQ(s.interface_ids, (std::vector<std::int64_t>{5}));
+  EXPECT_EQ(s.interfaces, (std::vector<std::int32_t>{0}));
+  EXPECT_EQ(s.node_group, 0);
+  EXPECT_EQ(s.shell_group, 0);
+}
+
+TEST(OutputKeywords, MalformedSectionsAreErrorsNamingTheField) {
+  const std::string group_line = I(0) + I(0) + I(6);
+  auto frame = [](long long isave, long long frame_id) {
+    return I(1) + I(2) + I(4) + I(10) + I(isave) + I(frame_id) + R(0.0) + R(0.0);
+  };
+  EXPECT_TRUE(contains(error_of(section(1, group_line, frame(1, 0))), "field ISAVE"));
+  EXPECT_TRUE(contains(error_of(section(1, group_line, frame(0, 3))), "field frame_ID"));
+  EXPECT_TRUE(contains(error_of(section(1, I(4) + I(0) + I(6))), "field grbric_ID"));
+  EXPECT_TRUE(contains(error_of(section(1, I(0) + I(0) + I(6) + I(0) + I(0) + I(0) + I(2))), "field grtria_ID"));
+  EXPECT_TRUE(contains(error_of(section(1, group_line + blank(40) + I(11))), "field Ninter"));
+  EXPECT_TRUE(contains(error_of(section(1, group_line + blank(60) + I(5))), "field Iframe"));
+  // Ninter = 2 but one id only.
+  const std::string ids = error_of(section(1, group_line + blank(40) + I(2)) + I(5) + "\n");
+  EXPECT_TRUE(contains(ids, "int_ID2")) << ids;
+  // Without the blank file-name line the card is one line short.
+  const std::string truncated = error_of("/SECT/1\ncut\n" + frame(0, 0) + "\n" + group_line + "\n");
+  EXPECT_TRUE(contains(truncated, "truncated")) << truncated;
+  const std::string paral = error_of("/SECT/PARAL/1\ncut\n");
+  EXPECT_TRUE(contains(paral, "/SECT/PARAL form is not supported")) << paral;
+  const std::string unit = error_of(section(1) + "" + "/SECT/2/7\ncut\n");
+  EXPECT_TRUE(contains(unit, "unit_ID")) << unit;
+  const std::string group = error_of(section(1, I(0) + I(0) + I(66)));
+  EXPECT_TRUE(contains(group, "shell group 66 not defined")) << group;
+  const std::string interface = error_of(section(1, group_line + blank(40) + I(1)) + I(55) + "\n");
+  EXPECT_TRUE(contains(interface, "interface 55 not defined")) << interface;
+}
+
+TEST(OutputKeywords, EmptySectionIsAWarning) {
+  const Deck d = read(section(1, I(0), I(1) + I(2) + I(4)));
+  std::string all;
+  for (const auto& w : d.report.warnings) all += w.text() + "\n";
+  EXPECT_TRUE(contains(all, "no node group")) << all;
+  EXPECT_TRUE(contains(all, "records nothing")) << all;
+}
