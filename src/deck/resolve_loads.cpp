@@ -1,5 +1,8 @@
-// References held by loads, imposed motion, added masses, rigid walls and rigid bodies.
+// References held by loads, imposed motion, added masses, rigid walls and rigid bodies; duplicate ids; the
+// geometry of moving walls and the secondary node sets of the walls (docs/cards/loads-output-engine.md).
 #include <fmt/format.h>
+
+#include <algorithm>
 
 #include "resolve.hpp"
 
@@ -10,27 +13,70 @@ std::string_view imposed_keyword(ImposedKind kind) {
   return kind == ImposedKind::Velocity ? "/IMPVEL" : kind == ImposedKind::Displacement ? "/IMPDISP" : "/CLOAD";
 }
 
-}  // namespace
+std::string_view wall_type(RigidWallShape shape) {
+  switch (shape) {
+    case RigidWallShape::Plane: return "PLANE";
+    case RigidWallShape::Cylinder: return "CYL";
+    case RigidWallShape::Sphere: return "SPHER";
+    case RigidWallShape::Parallelogram: return "PARAL";
+  }
+  return "";
+}
 
-void resolve_load_references(Resolver& r) {
-  Model& m = r.model;
-  const auto& ix = m.index;
-  r.index(m.rigid_walls, m.index.rigid_walls, "/RWALL");
-  r.index(m.rigid_bodies, m.index.rigid_bodies, "/RBODY");
+const std::vector<std::int32_t>& nodes_of(const Model& m, std::int32_t group) {
+  return m.node_groups[static_cast<std::size_t>(group)].nodes;
+}
 
-  for (BoundaryCondition& bc : m.boundary_conditions) {
+bool contains(const std::vector<std::int32_t>& sorted, std::int32_t value) {
+  return std::binary_search(sorted.begin(), sorted.end(), value);
+}
+
+Vec3 position(const Nodes& nodes, std::int32_t i) {
+  const auto k = static_cast<std::size_t>(i);
+  return {nodes.x[k], nodes.y[k], nodes.z[k]};
+}
+
+// Cards whose ids are not referenced elsewhere still must not repeat within one keyword.
+template <class Record>
+void check_unique(Resolver& r, const std::vector<Record>& records, std::string_view keyword) {
+  IdMap ids;
+  r.index(records, ids, keyword);
+}
+
+void check_unique_imposed(Resolver& r, const std::vector<ImposedMotion>& imposed) {
+  for (ImposedKind kind : {ImposedKind::Velocity, ImposedKind::Displacement, ImposedKind::Force}) {
+    std::vector<ImposedMotion> same;
+    std::copy_if(imposed.begin(), imposed.end(), std::back_inserter(same),
+                 [kind](const ImposedMotion& im) { return im.kind == kind; });
+    check_unique(r, same, imposed_keyword(kind));
+  }
+}
+
+void resolve_boundary_conditions(Resolver& r) {
+  const auto& ix = r.model.index;
+  for (BoundaryCondition& bc : r.model.boundary_conditions) {
     const std::string kw = fmt::format("/BCS/{}", bc.user_id);
     r.require_zero(bc.skew_id, bc.where, kw, "skew_ID", "skew frames are");
     bc.node_group = r.find(ix.node_groups, bc.node_group_id, bc.where, kw, "grnod_ID", "node group");
   }
-  for (ImposedMotion& im : m.imposed) {
+}
+
+void resolve_imposed(Resolver& r) {
+  const auto& ix = r.model.index;
+  for (ImposedMotion& im : r.model.imposed) {
     const std::string kw = fmt::format("{}/{}", imposed_keyword(im.kind), im.user_id);
     r.require_zero(im.skew_id, im.where, kw, "skew_ID", "skew frames are");
     r.require_zero(im.sensor_id, im.where, kw, "sensor_ID", "sensors are");
     r.require_zero(im.frame_id, im.where, kw, "frame_ID", "frames are");
+    r.require_zero(im.icoor, im.where, kw, "Icoor", "cylindrical coordinates are");
     im.function = r.find(ix.functions, im.function_id, im.where, kw, "funct_IDT", "function");
     im.node_group = r.find(ix.node_groups, im.node_group_id, im.where, kw, "grnod_ID", "node group");
   }
+}
+
+void resolve_initial_conditions(Resolver& r) {
+  Model& m = r.model;
+  const auto& ix = m.index;
   for (InitialVelocity& iv : m.initial_velocities) {
     const std::string kw = fmt::format("/INIVEL/TRA/{}", iv.user_id);
     r.require_zero(iv.skew_id, iv.where, kw, "Skew_ID", "skew frames are");
@@ -40,27 +86,171 @@ void resolve_load_references(Resolver& r) {
     const std::string kw = fmt::format("/GRAV/{}", g.user_id);
     r.require_zero(g.skew_id, g.where, kw, "skew_ID", "skew frames are");
     r.require_zero(g.sensor_id, g.where, kw, "sensor_ID", "sensors are");
-    g.function = r.find(ix.functions, g.function_id, g.where, kw, "funct_IDT", "function");
-    g.node_group = r.find(ix.node_groups, g.node_group_id, g.where, kw, "grnod_ID", "node group");
+    // Both are optional: no function is a constant acceleration, no group is every node.
+    g.function = r.find_optional(ix.functions, g.function_id, g.where, kw, "funct_IDT", "function");
+    g.node_group = r.find_optional(ix.node_groups, g.node_group_id, g.where, kw, "grnod_ID", "node group");
   }
   for (AddedMass& a : m.added_masses) {
     const std::string kw = fmt::format("/ADMAS/{}/{}", a.type, a.user_id);
     a.node_group = r.find(ix.node_groups, a.node_group_id, a.where, kw, "grnod_ID", "node group");
+    // A type-1 mass is shared by the nodes: an empty group would lose it (or divide by zero).
+    if (a.node_group >= 0 && nodes_of(m, a.node_group).empty())
+      r.error(a.where, kw, "grnod_ID", "a node group with at least one node",
+              fmt::format("node group {} is empty", a.node_group_id));
   }
-  for (RigidWall& w : m.rigid_walls) {
-    const std::string kw = fmt::format("/RWALL/{}", w.user_id);
-    w.node = r.find_optional(ix.nodes, w.node_id, w.where, kw, "node_ID", "node");
-    w.node_group1 = r.find_optional(ix.node_groups, w.node_group1_id, w.where, kw, "grnod_ID1", "node group");
-    w.node_group2 = r.find_optional(ix.node_groups, w.node_group2_id, w.where, kw, "grnod_ID2", "node group");
-  }
-  for (RigidBody& b : m.rigid_bodies) {
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// Rigid bodies
+
+void resolve_rigid_bodies(Resolver& r) {
+  Model& m = r.model;
+  const auto& ix = m.index;
+  IdMap body_of_main_node;  // main node -> body
+  for (std::size_t i = 0; i < m.rigid_bodies.size(); ++i) {
+    RigidBody& b = m.rigid_bodies[i];
     const std::string kw = fmt::format("/RBODY/{}", b.user_id);
     r.require_zero(b.sensor_id, b.where, kw, "sensor_ID", "sensors are");
     r.require_zero(b.skew_id, b.where, kw, "skew_ID", "skew frames are");
     r.require_zero(b.surface_id, b.where, kw, "surf_ID", "rigid body surfaces are");
     b.main_node = r.find(ix.nodes, b.main_node_id, b.where, kw, "RBID", "node");
     b.node_group = r.find(ix.node_groups, b.node_group_id, b.where, kw, "grnod_ID", "node group");
+    if (b.main_node >= 0) {
+      const auto [it, inserted] = body_of_main_node.emplace(b.main_node, static_cast<std::int32_t>(i));
+      if (!inserted)
+        r.error(b.where, kw, "RBID", "a main node that no other rigid body uses",
+                fmt::format("node {} is the main node of /RBODY/{}", b.main_node_id,
+                            m.rigid_bodies[static_cast<std::size_t>(it->second)].user_id));
+    }
+    if (b.node_group >= 0 && nodes_of(m, b.node_group).empty())
+      r.context.warn(b.where, kw, fmt::format("node group {} is empty: the body has no secondary nodes",
+                                              b.node_group_id));
   }
+}
+
+// A main node that is also an element node takes the element's mass and forces into the body.
+void warn_main_nodes_in_elements(Resolver& r) {
+  const Model& m = r.model;
+  if (m.rigid_bodies.empty()) return;
+  std::vector<bool> in_element(m.nodes.size(), false);
+  for (const ElementTable& table : m.elements)
+    for (std::int32_t node : table.connectivity) in_element[static_cast<std::size_t>(node)] = true;
+  for (const RigidBody& b : m.rigid_bodies)
+    if (b.main_node >= 0 && in_element[static_cast<std::size_t>(b.main_node)])
+      r.context.warn(b.where, fmt::format("/RBODY/{}", b.user_id),
+                     fmt::format("main node {} belongs to an element", b.main_node_id));
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// Rigid walls
+
+// Distance of `x` from the wall on its outer side, as D_search measures it; negative when behind or inside the
+// wall, or (parallelogram) beside it.
+double wall_distance(const RigidWall& w, const Vec3& x) {
+  using geometry::dot, geometry::norm, geometry::sub;
+  const Vec3 d = sub(x, w.point);
+  switch (w.shape) {
+    case RigidWallShape::Plane: return dot(d, w.direction);
+    case RigidWallShape::Sphere: return norm(d) - 0.5 * w.diameter;
+    case RigidWallShape::Cylinder: {
+      const double along = dot(d, w.direction);
+      const Vec3 radial{d[0] - along * w.direction[0], d[1] - along * w.direction[1], d[2] - along * w.direction[2]};
+      return norm(radial) - 0.5 * w.diameter;
+    }
+    case RigidWallShape::Parallelogram: {
+      // In-plane coordinates (a, b) of x along the edges e1 = M1 - M, e2 = M2 - M: inside when both in [0, 1].
+      const Vec3 e1 = sub(w.point1, w.point), e2 = sub(w.point2, w.point);
+      const double g11 = dot(e1, e1), g12 = dot(e1, e2), g22 = dot(e2, e2);
+      const double det = g11 * g22 - g12 * g12;
+      const double a = (g22 * dot(d, e1) - g12 * dot(d, e2)) / det;
+      const double b = (g11 * dot(d, e2) - g12 * dot(d, e1)) / det;
+      if (a < 0.0 || a > 1.0 || b < 0.0 || b > 1.0) return -1.0;
+      return dot(d, w.direction);
+    }
+  }
+  return -1.0;
+}
+
+// Moving walls sit on their node: M is the node's initial position, M1 and M2 stay as given (points).
+void place_wall(Resolver& r, RigidWall& w, const std::string& kw) {
+  const Model& m = r.model;
+  if (w.node >= 0) w.point = position(m.nodes, w.node);
+  if (const auto direction = wall_direction(w.shape, w.point, w.point1, w.point2)) {
+    w.direction = *direction;
+    return;
+  }
+  const bool paral = w.shape == RigidWallShape::Parallelogram;
+  r.error(w.where, kw, paral ? "X_M1 .. Z_M2" : "X_M1, Y_M1, Z_M1",
+          paral ? "points M1, M2 that span a parallelogram with M, the position of node_ID"
+                : "a point M1 distinct from M, the position of node_ID",
+          fmt::format("M = ({:g}, {:g}, {:g}) from node {}", w.point[0], w.point[1], w.point[2], w.node_id));
+}
+
+// (nodes within D_search on the outer side) + group 1 - group 2 - the wall node - secondary nodes of rigid
+// bodies with Ikrem = 0.
+void build_secondary_nodes(const Model& m, RigidWall& w) {
+  std::vector<std::int32_t> nodes;
+  if (w.search_distance > 0.0)
+    for (std::size_t i = 0; i < m.nodes.size(); ++i) {
+      const double d = wall_distance(w, position(m.nodes, static_cast<std::int32_t>(i)));
+      if (d >= 0.0 && d <= w.search_distance) nodes.push_back(static_cast<std::int32_t>(i));
+    }
+  if (w.node_group1 >= 0) {
+    const auto& added = nodes_of(m, w.node_group1);
+    nodes.insert(nodes.end(), added.begin(), added.end());
+  }
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  const auto removed = [&](std::int32_t n) {
+    if (n == w.node) return true;
+    if (w.node_group2 >= 0 && contains(nodes_of(m, w.node_group2), n)) return true;
+    for (const RigidBody& b : m.rigid_bodies)
+      if (b.ikrem == 0 && b.node_group >= 0 && contains(nodes_of(m, b.node_group), n)) return true;
+    return false;
+  };
+  nodes.erase(std::remove_if(nodes.begin(), nodes.end(), removed), nodes.end());
+  w.secondary_nodes = std::move(nodes);
+}
+
+void resolve_rigid_walls(Resolver& r) {
+  Model& m = r.model;
+  const auto& ix = m.index;
+  for (RigidWall& w : m.rigid_walls) {
+    const std::string kw = fmt::format("/RWALL/{}/{}", wall_type(w.shape), w.user_id);
+    w.node = r.find_optional(ix.nodes, w.node_id, w.where, kw, "node_ID", "node");
+    w.node_group1 = r.find_optional(ix.node_groups, w.node_group1_id, w.where, kw, "grnod_ID1", "node group");
+    w.node_group2 = r.find_optional(ix.node_groups, w.node_group2_id, w.where, kw, "grnod_ID2", "node group");
+    if (w.node_id != 0 && w.node < 0) continue;  // no position for M
+    if (w.node >= 0 && w.node_group1 >= 0 && contains(nodes_of(m, w.node_group1), w.node))
+      r.error(w.where, kw, "grnod_ID1", "secondary nodes other than the wall node",
+              fmt::format("wall node {} is in node group {}", w.node_id, w.node_group1_id));
+    place_wall(r, w, kw);
+    if (w.search_distance == 0.0 && w.node_group1 < 0)
+      r.context.warn(w.where, kw, "no secondary nodes: D_search is 0 and grnod_ID1 is blank");
+  }
+}
+
+}  // namespace
+
+void resolve_load_references(Resolver& r) {
+  Model& m = r.model;
+  r.index(m.rigid_walls, m.index.rigid_walls, "/RWALL");
+  r.index(m.rigid_bodies, m.index.rigid_bodies, "/RBODY");
+  check_unique(r, m.boundary_conditions, "/BCS");
+  check_unique_imposed(r, m.imposed);
+  check_unique(r, m.initial_velocities, "/INIVEL/TRA");
+  check_unique(r, m.gravity, "/GRAV");
+  check_unique(r, m.added_masses, "/ADMAS");
+
+  resolve_boundary_conditions(r);
+  resolve_imposed(r);
+  resolve_initial_conditions(r);
+  resolve_rigid_bodies(r);
+  warn_main_nodes_in_elements(r);
+  resolve_rigid_walls(r);
+  // Secondary sets need every group and body resolved; skip them when a reference is missing.
+  if (!r.errors.empty()) return;
+  for (RigidWall& w : m.rigid_walls) build_secondary_nodes(m, w);
 }
 
 }  // namespace crumple::deck

@@ -54,15 +54,24 @@ void compute_mass(Model& model) {
   }
   for (const AddedMass& a : model.added_masses) {
     const auto& nodes = model.node_groups[static_cast<std::size_t>(a.node_group)].nodes;
-    if (nodes.empty()) continue;
+    if (nodes.empty()) continue;  // rejected by the reader; kept so that a type-1 mass never divides by zero
     // Type 0: the mass is added to each node; type 1: the mass is shared equally by the nodes of the group.
     const double per_node = a.type == 0 ? a.mass : a.mass / static_cast<double>(nodes.size());
     for (std::int32_t node : nodes) model.nodal_mass[static_cast<std::size_t>(node)] += per_node;
     model.added_mass += per_node * static_cast<double>(nodes.size());
   }
+  // /RBODY Mass is added to the body at its main node. The secondary nodes keep their own (element) mass here;
+  // gathering it into the body (and moving the main node to the centre of mass, ICoG) is the rigid-body
+  // initialisation's job, which leaves the total unchanged.
   for (const RigidBody& b : model.rigid_bodies) {
     model.nodal_mass[static_cast<std::size_t>(b.main_node)] += b.mass;
     model.added_mass += b.mass;
+  }
+  // A moving rigid wall's Mass is added to the node that carries the wall.
+  for (const RigidWall& w : model.rigid_walls) {
+    if (w.node < 0) continue;  // fixed wall
+    model.nodal_mass[static_cast<std::size_t>(w.node)] += w.mass;
+    model.added_mass += w.mass;
   }
 }
 

@@ -11,22 +11,18 @@ using V3 = std::array<double, 3>;
 V3 sub(const V3& a, const V3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 double dot(const V3& a, const V3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 V3 scaled(const V3& a, double s) { return {a[0] * s, a[1] * s, a[2] * s}; }
-V3 unit(const V3& a) { return scaled(a, 1.0 / std::sqrt(dot(a, a))); }
-V3 cross(const V3& a, const V3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
 
 // Signed distance of p from the wall and the outward normal there; false when p is beside a finite wall.
+// The model build gives the unit normal or axis (RigidWall::direction).
 bool distance(const RigidWall& w, const V3& origin, const V3& p, double& d, V3& normal) {
   const V3 r = sub(p, origin);
   switch (w.shape) {
     case RigidWallShape::Plane:
-      normal = unit(sub(w.point1, w.point));
+      normal = w.direction;
       d = dot(r, normal);
       return true;
     case RigidWallShape::Cylinder: {
-      const V3 axis = unit(sub(w.point1, w.point));
-      const V3 radial = sub(r, scaled(axis, dot(r, axis)));
+      const V3 radial = sub(r, scaled(w.direction, dot(r, w.direction)));
       const double rho = std::sqrt(dot(radial, radial));
       if (rho <= 0.0) return false;
       normal = scaled(radial, 1.0 / rho);
@@ -42,9 +38,9 @@ bool distance(const RigidWall& w, const V3& origin, const V3& p, double& d, V3& 
     }
     case RigidWallShape::Parallelogram: {
       const V3 a = sub(w.point1, w.point), b = sub(w.point2, w.point);
-      normal = unit(cross(a, b));
       const double u = dot(r, a) / dot(a, a), v = dot(r, b) / dot(b, b);
       if (u < 0.0 || u > 1.0 || v < 0.0 || v > 1.0) return false;
+      normal = w.direction;
       d = dot(r, normal);
       return true;
     }
@@ -57,27 +53,7 @@ bool distance(const RigidWall& w, const V3& origin, const V3& p, double& d, V3& 
 void setup_rigid_walls(const Model& m, SolverState& s) {
   for (const RigidWall& w : m.rigid_walls) {
     RigidWallState state;
-    std::vector<std::int32_t> nodes;
-    if (w.node_group1 >= 0) nodes = m.node_groups[static_cast<std::size_t>(w.node_group1)].nodes;
-    if (w.search_distance > 0.0) {
-      // Nodes within D_search of the wall at the start are secondary too.
-      for (std::size_t k = 0; k < m.nodes.size(); ++k) {
-        double d = 0.0;
-        V3 normal{};
-        if (distance(w, w.point, {m.nodes.x[k], m.nodes.y[k], m.nodes.z[k]}, d, normal) && std::abs(d) <= w.search_distance)
-          nodes.push_back(static_cast<std::int32_t>(k));
-      }
-    }
-    std::sort(nodes.begin(), nodes.end());
-    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
-    if (w.node_group2 >= 0) {
-      const auto& removed = m.node_groups[static_cast<std::size_t>(w.node_group2)].nodes;
-      std::vector<std::int32_t> kept;
-      std::set_difference(nodes.begin(), nodes.end(), removed.begin(), removed.end(), std::back_inserter(kept));
-      nodes = std::move(kept);
-    }
-    if (w.node >= 0) nodes.erase(std::remove(nodes.begin(), nodes.end(), w.node), nodes.end());
-    state.nodes = std::move(nodes);
+    state.nodes = w.secondary_nodes;
     state.tied.assign(state.nodes.size(), 0);
     state.origin = w.point;
     state.velocity = w.velocity0;
@@ -133,6 +109,11 @@ void apply_rigid_walls(const Model& m, SolverState& s, double dt_average, double
         const auto c = static_cast<std::size_t>(d3);
         impulse[c] += n.mass[k] * (v[c] - before[c]);
       }
+    }
+    // A moving wall with a mass takes the opposite impulse (momentum is exchanged, not created).
+    if (w.node >= 0 && w.mass > 0.0) {
+      const auto k = static_cast<std::size_t>(w.node);
+      n.vx[k] -= impulse[0] / n.mass[k], n.vy[k] -= impulse[1] / n.mass[k], n.vz[k] -= impulse[2] / n.mass[k];
     }
     // Force of the wall on its nodes during the cycle (the listing reports it; the wall takes the opposite).
     for (int d3 = 0; d3 < 3; ++d3)

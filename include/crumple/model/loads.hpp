@@ -1,6 +1,7 @@
 #pragma once
 // Boundary conditions, imposed motion, initial velocities, loads and added mass. Every record keeps the user ids
 // it refers to (`*_id`) and the dense indices the model build resolves them to (no suffix, -1 = none).
+// Card layouts and defaults: docs/cards/loads-output-engine.md. Values are in working units.
 #include <array>
 #include <cstdint>
 #include <string>
@@ -15,6 +16,10 @@ using Vec3 = std::array<double, 3>;
 // Degree of freedom addressed by a load or imposed motion: X, Y, Z translations, XX, YY, ZZ rotations.
 enum class Dof : std::uint8_t { X, Y, Z, XX, YY, ZZ };
 
+inline bool is_rotation(Dof dof) { return dof == Dof::XX || dof == Dof::YY || dof == Dof::ZZ; }
+// Axis of a dof: 0, 1, 2 for x, y, z (translation or rotation).
+inline int dof_axis(Dof dof) { return static_cast<int>(dof) % 3; }
+
 struct BoundaryCondition {  // /BCS
   SourceLocation where;
   std::int64_t user_id = 0;
@@ -26,7 +31,8 @@ struct BoundaryCondition {  // /BCS
   std::int32_t node_group = -1;
 };
 
-// /IMPVEL, /IMPDISP, /CLOAD share a layout: value(t) = scale_y * f(t / scale_x) on a dof of a node group.
+// /IMPVEL, /IMPDISP, /CLOAD share a layout: value(t) = scale_y * f(t / scale_x) on a dof of each node of a
+// group, for t_start <= t <= t_stop (the function is not shifted to start at t_start).
 enum class ImposedKind : std::uint8_t { Velocity, Displacement, Force };
 
 struct ImposedMotion {
@@ -41,12 +47,14 @@ struct ImposedMotion {
   std::int64_t sensor_id = 0;
   std::int64_t node_group_id = 0;
   std::int32_t node_group = -1;
-  std::int64_t frame_id = 0;
-  int icoor = 0;
-  double scale_x = 1.0;   // abscissa (time) scale [T]
-  double scale_y = 1.0;   // ordinate scale [velocity, length or force]
-  double t_start = 0.0;   // [T]
-  double t_stop = 1e30;   // [T]
+  std::int64_t frame_id = 0;  // /IMPVEL only (the /IMPDISP and /CLOAD layouts have no frame)
+  int icoor = 0;              // 0 Cartesian, 1 cylindrical (/IMPVEL, /IMPDISP)
+  double scale_x = 1.0;       // abscissa (time) scale [T]
+  // Ordinate scale: /IMPVEL [L T^-1] or [T^-1] (XX, YY, ZZ), /IMPDISP [L] or [-] (radians),
+  // /CLOAD [M L T^-2] or [M L^2 T^-2] (moment). The load of /CLOAD applies to each node of the group.
+  double scale_y = 1.0;
+  double t_start = 0.0;   // [T]; /CLOAD: always 0
+  double t_stop = 1e30;   // [T]; /CLOAD: always 1e30
 };
 
 struct InitialVelocity {  // /INIVEL/TRA
@@ -59,27 +67,28 @@ struct InitialVelocity {  // /INIVEL/TRA
   std::int64_t skew_id = 0;
 };
 
-struct Gravity {  // /GRAV
+// /GRAV: acceleration scale_y * f(t / scale_x) along `dof` on a node group (the force is mass * acceleration).
+struct Gravity {
   SourceLocation where;
   std::int64_t user_id = 0;
   std::string title;
-  std::int64_t function_id = 0;
-  std::int32_t function = -1;
-  Dof dof = Dof::Z;
+  std::int64_t function_id = 0;  // 0: constant acceleration scale_y
+  std::int32_t function = -1;    // -1: constant
+  Dof dof = Dof::Z;              // X, Y or Z only
   std::int64_t skew_id = 0;
   std::int64_t sensor_id = 0;
-  std::int64_t node_group_id = 0;
-  std::int32_t node_group = -1;
+  std::int64_t node_group_id = 0;  // 0: every node of the model
+  std::int32_t node_group = -1;    // -1: every node of the model
   double scale_x = 1.0;  // [T]
   double scale_y = 1.0;  // [L T^-2]
 };
 
-struct AddedMass {  // /ADMAS
+struct AddedMass {  // /ADMAS/type/id, types 0 and 1
   SourceLocation where;
   std::int64_t user_id = 0;
   std::string title;
-  int type = 0;       // 0: mass added to each node of the group
-  double mass = 0.0;  // [M]
+  int type = 0;       // 0: `mass` added to each node of the group; 1: `mass` shared equally by the group's nodes
+  double mass = 0.0;  // [M], >= 0
   std::int64_t node_group_id = 0;
   std::int32_t node_group = -1;
 };

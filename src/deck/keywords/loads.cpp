@@ -1,7 +1,276 @@
+// /BCS, /IMPVEL, /IMPDISP, /CLOAD, /INIVEL/TRA, /GRAV, /ADMAS. Layouts, defaults and checks:
+// docs/cards/loads-output-engine.md sections 1 and 4. References (groups, functions) are resolved in
+// resolve_loads.cpp; unsupported options (skew, sensor, frame) are rejected there.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <optional>
+#include <utility>
+
 #include "../context.hpp"
 
 namespace crumple::deck {
+namespace {
 
-void register_load_keywords(KeywordTable& table) { (void)table; }
+constexpr double kNever = 1e30;  // Tstop blank or 0: the condition never stops
+
+std::string in_quotes(std::string_view s) { return fmt::format("'{}'", s); }
+
+// `/KEYWORD/.../id[/unit_ID]`: the object id at path part `index`, then an optional unit id. Crumple has no
+// /UNIT, so a non-zero unit id is an error rather than a silently ignored conversion. A word where the id
+// belongs is another form of the keyword (/IMPVEL/FGEO, /BCS/LAGMUL...), which Crumple does not read.
+std::int64_t card_id(CardReader& reader, std::size_t index) {
+  const Card& card = reader.card();
+  if (index < card.path.size() && !card.path[index].empty() && !parse_integer(card.path[index])) {
+    std::string form;
+    for (std::size_t k = 0; k <= index; ++k) form += "/" + card.path[k];
+    reader.fail("id", fmt::format("a numeric id (the {} form is not supported)", form), in_quotes(card.path[index]));
+  }
+  const std::int64_t id = object_id(reader, index);
+  if (reader.path_id(index + 1, "unit_ID", false) != 0)
+    reader.fail("unit_ID", "0 or nothing after the id (/UNIT systems are not supported)",
+                in_quotes(card.path[index + 1]));
+  if (card.path.size() > index + 2)
+    reader.fail("keyword", "nothing after the unit id", in_quotes(card.path[index + 2]));
+  return id;
+}
+
+template <class Record>
+Record begin_record(CardReader& reader, std::size_t id_index) {
+  Record r;
+  r.where = reader.card().where;
+  r.user_id = card_id(reader, id_index);
+  r.title = read_title(reader);
+  return r;
+}
+
+// An id that must be given (> 0).
+std::int64_t required_id(const Line& line, int column, std::string_view name, std::string_view what) {
+  const std::int64_t id = line.integer(column, 10, name);
+  if (id <= 0) line.fail(column, 10, name, fmt::format("a positive {} id", what));
+  return id;
+}
+
+// An id that may be blank or 0 (= none).
+std::int64_t optional_id(const Line& line, int column, std::string_view name) {
+  const std::int64_t id = line.integer(column, 10, name);
+  if (id < 0) line.fail(column, 10, name, "a non-negative id (0 or blank: none)");
+  return id;
+}
+
+// Columns that Radioss 2019-2021 leave blank but newer versions use: read as Radioss 2021 does (ignored), said
+// in a warning so that a newer deck's setting is not lost silently.
+void warn_if_set(const CardReader& reader, const Line& line, DeckContext& context, int column,
+                 std::string_view newer_field) {
+  const std::string text = line.text(column, 10);
+  if (text.empty() || parse_integer(text) == std::optional<std::int64_t>(0)) return;
+  context.warn(line.where(), reader.card().keyword,
+               fmt::format("columns {}-{} ignored (blank in the Radioss 2021 layout; newer versions read {} there, "
+                           "which Crumple does not support)",
+                           column, column + 9, newer_field));
+}
+
+// A scale factor where blank or 0 means 1 (in input units, hence the conversion factor).
+double scale_or_one(const CardReader& reader, const Line& line, int column, std::string_view name, Dimension d) {
+  const double value = line.real(column, 20, name, d);
+  return value == 0.0 ? reader.units().factor(d) : value;
+}
+
+// The abscissa (time) scale of a function: blank or 0 means 1; negative would run the function backwards.
+double time_scale(const CardReader& reader, const Line& line, int column) {
+  const double value = scale_or_one(reader, line, column, "Ascale_x", dim::time);
+  if (value < 0.0) line.fail(column, 20, "Ascale_x", "a positive time scale (0 or blank: 1)");
+  return value;
+}
+
+// Case-insensitive, like the keyword paths: "y" cannot mean anything but Y.
+std::optional<Dof> parse_dof(std::string_view text) {
+  std::string upper(text);
+  std::transform(upper.begin(), upper.end(), upper.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+  constexpr std::pair<std::string_view, Dof> kNames[] = {{"X", Dof::X},   {"Y", Dof::Y},   {"Z", Dof::Z},
+                                                         {"XX", Dof::XX}, {"YY", Dof::YY}, {"ZZ", Dof::ZZ}};
+  for (const auto& [name, dof] : kNames)
+    if (upper == name) return dof;
+  return std::nullopt;
+}
+
+// Dir, columns 11-20, written right-justified and read trimmed.
+Dof read_direction(const Line& line, bool rotations) {
+  const std::optional<Dof> dof = parse_dof(line.text(11, 10));
+  if (!dof || (!rotations && is_rotation(*dof)))
+    line.fail(11, 10, "Dir", rotations ? "X, Y, Z (translation) or XX, YY, ZZ (rotation)" : "X, Y or Z");
+  return *dof;
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// /BCS: single-digit codes, translations in columns 4-6 and rotations in 8-10.
+
+bool read_bcs_code(const Line& line, int column, std::string_view name) {
+  const char code = line.raw(column, 1)[0];
+  if (code == '1') return true;
+  if (code != ' ' && code != '0')
+    line.fail(column, 1, name, "0, 1 or blank (1 fixes the degree of freedom; codes in columns 4-6 and 8-10)");
+  return false;
+}
+
+void require_blank(const Line& line, int column, int width, std::string_view name, std::string_view expected) {
+  if (!line.text(column, width).empty()) line.fail(column, width, name, expected);
+}
+
+void read_bcs(CardReader& reader, DeckContext& context) {
+  auto bc = begin_record<BoundaryCondition>(reader, 1);
+  const Line line = reader.next("Tra rot, skew_ID, grnod_ID");
+  require_blank(line, 1, 3, "leading blank", "blank (the translation codes TX TY TZ are in columns 4-6)");
+  require_blank(line, 7, 1, "separator", "blank (between translation codes 4-6 and rotation codes 8-10)");
+  constexpr const char* kNames[2][3] = {{"TX", "TY", "TZ"}, {"RX", "RY", "RZ"}};
+  for (int k = 0; k < 3; ++k) {
+    bc.fixed_translation[static_cast<std::size_t>(k)] = read_bcs_code(line, 4 + k, kNames[0][k]);
+    bc.fixed_rotation[static_cast<std::size_t>(k)] = read_bcs_code(line, 8 + k, kNames[1][k]);
+  }
+  bc.skew_id = optional_id(line, 11, "skew_ID");
+  bc.node_group_id = required_id(line, 21, "grnod_ID", "node group");
+  reader.finish();
+  const auto fixed = [](const std::array<bool, 3>& a) { return std::count(a.begin(), a.end(), true); };
+  if (fixed(bc.fixed_translation) + fixed(bc.fixed_rotation) == 0)
+    context.warn(line.where(), reader.card().keyword, "no degree of freedom fixed (all codes blank or 0)");
+  context.model.boundary_conditions.push_back(std::move(bc));
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// /IMPVEL, /IMPDISP, /CLOAD
+
+Dimension ordinate_dimension(ImposedKind kind, Dof dof) {
+  const bool rotation = is_rotation(dof);
+  switch (kind) {
+    case ImposedKind::Velocity: return rotation ? dim::angular_velocity : dim::velocity;
+    case ImposedKind::Displacement: return rotation ? dim::none : dim::length;
+    case ImposedKind::Force: return rotation ? dim::moment : dim::force;
+  }
+  return dim::none;
+}
+
+void read_imposed_motion(CardReader& reader, DeckContext& context, ImposedKind kind) {
+  auto im = begin_record<ImposedMotion>(reader, 1);
+  im.kind = kind;
+  const Line line = reader.next("funct_IDT, Dir, skew_ID, sensor_ID, grnod_ID, frame_ID, Icoor");
+  im.function_id = required_id(line, 1, "funct_IDT", "function");
+  im.dof = read_direction(line, true);
+  im.skew_id = optional_id(line, 21, "skew_ID");
+  im.sensor_id = optional_id(line, 31, "sensor_ID");
+  im.node_group_id = required_id(line, 41, "grnod_ID", "node group");
+  if (kind == ImposedKind::Velocity) {
+    im.frame_id = optional_id(line, 51, "frame_ID");
+    if (im.frame_id != 0 && im.skew_id != 0)
+      line.fail(51, 10, "frame_ID", "0 when skew_ID is given (a skew and a frame exclude each other)");
+  } else {
+    warn_if_set(reader, line, context, 51, "a frame id");
+  }
+  im.icoor = static_cast<int>(line.integer(61, 10, "Icoor"));
+  if (im.icoor != 0 && im.icoor != 1) line.fail(61, 10, "Icoor", "0 (Cartesian) or 1 (cylindrical)");
+
+  const Line scales = reader.next("Ascale_x, Fscale_Y, Tstart, Tstop");
+  im.scale_x = time_scale(reader, scales, 1);
+  im.scale_y = scale_or_one(reader, scales, 21, "Fscale_Y", ordinate_dimension(kind, im.dof));
+  im.t_start = scales.real(41, 20, "Tstart", dim::time);
+  const double stop = scales.real(61, 20, "Tstop", dim::time);
+  im.t_stop = stop == 0.0 ? kNever : stop;
+  if (im.t_stop < im.t_start) scales.fail(61, 20, "Tstop", "a stop time not before Tstart (0 or blank: never)");
+  reader.finish();
+  context.model.imposed.push_back(std::move(im));
+}
+
+void read_concentrated_load(CardReader& reader, DeckContext& context) {
+  auto load = begin_record<ImposedMotion>(reader, 1);
+  load.kind = ImposedKind::Force;
+  const Line line = reader.next("funct_IDT, Dir, skew_ID, sensor_ID, grnod_ID, Ascale_x, Fscale_Y");
+  // Radioss gives fct_IDT = 0 no constant-load meaning: a missing function is an error, not a guess.
+  load.function_id = required_id(line, 1, "funct_IDT", "function");
+  load.dof = read_direction(line, true);
+  load.skew_id = optional_id(line, 21, "skew_ID");
+  load.sensor_id = optional_id(line, 31, "sensor_ID");
+  load.node_group_id = required_id(line, 41, "grnod_ID", "node group");
+  warn_if_set(reader, line, context, 51, "a function type (Itypfun)");
+  load.scale_x = time_scale(reader, line, 61);
+  load.scale_y = scale_or_one(reader, line, 81, "Fscale_Y", ordinate_dimension(load.kind, load.dof));
+  reader.finish();
+  context.model.imposed.push_back(std::move(load));
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// /INIVEL/TRA, /GRAV, /ADMAS
+
+void read_initial_velocity(CardReader& reader, DeckContext& context) {
+  const auto& path = reader.card().path;
+  if (path.size() < 2 || path[1] != "TRA")
+    reader.fail("type", "TRA in /INIVEL/TRA/id (other initial velocity types are not supported)",
+                in_quotes(path.size() < 2 ? "" : path[1]));
+  auto iv = begin_record<InitialVelocity>(reader, 2);
+  const Line line = reader.next("Vx, Vy, Vz, grnod_ID, Skew_ID");
+  constexpr const char* kNames[3] = {"Vx", "Vy", "Vz"};
+  for (int k = 0; k < 3; ++k)
+    iv.velocity[static_cast<std::size_t>(k)] = line.real(1 + 20 * k, 20, kNames[k], dim::velocity);
+  iv.node_group_id = required_id(line, 61, "grnod_ID", "node group");
+  iv.skew_id = optional_id(line, 71, "Skew_ID");
+  reader.finish();
+  context.model.initial_velocities.push_back(std::move(iv));
+}
+
+void read_gravity(CardReader& reader, DeckContext& context) {
+  auto g = begin_record<Gravity>(reader, 1);
+  const Line line = reader.next("funct_IDT, Dir, skew_ID, sensor_ID, grnod_ID, Ascale_x, Fscale_Y");
+  g.function_id = optional_id(line, 1, "funct_IDT");  // 0: constant acceleration
+  g.dof = line.text(11, 10).empty() ? Dof::Z : read_direction(line, false);
+  g.skew_id = optional_id(line, 21, "skew_ID");
+  g.sensor_id = optional_id(line, 31, "sensor_ID");
+  g.node_group_id = optional_id(line, 41, "grnod_ID");  // 0: every node
+  warn_if_set(reader, line, context, 51, "a function type (Itypfun)");
+  g.scale_x = time_scale(reader, line, 61);
+  g.scale_y = scale_or_one(reader, line, 81, "Fscale_Y", dim::acceleration);
+  // Radioss reads a blank scale as 1: an acceleration of 1 in input units, rarely what was meant.
+  if (line.real(81, 20, "Fscale_Y", dim::none) == 0.0)
+    context.warn(line.where(), reader.card().keyword,
+                 "Fscale_Y blank or 0: acceleration 1 in input units (the Radioss default)");
+  reader.finish();
+  context.model.gravity.push_back(std::move(g));
+}
+
+// /ADMAS/type/id: the type comes first in the path. Types 2-7 (surface, part and per-item lists) have other
+// layouts and are not supported.
+void read_added_mass(CardReader& reader, DeckContext& context) {
+  const auto& path = reader.card().path;
+  const std::int64_t type = reader.path_id(1, "type", true);
+  if (path.size() < 3 || path[2].empty())
+    reader.fail("admas_ID", "/ADMAS/type/id (the type comes first; a single number is ambiguous)",
+                in_quotes(reader.card().keyword));
+  if (type > 7) reader.fail("type", "an /ADMAS type: 0 (mass per node) or 1 (total mass)", in_quotes(path[1]));
+  if (type > 1)
+    reader.fail("type", "0 (mass per node) or 1 (total mass shared by the nodes); type 2-7 are not supported",
+                in_quotes(path[1]));
+  auto a = begin_record<AddedMass>(reader, 2);
+  a.type = static_cast<int>(type);
+  const Line line = reader.next("Mass, grnod_ID");
+  a.mass = line.real(1, 20, "Mass", dim::mass);
+  if (a.mass < 0.0) line.fail(1, 20, "Mass", "a non-negative added mass");
+  a.node_group_id = required_id(line, 21, "grnod_ID", "node group");
+  reader.finish();
+  context.model.added_masses.push_back(std::move(a));
+}
+
+}  // namespace
+
+void register_load_keywords(KeywordTable& table) {
+  table.push_back({"/BCS", DeckPart::Starter, read_bcs});
+  table.push_back({"/IMPVEL", DeckPart::Starter,
+                   [](CardReader& r, DeckContext& c) { read_imposed_motion(r, c, ImposedKind::Velocity); }});
+  table.push_back({"/IMPDISP", DeckPart::Starter,
+                   [](CardReader& r, DeckContext& c) { read_imposed_motion(r, c, ImposedKind::Displacement); }});
+  table.push_back({"/CLOAD", DeckPart::Starter, read_concentrated_load});
+  // /INIVEL is registered whole so that other types get a clear "not supported" rather than "unknown keyword".
+  table.push_back({"/INIVEL", DeckPart::Starter, read_initial_velocity});
+  table.push_back({"/GRAV", DeckPart::Starter, read_gravity});
+  table.push_back({"/ADMAS", DeckPart::Starter, read_added_mass});
+}
 
 }  // namespace crumple::deck

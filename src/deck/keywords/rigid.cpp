@@ -1,7 +1,232 @@
+// /RWALL/PLANE, /RWALL/CYL, /RWALL/SPHER, /RWALL/PARAL and /RBODY. Layouts, defaults and checks:
+// docs/cards/loads-output-engine.md sections 2 and 3. References are resolved in resolve_loads.cpp, which also
+// checks the geometry of moving walls (their point M is the wall node's position) and builds the secondary sets.
+#include <fmt/format.h>
+
+#include <array>
+#include <optional>
+
 #include "../context.hpp"
 
 namespace crumple::deck {
+namespace {
 
-void register_rigid_keywords(KeywordTable& table) { (void)table; }
+std::string in_quotes(std::string_view s) { return fmt::format("'{}'", s); }
+
+// `/KEYWORD/.../id[/unit_ID]`: the object id at path part `index`, then an optional unit id that must be 0
+// (Crumple has no /UNIT). A word where the id belongs is another form of the keyword (/RBODY/LAGMUL...).
+// Same rule as the load keywords (loads.cpp).
+std::int64_t card_id(CardReader& reader, std::size_t index) {
+  const Card& card = reader.card();
+  if (index < card.path.size() && !card.path[index].empty() && !parse_integer(card.path[index])) {
+    std::string form;
+    for (std::size_t k = 0; k <= index; ++k) form += "/" + card.path[k];
+    reader.fail("id", fmt::format("a numeric id (the {} form is not supported)", form), in_quotes(card.path[index]));
+  }
+  const std::int64_t id = object_id(reader, index);
+  if (reader.path_id(index + 1, "unit_ID", false) != 0)
+    reader.fail("unit_ID", "0 or nothing after the id (/UNIT systems are not supported)",
+                in_quotes(card.path[index + 1]));
+  if (card.path.size() > index + 2)
+    reader.fail("keyword", "nothing after the unit id", in_quotes(card.path[index + 2]));
+  return id;
+}
+
+std::int64_t optional_id(const Line& line, int column, std::string_view name) {
+  const std::int64_t id = line.integer(column, 10, name);
+  if (id < 0) line.fail(column, 10, name, "a non-negative id (0 or blank: none)");
+  return id;
+}
+
+// Three reals in columns 1-20, 21-40, 41-60 (a point, a velocity...) named `names`.
+Vec3 read_vector(const Line& line, const std::array<const char*, 3>& names, Dimension d, int first_column = 1) {
+  Vec3 v{};
+  for (std::size_t k = 0; k < 3; ++k)
+    v[k] = line.real(first_column + 20 * static_cast<int>(k), 20, names[k], d);
+  return v;
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// /RWALL/type/id
+
+RigidWallShape wall_shape(const CardReader& reader) {
+  const auto& path = reader.card().path;
+  const std::string type = path.size() > 1 ? path[1] : "";
+  if (type == "PLANE") return RigidWallShape::Plane;
+  if (type == "CYL") return RigidWallShape::Cylinder;
+  if (type == "SPHER") return RigidWallShape::Sphere;
+  if (type == "PARAL") return RigidWallShape::Parallelogram;
+  reader.fail("type", "PLANE, CYL, SPHER or PARAL in /RWALL/type/id (other rigid walls are not supported)",
+              in_quotes(type));
+}
+
+// Line 2: node_ID, Slide, grnod_ID1, grnod_ID2.
+void read_wall_nodes(const CardReader& reader, const Line& line, RigidWall& w, DeckContext& context) {
+  w.node_id = optional_id(line, 1, "node_ID");
+  const std::int64_t slide = line.integer(11, 10, "Slide");
+  if (slide < 0 || slide > 2) line.fail(11, 10, "Slide", "0 (sliding), 1 (tied) or 2 (sliding with friction)");
+  w.slide = static_cast<WallSliding>(slide);
+  w.node_group1_id = optional_id(line, 21, "grnod_ID1");
+  w.node_group2_id = optional_id(line, 31, "grnod_ID2");
+  const std::string penalty = line.text(41, 10);
+  if (!penalty.empty() && parse_integer(penalty) != std::optional<std::int64_t>(0))
+    context.warn(line.where(), reader.card().keyword,
+                 "columns 41-50 ignored (blank in the Radioss 2021 layout; newer versions read a penalty "
+                 "formulation flag there, which Crumple does not support)");
+}
+
+// Line 3: D_search, fric, Diameter, ffac, ifq.
+void read_wall_contact(const CardReader& reader, const Line& line, RigidWall& w, DeckContext& context) {
+  const std::string& keyword = reader.card().keyword;
+  w.search_distance = line.real(1, 20, "D_search", dim::length);
+  if (w.search_distance < 0.0) line.fail(1, 20, "D_search", "a non-negative search distance (0: none)");
+  w.friction = line.real(21, 20, "fric", dim::none);
+  if (w.friction < 0.0) line.fail(21, 20, "fric", "a non-negative friction coefficient");
+  if (w.friction != 0.0 && w.slide != WallSliding::Friction)
+    context.warn(line.where(), keyword, "fric ignored: friction applies only with Slide = 2");
+
+  w.diameter = line.real(41, 20, "Diameter", dim::length);
+  const bool round = w.shape == RigidWallShape::Cylinder || w.shape == RigidWallShape::Sphere;
+  if (round && w.diameter <= 0.0) line.fail(41, 20, "Diameter", "a positive diameter");
+  if (!round && w.diameter != 0.0)
+    context.warn(line.where(), keyword, "Diameter ignored: it applies only to /RWALL/CYL and /RWALL/SPHER");
+
+  // The flag decides what the factor is: a coefficient, a period or a frequency.
+  const std::int64_t ifq = line.integer(81, 10, "ifq");
+  if (ifq < 0 || ifq > 3)
+    line.fail(81, 10, "ifq", "0 (no filter), 1 (coefficient), 2 (period) or 3 (frequency)");
+  const Dimension d = ifq == 2 ? dim::time : ifq == 3 ? dim::rate : dim::none;
+  w.filter_factor = line.real(61, 20, "ffac", d);
+  if (w.filter_factor < 0.0) line.fail(61, 20, "ffac", "a non-negative filter factor");
+  if (ifq == 1 && w.filter_factor > 1.0) line.fail(61, 20, "ffac", "a filter coefficient in [0, 1] (ifq = 1)");
+  if (ifq == 0 && w.filter_factor != 0.0)
+    context.warn(line.where(), keyword, "ffac ignored: ifq = 0 (no friction filter)");
+  // Radioss turns the filter off when the factor is 0, whatever the flag.
+  w.filter_flag = w.filter_factor == 0.0 ? 0 : static_cast<int>(ifq);
+  if (w.filter_flag == 0) w.filter_factor = 0.0;
+}
+
+// Line 4: the point M of a fixed wall, or the added mass and initial velocity of the node of a moving wall.
+void read_wall_origin(const Line& line, RigidWall& w) {
+  if (w.node_id == 0) {
+    w.point = read_vector(line, {"XM", "YM", "ZM"}, dim::length);
+    return;
+  }
+  w.mass = line.real(1, 20, "Mass", dim::mass);
+  if (w.mass < 0.0) line.fail(1, 20, "Mass", "a non-negative wall mass");
+  w.velocity0 = read_vector(line, {"VX_0", "VY_0", "VZ_0"}, dim::velocity, 21);
+}
+
+// A fixed wall's points are all known here: check them on the line that defines them. Moving walls are
+// checked once the wall node's position is known (resolve_loads.cpp).
+void check_fixed_wall(const Line& line, const RigidWall& w) {
+  if (w.node_id != 0 || wall_direction(w.shape, w.point, w.point1, w.point2)) return;
+  if (w.shape == RigidWallShape::Parallelogram)
+    line.fail(1, 60, "X_M2, Y_M2, Z_M2",
+              "a point M2 off the line M M1 (M, M1, M2 must span a parallelogram; M1 distinct from M)");
+  line.fail(1, 60, "X_M1, Y_M1, Z_M1",
+            w.shape == RigidWallShape::Cylinder ? "a point M1 distinct from M (M -> M1 is the cylinder axis)"
+                                                : "a point M1 distinct from M (M -> M1 is the wall normal)");
+}
+
+void read_rigid_wall(CardReader& reader, DeckContext& context) {
+  RigidWall w;
+  w.where = reader.card().where;
+  w.shape = wall_shape(reader);
+  w.user_id = card_id(reader, 2);
+  w.title = read_title(reader);
+  read_wall_nodes(reader, reader.next("node_ID, Slide, grnod_ID1, grnod_ID2"), w, context);
+  read_wall_contact(reader, reader.next("D_search, fric, Diameter, ffac, ifq"), w, context);
+  const Line origin = reader.next(w.node_id == 0 ? "XM, YM, ZM" : "Mass, VX_0, VY_0, VZ_0");
+  read_wall_origin(origin, w);
+  std::optional<Line> last;
+  if (w.shape != RigidWallShape::Sphere) {
+    last = reader.next("X_M1, Y_M1, Z_M1");
+    w.point1 = read_vector(*last, {"X_M1", "Y_M1", "Z_M1"}, dim::length);
+  }
+  if (w.shape == RigidWallShape::Parallelogram) {
+    last = reader.next("X_M2, Y_M2, Z_M2");
+    w.point2 = read_vector(*last, {"X_M2", "Y_M2", "Z_M2"}, dim::length);
+  }
+  reader.finish();
+  check_fixed_wall(last ? *last : origin, w);
+  context.model.rigid_walls.push_back(std::move(w));
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// /RBODY/id
+
+// An integer flag in `column` whose blank or 0 means `zero_means`, restricted to [low, high].
+int read_flag(const Line& line, int column, std::string_view name, int zero_means, int low, int high,
+              std::string_view expected) {
+  const std::int64_t value = line.integer(column, 10, name);
+  if (value == 0) return zero_means;
+  if (value < low || value > high) line.fail(column, 10, name, expected);
+  return static_cast<int>(value);
+}
+
+// Line 2: RBID, sensor_ID, skew_ID, Ispher, Mass, grnod_ID, Ikrem, ICoG, surf_ID.
+void read_body_definition(const Line& line, RigidBody& b) {
+  b.main_node_id = line.integer(1, 10, "RBID");
+  if (b.main_node_id <= 0) line.fail(1, 10, "RBID", "a positive main node id");
+  b.sensor_id = optional_id(line, 11, "sensor_ID");
+  b.skew_id = optional_id(line, 21, "skew_ID");
+  b.ispher = read_flag(line, 31, "Ispher", 2, 1, 3,
+                       "1 (spherical inertia), 2 (computed, default) or 3 (from data); 0 or blank: 2");
+  b.mass = line.real(41, 20, "Mass", dim::mass);
+  if (b.mass < 0.0) line.fail(41, 20, "Mass", "a non-negative added mass");
+  b.node_group_id = line.integer(61, 10, "grnod_ID");
+  if (b.node_group_id <= 0) line.fail(61, 10, "grnod_ID", "a positive node group id (the secondary nodes)");
+  b.ikrem = read_flag(line, 71, "Ikrem", 0, 0, 1, "0 (secondary nodes removed from rigid walls) or 1 (kept)");
+  b.icog = read_flag(line, 81, "ICoG", 1, 1, 4, "1, 2, 3 or 4 (0 or blank: 1)");
+  b.surface_id = optional_id(line, 91, "surf_ID");
+}
+
+void read_added_inertia(CardReader& reader, RigidBody& b) {
+  const Line diagonal = reader.next("Jxx, Jyy, Jzz");
+  constexpr const char* kDiagonal[3] = {"Jxx", "Jyy", "Jzz"};
+  for (std::size_t k = 0; k < 3; ++k) {
+    const int column = 1 + 20 * static_cast<int>(k);
+    b.inertia[k] = diagonal.real(column, 20, kDiagonal[k], dim::inertia);
+    if (b.inertia[k] < 0.0) diagonal.fail(column, 20, kDiagonal[k], "a non-negative added moment of inertia");
+  }
+  const Line products = reader.next("Jxy, Jyz, Jxz");
+  constexpr const char* kProducts[3] = {"Jxy", "Jyz", "Jxz"};
+  for (std::size_t k = 0; k < 3; ++k)
+    b.inertia[3 + k] = products.real(1 + 20 * static_cast<int>(k), 20, kProducts[k], dim::inertia);
+}
+
+// Line 5 (Ioptoff, Iexpams, Ifail) came with Radioss 2019; older decks end after the inertia lines.
+void read_body_options(CardReader& reader, RigidBody& b, DeckContext& context) {
+  if (reader.at_end()) {
+    context.warn(reader.card().where, reader.card().keyword,
+                 "no Ioptoff/Iexpams line (pre-2019 layout): taken as 0 0");
+    return;
+  }
+  const Line line = reader.next("Ioptoff, Iexpams, Ifail");
+  b.ioptoff = static_cast<int>(line.integer(1, 10, "Ioptoff"));
+  b.iexpams = static_cast<int>(line.integer(11, 10, "Iexpams"));
+  if (line.integer(21, 10, "Ifail") != 0) line.fail(21, 10, "Ifail", "0 (rigid body failure is not supported)");
+}
+
+void read_rigid_body(CardReader& reader, DeckContext& context) {
+  RigidBody b;
+  b.where = reader.card().where;
+  b.user_id = card_id(reader, 1);
+  b.title = read_title(reader);
+  read_body_definition(reader.next("RBID, sensor_ID, skew_ID, Ispher, Mass, grnod_ID, Ikrem, ICoG, surf_ID"), b);
+  read_added_inertia(reader, b);
+  read_body_options(reader, b, context);
+  reader.finish();
+  context.model.rigid_bodies.push_back(std::move(b));
+}
+
+}  // namespace
+
+void register_rigid_keywords(KeywordTable& table) {
+  // /RWALL is registered whole so that other types get a clear "not supported" rather than "unknown keyword".
+  table.push_back({"/RWALL", DeckPart::Starter, read_rigid_wall});
+  table.push_back({"/RBODY", DeckPart::Starter, read_rigid_body});
+}
 
 }  // namespace crumple::deck
