@@ -5,4 +5,4 @@ cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 cmake --preset release
 cmake --build --preset release
-./build/release/src/crumple check decks/tube_impact/TUBE_0000.rad
+./build/release/src/crumple run decks/tube_impact/TUBE_0000.rad -o build/tube_impact

@@ -96,6 +96,26 @@ double Hardening::slope(double eps_p, double eps_rate) const {
   return 0.0;
 }
 
+double Hardening::yield_and_slope(double eps_p, double eps_rate, double& slope_out) const {
+  if (law != MaterialLaw::JohnsonCook) {
+    slope_out = slope(eps_p, eps_rate);
+    return yield(eps_p, eps_rate);
+  }
+  const auto& p = *johnson_cook;
+  const double factor = jc_rate_factor(p, eps_rate);
+  // b eps^n and its derivative b n eps^(n-1) = n (b eps^n) / eps from one power (slope evaluated a little above 0).
+  const double e = std::max(eps_p, 1e-6);
+  const double power = p.b * std::pow(e, p.n);
+  const double hardening = eps_p > 0.0 ? (eps_p == e ? power : p.b * std::pow(eps_p, p.n)) : 0.0;
+  const double sigma = (p.a + hardening) * factor;
+  if (p.sig_max0 > 0.0 && sigma >= cap(p, factor)) {
+    slope_out = 0.0;
+    return cap(p, factor);
+  }
+  slope_out = p.n * power / e * factor;
+  return sigma;
+}
+
 double Hardening::failure_strain() const {
   switch (law) {
     case MaterialLaw::Elastic: return 0.0;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace crumple::materials {
 
@@ -29,28 +30,33 @@ PlaneStressResult plane_stress_update(const PlaneStressElastic& el, const Harden
   // q = syy - sxx, r = sxy the corrected stress is p/(1 + E g/(3(1-nu))), q/(1 + 2 G g), r/(1 + 2 G g) for the
   // plastic multiplier g, and the equivalent plastic strain grows by (2/3) g sigma_vm(g).
   const double p = txx + tyy, q = tyy - txx, r = txy;
-  auto vm = [&](double g) {
-    const double a = p / (1.0 + E * g / (3.0 * (1.0 - nu)));
-    const double b = 1.0 / (1.0 + 2.0 * G * g);
-    return std::sqrt(0.25 * a * a + (0.75 * q * q + 3.0 * r * r) * b * b);
+  const double alpha = E / (3.0 * (1.0 - nu));
+  const double deviatoric = 0.75 * q * q + 3.0 * r * r;
+  // sigma_vm(g) and its derivative (eq. PS-4).
+  auto vm = [&](double g, double& derivative) {
+    const double a = p / (1.0 + alpha * g), b = 1.0 / (1.0 + 2.0 * G * g);
+    const double value = std::sqrt(0.25 * a * a + deviatoric * b * b);
+    const double da = -alpha * a / (1.0 + alpha * g), db = -2.0 * G * b * b;
+    derivative = value > 0.0 ? (0.25 * a * da + deviatoric * b * db) / value : 0.0;
+    return value;
   };
-  auto residual = [&](double g) {
-    const double s = vm(g);
-    return s - hardening.yield(eps_p + 2.0 / 3.0 * g * s, rate);
-  };
-  // Bracket: residual(0) > 0; grow the upper bound until the residual changes sign.
-  double lo = 0.0, hi = (trial - yield0) / (3.0 * G * trial) * 3.0 + 1e-300;
-  for (int k = 0; k < 60 && residual(hi) > 0.0; ++k) hi *= 2.0;
-  double g = 0.5 * (lo + hi);
-  for (int it = 0; it < 60; ++it) {
-    const double f = residual(g);
+  // Newton from g = 0 with the exact slope, kept inside a bracket [lo, hi] of the sign change. The residual
+  // decreases with g, so the iteration needs a handful of steps; bisection guards the rare overshoot.
+  double lo = 0.0, hi = std::numeric_limits<double>::infinity();
+  double g = 0.0;
+  for (int it = 0; it < 50; ++it) {
+    double dvm = 0.0;
+    const double s_vm = vm(g, dvm);
+    const double eps = eps_p + 2.0 / 3.0 * g * s_vm;
+    double hardening_slope = 0.0;
+    const double yield = hardening.yield_and_slope(eps, rate, hardening_slope);
+    const double f = s_vm - yield;
+    if (std::abs(f) <= 1e-12 * yield) break;
     if (f > 0.0) lo = g; else hi = g;
-    // Newton step with a finite-difference slope, kept inside the bracket.
-    const double h = 1e-7 * std::max(g, 1e-30);
-    const double slope = (residual(g + h) - f) / h;
-    double next = slope < 0.0 ? g - f / slope : 0.5 * (lo + hi);
-    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-    if (std::abs(next - g) <= 1e-14 * std::max(g, 1e-300) || hi - lo <= 1e-15 * hi) {
+    const double slope = dvm - hardening_slope * 2.0 / 3.0 * (s_vm + g * dvm);
+    double next = slope < 0.0 ? g - f / slope : lo * 2.0 + 1e-30;
+    if (!(next > lo && next < hi)) next = std::isfinite(hi) ? 0.5 * (lo + hi) : std::max(2.0 * lo, 1e-30);
+    if (std::abs(next - g) <= 1e-13 * next) {
       g = next;
       break;
     }

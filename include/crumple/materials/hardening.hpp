@@ -21,6 +21,8 @@ struct Hardening {
   double yield(double eps_p, double eps_rate) const;
   // d sigma_y / d eps_p at fixed rate (for the return mapping's Newton iteration).
   double slope(double eps_p, double eps_rate) const;
+  // Both at once (one power evaluation for Johnson-Cook): returns sigma_y, writes the slope.
+  double yield_and_slope(double eps_p, double eps_rate, double& slope) const;
   // Plastic strain at which the element fails and is deleted (0: never).
   double failure_strain() const;
 };
