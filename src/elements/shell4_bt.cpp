@@ -41,40 +41,53 @@ void through_thickness_rule(int n, double* zeta, double* membrane_weight, double
   }
 }
 
-GroupStepResult shell4_forces(const ElementTable& table, const ElementGroup& group, const ShellGroupParameters& p,
-                              NodalState& nodes, ShellState& state, double dt) {
+namespace {
+
+// One kernel for the 4-node Belytschko-Tsay shell and the 3-node C0 triangle (docs/theory/shell4.md,
+// shell3 section): they differ in the element frame, the gradient operator and the hourglass modes only.
+template <int NN>
+GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& group, const ShellGroupParameters& p,
+                             NodalState& nodes, ShellState& state, double dt) {
   GroupStepResult result;
   const double E = p.young, nu = p.poisson, G = E / (2.0 * (1.0 + nu));
   const double wave_speed = std::sqrt(E / (p.density * (1.0 - nu * nu)));  // plate wave speed
   const materials::PlaneStressElastic elastic{E, nu};
   const int np = p.points;
-  constexpr double h[4] = {1.0, -1.0, 1.0, -1.0};  // hourglass base vector of the one-point quadrilateral
+  constexpr double mean = 1.0 / NN;  // shape function value at the element centre
 
   for (std::int32_t e = group.begin; e < group.end; ++e) {
     const auto ue = static_cast<std::size_t>(e);
     if (state.deleted[ue]) continue;
     const std::int32_t* n = table.nodes_of(ue);
-    Vec x[4], v[4], w[4];
-    for (int a = 0; a < 4; ++a) {
+    Vec x[NN], v[NN], w[NN];
+    for (int a = 0; a < NN; ++a) {
       const auto k = static_cast<std::size_t>(n[a]);
       x[a] = {nodes.x[k], nodes.y[k], nodes.z[k]};
       v[a] = {nodes.vx[k], nodes.vy[k], nodes.vz[k]};
       w[a] = {nodes.wx[k], nodes.wy[k], nodes.wz[k]};
     }
-    // Co-rotational frame (eq. S-1): normal from the diagonals, e1 along the mean of the sides 1-2 and 4-3.
-    const Vec normal = cross(x[2] - x[0], x[3] - x[1]);
+    // Co-rotational frame (eq. S-1). Quadrilateral: normal from the diagonals, e1 along the mean of the sides
+    // 1-2 and 4-3. Triangle: normal from two sides, e1 along the side 1-2.
+    Vec normal, side;
+    if constexpr (NN == 4) {
+      normal = cross(x[2] - x[0], x[3] - x[1]);
+      side = (x[1] - x[0]) + (x[2] - x[3]);
+    } else {
+      normal = cross(x[1] - x[0], x[2] - x[0]);
+      side = x[1] - x[0];
+    }
     const double normal_length = std::sqrt(dot(normal, normal));
     if (!(normal_length > 0.0)) {
       result.inverted = e;
       continue;
     }
     const Vec e3 = scaled(normal, 1.0 / normal_length);
-    const Vec side = (x[1] - x[0]) + (x[2] - x[3]);
     const Vec e1 = unit(side - scaled(e3, dot(side, e3)));
     const Vec e2 = cross(e3, e1);
-    const Vec centre = scaled(x[0] + x[1] + x[2] + x[3], 0.25);
-    double lx[4], ly[4], vx[4], vy[4], vz[4], tx[4], ty[4];
-    for (int a = 0; a < 4; ++a) {
+    Vec centre{0.0, 0.0, 0.0};
+    for (int a = 0; a < NN; ++a) centre = centre + scaled(x[a], mean);
+    double lx[NN], ly[NN], vx[NN], vy[NN], vz[NN], tx[NN], ty[NN];
+    for (int a = 0; a < NN; ++a) {
       const Vec r = x[a] - centre;
       lx[a] = dot(r, e1);
       ly[a] = dot(r, e2);
@@ -84,28 +97,35 @@ GroupStepResult shell4_forces(const ElementTable& table, const ElementGroup& gro
       tx[a] = dot(w[a], e1);
       ty[a] = dot(w[a], e2);
     }
-    const double area = 0.5 * ((lx[2] - lx[0]) * (ly[3] - ly[1]) - (lx[3] - lx[1]) * (ly[2] - ly[0]));
+    // Gradient operator at the centre (eq. S-2; triangle: eq. S-9).
+    double area, b1[NN], b2[NN];
+    if constexpr (NN == 4) {
+      area = 0.5 * ((lx[2] - lx[0]) * (ly[3] - ly[1]) - (lx[3] - lx[1]) * (ly[2] - ly[0]));
+    } else {
+      area = 0.5 * ((lx[1] - lx[0]) * (ly[2] - ly[0]) - (lx[2] - lx[0]) * (ly[1] - ly[0]));
+    }
     if (!(area > 0.0)) {
       result.inverted = e;
       continue;
     }
-    // One-point gradient operator (eq. S-2).
     const double inv2a = 0.5 / area;
-    const double b1[4] = {(ly[1] - ly[3]) * inv2a, (ly[2] - ly[0]) * inv2a, (ly[3] - ly[1]) * inv2a,
-                          (ly[0] - ly[2]) * inv2a};
-    const double b2[4] = {(lx[3] - lx[1]) * inv2a, (lx[0] - lx[2]) * inv2a, (lx[1] - lx[3]) * inv2a,
-                          (lx[2] - lx[0]) * inv2a};
+    for (int a = 0; a < NN; ++a) {
+      // Quadrilateral: the opposite-diagonal differences; triangle: the opposite side.
+      const int next = (a + 1) % NN, previous = (a + NN - 1) % NN;
+      b1[a] = (ly[next] - ly[previous]) * inv2a;
+      b2[a] = (lx[previous] - lx[next]) * inv2a;
+    }
     // Membrane strain rates, curvature rates, transverse shear strain rates (eq. S-3).
     double dxx = 0, dyy = 0, gxy = 0, kxx = 0, kyy = 0, kxy = 0, gxz = 0, gyz = 0;
-    for (int a = 0; a < 4; ++a) {
+    for (int a = 0; a < NN; ++a) {
       dxx += b1[a] * vx[a];
       dyy += b2[a] * vy[a];
       gxy += b2[a] * vx[a] + b1[a] * vy[a];
       kxx += b1[a] * ty[a];
       kyy -= b2[a] * tx[a];
       kxy += b2[a] * ty[a] - b1[a] * tx[a];
-      gxz += b1[a] * vz[a] + 0.25 * ty[a];
-      gyz += b2[a] * vz[a] - 0.25 * tx[a];
+      gxz += b1[a] * vz[a] + mean * ty[a];
+      gyz += b2[a] * vz[a] - mean * tx[a];
     }
     const double t = state.thickness[ue];
 
@@ -147,45 +167,53 @@ GroupStepResult shell4_forces(const ElementTable& table, const ElementGroup& gro
     work += 0.5 * (old_qx + qx) * gxz * dt + 0.5 * (old_qy + qy) * gyz * dt;
     if (p.thickness_update && dt > 0.0) state.thickness[ue] = t * std::exp(thickness_strain);
 
-    // Hourglass stiffness on the five one-point hourglass modes (eq. S-5).
-    double hx = 0, hy = 0;
-    for (int a = 0; a < 4; ++a) hx += h[a] * lx[a], hy += h[a] * ly[a];
-    double gamma[4];
-    double bb = 0.0;
-    for (int a = 0; a < 4; ++a) {
-      gamma[a] = 0.25 * (h[a] - hx * b1[a] - hy * b2[a]);
-      bb += b1[a] * b1[a] + b2[a] * b2[a];
-    }
-    double rates[5] = {0, 0, 0, 0, 0};
-    for (int a = 0; a < 4; ++a) {
-      rates[0] += gamma[a] * vx[a];
-      rates[1] += gamma[a] * vy[a];
-      rates[2] += gamma[a] * vz[a];
-      rates[3] += gamma[a] * tx[a];
-      rates[4] += gamma[a] * ty[a];
-    }
-    // Each coefficient is the fraction of the element's own stiffness for the matching deformation: membrane
-    // E t A |B|^2, bending D A |B|^4 for the transverse mode and D A |B|^2 for the rotation modes (D = E t^3 / 12).
-    const double plate = E * t * t * t / 12.0;
-    const double membrane = p.hm * E * t * area * bb;
-    const double bending = p.hf * plate * area * bb * bb;
-    const double rotation = p.hr * plate * area * bb;
-    const double stiffness[5] = {membrane, membrane, bending, rotation, rotation};
-    double* hq = &state.hourglass[ue * 5];
+    // Hourglass stiffness on the five one-point hourglass modes of the quadrilateral (eq. S-5); the linear
+    // triangle has none.
+    double gamma[NN] = {};
+    double* hq = nullptr;
     double hourglass_work = 0.0;
-    for (int m = 0; m < 5; ++m) {
-      const double old = hq[m];
-      hq[m] += stiffness[m] * rates[m] * dt;
-      hourglass_work += 0.5 * (old + hq[m]) * rates[m] * dt;
+    if constexpr (NN == 4) {
+      constexpr double h[4] = {1.0, -1.0, 1.0, -1.0};
+      double hx = 0, hy = 0, bb = 0.0;
+      for (int a = 0; a < 4; ++a) hx += h[a] * lx[a], hy += h[a] * ly[a];
+      for (int a = 0; a < 4; ++a) {
+        gamma[a] = 0.25 * (h[a] - hx * b1[a] - hy * b2[a]);
+        bb += b1[a] * b1[a] + b2[a] * b2[a];
+      }
+      double rates[5] = {0, 0, 0, 0, 0};
+      for (int a = 0; a < 4; ++a) {
+        rates[0] += gamma[a] * vx[a];
+        rates[1] += gamma[a] * vy[a];
+        rates[2] += gamma[a] * vz[a];
+        rates[3] += gamma[a] * tx[a];
+        rates[4] += gamma[a] * ty[a];
+      }
+      // Each coefficient is the fraction of the element's own stiffness for the matching deformation: membrane
+      // E t A |B|^2, bending D A |B|^4 for the transverse mode and D A |B|^2 for the rotation modes.
+      const double plate = E * t * t * t / 12.0;
+      const double membrane = p.hm * E * t * area * bb;
+      const double bending = p.hf * plate * area * bb * bb;
+      const double rotation = p.hr * plate * area * bb;
+      const double stiffness[5] = {membrane, membrane, bending, rotation, rotation};
+      hq = &state.hourglass[ue * 5];
+      for (int m = 0; m < 5; ++m) {
+        const double old = hq[m];
+        hq[m] += stiffness[m] * rates[m] * dt;
+        hourglass_work += 0.5 * (old + hq[m]) * rates[m] * dt;
+      }
     }
 
-    // Nodal forces and moments in the element frame (eq. S-5, S-7), back to global, subtracted.
-    for (int a = 0; a < 4; ++a) {
-      const double fx = area * (b1[a] * nxx + b2[a] * nxy) + gamma[a] * hq[0];
-      const double fy = area * (b2[a] * nyy + b1[a] * nxy) + gamma[a] * hq[1];
-      const double fz = area * (b1[a] * qx + b2[a] * qy) + gamma[a] * hq[2];
-      const double mx = area * (-b2[a] * myy - b1[a] * mxy - 0.25 * qy) + gamma[a] * hq[3];
-      const double my = area * (b1[a] * mxx + b2[a] * mxy + 0.25 * qx) + gamma[a] * hq[4];
+    // Nodal forces and moments in the element frame (eq. S-7), back to global, subtracted.
+    for (int a = 0; a < NN; ++a) {
+      double fx = area * (b1[a] * nxx + b2[a] * nxy);
+      double fy = area * (b2[a] * nyy + b1[a] * nxy);
+      double fz = area * (b1[a] * qx + b2[a] * qy);
+      double mx = area * (-b2[a] * myy - b1[a] * mxy - mean * qy);
+      double my = area * (b1[a] * mxx + b2[a] * mxy + mean * qx);
+      if constexpr (NN == 4) {
+        fx += gamma[a] * hq[0], fy += gamma[a] * hq[1], fz += gamma[a] * hq[2];
+        mx += gamma[a] * hq[3], my += gamma[a] * hq[4];
+      }
       const auto k = static_cast<std::size_t>(n[a]);
       nodes.fx[k] -= fx * e1.x + fy * e2.x + fz * e3.x;
       nodes.fy[k] -= fx * e1.y + fy * e2.y + fz * e3.y;
@@ -200,13 +228,14 @@ GroupStepResult shell4_forces(const ElementTable& table, const ElementGroup& gro
     result.internal_energy += internal;
     result.hourglass_energy += hourglass_work;
 
-    // Critical step: characteristic length (area over the longest side) over the plate wave speed (eq. T-1).
+    // Critical step (eq. T-1): quadrilateral area over the longest side, triangle twice the area over it.
     double longest = 0.0;
-    for (int a = 0; a < 4; ++a) {
-      const double sx = lx[(a + 1) % 4] - lx[a], sy = ly[(a + 1) % 4] - ly[a];
+    for (int a = 0; a < NN; ++a) {
+      const double sx = lx[(a + 1) % NN] - lx[a], sy = ly[(a + 1) % NN] - ly[a];
       longest = std::max(longest, sx * sx + sy * sy);
     }
-    const double step = area / std::sqrt(longest) / wave_speed;
+    const double length = (NN == 4 ? area : 2.0 * area) / std::sqrt(longest);
+    const double step = length / wave_speed;
     if (step < result.min_dt) result.min_dt = step, result.controlling = e;
     if (failed) {
       state.deleted[ue] = 1;
@@ -214,6 +243,18 @@ GroupStepResult shell4_forces(const ElementTable& table, const ElementGroup& gro
     }
   }
   return result;
+}
+
+}  // namespace
+
+GroupStepResult shell4_forces(const ElementTable& table, const ElementGroup& group, const ShellGroupParameters& p,
+                              NodalState& nodes, ShellState& state, double dt) {
+  return shell_forces<4>(table, group, p, nodes, state, dt);
+}
+
+GroupStepResult shell3_forces(const ElementTable& table, const ElementGroup& group, const ShellGroupParameters& p,
+                              NodalState& nodes, ShellState& state, double dt) {
+  return shell_forces<3>(table, group, p, nodes, state, dt);
 }
 
 }  // namespace crumple

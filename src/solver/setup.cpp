@@ -13,6 +13,10 @@ namespace {
 
 constexpr double kDefaultHourglass = 0.01;  // Radioss default hm, hf, hr for 4-node shells
 
+void note_once(std::vector<std::string>& notes, const std::string& note) {
+  if (std::find(notes.begin(), notes.end(), note) == notes.end()) notes.push_back(note);
+}
+
 void setup_nodes(const Model& m, SolverState& s) {
   const std::size_t n = m.nodes.size();
   s.nodes.resize(n);
@@ -37,28 +41,21 @@ void setup_nodes(const Model& m, SolverState& s) {
   }
 }
 
-void setup_shells(const Model& m, SolverState& s, std::vector<std::string>& notes) {
-  const ElementTable& table = m.elements[static_cast<int>(ElementKind::Shell4)];
+// Shell state and group parameters for the 4-node (kind Shell4) or 3-node (kind Shell3) shells.
+void setup_shells(const Model& m, SolverState& s, ElementKind kind, std::vector<std::string>& notes) {
+  const ElementTable& table = m.elements[static_cast<int>(kind)];
+  const int nodes_per = nodes_per_element(kind);
   const std::size_t n = table.size();
-  ShellState& st = s.shells;
+  ShellState& st = kind == ElementKind::Shell4 ? s.shells : s.shells3;
   st.qx.assign(n, 0.0), st.qy.assign(n, 0.0), st.thickness.assign(n, 0.0), st.hourglass.assign(5 * n, 0.0);
   st.internal_energy.assign(n, 0.0), st.hourglass_energy.assign(n, 0.0), st.deleted.assign(n, 0);
-  s.shell_groups.assign(m.element_groups.size(), ShellGroupParameters{});
   st.point_offset.assign(m.element_groups.size(), 0);
   st.points.assign(m.element_groups.size(), 0);
-  s.shell_zeta.assign(11 * 11, 0.0);
-  s.shell_membrane_weight.assign(11 * 11, 0.0);
-  s.shell_bending_weight.assign(11 * 11, 0.0);
-  for (int np = 1; np <= 10; ++np) {
-    const auto at = static_cast<std::size_t>(np) * 11;
-    through_thickness_rule(np, &s.shell_zeta[at], &s.shell_membrane_weight[at], &s.shell_bending_weight[at]);
-  }
 
   std::size_t total_points = 0;
-  bool global_plasticity_noted = false, qeph_noted = false;
   for (std::size_t g = 0; g < m.element_groups.size(); ++g) {
     const ElementGroup& group = m.element_groups[g];
-    if (group.kind != ElementKind::Shell4) continue;
+    if (group.kind != kind) continue;
     const Property& prop = m.properties[static_cast<std::size_t>(group.property)];
     const ResolvedFormulation& f = m.formulations[static_cast<std::size_t>(group.property)];
     const Material& mat = m.materials[static_cast<std::size_t>(group.material)];
@@ -73,18 +70,15 @@ void setup_shells(const Model& m, SolverState& s, std::vector<std::string>& note
     if (np == 0) {
       // N = 0 asks for stress-resultant (global) plasticity; until it exists, 5 points integrate it.
       np = 5;
-      if (!global_plasticity_noted)
-        notes.push_back("shell property N = 0 (global plasticity) is integrated with 5 points through the thickness");
-      global_plasticity_noted = true;
+      note_once(notes, "shell property N = 0 (global plasticity) is integrated with 5 points through the thickness");
     }
-    if (f.ishell == 24 && !qeph_noted) {
-      notes.push_back("Ishell 24 (QEPH) runs with the Belytschko-Tsay kernel and hourglass stiffness");
-      qeph_noted = true;
-    }
+    if (kind == ElementKind::Shell4 && f.ishell == 24)
+      note_once(notes, "Ishell 24 (QEPH) runs with the Belytschko-Tsay kernel and hourglass stiffness");
     p.points = np;
-    p.zeta = &s.shell_zeta[static_cast<std::size_t>(np) * 11];
-    p.membrane_weight = &s.shell_membrane_weight[static_cast<std::size_t>(np) * 11];
-    p.bending_weight = &s.shell_bending_weight[static_cast<std::size_t>(np) * 11];
+    const auto at = static_cast<std::size_t>(np) * 11;
+    p.zeta = &s.shell_zeta[at];
+    p.membrane_weight = &s.shell_membrane_weight[at];
+    p.bending_weight = &s.shell_bending_weight[at];
     const int ithick = prop.shell.ithick != 0 ? prop.shell.ithick : m.shell_defaults.ithick;
     p.thickness_update = ithick == 1;
     p.failure_strain = p.hardening.failure_strain() >= 1e20 ? 0.0 : p.hardening.failure_strain();
@@ -94,18 +88,28 @@ void setup_shells(const Model& m, SolverState& s, std::vector<std::string>& note
     total_points += static_cast<std::size_t>(group.end - group.begin) * static_cast<std::size_t>(np);
     for (std::int32_t e = group.begin; e < group.end; ++e) {
       st.thickness[static_cast<std::size_t>(e)] = prop.shell.thickness;
-      // Lumped rotational inertia of the shell's nodes: m/4 (t^2 + A)/12 (docs/theory/shell4.md, eq. S-8),
+      // Lumped rotational inertia of the shell's nodes: (m/n) (t^2 + A)/12 (docs/theory/shell4.md, eq. S-8),
       // large enough that rotations never control the time step.
-      const double mass = element_mass(m, ElementKind::Shell4, static_cast<std::size_t>(e));
+      const double mass = element_mass(m, kind, static_cast<std::size_t>(e));
       const std::int32_t* nodes = table.nodes_of(static_cast<std::size_t>(e));
       const double area = mass / (mat.density * prop.shell.thickness);
-      for (int a = 0; a < 4; ++a)
+      for (int a = 0; a < nodes_per; ++a)
         s.nodes.inertia[static_cast<std::size_t>(nodes[a])] +=
-            0.25 * mass * (prop.shell.thickness * prop.shell.thickness + area) / 12.0;
+            mass / nodes_per * (prop.shell.thickness * prop.shell.thickness + area) / 12.0;
     }
   }
   st.sxx.assign(total_points, 0.0), st.syy.assign(total_points, 0.0), st.sxy.assign(total_points, 0.0);
   st.eps_p.assign(total_points, 0.0);
+}
+
+void setup_through_thickness_rules(SolverState& s) {
+  s.shell_zeta.assign(11 * 11, 0.0);
+  s.shell_membrane_weight.assign(11 * 11, 0.0);
+  s.shell_bending_weight.assign(11 * 11, 0.0);
+  for (int np = 1; np <= 10; ++np) {
+    const auto at = static_cast<std::size_t>(np) * 11;
+    through_thickness_rule(np, &s.shell_zeta[at], &s.shell_membrane_weight[at], &s.shell_bending_weight[at]);
+  }
 }
 
 }  // namespace
@@ -113,7 +117,10 @@ void setup_shells(const Model& m, SolverState& s, std::vector<std::string>& note
 SolverState make_state(const Model& m, std::vector<std::string>& notes) {
   SolverState s;
   setup_nodes(m, s);
-  setup_shells(m, s, notes);
+  setup_through_thickness_rules(s);
+  s.shell_groups.assign(m.element_groups.size(), ShellGroupParameters{});
+  setup_shells(m, s, ElementKind::Shell4, notes);
+  setup_shells(m, s, ElementKind::Shell3, notes);
   setup_rigid_bodies(m, s);
   setup_rigid_walls(m, s);
   s.mass_initial = 0.0;

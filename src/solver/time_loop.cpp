@@ -147,19 +147,25 @@ RunSummary run_simulation(const Model& m, const SolverOptions& options, std::ost
     double dt_elements = std::numeric_limits<double>::infinity();
     for (std::size_t g = 0; g < m.element_groups.size(); ++g) {
       const ElementGroup& group = m.element_groups[g];
-      if (group.kind != ElementKind::Shell4) continue;
-      const GroupStepResult r = shell4_forces(m.elements[0], group, s.shell_groups[g], n, s.shells, s.dt);
+      const ElementTable& table = m.elements[static_cast<int>(group.kind)];
+      GroupStepResult r;
+      switch (group.kind) {
+        case ElementKind::Shell4: r = shell4_forces(table, group, s.shell_groups[g], n, s.shells, s.dt); break;
+        case ElementKind::Shell3: r = shell3_forces(table, group, s.shell_groups[g], n, s.shells3, s.dt); break;
+        case ElementKind::Brick8: continue;  // bricks: in progress
+      }
       s.energy.internal += r.internal_energy;
       s.energy.hourglass += r.hourglass_energy;
+      const std::string_view kind = element_kind_name(group.kind);
       if (r.inverted >= 0) {
         status = RunStatus::Error;
-        message = fmt::format("shell {} of part {} inverted (zero or negative area) at cycle {}",
-                              m.elements[0].user_id[static_cast<std::size_t>(r.inverted)],
+        message = fmt::format("{} {} of part {} inverted (zero or negative area) at cycle {}", kind,
+                              table.user_id[static_cast<std::size_t>(r.inverted)],
                               m.parts[static_cast<std::size_t>(group.part)].user_id, s.cycle);
       }
       if (r.min_dt < dt_elements) {
         dt_elements = r.min_dt;
-        controlling = fmt::format("SHELL {}", m.elements[0].user_id[static_cast<std::size_t>(r.controlling)]);
+        controlling = fmt::format("{} {}", kind, table.user_id[static_cast<std::size_t>(r.controlling)]);
       }
     }
     if (status != RunStatus::Normal) break;
@@ -238,6 +244,7 @@ RunSummary run_simulation(const Model& m, const SolverOptions& options, std::ost
     }
     if (history) {
       write_history();
+      if (options.observer) options.observer(s);
       while (next_history <= s.time * (1.0 + 1e-12)) next_history += rc.history_interval;
     }
     if (finished) break;

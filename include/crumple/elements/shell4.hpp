@@ -1,5 +1,6 @@
 #pragma once
-// 4-node shell, one-point Belytschko-Tsay formulation with hourglass stiffness (docs/theory/shell4.md).
+// 4-node shell, one-point Belytschko-Tsay formulation with hourglass stiffness, and the 3-node C0 triangle
+// (docs/theory/shell4.md).
 #include <cstdint>
 
 #include "crumple/materials/hardening.hpp"
@@ -36,6 +37,10 @@ struct GroupStepResult {
 // Updates the stresses of the group's elements over the step dt (the velocities of `nodes` act over dt), then
 // adds their internal forces and moments (with a minus sign) to the nodal force and moment accumulators.
 GroupStepResult shell4_forces(const ElementTable& table, const ElementGroup& group, const ShellGroupParameters& p,
+                              NodalState& nodes, ShellState& state, double dt);
+// The same for 3-node shells (C0 triangle, docs/theory/shell4.md "Triangles"): constant membrane strain and
+// curvature, no hourglass mode.
+GroupStepResult shell3_forces(const ElementTable& table, const ElementGroup& group, const ShellGroupParameters& p,
                               NodalState& nodes, ShellState& state, double dt);
 
 // Through-thickness rule for n = 1..10 points (docs/theory/shell4.md, eq. S-4): n equally spaced points from the

@@ -48,7 +48,8 @@ struct SolverState {
   NodalState nodes;
   std::vector<double> x0, y0, z0;                  // initial coordinates
   std::vector<std::uint8_t> fixed;                  // per node: bit k set when dof k (x y z rx ry rz) is fixed
-  ShellState shells;
+  ShellState shells;   // 4-node shells
+  ShellState shells3;  // 3-node shells
   std::vector<ShellGroupParameters> shell_groups;  // per element group (meaningful for shell groups only)
   std::vector<double> shell_zeta, shell_membrane_weight, shell_bending_weight;  // through-thickness rules, 11 per n
   std::vector<RigidBodyState> bodies;
