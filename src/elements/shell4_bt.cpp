@@ -236,6 +236,7 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
     }
     const double length = (NN == 4 ? area : 2.0 * area) / std::sqrt(longest);
     const double step = length / wave_speed;
+    state.critical_dt[ue] = step;
     if (step < result.min_dt) result.min_dt = step, result.controlling = e;
     if (failed) {
       state.deleted[ue] = 1;

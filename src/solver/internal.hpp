@@ -13,6 +13,14 @@ SolverState make_state(const Model& model, std::vector<std::string>& notes);
 void setup_rigid_bodies(const Model& model, SolverState& state);
 void setup_rigid_walls(const Model& model, SolverState& state);
 
+// Nodal time step of the cycle with mass scaling (/DT/NODA/CST): adds mass where the nodal step would fall
+// below the card's minimum and returns the smallest scaled nodal step and its node (docs/theory/time-step.md).
+struct NodalStep {
+  double dt;
+  std::int32_t node;
+};
+NodalStep nodal_time_step(const Model& model, SolverState& state);
+
 // Translational and rotational kinetic energy of the current half-step velocities.
 std::pair<double, double> kinetic_energy(const SolverState& state);
 

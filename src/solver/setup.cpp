@@ -49,6 +49,7 @@ void setup_shells(const Model& m, SolverState& s, ElementKind kind, std::vector<
   ShellState& st = kind == ElementKind::Shell4 ? s.shells : s.shells3;
   st.qx.assign(n, 0.0), st.qy.assign(n, 0.0), st.thickness.assign(n, 0.0), st.hourglass.assign(5 * n, 0.0);
   st.internal_energy.assign(n, 0.0), st.hourglass_energy.assign(n, 0.0), st.deleted.assign(n, 0);
+  st.critical_dt.assign(n, 0.0), st.mass.assign(n, 0.0);
   st.point_offset.assign(m.element_groups.size(), 0);
   st.points.assign(m.element_groups.size(), 0);
 
@@ -91,6 +92,7 @@ void setup_shells(const Model& m, SolverState& s, ElementKind kind, std::vector<
       // Lumped rotational inertia of the shell's nodes: (m/n) (t^2 + A)/12 (docs/theory/shell4.md, eq. S-8),
       // large enough that rotations never control the time step.
       const double mass = element_mass(m, kind, static_cast<std::size_t>(e));
+      st.mass[static_cast<std::size_t>(e)] = mass;
       const std::int32_t* nodes = table.nodes_of(static_cast<std::size_t>(e));
       const double area = mass / (mat.density * prop.shell.thickness);
       for (int a = 0; a < nodes_per; ++a)

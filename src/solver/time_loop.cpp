@@ -118,7 +118,7 @@ RunSummary run_simulation(const Model& m, const SolverOptions& options, std::ost
     if (to_listing) {
       ListingRow row{s.cycle, s.time, dt_next, controlling, s.energy.error_percent(), s.energy.internal, kt, kr,
                      s.energy.external_work, s.energy.hourglass, s.energy.contact,
-                     (total_mass - s.mass_initial) / s.mass_initial, total_mass, 0.0};
+                     (total_mass - s.mass_initial) / s.mass_initial, total_mass, s.mass_added};
       listing.row(row);
     }
   };
@@ -148,7 +148,7 @@ RunSummary run_simulation(const Model& m, const SolverOptions& options, std::ost
     for (std::size_t g = 0; g < m.element_groups.size(); ++g) {
       const ElementGroup& group = m.element_groups[g];
       const ElementTable& table = m.elements[static_cast<int>(group.kind)];
-      GroupStepResult r;
+      GroupStepResult r;  // min_dt is the unscaled critical step
       switch (group.kind) {
         case ElementKind::Shell4: r = shell4_forces(table, group, s.shell_groups[g], n, s.shells, s.dt); break;
         case ElementKind::Shell3: r = shell3_forces(table, group, s.shell_groups[g], n, s.shells3, s.dt); break;
@@ -163,8 +163,38 @@ RunSummary run_simulation(const Model& m, const SolverOptions& options, std::ost
                               table.user_id[static_cast<std::size_t>(r.inverted)],
                               m.parts[static_cast<std::size_t>(group.part)].user_id, s.cycle);
       }
-      if (r.min_dt < dt_elements) {
-        dt_elements = r.min_dt;
+      // Per-type step control (/DT/SHELL, /DT/SH_3N): own scale, and elements below the minimum are deleted
+      // (the default for shells) or stop the run.
+      const TimeStepControl& type = group.kind == ElementKind::Shell4   ? rc.dt_shell
+                                    : group.kind == ElementKind::Shell3 ? rc.dt_sh3n
+                                                                        : rc.dt_brick;
+      const double type_scale = type.given && type.scale > 0.0 ? type.scale : scale;
+      if (type.minimum > 0.0 && type_scale * r.min_dt < type.minimum && status == RunStatus::Normal) {
+        const bool stop = type.action == TimeStepAction::Stop ||
+                          (type.action == TimeStepAction::Default && group.kind == ElementKind::Brick8);
+        if (stop) {
+          status = RunStatus::Error;
+          message = fmt::format("{} {} of part {}: time step {:.4e} below the minimum {:.4e} at cycle {}", kind,
+                                table.user_id[static_cast<std::size_t>(r.controlling)],
+                                m.parts[static_cast<std::size_t>(group.part)].user_id, type_scale * r.min_dt,
+                                type.minimum, s.cycle);
+        } else {
+          ShellState& st = group.kind == ElementKind::Shell4 ? s.shells : s.shells3;
+          r.min_dt = std::numeric_limits<double>::infinity();
+          for (std::int32_t e = group.begin; e < group.end; ++e) {
+            const auto ue = static_cast<std::size_t>(e);
+            if (st.deleted[ue]) continue;
+            if (type_scale * st.critical_dt[ue] < type.minimum) {
+              st.deleted[ue] = 1;
+              ++s.deleted_by_time_step;
+            } else if (st.critical_dt[ue] < r.min_dt) {
+              r.min_dt = st.critical_dt[ue], r.controlling = e;
+            }
+          }
+        }
+      }
+      if (type_scale * r.min_dt < dt_elements) {
+        dt_elements = type_scale * r.min_dt;
         controlling = fmt::format("{} {}", kind, table.user_id[static_cast<std::size_t>(r.controlling)]);
       }
     }
@@ -172,8 +202,15 @@ RunSummary run_simulation(const Model& m, const SolverOptions& options, std::ost
     // 2. External forces; rigid bodies collect their nodes' forces.
     solver::add_external_forces(m, s, s.time);
     solver::gather_rigid_body_forces(s);
-    // 3. Time step.
-    dt_next = std::isfinite(dt_elements) ? scale * dt_elements : rc.end_time - s.time;
+    // 3. Time step: the elements' (already scaled), or the nodal step with mass scaling (/DT/NODA/CST).
+    dt_next = std::isfinite(dt_elements) ? dt_elements : rc.end_time - s.time;
+    if (rc.dt_nodal_cst.given) {
+      const solver::NodalStep nodal = solver::nodal_time_step(m, s);
+      if (nodal.node >= 0) {
+        dt_next = nodal.dt;
+        controlling = fmt::format("NODE {}", m.nodes.user_id[static_cast<std::size_t>(nodal.node)]);
+      }
+    }
     if (dt_minimum > 0.0 && dt_next < dt_minimum) {
       status = RunStatus::Error;
       message = fmt::format("time step {:.4e} below the minimum {:.4e} ({}) at cycle {}", dt_next, dt_minimum,
@@ -231,6 +268,12 @@ RunSummary run_simulation(const Model& m, const SolverOptions& options, std::ost
         message = fmt::format("NaN or Inf in the energy balance at cycle {} (time {:.4e})", s.cycle, s.time);
         break;
       }
+      if (rc.stop_mass_error > 0.0 && s.mass_added > rc.stop_mass_error * s.mass_initial) {
+        status = RunStatus::Stopped;
+        message = fmt::format("/STOP: added mass {:.4g} exceeds {:.3g} of the initial mass at cycle {}", s.mass_added,
+                              rc.stop_mass_error, s.cycle);
+        break;
+      }
       const double ratio = std::abs(s.energy.error_percent()) / 100.0;
       if (rc.stop_energy_error > 0.0 && ratio > rc.stop_energy_error) {
         status = RunStatus::Stopped;
@@ -256,6 +299,9 @@ RunSummary run_simulation(const Model& m, const SolverOptions& options, std::ost
   }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   listing.line(status == RunStatus::Normal ? "NORMAL TERMINATION" : "ERROR TERMINATION: " + message);
+  if (s.deleted_by_time_step > 0)
+    listing.line(fmt::format("ELEMENTS DELETED BELOW THEIR MINIMUM TIME STEP: {}", s.deleted_by_time_step));
+  if (s.mass_added > 0.0) listing.line(fmt::format("MASS ADDED BY /DT/NODA/CST: {:.6g}", s.mass_added));
   listing.line(fmt::format("TOTAL NUMBER OF CYCLES {}   ELAPSED {:.3f} s", s.cycle, wall));
 
   summary.cycles = s.cycle;
@@ -271,7 +317,7 @@ RunSummary run_simulation(const Model& m, const SolverOptions& options, std::ost
                          s.energy.hourglass + s.energy.contact;
   summary.energy.error_percent = s.energy.error_percent();
   for (double mass : n.mass) summary.mass_total += mass;
-  summary.mass_added = 0.0;
+  summary.mass_added = s.mass_added;
   summary.wall_seconds = wall;
   summary.element_cycles_per_second = wall > 0.0 ? static_cast<double>(element_count) * static_cast<double>(s.cycle) / wall : 0.0;
   summary.status = status;

@@ -21,6 +21,8 @@ struct ShellState {
   std::vector<double> thickness;        // current thickness [L]
   std::vector<double> hourglass;        // 5 hourglass generalized stresses per element (membrane x, y, w, rx, ry)
   std::vector<double> internal_energy;  // [M L^2 T^-2]
+  std::vector<double> critical_dt;      // critical step of the last cycle [T] (nodal time step, mass scaling)
+  std::vector<double> mass;             // element mass [M] (nodal stiffness estimate of the nodal time step)
   std::vector<double> hourglass_energy; // [M L^2 T^-2]
   std::vector<std::uint8_t> deleted;    // 1 once the element has failed
 };

@@ -1,0 +1,27 @@
+#pragma once
+// State owned by the 8-node brick kernels (docs/theory/brick8.md): the stresses at the integration points and the
+// element histories. Point arrays are element-major within a group: point k of element e of group g is at
+// point_offset[g] + (e - group.begin) * points[g] + k (one point for Isolid 1 and 24, eight for Isolid 14).
+#include <cstdint>
+#include <vector>
+
+namespace crumple {
+
+struct BrickState {
+  // Per element group (index into Model::element_groups; unused for other kinds).
+  std::vector<std::size_t> point_offset;  // index of the group's first point
+  std::vector<int> points;                // integration points per element of the group
+
+  // Per integration point: Cauchy stress in the global frame [stress], equivalent plastic strain.
+  std::vector<double> sxx, syy, szz, sxy, syz, szx;
+  std::vector<double> eps_p;
+
+  // Per element (index in the Brick8 ElementTable).
+  std::vector<double> volume0;           // initial volume (eq. B-2) for the current density rho0 V0 / V [L^3]
+  std::vector<double> hourglass;         // 12 hourglass generalized stresses per element, Isolid 24 (eq. B-9) [F]
+  std::vector<double> internal_energy;   // [M L^2 T^-2]
+  std::vector<double> hourglass_energy;  // [M L^2 T^-2]
+  std::vector<std::uint8_t> deleted;     // 1 once the element has failed
+};
+
+}  // namespace crumple
