@@ -10,3 +10,7 @@ if(CRUMPLE_SANITIZE)
   add_compile_options(-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer)
   add_link_options(-fsanitize=address,undefined)
 endif()
+
+if(CRUMPLE_NATIVE)
+  add_compile_options(-march=native)
+endif()

@@ -1,0 +1,695 @@
+// NAME.h5 and NAME.xdmf: mesh, field frames and time histories (layout: docs/output-format.md).
+// Written with the HDF5 C API through a serial file driver: only the process that owns the file calls it.
+#include "crumple/output/results_file.hpp"
+
+#include <fmt/format.h>
+#include <hdf5.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <cstdio>
+#include <fstream>
+#include <stdexcept>
+#include <string_view>
+#include <system_error>
+#include <utility>
+
+namespace crumple {
+namespace {
+
+constexpr int kFormatVersion = 1;
+constexpr hsize_t kHistoryChunkRows = 512;   // rows per chunk of the 1-D history datasets
+constexpr std::size_t kHistoryBuffer = 256;  // history rows kept in memory before they are appended
+
+// Owns one HDF5 identifier and closes it with the matching H5?close.
+class Handle {
+ public:
+  using Closer = herr_t (*)(hid_t);
+  Handle() = default;
+  Handle(hid_t id, Closer closer) : id_(id), closer_(closer) {}
+  ~Handle() { reset(); }
+  Handle(Handle&& other) noexcept : id_(std::exchange(other.id_, -1)), closer_(other.closer_) {}
+  Handle& operator=(Handle&& other) noexcept {
+    if (this != &other) {
+      reset();
+      id_ = std::exchange(other.id_, -1);
+      closer_ = other.closer_;
+    }
+    return *this;
+  }
+  Handle(const Handle&) = delete;
+  Handle& operator=(const Handle&) = delete;
+
+  hid_t get() const { return id_; }
+  bool valid() const { return id_ >= 0; }
+  // Closes now; returns false when HDF5 reported an error.
+  bool reset() {
+    herr_t status = 0;
+    if (id_ >= 0 && closer_ != nullptr) status = closer_(id_);
+    id_ = -1;
+    return status >= 0;
+  }
+
+ private:
+  hid_t id_ = -1;
+  Closer closer_ = nullptr;
+};
+
+// Turns HDF5's automatic printing of error stacks off for the scope of a public call: failures become
+// exceptions that carry the most specific message of the stack instead.
+class QuietErrors {
+ public:
+  QuietErrors() {
+    H5Eget_auto2(H5E_DEFAULT, &function_, &data_);
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  }
+  ~QuietErrors() { H5Eset_auto2(H5E_DEFAULT, function_, data_); }
+  QuietErrors(const QuietErrors&) = delete;
+  QuietErrors& operator=(const QuietErrors&) = delete;
+
+ private:
+  H5E_auto2_t function_ = nullptr;
+  void* data_ = nullptr;
+};
+
+herr_t innermost_error(unsigned, const H5E_error2_t* error, void* client) {
+  if (error != nullptr && error->desc != nullptr) *static_cast<std::string*>(client) = error->desc;
+  return 0;
+}
+
+// The most specific description on the current HDF5 error stack ("No such file or directory" rather than
+// "unable to create file"), or an empty string.
+std::string hdf5_error() {
+  std::string desc;
+  H5Ewalk2(H5E_DEFAULT, H5E_WALK_DOWNWARD, innermost_error, &desc);
+  H5Eclear2(H5E_DEFAULT);
+  constexpr std::string_view marker = "error message = '";
+  if (const auto at = desc.find(marker); at != std::string::npos) {
+    const auto begin = at + marker.size();
+    const auto end = desc.find('\'', begin);
+    if (end != std::string::npos) return desc.substr(begin, end - begin);
+  }
+  return desc;
+}
+
+std::string xml_escaped(std::string_view s) {
+  std::string out;
+  for (char c : s) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      case '\'': out += "&apos;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+// Memory and file types of the element types written.
+template <class T>
+struct H5Types;
+template <>
+struct H5Types<double> {
+  static hid_t memory() { return H5T_NATIVE_DOUBLE; }
+  static hid_t file() { return H5T_IEEE_F64LE; }
+  static constexpr const char* xdmf = R"(NumberType="Float" Precision="8")";
+};
+template <>
+struct H5Types<std::int32_t> {
+  static hid_t memory() { return H5T_NATIVE_INT32; }
+  static hid_t file() { return H5T_STD_I32LE; }
+  static constexpr const char* xdmf = R"(NumberType="Int" Precision="4")";
+};
+template <>
+struct H5Types<std::int64_t> {
+  static hid_t memory() { return H5T_NATIVE_INT64; }
+  static hid_t file() { return H5T_STD_I64LE; }
+  static constexpr const char* xdmf = R"(NumberType="Int" Precision="8")";
+};
+template <>
+struct H5Types<std::uint8_t> {
+  static hid_t memory() { return H5T_NATIVE_UINT8; }
+  static hid_t file() { return H5T_STD_U8LE; }
+  static constexpr const char* xdmf = R"(NumberType="UChar" Precision="1")";
+};
+
+struct MeshKind {
+  ElementKind kind;
+  const char* group;     // /mesh/<group>
+  const char* topology;  // XDMF TopologyType
+};
+constexpr std::array<MeshKind, kElementKinds> kMeshKinds{{{ElementKind::Shell4, "shell4", "Quadrilateral"},
+                                                          {ElementKind::Shell3, "shell3", "Triangle"},
+                                                          {ElementKind::Brick8, "brick8", "Hexahedron"}}};
+
+struct Frame {
+  std::string name;  // group name under /frames
+  double time = 0.0;
+  long long cycle = 0;
+};
+
+// An extendible history dataset: `rows` (1-D) or `rows x columns` (2-D; columns may be 0).
+struct Series {
+  const char* name = "";
+  bool two_d = false;
+  hsize_t columns = 0;
+  Handle dataset;
+};
+
+}  // namespace
+
+struct ResultsFile::Impl {
+  std::filesystem::path path, xdmf_path;
+  std::string h5_name;  // file name of the .h5 as the XDMF file refers to it (same folder)
+  Handle file;
+  bool open = false;
+
+  std::size_t nodes = 0;
+  std::array<std::size_t, kElementKinds> elements{};
+  std::size_t element_groups = 0;
+  std::vector<Frame> frames;
+
+  // Histories: 9 scalar series, then rigid_wall_force, node_values, rigid_body_values.
+  static constexpr std::size_t kScalars = 9;
+  std::array<Series, kScalars + 3> series;
+  bool widths_known = false;
+  std::array<std::size_t, 3> widths{};        // values per row of the 2-D series
+  std::array<std::vector<double>, kScalars + 3> pending;  // rows not yet appended, row-major
+  std::size_t pending_rows = 0;
+
+  [[noreturn]] void fail(const std::string& what) const {
+    const std::string detail = hdf5_error();
+    throw std::runtime_error("results file " + path.string() + ": " + what + (detail.empty() ? "" : ": " + detail));
+  }
+  hid_t check(hid_t id, const std::string& what) const {
+    if (id < 0) fail(what);
+    return id;
+  }
+  void check_status(herr_t status, const std::string& what) const {
+    if (status < 0) fail(what);
+  }
+  void require_open() const {
+    if (!open) throw std::runtime_error("results file " + path.string() + " is closed");
+  }
+
+  Handle group(hid_t location, const std::string& name) const {
+    return {check(H5Gcreate2(location, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), "cannot create " + name),
+            H5Gclose};
+  }
+
+  // A contiguous dataset of shape dims written from `data` (row-major).
+  template <class T>
+  void dataset(hid_t location, const std::string& name, const T* data, std::initializer_list<hsize_t> dims) const {
+    const std::vector<hsize_t> shape(dims);
+    Handle space(check(H5Screate_simple(static_cast<int>(shape.size()), shape.data(), nullptr), "dataspace " + name),
+                 H5Sclose);
+    Handle set(check(H5Dcreate2(location, name.c_str(), H5Types<T>::file(), space.get(), H5P_DEFAULT, H5P_DEFAULT,
+                                H5P_DEFAULT),
+                     "cannot create dataset " + name),
+               H5Dclose);
+    hsize_t count = 1;
+    for (hsize_t d : shape) count *= d;
+    if (count > 0)
+      check_status(H5Dwrite(set.get(), H5Types<T>::memory(), H5S_ALL, H5S_ALL, H5P_DEFAULT, data),
+                   "cannot write dataset " + name);
+  }
+
+  template <class T>
+  void attribute(hid_t location, const char* name, const T& value) const {
+    Handle space(check(H5Screate(H5S_SCALAR), "dataspace"), H5Sclose);
+    Handle attr(check(H5Acreate2(location, name, H5Types<T>::file(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
+                      std::string("cannot create attribute ") + name),
+                H5Aclose);
+    check_status(H5Awrite(attr.get(), H5Types<T>::memory(), &value), std::string("cannot write attribute ") + name);
+  }
+
+  template <class T>
+  void array_attribute(hid_t location, const char* name, const std::vector<T>& values) const {
+    const hsize_t n = values.size();
+    Handle space(check(H5Screate_simple(1, &n, nullptr), "dataspace"), H5Sclose);
+    Handle attr(check(H5Acreate2(location, name, H5Types<T>::file(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
+                      std::string("cannot create attribute ") + name),
+                H5Aclose);
+    if (n > 0)
+      check_status(H5Awrite(attr.get(), H5Types<T>::memory(), values.data()),
+                   std::string("cannot write attribute ") + name);
+  }
+
+  Handle utf8_string_type() const {
+    Handle type(check(H5Tcopy(H5T_C_S1), "string type"), H5Tclose);
+    check_status(H5Tset_size(type.get(), H5T_VARIABLE), "string type");
+    check_status(H5Tset_cset(type.get(), H5T_CSET_UTF8), "string type");
+    return type;
+  }
+
+  void string_attribute(hid_t location, const char* name, const std::string& value) const {
+    Handle type = utf8_string_type();
+    Handle space(check(H5Screate(H5S_SCALAR), "dataspace"), H5Sclose);
+    Handle attr(check(H5Acreate2(location, name, type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
+                      std::string("cannot create attribute ") + name),
+                H5Aclose);
+    const char* text = value.c_str();
+    check_status(H5Awrite(attr.get(), type.get(), &text), std::string("cannot write attribute ") + name);
+  }
+
+  void string_dataset(hid_t location, const std::string& name, const std::vector<std::string>& values) const {
+    Handle type = utf8_string_type();
+    const hsize_t n = values.size();
+    Handle space(check(H5Screate_simple(1, &n, nullptr), "dataspace " + name), H5Sclose);
+    Handle set(check(H5Dcreate2(location, name.c_str(), type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT,
+                                H5P_DEFAULT),
+                     "cannot create dataset " + name),
+               H5Dclose);
+    std::vector<const char*> texts;
+    for (const std::string& s : values) texts.push_back(s.c_str());
+    if (n > 0)
+      check_status(H5Dwrite(set.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, texts.data()),
+                   "cannot write dataset " + name);
+  }
+
+  void write_mesh(const Model& model) {
+    Handle mesh = group(file.get(), "mesh");
+    nodes = model.nodes.size();
+    std::vector<double> xyz(3 * nodes);
+    for (std::size_t i = 0; i < nodes; ++i) {
+      xyz[3 * i] = model.nodes.x[i], xyz[3 * i + 1] = model.nodes.y[i], xyz[3 * i + 2] = model.nodes.z[i];
+    }
+    dataset(mesh.get(), "coordinates", xyz.data(), {nodes, 3});
+    dataset(mesh.get(), "node_ids", model.nodes.user_id.data(), {nodes});
+
+    std::vector<std::int64_t> part_ids;
+    std::vector<std::string> part_titles;
+    for (const Part& p : model.parts) part_ids.push_back(p.user_id), part_titles.push_back(p.title);
+    Handle parts = group(mesh.get(), "parts");
+    dataset(parts.get(), "ids", part_ids.data(), {part_ids.size()});
+    string_dataset(parts.get(), "titles", part_titles);
+
+    for (const MeshKind& k : kMeshKinds) {
+      const ElementTable& table = model.elements[static_cast<std::size_t>(k.kind)];
+      const std::size_t n = table.size();
+      elements[static_cast<std::size_t>(k.kind)] = n;
+      if (n == 0) continue;
+      const auto npe = static_cast<hsize_t>(nodes_per_element(k.kind));
+      Handle g = group(mesh.get(), k.group);
+      dataset(g.get(), "connectivity", table.connectivity.data(), {n, npe});
+      dataset(g.get(), "ids", table.user_id.data(), {n});
+      dataset(g.get(), "part", table.part.data(), {n});
+      std::vector<std::int64_t> part_user(n);
+      for (std::size_t e = 0; e < n; ++e)
+        part_user[e] = model.parts[static_cast<std::size_t>(table.part[e])].user_id;
+      dataset(g.get(), "part_id", part_user.data(), {n});
+    }
+    element_groups = model.element_groups.size();
+  }
+
+  void create_history() {
+    Handle history = group(file.get(), "history");
+    constexpr std::array<const char*, kScalars + 3> names{
+        "time",    "dt",      "internal",      "kinetic_translational", "kinetic_rotational", "hourglass",
+        "contact", "external_work", "total", "rigid_wall_force",      "node_values",        "rigid_body_values"};
+    for (std::size_t s = 0; s < series.size(); ++s) {
+      series[s].name = names[s];
+      series[s].two_d = s >= kScalars;
+    }
+    for (std::size_t s = 0; s < kScalars; ++s) create_series(history.get(), series[s]);
+  }
+
+  void create_series(hid_t location, Series& s) const {
+    const int rank = s.two_d ? 2 : 1;
+    const std::array<hsize_t, 2> dims{0, s.columns};
+    const std::array<hsize_t, 2> max{H5S_UNLIMITED, H5S_UNLIMITED};
+    const std::array<hsize_t, 2> chunk{
+        s.two_d ? std::max<hsize_t>(1, std::min<hsize_t>(kHistoryChunkRows, 8192 / std::max<hsize_t>(1, s.columns)))
+                : kHistoryChunkRows,
+        std::max<hsize_t>(1, s.columns)};
+    Handle space(check(H5Screate_simple(rank, dims.data(), max.data()), std::string("dataspace ") + s.name), H5Sclose);
+    Handle plist(check(H5Pcreate(H5P_DATASET_CREATE), "property list"), H5Pclose);
+    check_status(H5Pset_chunk(plist.get(), rank, chunk.data()), std::string("chunks of ") + s.name);
+    s.dataset = Handle(check(H5Dcreate2(location, s.name, H5T_IEEE_F64LE, space.get(), H5P_DEFAULT, plist.get(),
+                                        H5P_DEFAULT),
+                             std::string("cannot create /history/") + s.name),
+                       H5Dclose);
+  }
+
+  // Creates the 2-D series once their widths are known (first row, or close() with no row: width 0).
+  void create_wide_series() {
+    Handle history(check(H5Gopen2(file.get(), "history", H5P_DEFAULT), "cannot open /history"), H5Gclose);
+    for (std::size_t w = 0; w < 3; ++w) {
+      Series& s = series[kScalars + w];
+      s.columns = widths[w];
+      create_series(history.get(), s);
+    }
+    widths_known = true;
+  }
+
+  void flush_history() {
+    if (pending_rows == 0) return;
+    for (std::size_t s = 0; s < series.size(); ++s) {
+      Series& ser = series[s];
+      const std::string what = std::string("cannot append to /history/") + ser.name;
+      Handle file_space(check(H5Dget_space(ser.dataset.get()), what), H5Sclose);
+      std::array<hsize_t, 2> dims{};
+      check(H5Sget_simple_extent_dims(file_space.get(), dims.data(), nullptr), what);
+      const hsize_t first = dims[0];
+      dims[0] += pending_rows;
+      check_status(H5Dset_extent(ser.dataset.get(), dims.data()), what);
+      const hsize_t width = ser.two_d ? ser.columns : 1;
+      if (width == 0) continue;
+      file_space = Handle(check(H5Dget_space(ser.dataset.get()), what), H5Sclose);
+      const std::array<hsize_t, 2> start{first, 0};
+      const std::array<hsize_t, 2> count{pending_rows, width};
+      check_status(H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start.data(), nullptr, count.data(), nullptr),
+                   what);
+      Handle memory(check(H5Screate_simple(ser.two_d ? 2 : 1, count.data(), nullptr), what), H5Sclose);
+      check_status(H5Dwrite(ser.dataset.get(), H5T_NATIVE_DOUBLE, memory.get(), file_space.get(), H5P_DEFAULT,
+                            pending[s].data()),
+                   what);
+    }
+    for (auto& p : pending) p.clear();
+    pending_rows = 0;
+  }
+
+  void append_history(const HistoryRow& row) {
+    const std::array<const std::vector<double>*, 3> wide{&row.rigid_wall_force, &row.node_values,
+                                                         &row.rigid_body_values};
+    if (!widths_known) {
+      for (std::size_t w = 0; w < 3; ++w) widths[w] = wide[w]->size();
+      create_wide_series();
+    }
+    for (std::size_t w = 0; w < 3; ++w)
+      if (wide[w]->size() != widths[w])
+        throw std::runtime_error(fmt::format("results file {}: history row at time {} has {} {} values, the first row "
+                                             "had {}",
+                                             path.string(), row.time, wide[w]->size(), series[kScalars + w].name,
+                                             widths[w]));
+    const std::array<double, kScalars> scalars{row.time,    row.dt,      row.internal,      row.kinetic_translational,
+                                               row.kinetic_rotational, row.hourglass, row.contact,
+                                               row.external_work,      row.total};
+    for (std::size_t s = 0; s < kScalars; ++s) pending[s].push_back(scalars[s]);
+    for (std::size_t w = 0; w < 3; ++w)
+      pending[kScalars + w].insert(pending[kScalars + w].end(), wide[w]->begin(), wide[w]->end());
+    ++pending_rows;
+    if (pending_rows >= kHistoryBuffer) flush_history();
+  }
+
+  void check_state(const Model& model, const SolverState& state) const {
+    const auto mismatch = [&](const std::string& what) {
+      throw std::runtime_error("results file " + path.string() + ": the solver state does not match the mesh: " + what);
+    };
+    if (model.nodes.size() != nodes)
+      mismatch(fmt::format("the model has {} nodes, the mesh {}", model.nodes.size(), nodes));
+    const NodalState& n = state.nodes;
+    for (const auto* v : {&n.x, &n.y, &n.z, &n.vx, &n.vy, &n.vz})
+      if (v->size() != nodes) mismatch(fmt::format("nodal arrays of {} values for {} nodes", v->size(), nodes));
+    for (const MeshKind& k : kMeshKinds)
+      if (model.elements[static_cast<std::size_t>(k.kind)].size() != elements[static_cast<std::size_t>(k.kind)])
+        mismatch(fmt::format("the model has {} {} elements, the mesh {}",
+                             model.elements[static_cast<std::size_t>(k.kind)].size(), k.group,
+                             elements[static_cast<std::size_t>(k.kind)]));
+    if (model.element_groups.size() != element_groups)
+      mismatch(fmt::format("the model has {} element groups, the mesh {}", model.element_groups.size(),
+                           element_groups));
+    check_shells(model, ElementKind::Shell4, state.shells, mismatch);
+    check_shells(model, ElementKind::Shell3, state.shells3, mismatch);
+  }
+
+  template <class Mismatch>
+  void check_shells(const Model& model, ElementKind kind, const ShellState& s, const Mismatch& mismatch) const {
+    const std::size_t shells = elements[static_cast<std::size_t>(kind)];
+    if (shells == 0) return;
+    const char* name = kind == ElementKind::Shell4 ? "shell4" : "shell3";
+    if (s.thickness.size() != shells || s.deleted.size() != shells)
+      mismatch(fmt::format("{} thickness and deleted arrays of {} and {} values for {} elements", name,
+                           s.thickness.size(), s.deleted.size(), shells));
+    if (s.point_offset.size() != element_groups || s.points.size() != element_groups)
+      mismatch(fmt::format("{} point offsets for {} groups, the model has {}", name, s.point_offset.size(),
+                           element_groups));
+    for (std::size_t g = 0; g < element_groups; ++g) {
+      const ElementGroup& group = model.element_groups[g];
+      if (group.kind != kind) continue;
+      if (s.points[g] < 1) mismatch(fmt::format("{} group {} has {} points", name, g, s.points[g]));
+      const std::size_t end = s.point_offset[g] + static_cast<std::size_t>(group.end - group.begin) *
+                                                      static_cast<std::size_t>(s.points[g]);
+      for (const auto* v : {&s.sxx, &s.syy, &s.sxy, &s.eps_p})
+        if (v->size() < end)
+          mismatch(fmt::format("{} point arrays of {} values, group {} needs {}", name, v->size(), g, end));
+    }
+  }
+
+  // /frames/NNNN/<kind>: mid-surface stress, largest plastic strain, thickness and deleted flag per element.
+  void write_shells(hid_t frame, const Model& model, const SolverState& state, ElementKind kind) const {
+    const std::size_t n = elements[static_cast<std::size_t>(kind)];
+    if (n == 0) return;
+    const ShellState& s = kind == ElementKind::Shell4 ? state.shells : state.shells3;
+    std::vector<double> stress(3 * n, 0.0), eps(n, 0.0);
+    for (std::size_t g = 0; g < element_groups; ++g) {
+      const ElementGroup& group = model.element_groups[g];
+      if (group.kind != kind) continue;
+      const auto np = static_cast<std::size_t>(s.points[g]);
+      // Weighted by the group's membrane weights when the state carries them (membrane stress = N / t), else the
+      // plain mean of the points.
+      const double* weight = g < state.shell_groups.size() && state.shell_groups[g].points == s.points[g]
+                                 ? state.shell_groups[g].membrane_weight
+                                 : nullptr;
+      double weight_sum = 0.0;
+      if (weight != nullptr)
+        for (std::size_t k = 0; k < np; ++k) weight_sum += weight[k];
+      if (!(weight_sum > 0.0)) weight = nullptr;
+      for (std::int32_t e = group.begin; e < group.end; ++e) {
+        const auto ue = static_cast<std::size_t>(e);
+        const std::size_t first = s.point_offset[g] + static_cast<std::size_t>(e - group.begin) * np;
+        double sxx = 0.0, syy = 0.0, sxy = 0.0, eps_max = s.eps_p[first];
+        for (std::size_t k = 0; k < np; ++k) {
+          const double w = weight != nullptr ? weight[k] / weight_sum : 1.0 / static_cast<double>(np);
+          sxx += w * s.sxx[first + k], syy += w * s.syy[first + k], sxy += w * s.sxy[first + k];
+          eps_max = std::max(eps_max, s.eps_p[first + k]);
+        }
+        stress[3 * ue] = sxx, stress[3 * ue + 1] = syy, stress[3 * ue + 2] = sxy;
+        eps[ue] = eps_max;
+      }
+    }
+    Handle g = group(frame, kind == ElementKind::Shell4 ? "shell4" : "shell3");
+    dataset(g.get(), "stress", stress.data(), {n, 3});
+    dataset(g.get(), "plastic_strain", eps.data(), {n});
+    dataset(g.get(), "thickness", s.thickness.data(), {n});
+    dataset(g.get(), "deleted", s.deleted.data(), {n});
+  }
+
+  void write_frame(double time, long long cycle, const Model& model, const SolverState& state) {
+    check_state(model, state);
+    Frame f{fmt::format("{:04}", frames.size()), time, cycle};
+    Handle frames_group(check(H5Gopen2(file.get(), "frames", H5P_DEFAULT), "cannot open /frames"), H5Gclose);
+    Handle frame = group(frames_group.get(), f.name);
+    attribute(frame.get(), "time", time);
+    attribute(frame.get(), "cycle", static_cast<std::int64_t>(cycle));
+
+    const NodalState& ns = state.nodes;
+    std::vector<double> buffer(3 * nodes);
+    for (std::size_t i = 0; i < nodes; ++i) {
+      buffer[3 * i] = ns.x[i] - model.nodes.x[i];
+      buffer[3 * i + 1] = ns.y[i] - model.nodes.y[i];
+      buffer[3 * i + 2] = ns.z[i] - model.nodes.z[i];
+    }
+    dataset(frame.get(), "displacement", buffer.data(), {nodes, 3});
+    for (std::size_t i = 0; i < nodes; ++i) {
+      buffer[3 * i] = ns.vx[i], buffer[3 * i + 1] = ns.vy[i], buffer[3 * i + 2] = ns.vz[i];
+    }
+    dataset(frame.get(), "velocity", buffer.data(), {nodes, 3});
+    write_shells(frame.get(), model, state, ElementKind::Shell4);
+    write_shells(frame.get(), model, state, ElementKind::Shell3);
+    frames.push_back(std::move(f));
+
+    flush_history();
+    check_status(H5Fflush(file.get(), H5F_SCOPE_GLOBAL), "cannot flush");
+    write_xdmf();
+  }
+
+  // ---- XDMF ----
+  template <class T>
+  std::string item(const std::string& dims, const std::string& h5_path) const {
+    return fmt::format(R"(<DataItem Dimensions="{}" {} Format="HDF">{}:{}</DataItem>)", dims, H5Types<T>::xdmf,
+                       xml_escaped(h5_name), h5_path);
+  }
+
+  void xdmf_grid(std::string& x, const MeshKind& k, const Frame* frame, const std::string& indent) const {
+    const std::size_t n = elements[static_cast<std::size_t>(k.kind)];
+    const int npe = nodes_per_element(k.kind);
+    const std::string mesh = std::string("/mesh/") + k.group;
+    const std::string in = indent + "  ";
+    const auto attribute_xml = [&](const char* name, const char* type, const char* center, const std::string& data) {
+      x += fmt::format("{}<Attribute Name=\"{}\" AttributeType=\"{}\" Center=\"{}\">\n{}  {}\n{}</Attribute>\n", in,
+                       name, type, center, in, data, in);
+    };
+    x += fmt::format("{}<Grid Name=\"{}\" GridType=\"Uniform\">\n", indent, k.group);
+    if (frame != nullptr) x += fmt::format("{}<Time Value=\"{:.17g}\"/>\n", in, frame->time);
+    x += fmt::format("{}<Topology TopologyType=\"{}\" NumberOfElements=\"{}\" NodesPerElement=\"{}\">\n{}  {}\n{}"
+                     "</Topology>\n",
+                     in, k.topology, n, npe, in,
+                     item<std::int32_t>(fmt::format("{} {}", n, npe), mesh + "/connectivity"), in);
+    x += fmt::format("{}<Geometry GeometryType=\"XYZ\">\n{}  {}\n{}</Geometry>\n", in, in,
+                     item<double>(fmt::format("{} 3", nodes), "/mesh/coordinates"), in);
+    attribute_xml("node_id", "Scalar", "Node", item<std::int64_t>(std::to_string(nodes), "/mesh/node_ids"));
+    attribute_xml("element_id", "Scalar", "Cell", item<std::int64_t>(std::to_string(n), mesh + "/ids"));
+    attribute_xml("part_id", "Scalar", "Cell", item<std::int64_t>(std::to_string(n), mesh + "/part_id"));
+    if (frame != nullptr) {
+      const std::string f = "/frames/" + frame->name;
+      attribute_xml("displacement", "Vector", "Node", item<double>(fmt::format("{} 3", nodes), f + "/displacement"));
+      attribute_xml("velocity", "Vector", "Node", item<double>(fmt::format("{} 3", nodes), f + "/velocity"));
+      if (k.kind == ElementKind::Shell4 || k.kind == ElementKind::Shell3) {
+        const std::string shell = f + "/" + k.group;
+        attribute_xml("stress", "Vector", "Cell", item<double>(fmt::format("{} 3", n), shell + "/stress"));
+        attribute_xml("plastic_strain", "Scalar", "Cell", item<double>(std::to_string(n), shell + "/plastic_strain"));
+        attribute_xml("thickness", "Scalar", "Cell", item<double>(std::to_string(n), shell + "/thickness"));
+        attribute_xml("deleted", "Scalar", "Cell", item<std::uint8_t>(std::to_string(n), shell + "/deleted"));
+      }
+    }
+    x += indent + "</Grid>\n";
+  }
+
+  // A model without elements is shown as a cloud of points.
+  void xdmf_points(std::string& x, const Frame* frame, const std::string& indent) const {
+    const std::string in = indent + "  ";
+    x += indent + "<Grid Name=\"nodes\" GridType=\"Uniform\">\n";
+    if (frame != nullptr) x += fmt::format("{}<Time Value=\"{:.17g}\"/>\n", in, frame->time);
+    x += fmt::format("{}<Topology TopologyType=\"Polyvertex\" NumberOfElements=\"{}\" NodesPerElement=\"1\"/>\n", in,
+                     nodes);
+    x += fmt::format("{}<Geometry GeometryType=\"XYZ\">\n{}  {}\n{}</Geometry>\n", in, in,
+                     item<double>(fmt::format("{} 3", nodes), "/mesh/coordinates"), in);
+    if (frame != nullptr)
+      for (const char* name : {"displacement", "velocity"})
+        x += fmt::format("{}<Attribute Name=\"{}\" AttributeType=\"Vector\" Center=\"Node\">\n{}  {}\n{}</Attribute>\n",
+                         in, name, in, item<double>(fmt::format("{} 3", nodes), "/frames/" + frame->name + "/" + name),
+                         in);
+    x += indent + "</Grid>\n";
+  }
+
+  // The grids of one instant: one uniform grid per element kind present, in a spatial collection when there
+  // are several.
+  void xdmf_instant(std::string& x, const Frame* frame, const std::string& indent, const std::string& name) const {
+    std::vector<const MeshKind*> kinds;
+    for (const MeshKind& k : kMeshKinds)
+      if (elements[static_cast<std::size_t>(k.kind)] > 0) kinds.push_back(&k);
+    if (kinds.empty()) return xdmf_points(x, frame, indent);
+    if (kinds.size() == 1) return xdmf_grid(x, *kinds.front(), frame, indent);
+    x += fmt::format("{}<Grid Name=\"{}\" GridType=\"Collection\" CollectionType=\"Spatial\">\n", indent, name);
+    if (frame != nullptr) x += fmt::format("{}  <Time Value=\"{:.17g}\"/>\n", indent, frame->time);
+    for (const MeshKind* k : kinds) xdmf_grid(x, *k, frame, indent + "  ");
+    x += indent + "</Grid>\n";
+  }
+
+  std::string xdmf_text() const {
+    std::string x = "<?xml version=\"1.0\" ?>\n<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n<Xdmf Version=\"2.0\">\n"
+                    "  <Domain>\n";
+    if (frames.empty()) {
+      xdmf_instant(x, nullptr, "    ", "mesh");
+    } else {
+      x += "    <Grid Name=\"frames\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+      for (const Frame& f : frames) {
+        x += fmt::format("      <!-- frame {} cycle {} -->\n", f.name, f.cycle);
+        xdmf_instant(x, &f, "      ", "frame " + f.name);
+      }
+      x += "    </Grid>\n";
+    }
+    x += "  </Domain>\n</Xdmf>\n";
+    return x;
+  }
+
+  // Written beside the .h5 through a temporary file, so that a reader never sees half of it.
+  void write_xdmf() const {
+    const std::string text = xdmf_text();
+    std::filesystem::path temporary = xdmf_path;
+    temporary += ".tmp";
+    {
+      std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+      out << text;
+      out.close();
+      if (!out) throw std::runtime_error("cannot write " + temporary.string());
+    }
+    std::error_code ec;
+    std::filesystem::rename(temporary, xdmf_path, ec);
+    if (ec) {
+      std::filesystem::remove(temporary, ec);
+      throw std::runtime_error("cannot write " + xdmf_path.string());
+    }
+  }
+
+  void close() {
+    if (!open) return;
+    open = false;  // whatever happens below, the file is released and close() is not tried again
+    try {
+      if (!widths_known) create_wide_series();
+      flush_history();
+    } catch (...) {
+      for (Series& s : series) s.dataset.reset();
+      file.reset();
+      throw;
+    }
+    for (Series& s : series) s.dataset.reset();
+    const bool closed = file.reset();
+    if (!closed) fail("cannot close");
+    write_xdmf();
+  }
+};
+
+ResultsFile::ResultsFile(const std::filesystem::path& path, const Model& model) : impl_(std::make_unique<Impl>()) {
+  QuietErrors quiet;
+  Impl& d = *impl_;
+  d.path = path;
+  d.xdmf_path = path;
+  d.xdmf_path.replace_extension(".xdmf");
+  d.h5_name = path.filename().string();
+  Handle fapl(d.check(H5Pcreate(H5P_FILE_ACCESS), "property list"), H5Pclose);
+  // Strong close: H5Fclose closes every object still open, so the file is complete when close() returns.
+  d.check_status(H5Pset_fclose_degree(fapl.get(), H5F_CLOSE_STRONG), "property list");
+  d.file = Handle(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl.get()), H5Fclose);
+  if (!d.file.valid()) {
+    const std::string detail = hdf5_error();
+    throw std::runtime_error("cannot create results file " + path.string() + (detail.empty() ? "" : ": " + detail));
+  }
+  d.open = true;
+  const hid_t root = d.file.get();
+  d.string_attribute(root, "format", "crumple results");
+  d.attribute(root, "format_version", static_cast<std::int32_t>(kFormatVersion));
+  d.string_attribute(root, "run_name", model.run_name);
+  d.string_attribute(root, "title", model.title);
+  d.array_attribute(root, "working_units_si",
+                    std::vector<double>{model.units.work[0], model.units.work[1], model.units.work[2]});
+  d.write_mesh(model);
+  d.group(root, "frames");
+  d.create_history();
+  d.check_status(H5Fflush(root, H5F_SCOPE_GLOBAL), "cannot flush");
+  d.write_xdmf();
+}
+
+ResultsFile::~ResultsFile() {
+  try {
+    close();
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "warning: %s\n", e.what());
+  } catch (...) {
+  }
+}
+
+void ResultsFile::write_frame(double time, long long cycle, const Model& model, const SolverState& state) {
+  QuietErrors quiet;
+  impl_->require_open();
+  impl_->write_frame(time, cycle, model, state);
+}
+
+void ResultsFile::write_history(const HistoryRow& row) {
+  QuietErrors quiet;
+  impl_->require_open();
+  impl_->append_history(row);
+}
+
+std::size_t ResultsFile::frames() const { return impl_->frames.size(); }
+
+void ResultsFile::close() {
+  QuietErrors quiet;
+  impl_->close();
+}
+
+}  // namespace crumple

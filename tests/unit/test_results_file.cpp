@@ -1,0 +1,481 @@
+// NAME.h5 / NAME.xdmf (docs/output-format.md): written through ResultsFile, read back with the HDF5 C API.
+#include <gtest/gtest.h>
+#include <hdf5.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "crumple/output/results_file.hpp"
+#include "deck_files.hpp"
+
+using namespace crumple;
+using test::I;
+using test::R;
+
+namespace {
+
+constexpr double kTol = 1e-15;
+
+// Shell state of one kind sized for the model: `points` through-thickness points per element, zero stresses.
+void size_shells(ShellState& st, const Model& m, ElementKind kind, int points) {
+  const std::size_t shells = m.elements[static_cast<int>(kind)].size();
+  st.point_offset.assign(m.element_groups.size(), 0);
+  st.points.assign(m.element_groups.size(), 0);
+  std::size_t total = 0;
+  for (std::size_t g = 0; g < m.element_groups.size(); ++g) {
+    const ElementGroup& group = m.element_groups[g];
+    if (group.kind != kind) continue;
+    st.point_offset[g] = total;
+    st.points[g] = points;
+    total += static_cast<std::size_t>(group.end - group.begin) * static_cast<std::size_t>(points);
+  }
+  st.sxx.assign(total, 0.0), st.syy.assign(total, 0.0), st.sxy.assign(total, 0.0), st.eps_p.assign(total, 0.0);
+  st.thickness.assign(shells, 0.001);
+  st.deleted.assign(shells, 0);
+  st.qx.assign(shells, 0.0), st.qy.assign(shells, 0.0);
+}
+
+// The plate of test::write_deck (6 nodes, 2 shells in one group) with a hand-made state: `points`
+// through-thickness points per shell, at rest in the initial position.
+SolverState plate_state(const Model& m, int points) {
+  SolverState s;
+  const std::size_t n = m.nodes.size();
+  s.nodes.resize(n);
+  s.x0 = m.nodes.x, s.y0 = m.nodes.y, s.z0 = m.nodes.z;
+  for (std::size_t i = 0; i < n; ++i) {
+    s.nodes.x[i] = m.nodes.x[i], s.nodes.y[i] = m.nodes.y[i], s.nodes.z[i] = m.nodes.z[i];
+  }
+  size_shells(s.shells, m, ElementKind::Shell4, points);
+  size_shells(s.shells3, m, ElementKind::Shell3, points);
+  return s;
+}
+
+// Moves the state by `scale`: displacements and velocities that differ per node, stresses per shell4 point.
+void advance(SolverState& s, const Model& m, double scale) {
+  for (std::size_t i = 0; i < m.nodes.size(); ++i) {
+    const double k = static_cast<double>(i + 1);
+    s.nodes.x[i] = m.nodes.x[i] + scale * 1e-4 * k;
+    s.nodes.y[i] = m.nodes.y[i] - scale * 2e-4 * k;
+    s.nodes.z[i] = m.nodes.z[i] + scale * 3e-4;
+    s.nodes.vx[i] = scale * k, s.nodes.vy[i] = -scale, s.nodes.vz[i] = 0.5 * scale;
+  }
+  for (std::size_t p = 0; p < s.shells.sxx.size(); ++p) {
+    const double k = static_cast<double>(p + 1);
+    s.shells.sxx[p] = scale * 1e6 * k, s.shells.syy[p] = -scale * 2e6 * k, s.shells.sxy[p] = scale * 3e5;
+    s.shells.eps_p[p] = scale * 0.01 * k;
+  }
+  for (std::size_t e = 0; e < s.shells.thickness.size(); ++e) s.shells.thickness[e] = 0.001 - scale * 1e-5;
+}
+
+HistoryRow history_row(int k) {
+  HistoryRow r;
+  r.time = 1e-4 * k, r.dt = 1e-7 * (k + 1);
+  r.internal = 10.0 * k, r.kinetic_translational = 100.0 - k, r.kinetic_rotational = 0.5 * k, r.hourglass = 0.01 * k;
+  r.contact = 0.0, r.external_work = 2.0 * k, r.total = 100.0 + 8.5 * k;
+  r.rigid_wall_force = {1.0 * k, 2.0 * k, 3.0 * k};
+  r.node_values = {0.1 * k, 0.2 * k, 0.3 * k, 1.0, 2.0, 3.0 + k};
+  return r;
+}
+
+// Reading back with the HDF5 C API.
+class H5Reader {
+ public:
+  explicit H5Reader(const std::filesystem::path& path) : file_(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT)) {
+    if (file_ < 0) throw std::runtime_error("cannot open " + path.string());
+  }
+  ~H5Reader() { H5Fclose(file_); }
+  H5Reader(const H5Reader&) = delete;
+  H5Reader& operator=(const H5Reader&) = delete;
+
+  bool exists(const std::string& path) const {
+    // H5Lexists checks one link at a time: walk the path from the root.
+    std::string prefix;
+    std::stringstream parts(path);
+    std::string part;
+    while (std::getline(parts, part, '/')) {
+      if (part.empty()) continue;
+      prefix += "/" + part;
+      if (H5Lexists(file_, prefix.c_str(), H5P_DEFAULT) <= 0) return false;
+    }
+    return true;
+  }
+
+  std::vector<hsize_t> shape(const std::string& path) const {
+    const hid_t set = open(path);
+    const hid_t space = H5Dget_space(set);
+    std::vector<hsize_t> dims(static_cast<std::size_t>(H5Sget_simple_extent_ndims(space)));
+    H5Sget_simple_extent_dims(space, dims.data(), nullptr);
+    H5Sclose(space);
+    H5Dclose(set);
+    return dims;
+  }
+
+  template <class T>
+  std::vector<T> read(const std::string& path, hid_t memory_type) const {
+    std::size_t count = 1;
+    for (hsize_t d : shape(path)) count *= d;
+    std::vector<T> values(count);
+    const hid_t set = open(path);
+    if (count > 0) H5Dread(set, memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data());
+    H5Dclose(set);
+    return values;
+  }
+  std::vector<double> doubles(const std::string& path) const { return read<double>(path, H5T_NATIVE_DOUBLE); }
+  std::vector<std::int32_t> ints(const std::string& path) const { return read<std::int32_t>(path, H5T_NATIVE_INT32); }
+  std::vector<std::int64_t> longs(const std::string& path) const { return read<std::int64_t>(path, H5T_NATIVE_INT64); }
+  std::vector<std::uint8_t> bytes(const std::string& path) const { return read<std::uint8_t>(path, H5T_NATIVE_UINT8); }
+
+  template <class T>
+  T attribute(const std::string& object, const std::string& name, hid_t memory_type) const {
+    T value{};
+    const hid_t attr = H5Aopen_by_name(file_, object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT);
+    if (attr < 0) throw std::runtime_error("no attribute " + object + " " + name);
+    H5Aread(attr, memory_type, &value);
+    H5Aclose(attr);
+    return value;
+  }
+
+ private:
+  hid_t open(const std::string& path) const {
+    const hid_t set = H5Dopen2(file_, path.c_str(), H5P_DEFAULT);
+    if (set < 0) throw std::runtime_error("no dataset " + path);
+    return set;
+  }
+  hid_t file_;
+};
+
+std::string read_text(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::size_t occurrences(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+// Writes the standard file of these tests: 2 frames (t = 0 and 5e-4) and 3 history rows; 2 points per shell.
+std::filesystem::path write_standard(const test::TempDir& dir, const Model& m) {
+  const auto path = dir.path() / "TEST.h5";
+  ResultsFile file(path, m);
+  SolverState s = plate_state(m, 2);
+  file.write_history(history_row(0));
+  file.write_frame(0.0, 0, m, s);
+  file.write_history(history_row(1));
+  advance(s, m, 1.0);
+  s.shells.deleted[1] = 1;
+  file.write_history(history_row(2));
+  file.write_frame(5e-4, 100, m, s);
+  EXPECT_EQ(file.frames(), 2u);
+  file.close();
+  file.close();  // idempotent
+  return path;
+}
+
+}  // namespace
+
+TEST(ResultsFile, WritesMeshFramesAndHistories) {
+  test::TempDir dir;
+  const Deck d = read_deck(test::write_deck(dir));
+  const Model& m = d.model;
+  const auto path = write_standard(dir, m);
+
+  const H5Reader h5(path);
+  // Mesh: initial coordinates, user ids, 0-based connectivity (deck: 1 2 5 4 and 2 3 6 5).
+  EXPECT_EQ(h5.shape("/mesh/coordinates"), (std::vector<hsize_t>{6, 3}));
+  const auto xyz = h5.doubles("/mesh/coordinates");
+  EXPECT_DOUBLE_EQ(xyz[3 * 2 + 0], 0.02);
+  EXPECT_DOUBLE_EQ(xyz[3 * 4 + 1], 0.01);
+  EXPECT_EQ(h5.longs("/mesh/node_ids"), (std::vector<std::int64_t>{1, 2, 3, 4, 5, 6}));
+  EXPECT_EQ(h5.shape("/mesh/shell4/connectivity"), (std::vector<hsize_t>{2, 4}));
+  EXPECT_EQ(h5.ints("/mesh/shell4/connectivity"), (std::vector<std::int32_t>{0, 1, 4, 3, 1, 2, 5, 4}));
+  EXPECT_EQ(h5.longs("/mesh/shell4/ids"), (std::vector<std::int64_t>{1, 2}));
+  EXPECT_EQ(h5.ints("/mesh/shell4/part"), (std::vector<std::int32_t>{0, 0}));
+  EXPECT_EQ(h5.longs("/mesh/shell4/part_id"), (std::vector<std::int64_t>{1, 1}));
+  EXPECT_EQ(h5.longs("/mesh/parts/ids"), (std::vector<std::int64_t>{1}));
+  EXPECT_FALSE(h5.exists("/mesh/shell3"));
+  EXPECT_FALSE(h5.exists("/mesh/brick8"));
+  EXPECT_EQ(h5.attribute<std::int32_t>("/", "format_version", H5T_NATIVE_INT32), 1);
+
+  // Frames: time and cycle attributes, nodal and shell fields.
+  EXPECT_TRUE(h5.exists("/frames/0000/displacement"));
+  EXPECT_FALSE(h5.exists("/frames/0002"));
+  EXPECT_DOUBLE_EQ(h5.attribute<double>("/frames/0001", "time", H5T_NATIVE_DOUBLE), 5e-4);
+  EXPECT_EQ(h5.attribute<std::int64_t>("/frames/0001", "cycle", H5T_NATIVE_INT64), 100);
+  EXPECT_EQ(h5.attribute<std::int64_t>("/frames/0000", "cycle", H5T_NATIVE_INT64), 0);
+  for (const char* name : {"displacement", "velocity"}) {
+    EXPECT_EQ(h5.shape(std::string("/frames/0001/") + name), (std::vector<hsize_t>{6, 3})) << name;
+  }
+  for (double u : h5.doubles("/frames/0000/displacement")) EXPECT_EQ(u, 0.0);
+  const auto u = h5.doubles("/frames/0001/displacement");
+  EXPECT_NEAR(u[3 * 5 + 0], 6e-4, kTol);   // node 6: +1e-4 * 6
+  EXPECT_NEAR(u[3 * 5 + 1], -1.2e-3, kTol);
+  EXPECT_NEAR(u[3 * 0 + 2], 3e-4, kTol);
+  const auto v = h5.doubles("/frames/0001/velocity");
+  EXPECT_DOUBLE_EQ(v[3 * 3 + 0], 4.0);
+  EXPECT_DOUBLE_EQ(v[3 * 3 + 1], -1.0);
+  EXPECT_DOUBLE_EQ(v[3 * 3 + 2], 0.5);
+
+  EXPECT_EQ(h5.shape("/frames/0001/shell4/stress"), (std::vector<hsize_t>{2, 3}));
+  const auto stress = h5.doubles("/frames/0001/shell4/stress");
+  // Element 2 owns points 3 and 4 (sxx 3e6, 4e6): mean 3.5e6.
+  EXPECT_DOUBLE_EQ(stress[0], 1.5e6);
+  EXPECT_DOUBLE_EQ(stress[3 + 0], 3.5e6);
+  EXPECT_DOUBLE_EQ(stress[3 + 1], -7e6);
+  EXPECT_DOUBLE_EQ(stress[3 + 2], 3e5);
+  const auto eps = h5.doubles("/frames/0001/shell4/plastic_strain");
+  ASSERT_EQ(eps.size(), 2u);
+  EXPECT_DOUBLE_EQ(eps[0], 0.02);  // max of points 1 and 2
+  EXPECT_DOUBLE_EQ(eps[1], 0.04);
+  EXPECT_DOUBLE_EQ(h5.doubles("/frames/0001/shell4/thickness")[0], 0.001 - 1e-5);
+  EXPECT_DOUBLE_EQ(h5.doubles("/frames/0000/shell4/thickness")[1], 0.001);
+  EXPECT_EQ(h5.bytes("/frames/0001/shell4/deleted"), (std::vector<std::uint8_t>{0, 1}));
+  EXPECT_EQ(h5.bytes("/frames/0000/shell4/deleted"), (std::vector<std::uint8_t>{0, 0}));
+
+  // Histories: 3 rows.
+  for (const char* name : {"time", "dt", "internal", "kinetic_translational", "kinetic_rotational", "hourglass",
+                           "contact", "external_work", "total"})
+    EXPECT_EQ(h5.shape(std::string("/history/") + name), (std::vector<hsize_t>{3})) << name;
+  EXPECT_EQ(h5.doubles("/history/time"), (std::vector<double>{0.0, 1e-4, 2e-4}));
+  EXPECT_EQ(h5.doubles("/history/kinetic_translational"), (std::vector<double>{100.0, 99.0, 98.0}));
+  EXPECT_EQ(h5.doubles("/history/total"), (std::vector<double>{100.0, 108.5, 117.0}));
+  EXPECT_EQ(h5.shape("/history/rigid_wall_force"), (std::vector<hsize_t>{3, 3}));
+  EXPECT_EQ(h5.doubles("/history/rigid_wall_force"), (std::vector<double>{0, 0, 0, 1, 2, 3, 2, 4, 6}));
+  EXPECT_EQ(h5.shape("/history/node_values"), (std::vector<hsize_t>{3, 6}));
+  EXPECT_DOUBLE_EQ(h5.doubles("/history/node_values")[6 * 2 + 5], 5.0);
+  EXPECT_EQ(h5.shape("/history/rigid_body_values"), (std::vector<hsize_t>{3, 0}));
+}
+
+TEST(ResultsFile, XdmfBesideTheFileHasATemporalCollectionOverTheFrames) {
+  test::TempDir dir;
+  const Deck d = read_deck(test::write_deck(dir));
+  write_standard(dir, d.model);
+  const auto xdmf = dir.path() / "TEST.xdmf";
+  ASSERT_TRUE(std::filesystem::exists(xdmf));
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "TEST.xdmf.tmp"));
+  const std::string text = read_text(xdmf);
+  EXPECT_NE(text.find("CollectionType=\"Temporal\""), std::string::npos);
+  EXPECT_EQ(occurrences(text, "<Time "), 2u);
+  EXPECT_NE(text.find("<Time Value=\"0.00050000000000000001\"/>"), std::string::npos) << text;
+  EXPECT_EQ(occurrences(text, "TopologyType=\"Quadrilateral\" NumberOfElements=\"2\""), 2u);
+  EXPECT_NE(text.find("TEST.h5:/mesh/shell4/connectivity"), std::string::npos);
+  EXPECT_NE(text.find("TEST.h5:/mesh/coordinates"), std::string::npos);
+  for (const char* ref : {"TEST.h5:/frames/0000/displacement", "TEST.h5:/frames/0001/displacement",
+                          "TEST.h5:/frames/0001/velocity", "TEST.h5:/frames/0001/shell4/stress",
+                          "TEST.h5:/frames/0001/shell4/plastic_strain", "TEST.h5:/frames/0001/shell4/thickness",
+                          "TEST.h5:/frames/0001/shell4/deleted"})
+    EXPECT_NE(text.find(ref), std::string::npos) << ref;
+  EXPECT_NE(text.find("Name=\"displacement\" AttributeType=\"Vector\" Center=\"Node\""), std::string::npos);
+  EXPECT_NE(text.find("Name=\"plastic_strain\" AttributeType=\"Scalar\" Center=\"Cell\""), std::string::npos);
+  EXPECT_EQ(text.find("/frames/0002"), std::string::npos);
+}
+
+TEST(ResultsFile, XdmfIsUpdatedAtEveryFrameAndShowsTheMeshBeforeTheFirst) {
+  test::TempDir dir;
+  const Deck d = read_deck(test::write_deck(dir));
+  const Model& m = d.model;
+  const auto xdmf = dir.path() / "TEST.xdmf";
+  ResultsFile file(dir.path() / "TEST.h5", m);
+  std::string text = read_text(xdmf);
+  EXPECT_NE(text.find("TopologyType=\"Quadrilateral\""), std::string::npos);
+  EXPECT_EQ(text.find("Temporal"), std::string::npos);
+  SolverState s = plate_state(m, 1);
+  file.write_frame(0.0, 0, m, s);
+  text = read_text(xdmf);
+  EXPECT_NE(text.find("TEST.h5:/frames/0000/velocity"), std::string::npos);
+  file.write_frame(1e-4, 10, m, s);
+  EXPECT_NE(read_text(xdmf).find("TEST.h5:/frames/0001/velocity"), std::string::npos);
+}
+
+TEST(ResultsFile, CannotCreateFileNamesThePath) {
+  test::TempDir dir;
+  const Deck d = read_deck(test::write_deck(dir));
+  const auto path = dir.path() / "no-such-folder" / "TEST.h5";
+  try {
+    ResultsFile file(path, d.model);
+    FAIL() << "no exception";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find(path.string()), std::string::npos) << e.what();
+  }
+}
+
+TEST(ResultsFile, WritingAfterCloseThrowsAndTheDestructorCloses) {
+  test::TempDir dir;
+  const Deck d = read_deck(test::write_deck(dir));
+  const Model& m = d.model;
+  const SolverState s = plate_state(m, 1);
+  {
+    ResultsFile file(dir.path() / "A.h5", m);
+    file.close();
+    EXPECT_THROW(file.write_frame(0.0, 0, m, s), std::runtime_error);
+    EXPECT_THROW(file.write_history(history_row(0)), std::runtime_error);
+    EXPECT_EQ(file.frames(), 0u);
+  }
+  {
+    ResultsFile file(dir.path() / "B.h5", m);
+    file.write_frame(0.0, 0, m, s);
+    file.write_history(history_row(0));
+  }  // no close(): the destructor closes
+  const H5Reader h5(dir.path() / "B.h5");
+  EXPECT_EQ(h5.shape("/history/time"), (std::vector<hsize_t>{1}));
+  EXPECT_EQ(h5.shape("/history/rigid_wall_force"), (std::vector<hsize_t>{1, 3}));
+  EXPECT_TRUE(h5.exists("/frames/0000/shell4/stress"));
+  const H5Reader a(dir.path() / "A.h5");  // no rows, no frames: every history dataset is there, empty
+  EXPECT_EQ(a.shape("/history/time"), (std::vector<hsize_t>{0}));
+  EXPECT_EQ(a.shape("/history/node_values"), (std::vector<hsize_t>{0, 0}));
+  EXPECT_EQ(a.shape("/mesh/shell4/connectivity"), (std::vector<hsize_t>{2, 4}));
+}
+
+TEST(ResultsFile, ManyHistoryRowsAreAllAppended) {
+  test::TempDir dir;
+  const Deck d = read_deck(test::write_deck(dir));
+  const auto path = dir.path() / "TEST.h5";
+  constexpr int rows = 1000;  // several flushes of the row buffer, several chunks
+  {
+    ResultsFile file(path, d.model);
+    for (int k = 0; k < rows; ++k) {
+      file.write_history(history_row(k));
+      if (k == 300) file.write_frame(0.03, 300, d.model, plate_state(d.model, 1));
+    }
+  }
+  const H5Reader h5(path);
+  const auto time = h5.doubles("/history/time");
+  ASSERT_EQ(time.size(), static_cast<std::size_t>(rows));
+  for (int k = 0; k < rows; ++k) EXPECT_DOUBLE_EQ(time[static_cast<std::size_t>(k)], 1e-4 * k);
+  const auto force = h5.doubles("/history/rigid_wall_force");
+  ASSERT_EQ(force.size(), 3u * rows);
+  EXPECT_DOUBLE_EQ(force[3 * 999 + 2], 3.0 * 999);
+  EXPECT_DOUBLE_EQ(h5.doubles("/history/node_values")[6 * 777 + 5], 3.0 + 777);
+}
+
+TEST(ResultsFile, HistoryRowsKeepTheWidthOfTheFirst) {
+  test::TempDir dir;
+  const Deck d = read_deck(test::write_deck(dir));
+  ResultsFile file(dir.path() / "TEST.h5", d.model);
+  file.write_history(history_row(0));
+  HistoryRow row = history_row(1);
+  row.rigid_wall_force.resize(6);
+  try {
+    file.write_history(row);
+    FAIL() << "no exception";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("rigid_wall_force"), std::string::npos) << e.what();
+  }
+}
+
+TEST(ResultsFile, StateThatDoesNotMatchTheMeshIsRejected) {
+  test::TempDir dir;
+  const Deck d = read_deck(test::write_deck(dir));
+  const Model& m = d.model;
+  ResultsFile file(dir.path() / "TEST.h5", m);
+  SolverState s = plate_state(m, 1);
+  s.nodes.resize(5);
+  EXPECT_THROW(file.write_frame(0.0, 0, m, s), std::runtime_error);
+  s = plate_state(m, 2);
+  s.shells.sxx.resize(3);  // 2 shells x 2 points need 4
+  EXPECT_THROW(file.write_frame(0.0, 0, m, s), std::runtime_error);
+  s = plate_state(m, 1);
+  s.shells.thickness.clear();
+  EXPECT_THROW(file.write_frame(0.0, 0, m, s), std::runtime_error);
+  EXPECT_EQ(file.frames(), 0u);
+  file.write_frame(0.0, 0, m, plate_state(m, 1));
+  EXPECT_EQ(file.frames(), 1u);
+}
+
+TEST(ResultsFile, MidSurfaceStressIsWeightedByTheIntegrationRuleWhenTheStateHasIt) {
+  test::TempDir dir;
+  const Deck d = read_deck(test::write_deck(dir));
+  const Model& m = d.model;
+  const auto path = dir.path() / "TEST.h5";
+  {
+    ResultsFile file(path, m);
+    SolverState s = plate_state(m, 2);
+    advance(s, m, 1.0);  // element 1: sxx 1e6, 2e6
+    s.shell_groups.assign(m.element_groups.size(), ShellGroupParameters{});
+    const double weight[2] = {0.25, 0.75};
+    s.shell_groups[0].points = 2;
+    s.shell_groups[0].membrane_weight = weight;
+    file.write_frame(1e-4, 1, m, s);
+  }
+  const H5Reader h5(path);
+  EXPECT_DOUBLE_EQ(h5.doubles("/frames/0000/shell4/stress")[0], 0.25 * 1e6 + 0.75 * 2e6);
+}
+
+TEST(ResultsFile, ShellsOfBothKindsAreWrittenAndGiveASpatialCollectionPerFrame) {
+  test::TempDir dir;
+  const std::string extra = "/NODE\n" + I(7) + R(0.03) + R(0.0) + R(0.0) + "\n/SH3N/1\n" + I(9) + I(3) + I(7) +
+                            I(6) + "\n";
+  const Deck d = read_deck(test::write_deck(dir, extra));
+  const Model& m = d.model;
+  ASSERT_EQ(m.elements[static_cast<int>(ElementKind::Shell3)].size(), 1u);
+  const auto path = dir.path() / "TEST.h5";
+  {
+    ResultsFile file(path, m);
+    SolverState s = plate_state(m, 2);
+    SolverState missing_triangles = s;
+    missing_triangles.shells3 = ShellState{};
+    EXPECT_THROW(file.write_frame(0.0, 0, m, missing_triangles), std::runtime_error);
+    s.shells3.sxx = {4e6, 6e6};
+    s.shells3.eps_p = {0.3, 0.1};
+    s.shells3.deleted[0] = 1;
+    file.write_frame(0.0, 0, m, s);
+  }
+  const H5Reader h5(path);
+  EXPECT_EQ(h5.shape("/mesh/shell3/connectivity"), (std::vector<hsize_t>{1, 3}));
+  EXPECT_EQ(h5.ints("/mesh/shell3/connectivity"), (std::vector<std::int32_t>{2, 6, 5}));
+  EXPECT_EQ(h5.longs("/mesh/shell3/ids"), (std::vector<std::int64_t>{9}));
+  EXPECT_EQ(h5.shape("/frames/0000/shell3/stress"), (std::vector<hsize_t>{1, 3}));
+  EXPECT_DOUBLE_EQ(h5.doubles("/frames/0000/shell3/stress")[0], 5e6);
+  EXPECT_DOUBLE_EQ(h5.doubles("/frames/0000/shell3/plastic_strain")[0], 0.3);
+  EXPECT_EQ(h5.bytes("/frames/0000/shell3/deleted"), (std::vector<std::uint8_t>{1}));
+  EXPECT_EQ(h5.shape("/frames/0000/shell4/stress"), (std::vector<hsize_t>{2, 3}));
+  const std::string text = read_text(dir.path() / "TEST.xdmf");
+  EXPECT_NE(text.find("CollectionType=\"Spatial\""), std::string::npos);
+  EXPECT_NE(text.find("TopologyType=\"Triangle\" NumberOfElements=\"1\""), std::string::npos);
+  EXPECT_NE(text.find("TEST.h5:/mesh/shell3/connectivity"), std::string::npos);
+  EXPECT_NE(text.find("TEST.h5:/frames/0000/shell3/plastic_strain"), std::string::npos);
+  EXPECT_NE(text.find("TEST.h5:/frames/0000/shell4/plastic_strain"), std::string::npos);
+}
+
+// Optional: the layout as a Python user sees it, when an interpreter with h5py is there.
+TEST(ResultsFile, H5pyReadsTheFile) {
+  std::string python;
+  for (const char* candidate : {"/usr/bin/python3", "python3"})
+    if (std::system((std::string(candidate) + " -c \"import h5py\" >/dev/null 2>&1").c_str()) == 0) {
+      python = candidate;
+      break;
+    }
+  if (python.empty()) GTEST_SKIP() << "no python3 with h5py";
+  test::TempDir dir;
+  const Deck d = read_deck(test::write_deck(dir));
+  const auto path = write_standard(dir, d.model);
+  const auto script = dir.write("check.py", R"(import sys
+import h5py
+import numpy as np
+with h5py.File(sys.argv[1], "r") as f:
+    assert f["mesh/coordinates"].shape == (6, 3)
+    assert f["mesh/shell4/connectivity"][0].tolist() == [0, 1, 4, 3]
+    assert f["mesh/parts/ids"][f["mesh/shell4/part"][1]] == 1
+    frames = sorted(f["frames"], key=int)
+    assert frames == ["0000", "0001"], frames
+    last = f["frames"][frames[-1]]
+    assert abs(last.attrs["time"] - 5e-4) < 1e-18 and last.attrs["cycle"] == 100
+    assert np.allclose(last["displacement"][5], [6e-4, -1.2e-3, 3e-4], rtol=0, atol=1e-15)
+    assert last["shell4/deleted"][:].tolist() == [0, 1]
+    assert f["history/time"].shape == (3,)
+    assert f["history/rigid_wall_force"][2].tolist() == [2.0, 4.0, 6.0]
+    assert f.attrs["format"] == "crumple results", f.attrs["format"]
+print("ok")
+)");
+  const std::string command = python + " " + script.string() + " " + path.string() + " > " +
+                              (dir.path() / "out.txt").string() + " 2>&1";
+  const int status = std::system(command.c_str());
+  EXPECT_EQ(status, 0) << read_text(dir.path() / "out.txt");
+}
