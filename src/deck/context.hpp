@@ -66,5 +66,7 @@ std::string read_title(CardReader& reader);  // the title line that follows many
 std::vector<std::int64_t> read_id_list(CardReader& reader, std::string_view name);
 // The keyword's object id (path part `index`); must be positive.
 std::int64_t object_id(CardReader& reader, std::size_t index);
+// The optional unit_ID at path part `index`: Crumple has no /UNIT, so a non-zero value is an error.
+void require_no_unit_id(CardReader& reader, std::size_t index);
 
 }  // namespace crumple::deck

@@ -5,6 +5,18 @@
 namespace crumple {
 namespace {
 
+// Control characters from a corrupted deck (a NUL in a keyword line would cut what() short, an escape sequence
+// would drive the terminal) are shown as \xNN.
+std::string printable(std::string text) {
+  std::string out;
+  for (char c : text) {
+    const auto u = static_cast<unsigned char>(c);
+    if (u < 32 || u == 127) out += fmt::format("\\x{:02x}", u);
+    else out += c;
+  }
+  return out;
+}
+
 std::string location_text(const SourceLocation& where) {
   if (where.file.empty()) return "<deck>";
   if (where.line <= 0) return where.file;
@@ -18,7 +30,7 @@ std::string compose(const SourceLocation& where, const std::string& keyword, con
   if (!field.empty()) text += "field " + field + ": ";
   text += "expected " + expected;
   if (!found.empty()) text += ", found " + found;
-  return text;
+  return printable(std::move(text));
 }
 
 }  // namespace
@@ -39,7 +51,7 @@ DeckErrors::DeckErrors(std::vector<DeckError> errors)
 std::string DeckWarning::text() const {
   std::string text = location_text(where) + ": ";
   if (!keyword.empty()) text += keyword + ": ";
-  return text + message;
+  return printable(text + message);
 }
 
 }  // namespace crumple

@@ -54,7 +54,10 @@ std::optional<double> parse_fortran_real(std::string_view raw) {
 std::optional<std::int64_t> parse_integer(std::string_view raw) {
   std::string_view text = trim(raw);
   if (text.empty()) return std::nullopt;
-  if (text.front() == '+') text.remove_prefix(1);
+  if (text.front() == '+') {
+    text.remove_prefix(1);
+    if (!text.empty() && text.front() == '-') return std::nullopt;  // "+-5": one sign only
+  }
   std::int64_t value = 0;
   const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
   if (ec != std::errc() || end != text.data() + text.size()) return std::nullopt;
@@ -166,14 +169,25 @@ void Line::fail_value(std::string_view name, std::string_view expected, std::str
 std::int64_t Line::integer(int column, int width, std::string_view name, std::int64_t fallback) const {
   const std::string field = raw(column, width);
   if (trim(field).empty()) return fallback;
-  if (auto v = parse_integer(field)) return *v;
+  if (auto v = parse_integer(field)) {
+    // Radioss integers are 32-bit; a larger value would wrap silently where a flag is stored as an int.
+    if (*v < INT32_MIN || *v > INT32_MAX) fail(column, width, name, "an integer between -2147483648 and 2147483647");
+    return *v;
+  }
   fail(column, width, name, "an integer");
 }
 
 double Line::real(int column, int width, std::string_view name, Dimension d, double fallback) const {
   const std::string field = raw(column, width);
   if (trim(field).empty()) return fallback * reader_->units().factor(d);
-  if (auto v = parse_fortran_real(field)) return *v * reader_->units().factor(d);
+  if (auto v = parse_fortran_real(field)) {
+    const double converted = *v * reader_->units().factor(d);
+    // A value that the /BEGIN unit conversion turns into infinity (or a non-zero value into 0) would pass the
+    // range checks of the card with a meaning the user never wrote.
+    if (!std::isfinite(converted) || (converted == 0.0) != (*v == 0.0))
+      fail(column, width, name, "a value that stays finite and non-zero after conversion to the working units");
+    return converted;
+  }
   fail(column, width, name, "a real number");
 }
 
@@ -200,7 +214,14 @@ double Line::token_real(std::size_t index, std::string_view name, Dimension d, s
     if (fallback) return *fallback * reader_->units().factor(d);
     fail_value(fmt::format("{} (value {})", name, index + 1), "a real number", "end of line");
   }
-  if (auto v = parse_fortran_real(tokens[index])) return *v * reader_->units().factor(d);
+  if (auto v = parse_fortran_real(tokens[index])) {
+    const double converted = *v * reader_->units().factor(d);
+    if (!std::isfinite(converted) || (converted == 0.0) != (*v == 0.0))
+      fail_value(fmt::format("{} (value {})", name, index + 1),
+                 "a value that stays finite and non-zero after conversion to the working units",
+                 quote_text(tokens[index]));
+    return converted;
+  }
   fail_value(fmt::format("{} (value {})", name, index + 1), "a real number", quote_text(tokens[index]));
 }
 

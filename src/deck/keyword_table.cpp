@@ -47,4 +47,10 @@ std::int64_t object_id(CardReader& reader, std::size_t index) {
   return id;
 }
 
+void require_no_unit_id(CardReader& reader, std::size_t index) {
+  if (reader.path_id(index, "unit_ID", false) != 0)
+    reader.fail("unit_ID", "0 or nothing after the id (/UNIT systems are not supported)",
+                "'" + reader.card().path[index] + "'");
+}
+
 }  // namespace crumple::deck

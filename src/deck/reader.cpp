@@ -153,8 +153,16 @@ Deck read_deck(const std::filesystem::path& starter, const ReadOptions& options)
                   DeckError(first_starter_card ? first_starter_card->where : starter_file, "/BEGIN", "",
                             "/BEGIN as the first keyword of the starter deck",
                             first_starter_card ? "'" + first_starter_card->keyword + "'" : "no starter keyword"));
-  if (!starter_ended)
-    record(DeckError(starter_file, "/END", "", "/END closing the starter deck", "end of file without /END"));
+  if (!starter_ended) {
+    // Point at the last line of the starter part (the place where /END belongs), else at the file.
+    SourceLocation end_where = starter_file;
+    for (auto it = text.lines.rbegin(); it != text.lines.rend(); ++it)
+      if (first_engine_file < 0 || it->file < first_engine_file) {
+        end_where = text.where(*it);
+        break;
+      }
+    record(DeckError(end_where, "/END", "", "/END closing the starter deck", "end of file without /END"));
+  }
   if (engine_seen && !context.run_seen)
     record(DeckError(SourceLocation{text.files.back(), 0}, "/RUN", "", "a /RUN card in the engine deck",
                      "an engine deck without /RUN"));

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 
 #include "crumple/model/geometry.hpp"
@@ -88,6 +89,10 @@ void resolve_kind(Resolver& r, ElementKind kind) {
                                                                            : "a shell of positive area",
                 fmt::format("{} {} with {} {:.6g}", name, raw.user_id[e],
                             kind == ElementKind::Brick8 ? "volume" : "area", size));
+      else if (!std::isfinite(size))  // huge coordinates overflow: no usable size, mass or time step
+        r.error(where, keyword, "node_ID1..", "node coordinates that give a finite size",
+                fmt::format("{} {} with an infinite {}", name, raw.user_id[e],
+                            kind == ElementKind::Brick8 ? "volume" : "area"));
     }
   }
   if (!r.errors.empty()) return;

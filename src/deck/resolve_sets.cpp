@@ -30,7 +30,10 @@ void for_each_element_of_parts(const Model& m, const std::vector<std::int32_t>& 
       for (std::int32_t e = g.begin; e < g.end; ++e) visit(g.kind, e);
 }
 
-void resolve_node_group(Resolver& r, std::size_t g, std::vector<int>& state) {
+// Deepest /GRNOD/GRNOD nesting resolved (the resolution recurses; a deeper chain would overflow the stack).
+constexpr int kMaxGroupNesting = 1000;
+
+void resolve_node_group(Resolver& r, std::size_t g, std::vector<int>& state, int depth = 0) {
   Model& m = r.model;
   NodeGroup& group = m.node_groups[g];
   if (state[g] == 2) return;
@@ -60,7 +63,13 @@ void resolve_node_group(Resolver& r, std::size_t g, std::vector<int>& state) {
       for (std::int64_t id : group.items) {
         const auto child = r.find(m.index.node_groups, id, group.where, keyword, "grnod_ID", "node group");
         if (child < 0) continue;
-        resolve_node_group(r, static_cast<std::size_t>(child), state);
+        if (depth >= kMaxGroupNesting && state[static_cast<std::size_t>(child)] != 2) {
+          r.error(group.where, keyword, "grnod_ID",
+                  fmt::format("at most {} levels of nested /GRNOD/GRNOD", kMaxGroupNesting),
+                  fmt::format("node group {} nested deeper", id));
+          continue;
+        }
+        resolve_node_group(r, static_cast<std::size_t>(child), state, depth + 1);
         const auto& nodes = m.node_groups[static_cast<std::size_t>(child)].nodes;
         group.nodes.insert(group.nodes.end(), nodes.begin(), nodes.end());
       }

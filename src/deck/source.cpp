@@ -37,10 +37,15 @@ void read_file(SourceText& text, const std::filesystem::path& path, std::vector<
   if (std::filesystem::is_directory(path, ec))
     throw DeckError(included_from, included_from.line > 0 ? "#include" : "", "", "a deck file",
                     "directory '" + path.string() + "'");
+  // A pipe or a device (/dev/stdin, /dev/zero) would block the read forever or never end: decks are regular files.
+  if (const auto status = std::filesystem::status(path, ec);
+      std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
+    throw DeckError(included_from, included_from.line > 0 ? "#include" : "", "", "a regular deck file",
+                    "special file '" + path.string() + "' (device, pipe or socket)");
   std::ifstream in(path, std::ios::binary);
   if (!in)
-    throw DeckError(included_from, included_from.line > 0 ? "#include" : "", "", "a readable file",
-                    "'" + path.string() + "' missing or unreadable");
+    throw DeckError(included_from, included_from.line > 0 ? "#include" : "", included_from.line > 0 ? "file name" : "",
+                    "a readable file", "'" + path.string() + "' missing or unreadable");
 
   stack.push_back(canonical);
   const auto file_index = static_cast<std::int32_t>(text.files.size());

@@ -1,6 +1,7 @@
 // /BEGIN, /TITLE, /DEF_SHELL, /DEF_SOLID and the control keywords accepted without effect.
 #include <fmt/format.h>
 
+#include <cmath>
 #include <optional>
 
 #include "../context.hpp"
@@ -38,6 +39,18 @@ void read_begin(CardReader& reader, DeckContext& context) {
       target = *size;
     }
   }
+  // Every conversion factor (up to the cube of a unit, as in a density) must stay finite and non-zero: with an
+  // infinite factor a blank field (0 x inf) reads as NaN and passes every range check of its card.
+  const UnitSystem u = model.units;
+  for (int mass = -3; mass <= 3; ++mass)
+    for (int length = -3; length <= 3; ++length)
+      for (int time = -3; time <= 3; ++time)
+        if (const double f = u.factor(Dimension{mass, length, time}); !std::isfinite(f) || f == 0.0) {
+          model.units = UnitSystem{};  // the rest of the deck is read in SI rather than reporting every field
+          reader.fail("units", "input and working units whose conversion factors stay finite and non-zero",
+                      fmt::format("input/working size ratios {:g} (mass), {:g} (length), {:g} (time)",
+                                  u.input[0] / u.work[0], u.input[1] / u.work[1], u.input[2] / u.work[2]));
+        }
   reader.finish();
 }
 

@@ -13,6 +13,7 @@ Material begin_material(CardReader& reader, MaterialLaw law) {
   m.where = reader.card().where;
   m.law = law;
   m.user_id = object_id(reader, 2);
+  require_no_unit_id(reader, 3);
   m.title = read_title(reader);
   return m;
 }
@@ -118,6 +119,7 @@ void read_tabulated_plasticity(CardReader& reader, DeckContext& context) {
   m.young = elastic.real(1, 20, "E", dim::pressure);
   m.poisson = elastic.real(21, 20, "Nu", dim::none);
   check_elastic(elastic, m, 1, 21);
+  if (m.poisson < 0.0) elastic.fail(21, 20, "Nu", "a Poisson ratio in [0, 0.5) for law 36");
   tab.eps_p_max = elastic.real(41, 20, "EPS_p_max", dim::none);
   tab.eps_t1 = elastic.real(61, 20, "EPS_t", dim::none);
   tab.eps_t2 = elastic.real(81, 20, "EPS_m", dim::none);

@@ -19,6 +19,7 @@ Group begin_group(CardReader& reader, SetSource source) {
   Group g;
   g.where = reader.card().where;
   g.user_id = object_id(reader, 2);
+  require_no_unit_id(reader, 3);
   g.source = source;
   g.title = read_title(reader);
   return g;
@@ -63,6 +64,7 @@ void read_subset(CardReader& reader, DeckContext& context) {
   Subset s;
   s.where = reader.card().where;
   s.user_id = object_id(reader, 1);
+  require_no_unit_id(reader, 2);
   s.title = read_title(reader);
   s.children = positive_ids(reader, "subset_ID");
   context.model.subsets.push_back(std::move(s));
