@@ -222,6 +222,8 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
       nodes.my[k] -= mx * e1.y + my * e2.y;
       nodes.mz[k] -= mx * e1.z + my * e2.z;
     }
+    // A NaN or an infinity anywhere in the element shows in the sum of its resultants: the run stops at once.
+    if (!std::isfinite(nxx + nyy + nxy + mxx + myy + mxy + qx + qy + work)) result.non_finite = e;
     const double internal = work * area;
     state.internal_energy[ue] += internal;
     state.hourglass_energy[ue] += hourglass_work;

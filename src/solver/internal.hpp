@@ -11,6 +11,8 @@ namespace crumple::solver {
 
 SolverState make_state(const Model& model, std::vector<std::string>& notes);
 void setup_rigid_bodies(const Model& model, SolverState& state);
+// Brick groups' parameters and state (setup_bricks.cpp, docs/theory/brick8.md).
+void setup_bricks(const Model& model, SolverState& state);
 void setup_rigid_walls(const Model& model, SolverState& state);
 
 // Nodal time step of the cycle with mass scaling (/DT/NODA/CST): adds mass where the nodal step would fall

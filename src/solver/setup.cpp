@@ -123,6 +123,7 @@ SolverState make_state(const Model& m, std::vector<std::string>& notes) {
   s.shell_groups.assign(m.element_groups.size(), ShellGroupParameters{});
   setup_shells(m, s, ElementKind::Shell4, notes);
   setup_shells(m, s, ElementKind::Shell3, notes);
+  setup_bricks(m, s);
   setup_rigid_bodies(m, s);
   setup_rigid_walls(m, s);
   s.mass_initial = 0.0;

@@ -152,16 +152,18 @@ RunSummary run_simulation(const Model& m, const SolverOptions& options, std::ost
       switch (group.kind) {
         case ElementKind::Shell4: r = shell4_forces(table, group, s.shell_groups[g], n, s.shells, s.dt); break;
         case ElementKind::Shell3: r = shell3_forces(table, group, s.shell_groups[g], n, s.shells3, s.dt); break;
-        case ElementKind::Brick8: continue;  // bricks: in progress
+        case ElementKind::Brick8: r = brick8_forces(table, group, s.brick_groups[g], n, s.bricks, s.dt); break;
       }
       s.energy.internal += r.internal_energy;
       s.energy.hourglass += r.hourglass_energy;
       const std::string_view kind = element_kind_name(group.kind);
       if (r.inverted >= 0) {
         status = RunStatus::Error;
-        message = fmt::format("{} {} of part {} inverted (zero or negative area) at cycle {}", kind,
+        message = fmt::format("{} {} of part {} inverted ({}) at cycle {}", kind,
                               table.user_id[static_cast<std::size_t>(r.inverted)],
-                              m.parts[static_cast<std::size_t>(group.part)].user_id, s.cycle);
+                              m.parts[static_cast<std::size_t>(group.part)].user_id,
+                              group.kind == ElementKind::Brick8 ? "negative volume" : "zero or negative area",
+                              s.cycle);
       }
       // Per-type step control (/DT/SHELL, /DT/SH_3N): own scale, and elements below the minimum are deleted
       // (the default for shells) or stop the run.
@@ -179,16 +181,19 @@ RunSummary run_simulation(const Model& m, const SolverOptions& options, std::ost
                                 m.parts[static_cast<std::size_t>(group.part)].user_id, type_scale * r.min_dt,
                                 type.minimum, s.cycle);
         } else {
+          const bool brick = group.kind == ElementKind::Brick8;
           ShellState& st = group.kind == ElementKind::Shell4 ? s.shells : s.shells3;
+          auto& deleted = brick ? s.bricks.deleted : st.deleted;
+          const auto& critical_dt = brick ? s.bricks.critical_dt : st.critical_dt;
           r.min_dt = std::numeric_limits<double>::infinity();
           for (std::int32_t e = group.begin; e < group.end; ++e) {
             const auto ue = static_cast<std::size_t>(e);
-            if (st.deleted[ue]) continue;
-            if (type_scale * st.critical_dt[ue] < type.minimum) {
-              st.deleted[ue] = 1;
+            if (deleted[ue]) continue;
+            if (type_scale * critical_dt[ue] < type.minimum) {
+              deleted[ue] = 1;
               ++s.deleted_by_time_step;
-            } else if (st.critical_dt[ue] < r.min_dt) {
-              r.min_dt = st.critical_dt[ue], r.controlling = e;
+            } else if (critical_dt[ue] < r.min_dt) {
+              r.min_dt = critical_dt[ue], r.controlling = e;
             }
           }
         }

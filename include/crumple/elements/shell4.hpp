@@ -32,6 +32,7 @@ struct GroupStepResult {
   double hourglass_energy = 0.0;   // increment of the cycle
   std::int32_t failed = 0;         // elements deleted during the cycle
   std::int32_t inverted = -1;      // an element whose area became zero or negative (-1: none)
+  std::int32_t non_finite = -1;    // an element whose forces became NaN or infinite (-1: none)
 };
 
 // Updates the stresses of the group's elements over the step dt (the velocities of `nodes` act over dt), then

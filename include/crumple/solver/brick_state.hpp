@@ -21,6 +21,8 @@ struct BrickState {
   std::vector<double> hourglass;         // 12 hourglass generalized stresses per element, Isolid 24 (eq. B-9) [F]
   std::vector<double> internal_energy;   // [M L^2 T^-2]
   std::vector<double> hourglass_energy;  // [M L^2 T^-2]
+  std::vector<double> critical_dt;       // critical step of the last cycle (eq. B-12) [T]
+  std::vector<double> mass;              // element mass [M] (nodal time-step estimate)
   std::vector<std::uint8_t> deleted;     // 1 once the element has failed
 };
 

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "crumple/elements/brick8.hpp"
 #include "crumple/elements/shell4.hpp"
 #include "crumple/model/model.hpp"
 #include "crumple/solver/nodal_state.hpp"
@@ -52,6 +53,8 @@ struct SolverState {
   ShellState shells3;  // 3-node shells
   std::vector<ShellGroupParameters> shell_groups;  // per element group (meaningful for shell groups only)
   std::vector<double> shell_zeta, shell_membrane_weight, shell_bending_weight;  // through-thickness rules, 11 per n
+  BrickState bricks;                                // 8-node bricks
+  std::vector<BrickGroupParameters> brick_groups;  // per element group (meaningful for brick groups only)
   std::vector<RigidBodyState> bodies;
   std::vector<RigidWallState> walls;
   std::vector<std::int32_t> rigid_owner;           // per node: rigid body index, -1 when none

@@ -1,0 +1,46 @@
+#pragma once
+// 8-node bricks (docs/theory/brick8.md): Isolid 1 one point with viscous hourglass control, Isolid 24 one point
+// with assumed-strain physical (elastic) stabilisation, Isolid 14 2x2x2 Gauss points with a mean-dilatation
+// pressure. Node order: 1-4 one face, 5-8 the opposite face (node k + 4 above node k).
+#include <cstddef>
+
+#include "crumple/elements/shell4.hpp"  // GroupStepResult
+#include "crumple/materials/hardening.hpp"
+#include "crumple/model/elements.hpp"
+#include "crumple/solver/brick_state.hpp"
+#include "crumple/solver/nodal_state.hpp"
+
+namespace crumple {
+
+// Everything a brick kernel needs about a group that is the same for all its elements.
+struct BrickGroupParameters {
+  materials::Hardening hardening;
+  double young = 0.0, poisson = 0.0, density = 0.0;  // density: initial density rho0
+  int isolid = 1;                  // 1, 14 or 24
+  double qa = 1.1, qb = 0.05;      // quadratic and linear bulk viscosity coefficients (eq. B-7)
+  double hourglass = 0.1;          // viscous hourglass coefficient h (Isolid 1, eq. B-6)
+  int points = 1;                  // integration points per element: 1, or 8 for Isolid 14
+  std::size_t first_point = 0;     // BrickState index of the group's first element's first point
+  double failure_strain = 0.0;     // plastic strain that deletes the element (0: none)
+};
+
+// Updates the stresses of the group's elements over the step dt (the velocities of `nodes` act over dt, the
+// rate of deformation is taken on the mid-step geometry x - dt v / 2), then subtracts their internal forces at the
+// current geometry from the nodal force accumulators. Dispatches once per group on p.isolid.
+GroupStepResult brick8_forces(const ElementTable& table, const ElementGroup& group, const BrickGroupParameters& p,
+                              NodalState& nodes, BrickState& state, double dt);
+
+// The two kernels behind brick8_forces: one point (Isolid 1 and 24) and 2x2x2 Gauss points (Isolid 14).
+GroupStepResult brick8_one_point_forces(const ElementTable& table, const ElementGroup& group,
+                                        const BrickGroupParameters& p, NodalState& nodes, BrickState& state,
+                                        double dt);
+GroupStepResult brick8_full_forces(const ElementTable& table, const ElementGroup& group,
+                                   const BrickGroupParameters& p, NodalState& nodes, BrickState& state, double dt);
+
+// Exact volume of the trilinear brick and its derivatives with respect to the nodal coordinates (eq. B-2):
+// dv_dx[I] = dV/dx_I, ... The uniform (mean) gradient of Flanagan and Belytschko is dV/dx_I / V. Returns V.
+double brick8_volume_gradient(const double* x, const double* y, const double* z, double* dv_dx, double* dv_dy,
+                              double* dv_dz);
+double brick8_volume(const double* x, const double* y, const double* z);
+
+}  // namespace crumple

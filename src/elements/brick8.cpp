@@ -1,0 +1,517 @@
+// 8-node bricks (docs/theory/brick8.md). Isolid 1: Flanagan-Belytschko uniform gradient at one point, bulk
+// viscosity, viscous hourglass control on the orthogonalised hourglass vectors. Isolid 24: the same one point with
+// an elastic, assumed-strain hourglass stiffness in a co-rotational frame. Isolid 14: 2x2x2 Gauss points with the
+// mean dilatation (B-bar) for the pressure. All three share the 3-D material update (materials/solid_update).
+#include "crumple/elements/brick8.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "crumple/materials/solid_update.hpp"
+
+namespace crumple {
+namespace {
+
+// Natural coordinates of the nodes (eq. B-1): node I sits at (kS1[I], kS2[I], kS3[I]).
+constexpr double kS1[8] = {-1, 1, 1, -1, -1, 1, 1, -1};
+constexpr double kS2[8] = {-1, -1, 1, 1, -1, -1, 1, 1};
+constexpr double kS3[8] = {-1, -1, -1, -1, 1, 1, 1, 1};
+// Hourglass base vectors (eq. B-5): the nodal values of r s... products s t, r t, r s, r s t.
+constexpr double kH[4][8] = {{1, 1, -1, -1, -1, -1, 1, 1},
+                             {1, -1, -1, 1, -1, 1, 1, -1},
+                             {1, -1, 1, -1, 1, -1, 1, -1},
+                             {-1, 1, -1, 1, 1, -1, 1, -1}};
+
+// Exact volume (eq. B-2): V = sum over I < J < K of c_IJK x_I . (x_J x x_K) / 12 with integer c_IJK, so that
+// dV/dx_I = sum_{J<K} c_IJK (x_J x x_K) / 12. kPairs lists the 24 node pairs (J, K) that occur (every pair but the
+// four body diagonals); kVolumeTerms[I] the nine (pair, c) of node I.
+constexpr int kPairs[24][2] = {{0, 1}, {0, 2}, {0, 3}, {0, 4}, {0, 5}, {0, 7}, {1, 2}, {1, 3},
+                               {1, 4}, {1, 5}, {1, 6}, {2, 3}, {2, 5}, {2, 6}, {2, 7}, {3, 4},
+                               {3, 6}, {3, 7}, {4, 5}, {4, 6}, {4, 7}, {5, 6}, {5, 7}, {6, 7}};
+constexpr int kVolumeTerms[8][9][2] = {
+    {{6, -1}, {7, -1}, {8, 1}, {9, 1}, {11, -1}, {15, -1}, {17, -1}, {18, -1}, {20, 1}},
+    {{1, 1}, {2, 1}, {3, -1}, {4, -1}, {11, -1}, {12, 1}, {13, 1}, {18, -1}, {21, -1}},
+    {{0, -1}, {2, 1}, {7, 1}, {9, -1}, {10, -1}, {16, 1}, {17, 1}, {21, -1}, {23, -1}},
+    {{0, -1}, {1, -1}, {3, 1}, {5, 1}, {6, -1}, {13, -1}, {14, -1}, {20, 1}, {23, -1}},
+    {{0, 1}, {2, -1}, {4, 1}, {5, -1}, {9, 1}, {17, -1}, {21, 1}, {22, 1}, {23, 1}},
+    {{0, 1}, {3, -1}, {6, 1}, {8, -1}, {10, 1}, {13, 1}, {19, -1}, {20, -1}, {23, 1}},
+    {{6, 1}, {9, -1}, {11, 1}, {12, -1}, {14, 1}, {17, 1}, {18, 1}, {20, -1}, {22, -1}},
+    {{2, -1}, {3, 1}, {11, 1}, {13, -1}, {15, 1}, {16, -1}, {18, 1}, {19, 1}, {21, 1}}};
+
+// Faces for the characteristic length (eq. B-12).
+constexpr int kFaces[6][4] = {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+
+// Derivatives of the shape functions with respect to r, s, t at the 2x2x2 Gauss points (eq. B-10); point g sits at
+// (kS1[g], kS2[g], kS3[g]) / sqrt(3), next to node g.
+struct GaussDerivatives {
+  double d[8][3][8];  // [point][natural direction][node]
+};
+constexpr GaussDerivatives gauss_derivatives() {
+  constexpr double a = 0.57735026918962576451;  // 1 / sqrt(3)
+  GaussDerivatives t{};
+  for (int g = 0; g < 8; ++g) {
+    const double r = a * kS1[g], s = a * kS2[g], u = a * kS3[g];
+    for (int i = 0; i < 8; ++i) {
+      t.d[g][0][i] = 0.125 * kS1[i] * (1.0 + kS2[i] * s) * (1.0 + kS3[i] * u);
+      t.d[g][1][i] = 0.125 * kS2[i] * (1.0 + kS1[i] * r) * (1.0 + kS3[i] * u);
+      t.d[g][2][i] = 0.125 * kS3[i] * (1.0 + kS1[i] * r) * (1.0 + kS2[i] * s);
+    }
+  }
+  return t;
+}
+constexpr GaussDerivatives kGauss = gauss_derivatives();
+
+// Cofactor matrix C of a 3x3 matrix (C / det = A^-T) and the determinant.
+double cofactor(const double a[3][3], double c[3][3]) {
+  c[0][0] = a[1][1] * a[2][2] - a[1][2] * a[2][1];
+  c[0][1] = a[1][2] * a[2][0] - a[1][0] * a[2][2];
+  c[0][2] = a[1][0] * a[2][1] - a[1][1] * a[2][0];
+  c[1][0] = a[0][2] * a[2][1] - a[0][1] * a[2][2];
+  c[1][1] = a[0][0] * a[2][2] - a[0][2] * a[2][0];
+  c[1][2] = a[0][1] * a[2][0] - a[0][0] * a[2][1];
+  c[2][0] = a[0][1] * a[1][2] - a[0][2] * a[1][1];
+  c[2][1] = a[0][2] * a[1][0] - a[0][0] * a[1][2];
+  c[2][2] = a[0][0] * a[1][1] - a[0][1] * a[1][0];
+  return a[0][0] * c[0][0] + a[0][1] * c[0][1] + a[0][2] * c[0][2];
+}
+
+// Rotation R of the polar decomposition J = R U (eq. B-8), by the scaled Newton iteration
+// X <- (z X + X^-T / z) / 2 with z = |det X|^(-1/3).
+void polar_rotation(const double j[3][3], double r[3][3]) {
+  double x[3][3];
+  for (int i = 0; i < 3; ++i)
+    for (int k = 0; k < 3; ++k) x[i][k] = j[i][k];
+  for (int it = 0; it < 50; ++it) {
+    double c[3][3];
+    const double det = cofactor(x, c);
+    const double z = 1.0 / std::cbrt(std::abs(det));
+    double change = 0.0;
+    for (int i = 0; i < 3; ++i)
+      for (int k = 0; k < 3; ++k) {
+        const double next = 0.5 * (z * x[i][k] + c[i][k] / (det * z));
+        change += (next - x[i][k]) * (next - x[i][k]);
+        x[i][k] = next;
+      }
+    if (change < 1e-28) break;
+  }
+  for (int i = 0; i < 3; ++i)
+    for (int k = 0; k < 3; ++k) r[i][k] = x[i][k];
+}
+
+double largest_face_area(const double* x, const double* y, const double* z) {
+  double largest = 0.0;
+  for (const auto& f : kFaces) {
+    // A = |d13 x d24| / 2
+    const double ax = x[f[2]] - x[f[0]], ay = y[f[2]] - y[f[0]], az = z[f[2]] - z[f[0]];
+    const double bx = x[f[3]] - x[f[1]], by = y[f[3]] - y[f[1]], bz = z[f[3]] - z[f[1]];
+    const double cx = ay * bz - az * by, cy = az * bx - ax * bz, cz = ax * by - ay * bx;
+    largest = std::max(largest, 0.25 * (cx * cx + cy * cy + cz * cz));
+  }
+  return std::sqrt(largest);
+}
+
+// Element data gathered once: coordinates relative to the centroid (round-off) and velocities.
+struct Element {
+  double x[8], y[8], z[8];     // current, relative to the centroid
+  double vx[8], vy[8], vz[8];
+  double mx[8], my[8], mz[8];  // mid-step x - dt v / 2
+};
+
+void gather(const NodalState& nodes, const std::int32_t* n, double dt, Element& el) {
+  double cx = 0.0, cy = 0.0, cz = 0.0;
+  for (int a = 0; a < 8; ++a) {
+    const auto k = static_cast<std::size_t>(n[a]);
+    el.x[a] = nodes.x[k], el.y[a] = nodes.y[k], el.z[a] = nodes.z[k];
+    el.vx[a] = nodes.vx[k], el.vy[a] = nodes.vy[k], el.vz[a] = nodes.vz[k];
+    cx += el.x[a], cy += el.y[a], cz += el.z[a];
+  }
+  cx *= 0.125, cy *= 0.125, cz *= 0.125;
+  for (int a = 0; a < 8; ++a) {
+    el.x[a] -= cx, el.y[a] -= cy, el.z[a] -= cz;
+    el.mx[a] = el.x[a] - 0.5 * dt * el.vx[a];
+    el.my[a] = el.y[a] - 0.5 * dt * el.vy[a];
+    el.mz[a] = el.z[a] - 0.5 * dt * el.vz[a];
+  }
+}
+
+// Rate of deformation (engineering shears) and spin axial vector from the velocity gradient L_ij = dv_i/dx_j
+// (eq. B-3).
+struct Rates {
+  double d[6];  // dxx, dyy, dzz, gxy, gyz, gzx
+  double w[3];  // axial vector of W = (L - L^T) / 2
+};
+Rates rates_of(const double l[3][3]) {
+  Rates r{};
+  r.d[0] = l[0][0], r.d[1] = l[1][1], r.d[2] = l[2][2];
+  r.d[3] = l[0][1] + l[1][0], r.d[4] = l[1][2] + l[2][1], r.d[5] = l[2][0] + l[0][2];
+  r.w[0] = 0.5 * (l[2][1] - l[1][2]);
+  r.w[1] = 0.5 * (l[0][2] - l[2][0]);
+  r.w[2] = 0.5 * (l[1][0] - l[0][1]);
+  return r;
+}
+
+// Stress at point ip: load, rotate by the spin increment, update with the strain increment; returns the
+// stress power's mid-step value (s_old + s_new) : d / 2 per unit volume and updates eps_p.
+struct PointUpdate {
+  double power = 0.0;
+  bool failed = false;
+};
+PointUpdate update_point(const BrickGroupParameters& p, const materials::SolidElastic& elastic, BrickState& st,
+                         std::size_t ip, const Rates& r, double dt, double* s) {
+  s[0] = st.sxx[ip], s[1] = st.syy[ip], s[2] = st.szz[ip], s[3] = st.sxy[ip], s[4] = st.syz[ip], s[5] = st.szx[ip];
+  PointUpdate u;
+  if (!(dt > 0.0)) return u;
+  materials::rotate_stress(s, r.w[0] * dt, r.w[1] * dt, r.w[2] * dt);  // eq. SU-2
+  double old[6], de[6];
+  for (int k = 0; k < 6; ++k) old[k] = s[k], de[k] = r.d[k] * dt;
+  const double rate = materials::equivalent_strain(de) / dt;
+  const auto res = materials::solid_update(elastic, p.hardening, de, rate, st.eps_p[ip], s);  // eq. SU-1, SU-3
+  st.eps_p[ip] += res.plastic_strain_increment;
+  if (p.failure_strain > 0.0 && st.eps_p[ip] >= p.failure_strain) u.failed = true;
+  st.sxx[ip] = s[0], st.syy[ip] = s[1], st.szz[ip] = s[2], st.sxy[ip] = s[3], st.syz[ip] = s[4], st.szx[ip] = s[5];
+  for (int k = 0; k < 6; ++k) u.power += 0.5 * (old[k] + s[k]) * r.d[k];  // engineering shears: no factor 2
+  return u;
+}
+
+// Bulk viscosity pressure q and the speed Q it adds in the time-step estimate (eq. B-7, B-12).
+struct Viscosity {
+  double q = 0.0;      // [stress], > 0 in compression
+  double speed = 0.0;  // Q = qb c + qa^2 L |dv| [L/T]
+};
+Viscosity bulk_viscosity(const BrickGroupParameters& p, double rho, double c, double length, double dv) {
+  Viscosity v;
+  if (dv < 0.0) {
+    v.speed = p.qb * c + p.qa * p.qa * length * (-dv);
+    v.q = rho * length * v.speed * (-dv);
+  }
+  return v;
+}
+
+// Assumed-strain stabilisation of Isolid 24 (eq. B-9): increments dQ of the 12 generalized hourglass stresses
+// (local frame, [direction][mode]) for the increments dq of the hourglass rates times dt, in a parallelepiped of
+// half-widths a[3] and volume V. Modes 0, 1, 2 are the products s t, r t, r s (mode k lacks coordinate k); mode 3
+// is r s t.
+void stabilisation_increment(const double a[3], double volume, double young, double poisson, double shear,
+                             const double dq[3][4], double dQ[3][4]) {
+  const double plate = young / (1.0 - poisson * poisson);
+  for (int i = 0; i < 3; ++i)
+    for (int k = 0; k < 4; ++k) dQ[i][k] = 0.0;
+  for (int m = 0; m < 3; ++m) {
+    const int n = (m + 1) % 3, q = (m + 2) % 3;
+    // Strain field linear in the natural coordinate of axis m: mode q (= coordinates n, m) along n stretches n,
+    // mode n (= coordinates q, m) along q stretches q, and the two cross terms shear the n-q plane. The shears
+    // of the m direction (d v_m / d x_n ... linear in that same coordinate) are left out: they are the parasitic
+    // shears of bending. Plane stress normal to m keeps the bending stiffness free of volumetric locking.
+    const double hn = 1.0 / (8.0 * a[n]), hq = 1.0 / (8.0 * a[q]);
+    const double enn = dq[n][q] * hn, eqq = dq[q][n] * hq;
+    const double gnq = dq[n][n] * hq + dq[q][q] * hn;
+    const double w = volume / 3.0;  // integral of the coordinate squared
+    const double snn = plate * (enn + poisson * eqq), sqq = plate * (eqq + poisson * enn), tnq = shear * gnq;
+    dQ[n][q] += w * snn * hn;
+    dQ[q][n] += w * sqq * hq;
+    dQ[n][n] += w * tnq * hq;
+    dQ[q][q] += w * tnq * hn;
+    // Mode 3 (r s t): gradient along axis m times the product of the two other coordinates; uniaxial stress for
+    // the stretch, shear modulus for the two shears.
+    const double hm = 1.0 / (8.0 * a[m]);
+    const double w3 = volume / 9.0;
+    dQ[m][3] += w3 * young * dq[m][3] * hm * hm;
+    dQ[n][3] += w3 * shear * dq[n][3] * hm * hm;
+    dQ[q][3] += w3 * shear * dq[q][3] * hm * hm;
+  }
+}
+
+}  // namespace
+
+double brick8_volume_gradient(const double* x, const double* y, const double* z, double* dv_dx, double* dv_dy,
+                              double* dv_dz) {
+  double cx[24], cy[24], cz[24];
+  for (int k = 0; k < 24; ++k) {
+    const int j = kPairs[k][0], l = kPairs[k][1];
+    cx[k] = y[j] * z[l] - z[j] * y[l];
+    cy[k] = z[j] * x[l] - x[j] * z[l];
+    cz[k] = x[j] * y[l] - y[j] * x[l];
+  }
+  double volume = 0.0;
+  for (int i = 0; i < 8; ++i) {
+    double bx = 0.0, by = 0.0, bz = 0.0;
+    for (const auto& t : kVolumeTerms[i]) {
+      const double c = t[1];
+      bx += c * cx[t[0]], by += c * cy[t[0]], bz += c * cz[t[0]];
+    }
+    dv_dx[i] = bx / 12.0, dv_dy[i] = by / 12.0, dv_dz[i] = bz / 12.0;
+    // V is linear in each of the x, y and z coordinate vectors: V = sum x_I dV/dx_I (= same with y, z).
+    volume += x[i] * dv_dx[i] + y[i] * dv_dy[i] + z[i] * dv_dz[i];
+  }
+  return volume / 3.0;
+}
+
+double brick8_volume(const double* x, const double* y, const double* z) {
+  double bx[8], by[8], bz[8];
+  return brick8_volume_gradient(x, y, z, bx, by, bz);
+}
+
+GroupStepResult brick8_forces(const ElementTable& table, const ElementGroup& group, const BrickGroupParameters& p,
+                              NodalState& nodes, BrickState& state, double dt) {
+  return p.isolid == 14 ? brick8_full_forces(table, group, p, nodes, state, dt)
+                        : brick8_one_point_forces(table, group, p, nodes, state, dt);
+}
+
+GroupStepResult brick8_one_point_forces(const ElementTable& table, const ElementGroup& group,
+                                        const BrickGroupParameters& p, NodalState& nodes, BrickState& state,
+                                        double dt) {
+  GroupStepResult result;
+  const materials::SolidElastic elastic{p.young, p.poisson};
+  const double G = elastic.shear(), K = elastic.bulk();
+  const double wave_modulus = K + 4.0 / 3.0 * G;  // rho c^2 of the dilatational wave
+  const bool physical = p.isolid == 24;
+
+  for (std::int32_t e = group.begin; e < group.end; ++e) {
+    const auto ue = static_cast<std::size_t>(e);
+    if (state.deleted[ue]) continue;
+    const std::int32_t* n = table.nodes_of(ue);
+    Element el;
+    gather(nodes, n, dt, el);
+
+    // Uniform gradients at x^n (forces) and at the mid-step geometry (rates), eq. B-2, B-3.
+    double bx[8], by[8], bz[8], mbx[8], mby[8], mbz[8];
+    const double volume = brick8_volume_gradient(el.x, el.y, el.z, bx, by, bz);
+    const double volume_mid = brick8_volume_gradient(el.mx, el.my, el.mz, mbx, mby, mbz);
+    if (!(volume > 0.0) || !(volume_mid > 0.0)) {
+      result.inverted = e;
+      continue;
+    }
+    double l[3][3] = {};
+    for (int a = 0; a < 8; ++a) {
+      const double v[3] = {el.vx[a], el.vy[a], el.vz[a]}, b[3] = {mbx[a], mby[a], mbz[a]};
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) l[i][j] += v[i] * b[j];
+    }
+    for (auto& row : l)
+      for (double& v : row) v /= volume_mid;
+    const Rates r = rates_of(l);
+
+    // Stress update at the single point (eq. SU-1 to SU-4), stress power (eq. B-11).
+    const std::size_t ip = p.first_point + static_cast<std::size_t>(e - group.begin);
+    double s[6];
+    const PointUpdate u = update_point(p, elastic, state, ip, r, dt, s);
+
+    // Current density, wave speed, characteristic length, bulk viscosity (eq. B-7, B-12).
+    const double rho = p.density * state.volume0[ue] / volume;
+    const double c = std::sqrt(wave_modulus / rho);
+    const double length = volume / largest_face_area(el.x, el.y, el.z);
+    const double dv = r.d[0] + r.d[1] + r.d[2];
+    const Viscosity visc = bulk_viscosity(p, rho, c, length, dv);
+    const double internal = volume_mid * (u.power - visc.q * dv) * dt;
+
+    // Internal forces f_I = V (sigma - q I) B_I = (sigma - q I) dV/dx_I (eq. B-4).
+    double fx[8], fy[8], fz[8];
+    const double sxx = s[0] - visc.q, syy = s[1] - visc.q, szz = s[2] - visc.q;
+    for (int a = 0; a < 8; ++a) {
+      fx[a] = bx[a] * sxx + by[a] * s[3] + bz[a] * s[5];
+      fy[a] = bx[a] * s[3] + by[a] * syy + bz[a] * s[4];
+      fz[a] = bx[a] * s[5] + by[a] * s[4] + bz[a] * szz;
+    }
+
+    // Orthogonalised hourglass vectors gamma and hourglass rates q_i,alpha (eq. B-5).
+    double gamma[4][8], q[3][4];
+    for (int m = 0; m < 4; ++m) {
+      double hx = 0.0, hy = 0.0, hz = 0.0;
+      for (int a = 0; a < 8; ++a) hx += kH[m][a] * el.x[a], hy += kH[m][a] * el.y[a], hz += kH[m][a] * el.z[a];
+      hx /= volume, hy /= volume, hz /= volume;
+      double qx = 0.0, qy = 0.0, qz = 0.0;
+      for (int a = 0; a < 8; ++a) {
+        const double g = kH[m][a] - (hx * bx[a] + hy * by[a] + hz * bz[a]);
+        gamma[m][a] = g;
+        qx += g * el.vx[a], qy += g * el.vy[a], qz += g * el.vz[a];
+      }
+      q[0][m] = qx, q[1][m] = qy, q[2][m] = qz;
+    }
+    double hourglass_work = 0.0;
+    double global_q[3][4];  // generalized hourglass forces in the global frame
+    if (!physical) {
+      // Viscous hourglass forces (eq. B-6): Q = h rho c V^(2/3) / 4 q.
+      const double cbrt_v = std::cbrt(volume);
+      const double coefficient = 0.25 * p.hourglass * rho * c * cbrt_v * cbrt_v;
+      for (int i = 0; i < 3; ++i)
+        for (int m = 0; m < 4; ++m) {
+          global_q[i][m] = coefficient * q[i][m];
+          hourglass_work += global_q[i][m] * q[i][m] * dt;
+        }
+    } else {
+      // Co-rotational frame and half-widths (eq. B-8): J0 columns g_k = sum s_k,I x_I / 8, R from J0 = R U,
+      // a_k = 1 / |row k of J0^-1|.
+      double j0[3][3] = {};
+      for (int a = 0; a < 8; ++a) {
+        const double xa[3] = {el.x[a], el.y[a], el.z[a]}, sa[3] = {kS1[a], kS2[a], kS3[a]};
+        for (int i = 0; i < 3; ++i)
+          for (int k = 0; k < 3; ++k) j0[i][k] += 0.125 * sa[k] * xa[i];
+      }
+      double cof[3][3], rot[3][3];
+      const double det = cofactor(j0, cof);
+      if (!(det > 0.0)) {  // the one-point Jacobian of a badly distorted element: no frame
+        result.inverted = e;
+        continue;
+      }
+      polar_rotation(j0, rot);
+      double half[3];
+      for (int k = 0; k < 3; ++k)
+        half[k] = std::abs(det) / std::sqrt(cof[0][k] * cof[0][k] + cof[1][k] * cof[1][k] + cof[2][k] * cof[2][k]);
+      double dq[3][4], dQ[3][4];
+      for (int i = 0; i < 3; ++i)
+        for (int m = 0; m < 4; ++m) dq[i][m] = (rot[0][i] * q[0][m] + rot[1][i] * q[1][m] + rot[2][i] * q[2][m]) * dt;
+      stabilisation_increment(half, volume, p.young, p.poisson, G, dq, dQ);  // eq. B-9
+      double* hq = &state.hourglass[ue * 12];
+      for (int i = 0; i < 3; ++i)
+        for (int m = 0; m < 4; ++m) {
+          double& stored = hq[m * 3 + i];
+          const double old = stored;
+          stored += dQ[i][m];
+          hourglass_work += 0.5 * (old + stored) * dq[i][m];
+        }
+      for (int j = 0; j < 3; ++j)
+        for (int m = 0; m < 4; ++m)
+          global_q[j][m] = rot[j][0] * hq[m * 3] + rot[j][1] * hq[m * 3 + 1] + rot[j][2] * hq[m * 3 + 2];
+    }
+    for (int a = 0; a < 8; ++a)
+      for (int m = 0; m < 4; ++m) {
+        fx[a] += gamma[m][a] * global_q[0][m];
+        fy[a] += gamma[m][a] * global_q[1][m];
+        fz[a] += gamma[m][a] * global_q[2][m];
+      }
+    double check = internal + hourglass_work;
+    for (int a = 0; a < 8; ++a) {
+      const auto k = static_cast<std::size_t>(n[a]);
+      nodes.fx[k] -= fx[a];
+      nodes.fy[k] -= fy[a];
+      nodes.fz[k] -= fz[a];
+      check += fx[a] + fy[a] + fz[a];
+    }
+    if (!std::isfinite(check)) result.non_finite = e;  // a NaN or an infinity stops the run at once
+    state.internal_energy[ue] += internal;
+    state.hourglass_energy[ue] += hourglass_work;
+    result.internal_energy += internal;
+    result.hourglass_energy += hourglass_work;
+
+    // Critical step L / (Q + sqrt(Q^2 + c^2)) (eq. B-12).
+    const double step = length / (visc.speed + std::sqrt(visc.speed * visc.speed + c * c));
+    state.critical_dt[ue] = step;
+    if (step < result.min_dt) result.min_dt = step, result.controlling = e;
+    if (u.failed) {
+      state.deleted[ue] = 1;
+      ++result.failed;
+    }
+  }
+  return result;
+}
+
+GroupStepResult brick8_full_forces(const ElementTable& table, const ElementGroup& group,
+                                   const BrickGroupParameters& p, NodalState& nodes, BrickState& state, double dt) {
+  GroupStepResult result;
+  const materials::SolidElastic elastic{p.young, p.poisson};
+  const double G = elastic.shear(), K = elastic.bulk();
+  const double wave_modulus = K + 4.0 / 3.0 * G;
+
+  for (std::int32_t e = group.begin; e < group.end; ++e) {
+    const auto ue = static_cast<std::size_t>(e);
+    if (state.deleted[ue]) continue;
+    const std::int32_t* n = table.nodes_of(ue);
+    Element el;
+    gather(nodes, n, dt, el);
+    double bx[8], by[8], bz[8], mbx[8], mby[8], mbz[8];
+    const double volume = brick8_volume_gradient(el.x, el.y, el.z, bx, by, bz);
+    const double volume_mid = brick8_volume_gradient(el.mx, el.my, el.mz, mbx, mby, mbz);
+    if (!(volume > 0.0) || !(volume_mid > 0.0)) {
+      result.inverted = e;
+      continue;
+    }
+    // Mean dilatation rate over the mid-step element (eq. B-10): the trace of the uniform gradient.
+    double dv_mean = 0.0;
+    for (int a = 0; a < 8; ++a) dv_mean += el.vx[a] * mbx[a] + el.vy[a] * mby[a] + el.vz[a] * mbz[a];
+    dv_mean /= volume_mid;
+
+    const double rho = p.density * state.volume0[ue] / volume;
+    const double c = std::sqrt(wave_modulus / rho);
+    const double length = volume / largest_face_area(el.x, el.y, el.z);
+    const Viscosity visc = bulk_viscosity(p, rho, c, length, dv_mean);
+
+    double fx[8] = {}, fy[8] = {}, fz[8] = {};
+    double pressure_volume = 0.0;  // sum over the points of det J p
+    double internal = 0.0;
+    bool failed = false, inverted = false;
+    const std::size_t first = p.first_point + static_cast<std::size_t>(e - group.begin) * 8;
+    for (int g = 0; g < 8; ++g) {
+      const auto& dn = kGauss.d[g];
+      // Mid-step Jacobian, gradient, rates with the mean dilatation in place of the point's own (eq. B-10).
+      double jm[3][3] = {}, jn[3][3] = {};
+      for (int a = 0; a < 8; ++a)
+        for (int k = 0; k < 3; ++k) {
+          jm[0][k] += el.mx[a] * dn[k][a], jm[1][k] += el.my[a] * dn[k][a], jm[2][k] += el.mz[a] * dn[k][a];
+          jn[0][k] += el.x[a] * dn[k][a], jn[1][k] += el.y[a] * dn[k][a], jn[2][k] += el.z[a] * dn[k][a];
+        }
+      double cm[3][3], cn[3][3];
+      const double det_mid = cofactor(jm, cm);
+      const double det_now = cofactor(jn, cn);
+      if (!(det_mid > 0.0) || !(det_now > 0.0)) {
+        inverted = true;
+        break;
+      }
+      double l[3][3] = {};
+      for (int a = 0; a < 8; ++a) {
+        double b[3];  // dN_a/dx = J^-T dN_a/dxi = C dN_a/dxi / det
+        for (int i = 0; i < 3; ++i) b[i] = (cm[i][0] * dn[0][a] + cm[i][1] * dn[1][a] + cm[i][2] * dn[2][a]) / det_mid;
+        const double v[3] = {el.vx[a], el.vy[a], el.vz[a]};
+        for (int i = 0; i < 3; ++i)
+          for (int j = 0; j < 3; ++j) l[i][j] += v[i] * b[j];
+      }
+      Rates r = rates_of(l);
+      const double correction = (dv_mean - (r.d[0] + r.d[1] + r.d[2])) / 3.0;
+      for (int k = 0; k < 3; ++k) r.d[k] += correction;
+      double s[6];
+      const PointUpdate u = update_point(p, elastic, state, first + static_cast<std::size_t>(g), r, dt, s);
+      failed = failed || u.failed;
+      internal += det_mid * u.power * dt;  // Gauss weights are 1
+      // Deviatoric forces at the point on the current geometry; the pressure goes through the mean gradient.
+      const double pressure = (s[0] + s[1] + s[2]) / 3.0;
+      pressure_volume += det_now * pressure;
+      const double dxx = s[0] - pressure, dyy = s[1] - pressure, dzz = s[2] - pressure;
+      for (int a = 0; a < 8; ++a) {
+        double b[3];
+        for (int i = 0; i < 3; ++i) b[i] = cn[i][0] * dn[0][a] + cn[i][1] * dn[1][a] + cn[i][2] * dn[2][a];
+        // det J B = C dN/dxi: the weight det J cancels the division.
+        fx[a] += b[0] * dxx + b[1] * s[3] + b[2] * s[5];
+        fy[a] += b[0] * s[3] + b[1] * dyy + b[2] * s[4];
+        fz[a] += b[0] * s[5] + b[1] * s[4] + b[2] * dzz;
+      }
+    }
+    if (inverted) {
+      result.inverted = e;
+      continue;
+    }
+    internal -= visc.q * dv_mean * volume_mid * dt;
+    // Pressure forces (sum det J p) B_bar - q V B_bar with B_bar = dV/dx / V (eq. B-10).
+    const double mean_stress = pressure_volume / volume - visc.q;
+    double check = internal + mean_stress;
+    for (int a = 0; a < 8; ++a) {
+      const auto k = static_cast<std::size_t>(n[a]);
+      nodes.fx[k] -= fx[a] + mean_stress * bx[a];
+      nodes.fy[k] -= fy[a] + mean_stress * by[a];
+      nodes.fz[k] -= fz[a] + mean_stress * bz[a];
+      check += fx[a] + fy[a] + fz[a];
+    }
+    if (!std::isfinite(check)) result.non_finite = e;  // a NaN or an infinity stops the run at once
+    state.internal_energy[ue] += internal;
+    result.internal_energy += internal;
+
+    const double step = length / (visc.speed + std::sqrt(visc.speed * visc.speed + c * c));
+    state.critical_dt[ue] = step;
+    if (step < result.min_dt) result.min_dt = step, result.controlling = e;
+    if (failed) {
+      state.deleted[ue] = 1;
+      ++result.failed;
+    }
+  }
+  return result;
+}
+
+}  // namespace crumple

@@ -1,0 +1,66 @@
+// Solver state of the 8-node bricks (docs/theory/brick8.md): per-group parameters from the part's property
+// (/PROP/SOLID) and material, zero initial stresses, initial volumes for the current density.
+#include "crumple/elements/brick8.hpp"
+#include "crumple/model/mass.hpp"
+#include "solver/internal.hpp"
+
+namespace crumple::solver {
+namespace {
+
+// Radioss defaults of /PROP/SOLID (docs/cards/starter-model.md, section 8).
+constexpr double kDefaultQa = 1.1;         // quadratic bulk viscosity
+constexpr double kDefaultQb = 0.05;        // linear bulk viscosity
+constexpr double kDefaultHourglass = 0.1;  // viscous hourglass coefficient, Isolid 1
+
+}  // namespace
+
+void setup_bricks(const Model& m, SolverState& s) {
+  const ElementTable& table = m.elements[static_cast<int>(ElementKind::Brick8)];
+  const std::size_t n = table.size();
+  BrickState& st = s.bricks;
+  st.volume0.assign(n, 0.0);
+  st.hourglass.assign(12 * n, 0.0);
+  st.internal_energy.assign(n, 0.0);
+  st.hourglass_energy.assign(n, 0.0);
+  st.deleted.assign(n, 0);
+  st.critical_dt.assign(n, 0.0);
+  st.mass.assign(n, 0.0);
+  s.brick_groups.assign(m.element_groups.size(), BrickGroupParameters{});
+  st.point_offset.assign(m.element_groups.size(), 0);
+  st.points.assign(m.element_groups.size(), 0);
+
+  std::size_t total_points = 0;
+  for (std::size_t g = 0; g < m.element_groups.size(); ++g) {
+    const ElementGroup& group = m.element_groups[g];
+    if (group.kind != ElementKind::Brick8) continue;
+    const Property& prop = m.properties[static_cast<std::size_t>(group.property)];
+    const ResolvedFormulation& f = m.formulations[static_cast<std::size_t>(group.property)];
+    const Material& mat = m.materials[static_cast<std::size_t>(group.material)];
+    BrickGroupParameters& p = s.brick_groups[g];
+    p.hardening = materials::Hardening::of(mat, m.functions);
+    p.young = mat.young, p.poisson = mat.poisson, p.density = mat.density;
+    p.isolid = f.isolid;
+    p.qa = prop.solid.qa > 0.0 ? prop.solid.qa : kDefaultQa;
+    p.qb = prop.solid.qb > 0.0 ? prop.solid.qb : kDefaultQb;
+    p.hourglass = prop.solid.h > 0.0 ? prop.solid.h : kDefaultHourglass;
+    p.points = f.isolid == 14 ? 8 : 1;
+    p.failure_strain = p.hardening.failure_strain() >= 1e20 ? 0.0 : p.hardening.failure_strain();
+    p.first_point = total_points;
+    st.point_offset[g] = total_points;
+    st.points[g] = p.points;
+    total_points += static_cast<std::size_t>(group.end - group.begin) * static_cast<std::size_t>(p.points);
+    for (std::int32_t e = group.begin; e < group.end; ++e) {
+      const std::int32_t* nodes = table.nodes_of(static_cast<std::size_t>(e));
+      double x[8], y[8], z[8];
+      for (int a = 0; a < 8; ++a) {
+        const auto k = static_cast<std::size_t>(nodes[a]);
+        x[a] = m.nodes.x[k], y[a] = m.nodes.y[k], z[a] = m.nodes.z[k];
+      }
+      st.volume0[static_cast<std::size_t>(e)] = brick8_volume(x, y, z);
+      st.mass[static_cast<std::size_t>(e)] = element_mass(m, ElementKind::Brick8, static_cast<std::size_t>(e));
+    }
+  }
+  for (auto* v : {&st.sxx, &st.syy, &st.szz, &st.sxy, &st.syz, &st.szx, &st.eps_p}) v->assign(total_points, 0.0);
+}
+
+}  // namespace crumple::solver
