@@ -108,6 +108,21 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
       result.inverted = e;
       continue;
     }
+    if constexpr (NN == 4) {
+      // The frame follows the element, so a quadrilateral turned inside out (a bow-tie) still has a positive
+      // area in it; what shows it is two corners whose Jacobian (the cross product of the two sides) is not
+      // positive. One such corner is a badly distorted but valid dart shape, common in folds.
+      int negative_corners = 0;
+      for (int a = 0; a < 4; ++a) {
+        const int next = (a + 1) % 4, previous = (a + 3) % 4;
+        const double corner = (lx[next] - lx[a]) * (ly[previous] - ly[a]) - (ly[next] - ly[a]) * (lx[previous] - lx[a]);
+        if (!(corner > 0.0)) ++negative_corners;
+      }
+      if (negative_corners >= 2) {
+        result.inverted = e;
+        continue;
+      }
+    }
     const double inv2a = 0.5 / area;
     for (int a = 0; a < NN; ++a) {
       // Quadrilateral: the opposite-diagonal differences; triangle: the opposite side.

@@ -157,12 +157,18 @@ RunSummary run_simulation(const Model& m, const SolverOptions& options, std::ost
       s.energy.internal += r.internal_energy;
       s.energy.hourglass += r.hourglass_energy;
       const std::string_view kind = element_kind_name(group.kind);
+      if (r.non_finite >= 0 && status == RunStatus::Normal) {
+        status = RunStatus::Error;
+        message = fmt::format("{} {} of part {}: NaN or infinite forces at cycle {} (time {:.6g})", kind,
+                              table.user_id[static_cast<std::size_t>(r.non_finite)],
+                              m.parts[static_cast<std::size_t>(group.part)].user_id, s.cycle, s.time);
+      }
       if (r.inverted >= 0) {
         status = RunStatus::Error;
         message = fmt::format("{} {} of part {} inverted ({}) at cycle {}", kind,
                               table.user_id[static_cast<std::size_t>(r.inverted)],
                               m.parts[static_cast<std::size_t>(group.part)].user_id,
-                              group.kind == ElementKind::Brick8 ? "negative volume" : "zero or negative area",
+                              group.kind == ElementKind::Brick8 ? "negative volume" : "zero or negative area or corner Jacobian",
                               s.cycle);
       }
       // Per-type step control (/DT/SHELL, /DT/SH_3N): own scale, and elements below the minimum are deleted

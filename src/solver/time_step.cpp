@@ -9,7 +9,8 @@ namespace {
 
 // Each element gives each of its n nodes the stiffness estimate k = 2 (m_e / n) / dt_e^2, the stiffness for
 // which a mass m_e / n has the element's critical step (eq. T-2).
-void add_element_stiffness(const ElementTable& table, const ShellState& st, std::vector<double>& k) {
+template <class State>
+void add_element_stiffness(const ElementTable& table, const State& st, std::vector<double>& k) {
   const int n = nodes_per_element(table.kind);
   for (std::size_t e = 0; e < table.size(); ++e) {
     if (st.deleted[e] || !(st.critical_dt[e] > 0.0)) continue;
@@ -28,6 +29,7 @@ NodalStep nodal_time_step(const Model& m, SolverState& s) {
   k.assign(s.nodes.size(), 0.0);
   add_element_stiffness(m.elements[static_cast<int>(ElementKind::Shell4)], s.shells, k);
   add_element_stiffness(m.elements[static_cast<int>(ElementKind::Shell3)], s.shells3, k);
+  add_element_stiffness(m.elements[static_cast<int>(ElementKind::Brick8)], s.bricks, k);
   NodalStep step{std::numeric_limits<double>::infinity(), -1};
   // The smallest nodal mass that keeps scale * sqrt(2 m / k) >= dt_min (eq. T-3).
   const double target = cst.minimum / scale;
