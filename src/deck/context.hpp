@@ -64,6 +64,12 @@ const KeywordTable& keyword_table();
 std::string read_title(CardReader& reader);  // the title line that follows many keyword lines (may be blank)
 // Integer ids in 10-column fields, 10 per line, until the end of the card; blank fields are skipped.
 std::vector<std::int64_t> read_id_list(CardReader& reader, std::string_view name);
+// The text quoted for an error message's "found" part.
+std::string in_quotes(std::string_view text);
+// `/KEYWORD/.../id[/unit_ID]`: the object id at path part `index`, then an optional unit id that must be 0
+// (Crumple has no /UNIT, so a unit id is an error rather than a silently ignored conversion). A word where the
+// id belongs is another form of the keyword (/IMPVEL/FGEO, /RBODY/LAGMUL...), which Crumple does not read.
+std::int64_t card_id(CardReader& reader, std::size_t index);
 // The keyword's object id (path part `index`); must be positive.
 std::int64_t object_id(CardReader& reader, std::size_t index);
 // The optional unit_ID at path part `index`: Crumple has no /UNIT, so a non-zero value is an error.

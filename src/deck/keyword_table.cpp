@@ -41,6 +41,22 @@ std::vector<std::int64_t> read_id_list(CardReader& reader, std::string_view name
   return ids;
 }
 
+std::string in_quotes(std::string_view text) { return fmt::format("'{}'", text); }
+
+std::int64_t card_id(CardReader& reader, std::size_t index) {
+  const Card& card = reader.card();
+  if (index < card.path.size() && !card.path[index].empty() && !parse_integer(card.path[index])) {
+    std::string form;
+    for (std::size_t k = 0; k <= index; ++k) form += "/" + card.path[k];
+    reader.fail("id", fmt::format("a numeric id (the {} form is not supported)", form), in_quotes(card.path[index]));
+  }
+  const std::int64_t id = object_id(reader, index);
+  require_no_unit_id(reader, index + 1);
+  if (card.path.size() > index + 2)
+    reader.fail("keyword", "nothing after the unit id", in_quotes(card.path[index + 2]));
+  return id;
+}
+
 std::int64_t object_id(CardReader& reader, std::size_t index) {
   const std::int64_t id = reader.path_id(index, "id", true);
   if (id <= 0) reader.fail("id", "a positive id in the keyword line", fmt::format("{}", id));

@@ -22,7 +22,6 @@ constexpr std::array<std::string_view, 13> kVectorFields{"VEL",  "DISP", "ACC", 
                                                          "FOPT", "PCONT", "VROT", "DROT", "FREAC", "MREAC"};
 constexpr std::array<std::string_view, 3> kNodalFields{"DT", "DMAS", "DINER"};
 
-std::string in_quotes(std::string_view s) { return fmt::format("'{}'", s); }
 
 // Path part `index` of the keyword line as written (Card::path is upper-cased; a run name keeps its case).
 std::string written_part(const Card& card, std::size_t index) {

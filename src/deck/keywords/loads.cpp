@@ -15,26 +15,6 @@ namespace {
 
 constexpr double kNever = 1e30;  // Tstop blank or 0: the condition never stops
 
-std::string in_quotes(std::string_view s) { return fmt::format("'{}'", s); }
-
-// `/KEYWORD/.../id[/unit_ID]`: the object id at path part `index`, then an optional unit id. Crumple has no
-// /UNIT, so a non-zero unit id is an error rather than a silently ignored conversion. A word where the id
-// belongs is another form of the keyword (/IMPVEL/FGEO, /BCS/LAGMUL...), which Crumple does not read.
-std::int64_t card_id(CardReader& reader, std::size_t index) {
-  const Card& card = reader.card();
-  if (index < card.path.size() && !card.path[index].empty() && !parse_integer(card.path[index])) {
-    std::string form;
-    for (std::size_t k = 0; k <= index; ++k) form += "/" + card.path[k];
-    reader.fail("id", fmt::format("a numeric id (the {} form is not supported)", form), in_quotes(card.path[index]));
-  }
-  const std::int64_t id = object_id(reader, index);
-  if (reader.path_id(index + 1, "unit_ID", false) != 0)
-    reader.fail("unit_ID", "0 or nothing after the id (/UNIT systems are not supported)",
-                in_quotes(card.path[index + 1]));
-  if (card.path.size() > index + 2)
-    reader.fail("keyword", "nothing after the unit id", in_quotes(card.path[index + 2]));
-  return id;
-}
 
 template <class Record>
 Record begin_record(CardReader& reader, std::size_t id_index) {

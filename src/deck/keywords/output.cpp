@@ -59,7 +59,6 @@ std::string upper(std::string_view s) {
   return out;
 }
 
-std::string in_quotes(std::string_view s) { return fmt::format("'{}'", s); }
 
 // Radioss ignores columns past 100; text there is almost always a shifted field, so it is an error here.
 void check_width(const Line& line, std::string_view name) {

@@ -11,26 +11,6 @@
 namespace crumple::deck {
 namespace {
 
-std::string in_quotes(std::string_view s) { return fmt::format("'{}'", s); }
-
-// `/KEYWORD/.../id[/unit_ID]`: the object id at path part `index`, then an optional unit id that must be 0
-// (Crumple has no /UNIT). A word where the id belongs is another form of the keyword (/RBODY/LAGMUL...).
-// Same rule as the load keywords (loads.cpp).
-std::int64_t card_id(CardReader& reader, std::size_t index) {
-  const Card& card = reader.card();
-  if (index < card.path.size() && !card.path[index].empty() && !parse_integer(card.path[index])) {
-    std::string form;
-    for (std::size_t k = 0; k <= index; ++k) form += "/" + card.path[k];
-    reader.fail("id", fmt::format("a numeric id (the {} form is not supported)", form), in_quotes(card.path[index]));
-  }
-  const std::int64_t id = object_id(reader, index);
-  if (reader.path_id(index + 1, "unit_ID", false) != 0)
-    reader.fail("unit_ID", "0 or nothing after the id (/UNIT systems are not supported)",
-                in_quotes(card.path[index + 1]));
-  if (card.path.size() > index + 2)
-    reader.fail("keyword", "nothing after the unit id", in_quotes(card.path[index + 2]));
-  return id;
-}
 
 std::int64_t optional_id(const Line& line, int column, std::string_view name) {
   const std::int64_t id = line.integer(column, 10, name);
