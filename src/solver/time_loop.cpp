@@ -177,7 +177,8 @@ RunSummary run_simulation(const Model& m, const SolverOptions& options, std::ost
                                     : group.kind == ElementKind::Shell3 ? rc.dt_sh3n
                                                                         : rc.dt_brick;
       const double type_scale = type.given && type.scale > 0.0 ? type.scale : scale;
-      if (type.minimum > 0.0 && type_scale * r.min_dt < type.minimum && status == RunStatus::Normal) {
+      if (r.controlling >= 0 && type.minimum > 0.0 && type_scale * r.min_dt < type.minimum &&
+          status == RunStatus::Normal) {
         const bool stop = type.action == TimeStepAction::Stop ||
                           (type.action == TimeStepAction::Default && group.kind == ElementKind::Brick8);
         if (stop) {
@@ -204,7 +205,8 @@ RunSummary run_simulation(const Model& m, const SolverOptions& options, std::ost
           }
         }
       }
-      if (type_scale * r.min_dt < dt_elements) {
+      // A group whose elements are all deleted or inverted has no controlling element (controlling = -1).
+      if (r.controlling >= 0 && type_scale * r.min_dt < dt_elements) {
         dt_elements = type_scale * r.min_dt;
         controlling = fmt::format("{} {}", kind, table.user_id[static_cast<std::size_t>(r.controlling)]);
       }
