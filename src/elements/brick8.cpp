@@ -164,7 +164,8 @@ PointUpdate update_point(const BrickGroupParameters& p, const materials::SolidEl
   materials::rotate_stress(s, r.w[0] * dt, r.w[1] * dt, r.w[2] * dt);  // eq. SU-2
   double old[6], de[6];
   for (int k = 0; k < 6; ++k) old[k] = s[k], de[k] = r.d[k] * dt;
-  const double rate = materials::equivalent_strain(de) / dt;
+  const double rate = p.hardening.filtered_rate(materials::equivalent_strain(de) / dt, st.eps_rate[ip], dt);  // eq. RF
+  st.eps_rate[ip] = rate;
   const auto res = materials::solid_update(elastic, p.hardening, de, rate, st.eps_p[ip], s);  // eq. SU-1, SU-3
   st.eps_p[ip] += res.plastic_strain_increment;
   if (p.failure_strain > 0.0 && st.eps_p[ip] >= p.failure_strain) u.failed = true;

@@ -159,7 +159,9 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
       old_m[0] += wm * sxx, old_m[1] += wm * syy, old_m[2] += wm * sxy;
       if (dt > 0.0) {
         const double ex = (dxx + z * kxx) * dt, ey = (dyy + z * kyy) * dt, g = (gxy + z * kxy) * dt;
-        const double rate = std::sqrt(2.0 / 3.0 * (ex * ex + ey * ey + (ex + ey) * (ex + ey) + 0.5 * g * g)) / dt;
+        const double increment_rate = std::sqrt(2.0 / 3.0 * (ex * ex + ey * ey + (ex + ey) * (ex + ey) + 0.5 * g * g)) / dt;
+        const double rate = p.hardening.filtered_rate(increment_rate, state.eps_rate[ip], dt);  // eq. RF
+        state.eps_rate[ip] = rate;
         const auto r = materials::plane_stress_update(elastic, p.hardening, ex, ey, g, rate, state.eps_p[ip], sxx,
                                                       syy, sxy);
         state.eps_p[ip] += r.plastic_strain_increment;

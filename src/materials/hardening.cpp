@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <limits>
 
 namespace crumple::materials {
@@ -114,6 +115,17 @@ double Hardening::yield_and_slope(double eps_p, double eps_rate, double& slope_o
   }
   slope_out = p.n * power / e * factor;
   return sigma;
+}
+
+double Hardening::filtered_rate(double rate, double previous, double dt) const {
+  int smoothing = 0;
+  double cut_off = 0.0;
+  if (law == MaterialLaw::JohnsonCook) smoothing = johnson_cook->fsmooth, cut_off = johnson_cook->f_cut;
+  if (law == MaterialLaw::Tabulated) smoothing = tabulated->fsmooth, cut_off = tabulated->f_cut;
+  // Fcut = 0 is the manual's 1e30: an infinite cut-off, i.e. no filtering.
+  if (smoothing == 0 || !(cut_off > 0.0)) return rate;
+  const double a = std::min(1.0, 2.0 * std::numbers::pi * cut_off * dt);  // eq. RF
+  return a * rate + (1.0 - a) * previous;
 }
 
 double Hardening::failure_strain() const {

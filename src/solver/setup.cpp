@@ -102,6 +102,7 @@ void setup_shells(const Model& m, SolverState& s, ElementKind kind, std::vector<
   }
   st.sxx.assign(total_points, 0.0), st.syy.assign(total_points, 0.0), st.sxy.assign(total_points, 0.0);
   st.eps_p.assign(total_points, 0.0);
+  st.eps_rate.assign(total_points, 0.0);
 }
 
 void setup_through_thickness_rules(SolverState& s) {

@@ -76,14 +76,8 @@ TEST(JohnsonCook, UniaxialTensionFollowsTheLaw) { uniaxial_tension(0.0, 0.0, 0.0
 // The same with the strain-rate term: rate factor 1 + 0.05 ln(1 / 1e-3) = 1.345 at the 1/s of the test (falling
 // to 0.8/s as the element lengthens), and the strain-rate filter a deck would ask for (Fsmooth = 1, Fcut =
 // 10 kHz, the Radioss default cut-off of law 36).
-//
-// KNOWN FAILURE (docs/verification.md, "Solver issues found"): Crumple reads Fsmooth and Fcut but does not filter
-// the strain rate. The yield stress then follows the rate of each cycle's strain increment, and the rate term
-// acts as an explicit viscosity c sigma / rate (~2e7 Pa s here) whose stability limit rho h^2 / eta ~ 4e-8 s is
-// 40 times below the time step: the element goes into a stick-slip cycle (about ten elastic cycles, then one
-// large plastic increment) with lateral velocities twenty times the steady contraction, and sigma_xx runs up to
-// 15 % above the law. The error falls with the step (7 % at /DT 0.9, 0.2 % at 0.1, 0.1 % at 0.03). The
-// tolerance stays at 0.5 %: the test passes once the rate is filtered.
+// Without the filter (eq. RF of docs/theory/materials.md) the rate term acts as an explicit viscosity far
+// beyond its stability limit and sigma_xx overshoots the law by 15 % (docs/verification.md, "Solver issues found").
 TEST(JohnsonCook, UniaxialTensionWithStrainRateEffect) { uniaxial_tension(0.05, 1e-3, 1.0e4); }
 
 }  // namespace

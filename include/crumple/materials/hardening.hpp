@@ -23,6 +23,9 @@ struct Hardening {
   double slope(double eps_p, double eps_rate) const;
   // Both at once (one power evaluation for Johnson-Cook): returns sigma_y, writes the slope.
   double yield_and_slope(double eps_p, double eps_rate, double& slope) const;
+  // Strain rate the yield stress sees (docs/theory/materials.md, eq. RF): with Fsmooth on and a cut-off Fcut, the
+  // first-order low-pass rate_f = a rate + (1 - a) previous with a = min(1, 2 pi Fcut dt); otherwise `rate`.
+  double filtered_rate(double rate, double previous, double dt) const;
   // Plastic strain at which the element fails and is deleted (0: never).
   double failure_strain() const;
 };

@@ -15,6 +15,7 @@ struct BrickState {
   // Per integration point: Cauchy stress in the global frame [stress], equivalent plastic strain.
   std::vector<double> sxx, syy, szz, sxy, syz, szx;
   std::vector<double> eps_p;
+  std::vector<double> eps_rate;  // strain rate the yield stress saw last cycle, filtered (eq. RF) [1/T]
 
   // Per element (index in the Brick8 ElementTable).
   std::vector<double> volume0;           // initial volume (eq. B-2) for the current density rho0 V0 / V [L^3]

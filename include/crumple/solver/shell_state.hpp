@@ -14,7 +14,8 @@ struct ShellState {
 
   // Per through-thickness point, in the element's co-rotational frame [stress].
   std::vector<double> sxx, syy, sxy;
-  std::vector<double> eps_p;  // equivalent plastic strain
+  std::vector<double> eps_p;     // equivalent plastic strain
+  std::vector<double> eps_rate;  // strain rate the yield stress saw last cycle, filtered (eq. RF) [1/T]
 
   // Per element (index in the kind's ElementTable).
   std::vector<double> qx, qy;           // transverse shear resultants (per unit length) [M T^-2]

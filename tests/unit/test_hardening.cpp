@@ -1,0 +1,54 @@
+// Yield stress laws and the strain-rate filter (docs/theory/materials.md, eqs. JC and RF) against hand values.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "crumple/materials/hardening.hpp"
+
+namespace crumple::materials {
+namespace {
+
+Material johnson_cook(int fsmooth, double f_cut) {
+  Material m;
+  m.law = MaterialLaw::JohnsonCook;
+  m.johnson_cook.a = 2e8, m.johnson_cook.b = 5e8, m.johnson_cook.n = 0.4;
+  m.johnson_cook.c = 0.05, m.johnson_cook.eps_dot_0 = 1e-3;
+  m.johnson_cook.fsmooth = fsmooth, m.johnson_cook.f_cut = f_cut;
+  return m;
+}
+
+TEST(Hardening, JohnsonCookWithRateFactor) {
+  const std::vector<Function> none;
+  const Material m = johnson_cook(0, 0.0);
+  const Hardening h = Hardening::of(m, none);
+  // (a + b 0.1^0.4) (1 + 0.05 ln(10 / 1e-3)) by hand: (2e8 + 5e8 * 0.3981072) * 1.4605170 = 5.828246e8
+  EXPECT_NEAR(h.yield(0.1, 10.0), 5.828246e8, 1e2);
+  // Below the reference rate the factor is 1.
+  EXPECT_NEAR(h.yield(0.1, 1e-4), 2e8 + 5e8 * std::pow(0.1, 0.4), 1e-6);
+}
+
+TEST(Hardening, RateFilterIsAFirstOrderLowPass) {
+  const std::vector<Function> none;
+  const double dt = 1e-6, f_cut = 1e4;
+  const double a = 2.0 * std::numbers::pi * f_cut * dt;  // 0.0628
+  const Material filtered = johnson_cook(1, f_cut);
+  const Hardening h = Hardening::of(filtered, none);
+  EXPECT_DOUBLE_EQ(h.filtered_rate(100.0, 0.0, dt), a * 100.0);
+  EXPECT_DOUBLE_EQ(h.filtered_rate(100.0, 50.0, dt), a * 100.0 + (1.0 - a) * 50.0);
+  // A step beyond 1 / (2 pi Fcut) passes the rate through (a is capped at 1).
+  EXPECT_DOUBLE_EQ(h.filtered_rate(100.0, 50.0, 1.0), 100.0);
+  // A unit step input after N cycles: 1 - (1 - a)^N, i.e. about 1 - 1/e after the time constant 1/(2 pi Fcut).
+  double r = 0.0;
+  const int steps = 16;
+  for (int k = 0; k < steps; ++k) r = h.filtered_rate(1.0, r, dt);
+  EXPECT_NEAR(r, 1.0 - std::pow(1.0 - a, steps), 1e-12);
+  EXPECT_NEAR(r, 1.0 - std::exp(-steps * a), 0.02);
+  // Fsmooth = 0, or Fcut = 0 (the manual's 1e30), leave the rate unfiltered.
+  const Material off = johnson_cook(0, f_cut), infinite = johnson_cook(1, 0.0);
+  EXPECT_DOUBLE_EQ(Hardening::of(off, none).filtered_rate(100.0, 50.0, dt), 100.0);
+  EXPECT_DOUBLE_EQ(Hardening::of(infinite, none).filtered_rate(100.0, 50.0, dt), 100.0);
+}
+
+}  // namespace
+}  // namespace crumple::materials
