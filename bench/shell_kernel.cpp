@@ -40,8 +40,7 @@ struct Plate {
       }
     group.end = static_cast<std::int32_t>(table.size());
     const std::size_t n = table.size();
-    state.sxx.assign(n * static_cast<std::size_t>(points), 0.0);
-    state.syy = state.sxx, state.sxy = state.sxx, state.eps_p = state.sxx;
+    state.resize_points(n * static_cast<std::size_t>(points));
     state.qx.assign(n, 0.0), state.qy = state.qx, state.thickness.assign(n, 1.5), state.hourglass.assign(5 * n, 0.0);
     state.internal_energy = state.qx, state.hourglass_energy = state.qx, state.critical_dt = state.qx;
     state.mass = state.qx, state.deleted.assign(n, 0);

@@ -100,9 +100,7 @@ void setup_shells(const Model& m, SolverState& s, ElementKind kind, std::vector<
             mass / nodes_per * (prop.shell.thickness * prop.shell.thickness + area) / 12.0;
     }
   }
-  st.sxx.assign(total_points, 0.0), st.syy.assign(total_points, 0.0), st.sxy.assign(total_points, 0.0);
-  st.eps_p.assign(total_points, 0.0);
-  st.eps_rate.assign(total_points, 0.0);
+  st.resize_points(total_points);
 }
 
 void setup_through_thickness_rules(SolverState& s) {

@@ -60,7 +60,7 @@ void setup_bricks(const Model& m, SolverState& s) {
       st.mass[static_cast<std::size_t>(e)] = element_mass(m, ElementKind::Brick8, static_cast<std::size_t>(e));
     }
   }
-  for (auto* v : {&st.sxx, &st.syy, &st.szz, &st.sxy, &st.syz, &st.szx, &st.eps_p, &st.eps_rate}) v->assign(total_points, 0.0);
+  st.resize_points(total_points);
 }
 
 }  // namespace crumple::solver

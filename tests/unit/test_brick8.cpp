@@ -66,8 +66,7 @@ class Bricks {
     p.isolid = isolid;
     p.points = isolid == 14 ? 8 : 1;
     const std::size_t points = n * static_cast<std::size_t>(p.points);
-    for (auto* v : {&state.sxx, &state.syy, &state.szz, &state.sxy, &state.syz, &state.szx, &state.eps_p})
-      v->assign(points, 0.0);
+    state.resize_points(points);
     state.volume0.assign(n, 0.0), state.hourglass.assign(12 * n, 0.0), state.internal_energy.assign(n, 0.0);
     state.hourglass_energy.assign(n, 0.0), state.critical_dt.assign(n, 0.0), state.mass.assign(n, 0.0);
     state.deleted.assign(n, 0);

@@ -30,7 +30,7 @@ void make_triangle(Triangle& t) {
   t.model = read_deck(dir.write("T_0000.rad", deck)).model;
   t.nodes.resize(3);
   t.nodes.x = t.model.nodes.x, t.nodes.y = t.model.nodes.y, t.nodes.z = t.model.nodes.z;
-  t.state.sxx.assign(3, 0.0), t.state.syy.assign(3, 0.0), t.state.sxy.assign(3, 0.0), t.state.eps_p.assign(3, 0.0);
+  t.state.resize_points(3);
   t.state.qx.assign(1, 0.0), t.state.qy.assign(1, 0.0), t.state.thickness.assign(1, 0.01);
   t.state.hourglass.assign(5, 0.0), t.state.internal_energy.assign(1, 0.0), t.state.hourglass_energy.assign(1, 0.0);
   t.state.deleted.assign(1, 0), t.state.critical_dt.assign(1, 0.0), t.state.mass.assign(1, 0.0);

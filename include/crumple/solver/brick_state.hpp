@@ -25,6 +25,11 @@ struct BrickState {
   std::vector<double> critical_dt;       // critical step of the last cycle (eq. B-12) [T]
   std::vector<double> mass;              // element mass [M] (nodal time-step estimate)
   std::vector<std::uint8_t> deleted;     // 1 once the element has failed
+
+  // Sizes the per-point arrays for `total` integration points, every value zero.
+  void resize_points(std::size_t total) {
+    for (auto* v : {&sxx, &syy, &szz, &sxy, &syz, &szx, &eps_p, &eps_rate}) v->assign(total, 0.0);
+  }
 };
 
 }  // namespace crumple

@@ -26,6 +26,11 @@ struct ShellState {
   std::vector<double> mass;             // element mass [M] (nodal stiffness estimate of the nodal time step)
   std::vector<double> hourglass_energy; // [M L^2 T^-2]
   std::vector<std::uint8_t> deleted;    // 1 once the element has failed
+
+  // Sizes the per-point arrays for `total` through-thickness points, every value zero.
+  void resize_points(std::size_t total) {
+    for (auto* v : {&sxx, &syy, &sxy, &eps_p, &eps_rate}) v->assign(total, 0.0);
+  }
 };
 
 }  // namespace crumple
