@@ -144,8 +144,15 @@ void update_rigid_bodies(SolverState& s, double dt_average, double dt_next) {
     // Angular momentum about the centre of mass: dL/dt = torque (eq. RB-2); omega = I(t)^-1 L.
     for (int d = 0; d < 3; ++d)
       b.momentum_angular[static_cast<std::size_t>(d)] += dt_average * (d == 0 ? n.mx[main] : d == 1 ? n.my[main] : n.mz[main]);
-    const Mat3 inertia = mul(mul(b.rotation, b.inertia_body), transpose(b.rotation));
-    b.omega = solve(inertia, b.momentum_angular);
+    // omega belongs to the half step (eq. RB-2b): take it from the inertia at the mid-step attitude, predicted
+    // with the attitude-of-t^n omega. The explicit Lie-Euler step (omega at t^n) lets the kinetic energy of a
+    // tumbling body drift at first order in dt; the mid-step attitude makes the update second order.
+    auto omega_at = [&](const Mat3& attitude) {
+      return solve(mul(mul(attitude, b.inertia_body), transpose(attitude)), b.momentum_angular);
+    };
+    const V3 omega_start = omega_at(b.rotation);
+    const double half = 0.5 * dt_next;
+    b.omega = omega_at(mul(rotation_of({omega_start[0] * half, omega_start[1] * half, omega_start[2] * half}), b.rotation));
     n.vx[main] = velocity[0], n.vy[main] = velocity[1], n.vz[main] = velocity[2];
     n.wx[main] = b.omega[0], n.wy[main] = b.omega[1], n.wz[main] = b.omega[2];
     // Secondary nodes: velocities that land them exactly on the rigid placement at t^(n+1) (eq. RB-3).
