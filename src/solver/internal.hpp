@@ -23,6 +23,10 @@ struct NodalStep {
 };
 NodalStep nodal_time_step(const Model& model, SolverState& state);
 
+// The first output time start + k interval (k >= 0 whole) after t, with the loop's relative tolerance 1e-12 on
+// times, in O(1) whatever the ratio of the interval to the step (/ANIM/DT, /TFILE).
+double next_output_time(double t, double start, double interval);
+
 // Translational and rotational kinetic energy of the current half-step velocities.
 std::pair<double, double> kinetic_energy(const SolverState& state);
 

@@ -216,13 +216,26 @@ RunSummary run_simulation(const Model& m, const SolverOptions& options, std::ost
     solver::add_external_forces(m, s, s.time);
     solver::gather_rigid_body_forces(s);
     // 3. Time step: the elements' (already scaled), or the nodal step with mass scaling (/DT/NODA/CST).
-    dt_next = std::isfinite(dt_elements) ? dt_elements : rc.end_time - s.time;
+    dt_next = dt_elements;
     if (rc.dt_nodal_cst.given) {
       const solver::NodalStep nodal = solver::nodal_time_step(m, s);
       if (nodal.node >= 0) {
         dt_next = nodal.dt;
         controlling = fmt::format("NODE {}", m.nodes.user_id[static_cast<std::size_t>(nodal.node)]);
       }
+    }
+    // Nothing bounds the step (docs/theory/time-step.md, "No stable step"): at the start that is a model the
+    // explicit scheme cannot advance (point masses and rigid bodies alone); once every element has been deleted
+    // the run goes on with its last step.
+    if (!std::isfinite(dt_next)) {
+      if (s.cycle == 0) {
+        status = RunStatus::Error;
+        message = "no element limits the time step: the model has nothing with stiffness to integrate (add the "
+                  "elements the rigid bodies or masses are attached to)";
+        break;
+      }
+      dt_next = s.dt;
+      controlling = "LAST STEP";
     }
     if (dt_minimum > 0.0 && dt_next < dt_minimum) {
       status = RunStatus::Error;
@@ -296,12 +309,12 @@ RunSummary run_simulation(const Model& m, const SolverOptions& options, std::ost
     }
     if (frame && results) {
       results->write_frame(s.time, s.cycle, m, s);
-      while (next_frame <= s.time * (1.0 + 1e-12)) next_frame += rc.anim_interval;
+      next_frame = solver::next_output_time(s.time, rc.anim_start, rc.anim_interval);
     }
     if (history) {
       write_history();
       if (options.observer) options.observer(s);
-      while (next_history <= s.time * (1.0 + 1e-12)) next_history += rc.history_interval;
+      next_history = solver::next_output_time(s.time, 0.0, rc.history_interval);
     }
     if (finished) break;
   }

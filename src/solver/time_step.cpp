@@ -1,4 +1,5 @@
 // Nodal time step and mass scaling (/DT/NODA/CST) (docs/theory/time-step.md, "Nodal step").
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -45,6 +46,13 @@ NodalStep nodal_time_step(const Model& m, SolverState& s) {
     if (dt < step.dt) step = {dt, static_cast<std::int32_t>(node)};
   }
   return step;
+}
+
+double next_output_time(double t, double start, double interval) {
+  const double reached = t * (1.0 + 1e-12);  // an output is due once t >= next (1 - 1e-12)
+  double next = start + (std::floor((reached - start) / interval) + 1.0) * interval;
+  if (next <= reached) next += interval;  // rounding of the quotient
+  return std::max(next, start);
 }
 
 }  // namespace crumple::solver

@@ -168,8 +168,7 @@ struct RunResult {
 
 // Writes VERIF_0000.rad (/BEGIN + `starter` + /END) and VERIF_0001.rad (/RUN to end_time, /TFILE every
 // `sample`), runs the solver without result files and calls `observer` at every time-history output time.
-// A sample interval below the time step gives one call per cycle; keep it within a small factor of the step,
-// since the time loop advances the next output time one interval at a time.
+// A sample interval below the time step gives one call per cycle (the next output time is found in O(1)).
 inline RunResult run_deck(const test::TempDir& dir, const std::string& starter, double end_time, double sample,
                           const std::function<void(const Model&, const SolverState&)>& observer = {},
                           const std::string& extra_engine = "") {

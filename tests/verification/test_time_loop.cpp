@@ -1,0 +1,53 @@
+// Edge cases of the time loop (docs/theory/time-step.md, "No stable step"; docs/theory/time-loop.md, outputs).
+#include <cmath>
+
+#include "solver/internal.hpp"
+#include "verification_support.hpp"
+
+namespace crumple::verification {
+namespace {
+
+// Point masses alone: nothing has stiffness, so no step is stable or unstable; the run refuses to start instead
+// of jumping to the end time in one step (it used to, which silently skipped every load and output).
+TEST(TimeLoop, ModelWithoutElementsIsRefused) {
+  const std::string starter = node_cards({{1, 0.0, 0.0, 0.0}, {2, 1.0, 0.0, 0.0}}) + node_group(1, {1, 2}) +
+                              added_mass(1, 2.0, 1) + initial_velocity(1, 1.0, 0.0, 0.0, 1);
+  test::TempDir dir;
+  const RunResult run = run_deck(dir, starter, 1.0, 0.1);
+  EXPECT_EQ(run.summary.status, RunStatus::Error);
+  EXPECT_EQ(run.summary.cycles, 0);
+  EXPECT_NE(run.summary.message.find("no element limits the time step"), std::string::npos) << run.summary.message;
+}
+
+// Output times: the first start + k interval after t, in O(1), with the loop's 1e-12 relative tolerance.
+TEST(TimeLoop, NextOutputTimeJumpsOverManyIntervals) {
+  using solver::next_output_time;
+  EXPECT_DOUBLE_EQ(next_output_time(0.0, 0.0, 0.1), 0.1);
+  EXPECT_NEAR(next_output_time(0.35, 0.0, 0.1), 0.4, 1e-15);
+  // Exactly on an output time (to the tolerance): the next one.
+  EXPECT_NEAR(next_output_time(0.3 * (1.0 - 1e-13), 0.0, 0.1), 0.4, 1e-15);
+  // /ANIM/DT with a start time: outputs at start + k interval.
+  EXPECT_NEAR(next_output_time(1.234, 1.0, 0.05), 1.25, 1e-15);
+  // An interval 1e9 times below t: one evaluation, not 1e9 additions, and the result just after t.
+  const double t = 1e-3, tiny = 1e-12;
+  const double next = next_output_time(t, 0.0, tiny);
+  EXPECT_GT(next, t * (1.0 + 1e-12));
+  EXPECT_LE(next, t + 2.0 * tiny + 2e-15);
+}
+
+// A /TFILE interval far below the step: one history call per cycle, and the run takes no longer for it.
+TEST(TimeLoop, TinyHistoryIntervalGivesOneSamplePerCycle) {
+  Strip strip;
+  strip.nx = 2;
+  const std::string starter = node_cards(strip.nodes()) + shell_cards(1, strip.shells()) + part_card() +
+                              shell_property(0.01, 1) + elastic_material(7800.0, 2.1e11, 0.3) +
+                              node_group(1, strip.all()) + initial_velocity(1, 1.0, 0.0, 0.0, 1);
+  long long calls = 0;
+  test::TempDir dir;
+  const RunResult run = run_deck(dir, starter, 1e-3, 1e-15, [&](const Model&, const SolverState&) { ++calls; });
+  ASSERT_EQ(run.summary.status, RunStatus::Normal) << run.summary.message;
+  EXPECT_EQ(calls, run.summary.cycles);
+}
+
+}  // namespace
+}  // namespace crumple::verification
