@@ -6,6 +6,7 @@
 
 #include "crumple/elements/shell4.hpp"
 #include "crumple/materials/plane_stress.hpp"
+#include "shell4_hourglass.hpp"
 
 namespace crumple {
 namespace {
@@ -148,6 +149,7 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
     double nxx = 0, nyy = 0, nxy = 0, mxx = 0, myy = 0, mxy = 0;
     double old_n[3] = {0, 0, 0}, old_m[3] = {0, 0, 0};
     double work = 0.0, thickness_strain = 0.0;
+    double tangent_ratio = 1.0;  // through-thickness mean of the points' tangent over E (eq. S-12)
     bool failed = false;
     const std::size_t first = p.first_point + static_cast<std::size_t>(e - group.begin) * static_cast<std::size_t>(np);
     for (int k = 0; k < np; ++k) {
@@ -165,6 +167,11 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
         const auto r = materials::plane_stress_update(elastic, p.hardening, ex, ey, g, rate, state.eps_p[ip], sxx,
                                                       syy, sxy);
         state.eps_p[ip] += r.plastic_strain_increment;
+        if (r.plastic_strain_increment > 0.0 && p.physical_hourglass) {
+          // Elastic-plastic tangent of the point, E H' / (E + H'), for the hourglass modes (eq. S-12).
+          const double slope = std::max(p.hardening.slope(state.eps_p[ip], rate), 0.0);
+          tangent_ratio -= p.membrane_weight[k] * E / (E + slope);
+        }
         thickness_strain += p.membrane_weight[k] * r.thickness_strain;
         if (p.failure_strain > 0.0 && state.eps_p[ip] >= p.failure_strain) failed = true;
         state.sxx[ip] = sxx, state.syy[ip] = syy, state.sxy[ip] = sxy;
@@ -184,10 +191,21 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
     work += 0.5 * (old_qx + qx) * gxz * dt + 0.5 * (old_qy + qy) * gyz * dt;
     if (p.thickness_update && dt > 0.0) state.thickness[ue] = t * std::exp(thickness_strain);
 
+    // Critical step (eq. T-1): quadrilateral area over the longest side, triangle twice the area over it.
+    double longest = 0.0;
+    for (int a = 0; a < NN; ++a) {
+      const double sx = lx[(a + 1) % NN] - lx[a], sy = ly[(a + 1) % NN] - ly[a];
+      longest = std::max(longest, sx * sx + sy * sy);
+    }
+    const double length = (NN == 4 ? area : 2.0 * area) / std::sqrt(longest);
+    const double step = length / wave_speed;
+
     // Hourglass stiffness on the five one-point hourglass modes of the quadrilateral (eq. S-5); the linear
     // triangle has none.
     double gamma[NN] = {};
     double* hq = nullptr;
+    double damping[5] = {0, 0, 0, 0, 0};                  // viscous hourglass forces of the cycle (Ishell 24)
+    double shear_moment_x[NN] = {}, shear_moment_y[NN] = {};  // rotation coefficients of the shear mode (eq. S-13)
     double hourglass_work = 0.0;
     if constexpr (NN == 4) {
       constexpr double h[4] = {1.0, -1.0, 1.0, -1.0};
@@ -205,18 +223,44 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
         rates[3] += gamma[a] * tx[a];
         rates[4] += gamma[a] * ty[a];
       }
-      // Each coefficient is the fraction of the element's own stiffness for the matching deformation: membrane
-      // E t A |B|^2, bending D A |B|^4 for the transverse mode and D A |B|^2 for the rotation modes.
-      const double plate = E * t * t * t / 12.0;
-      const double membrane = p.hm * E * t * area * bb;
-      const double bending = p.hf * plate * area * bb * bb;
-      const double rotation = p.hr * plate * area * bb;
-      const double stiffness[5] = {membrane, membrane, bending, rotation, rotation};
       hq = &state.hourglass[ue * 5];
-      for (int m = 0; m < 5; ++m) {
-        const double old = hq[m];
-        hq[m] += stiffness[m] * rates[m] * dt;
-        hourglass_work += 0.5 * (old + hq[m]) * rates[m] * dt;
+      if (p.physical_hourglass) {
+        // Ishell 24: stiffness of the assumed-strain field of each mode (eqs. S-10 to S-14). Membrane modes as
+        // in-plane bending E t H q, rotation modes as plate bending (E t^3 / 12) H on (q_ry, -q_rx), the
+        // transverse mode as shear on the part of the bilinear w that the rotations do not explain.
+        const shell_hourglass::ShapeTensor H = shell_hourglass::shape_tensor(lx, ly, area);
+        double cx[4], cy[4];
+        shell_hourglass::shear_rotation_coefficients(shell_hourglass::quadratic_moments(gamma, lx, ly), b1, b2, cx, cy);
+        for (int a = 0; a < 4; ++a) rates[2] += cx[a] * tx[a] + cy[a] * ty[a];
+        const double modulus = E * std::max(tangent_ratio, 0.0);
+        const double membrane = modulus * t, plate = modulus * t * t * t / 12.0;
+        const double shear = p.shear_factor * G * std::max(tangent_ratio, 0.0) * t * (H.xx + H.yy);
+        const double increment[5] = {
+            membrane * (H.xx * rates[0] + H.xy * rates[1]) * dt, membrane * (H.xy * rates[0] + H.yy * rates[1]) * dt,
+            shear * rates[2] * dt, -plate * (H.xy * rates[4] - H.yy * rates[3]) * dt,
+            plate * (H.xx * rates[4] - H.xy * rates[3]) * dt};
+        // Viscous part dn: the elastic increment over the element's own transit time, not stored (eq. S-14).
+        const double viscous = dt > 0.0 ? p.numerical_damping * step / dt : 0.0;
+        for (int m = 0; m < 5; ++m) {
+          const double old = hq[m];
+          hq[m] += increment[m];
+          hourglass_work += 0.5 * (old + hq[m]) * rates[m] * dt + viscous * increment[m] * rates[m] * dt;
+          damping[m] = viscous * increment[m];
+        }
+        for (int a = 0; a < 4; ++a) shear_moment_x[a] = cx[a], shear_moment_y[a] = cy[a];
+      } else {
+        // Each coefficient is the fraction of the element's own stiffness for the matching deformation:
+        // membrane E t A |B|^2, bending D A |B|^4 for the transverse mode and D A |B|^2 for the rotation modes.
+        const double plate = E * t * t * t / 12.0;
+        const double membrane = p.hm * E * t * area * bb;
+        const double bending = p.hf * plate * area * bb * bb;
+        const double rotation = p.hr * plate * area * bb;
+        const double stiffness[5] = {membrane, membrane, bending, rotation, rotation};
+        for (int m = 0; m < 5; ++m) {
+          const double old = hq[m];
+          hq[m] += stiffness[m] * rates[m] * dt;
+          hourglass_work += 0.5 * (old + hq[m]) * rates[m] * dt;
+        }
       }
     }
 
@@ -228,8 +272,10 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
       double mx = area * (-b2[a] * myy - b1[a] * mxy - mean * qy);
       double my = area * (b1[a] * mxx + b2[a] * mxy + mean * qx);
       if constexpr (NN == 4) {
-        fx += gamma[a] * hq[0], fy += gamma[a] * hq[1], fz += gamma[a] * hq[2];
-        mx += gamma[a] * hq[3], my += gamma[a] * hq[4];
+        const double q[5] = {hq[0] + damping[0], hq[1] + damping[1], hq[2] + damping[2], hq[3] + damping[3],
+                             hq[4] + damping[4]};
+        fx += gamma[a] * q[0], fy += gamma[a] * q[1], fz += gamma[a] * q[2];
+        mx += gamma[a] * q[3] + shear_moment_x[a] * q[2], my += gamma[a] * q[4] + shear_moment_y[a] * q[2];
       }
       const auto k = static_cast<std::size_t>(n[a]);
       nodes.fx[k] -= fx * e1.x + fy * e2.x + fz * e3.x;
@@ -247,14 +293,6 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
     result.internal_energy += internal;
     result.hourglass_energy += hourglass_work;
 
-    // Critical step (eq. T-1): quadrilateral area over the longest side, triangle twice the area over it.
-    double longest = 0.0;
-    for (int a = 0; a < NN; ++a) {
-      const double sx = lx[(a + 1) % NN] - lx[a], sy = ly[(a + 1) % NN] - ly[a];
-      longest = std::max(longest, sx * sx + sy * sy);
-    }
-    const double length = (NN == 4 ? area : 2.0 * area) / std::sqrt(longest);
-    const double step = length / wave_speed;
     state.critical_dt[ue] = step;
     if (step < result.min_dt) result.min_dt = step, result.controlling = e;
     if (failed) {

@@ -73,8 +73,8 @@ void setup_shells(const Model& m, SolverState& s, ElementKind kind, std::vector<
       np = 5;
       note_once(notes, "shell property N = 0 (global plasticity) is integrated with 5 points through the thickness");
     }
-    if (kind == ElementKind::Shell4 && f.ishell == 24)
-      note_once(notes, "Ishell 24 (QEPH) runs with the Belytschko-Tsay kernel and hourglass stiffness");
+    p.physical_hourglass = kind == ElementKind::Shell4 && f.ishell == 24;
+    if (prop.shell.dn > 0.0) p.numerical_damping = prop.shell.dn;
     p.points = np;
     const auto at = static_cast<std::size_t>(np) * 11;
     p.zeta = &s.shell_zeta[at];

@@ -42,12 +42,16 @@ double mode_slope(double x, double L) {
   return kBeta1L / L * (std::sinh(bx) + std::sin(bx) - mode_sigma() * (std::cosh(bx) - std::cos(bx)));
 }
 
-TEST(Cantilever, FirstBendingFrequency) {
+// Both 4-node formulations: Belytschko-Tsay (Ishell 1) and the physically stabilised element (Ishell 24).
+class Cantilever : public ::testing::TestWithParam<int> {};
+INSTANTIATE_TEST_SUITE_P(Ishell, Cantilever, ::testing::Values(1, 24));
+
+TEST_P(Cantilever, FirstBendingFrequency) {
   constexpr double E = 2.1e11, rho = 7800.0, L = 1.0, b = 0.1, t = 0.01, v_tip = 0.01;
   Strip strip;
   strip.nx = 16, strip.ny = 1, strip.length = L, strip.width = b;
   std::string starter = node_cards(strip.nodes()) + shell_cards(1, strip.shells()) + part_card() +
-                        shell_property(t, 5) + elastic_material(rho, E, 0.0) + node_group(1, strip.column(0)) +
+                        shell_property(t, 5, 0.0, GetParam()) + elastic_material(rho, E, 0.0) + node_group(1, strip.column(0)) +
                         boundary_condition(1, "111 111", 1);
   // First step: dt = 0.9 (area / longest side) / c = 0.9 (L / nx) / c; the rotations are imposed at the first
   // half step t = dt / 2 only.
@@ -88,9 +92,9 @@ TEST(Cantilever, FirstBendingFrequency) {
   EXPECT_LT(std::abs(error), 0.02);
   // Free vibration: no external work, the balance is the exchange between kinetic and strain energy.
   EXPECT_LT(std::abs(run.summary.energy.error_percent), 0.1);
-  std::printf("[cantilever] cycles %lld  crossings %zu  f %.5f Hz  Kirchhoff %.5f Hz (%+.3f %%)  energy error "
+  std::printf("[cantilever Ishell %d] cycles %lld  crossings %zu  f %.5f Hz  Kirchhoff %.5f Hz (%+.3f %%)  energy error "
               "%.4f %%  hourglass/internal %.2e\n",
-              run.summary.cycles, crossings.size(), frequency, f_kirchhoff, 100 * error,
+              GetParam(), run.summary.cycles, crossings.size(), frequency, f_kirchhoff, 100 * error,
               run.summary.energy.error_percent, run.summary.energy.hourglass / std::max(run.summary.energy.internal, 1e-300));
 }
 

@@ -30,9 +30,9 @@ std::vector<NodeRow> patch_nodes() {
 std::vector<ShellRow> patch_shells() {
   return {{1, 1, 2, 6, 5}, {2, 2, 3, 7, 6}, {3, 3, 4, 8, 7}, {4, 4, 1, 5, 8}, {5, 5, 6, 7, 8}};
 }
-std::string patch_starter(int points) {
+std::string patch_starter(int points, int ishell) {
   return node_cards(patch_nodes()) + shell_cards(1, patch_shells()) + part_card() +
-         shell_property(kThickness, points) + elastic_material(kRho, kYoung, kNu);
+         shell_property(kThickness, points, 0.0, ishell) + elastic_material(kRho, kYoung, kNu);
 }
 
 // Plane-stress elasticity on engineering strains (exx, eyy, gxy).
@@ -67,13 +67,13 @@ struct Patch {
   ShellGroupParameters p;
   const double* zeta;
 
-  explicit Patch(int points) : model(read_patch(points)), solver(start(model)), nodes(solver.nodes), state(solver.shells) {
+  Patch(int points, int ishell) : model(read_patch(points, ishell)), solver(start(model)), nodes(solver.nodes), state(solver.shells) {
     p = solver.shell_groups.at(0);
     zeta = p.zeta;
   }
-  static Model read_patch(int points) {
+  static Model read_patch(int points, int ishell) {
     test::TempDir dir;
-    return read_deck(dir.write("P_0000.rad", test::begin_card("P") + patch_starter(points) + "/END\n")).model;
+    return read_deck(dir.write("P_0000.rad", test::begin_card("P") + patch_starter(points, ishell) + "/END\n")).model;
   }
   static SolverState start(const Model& m) {
     std::vector<std::string> notes;
@@ -101,8 +101,13 @@ std::array<double, 2> boundary_weight(long long corner) {
   return {0.0, 0.0};
 }
 
-TEST(PatchTest, MembraneConstantStrainOnDistortedMesh) {
-  Patch patch(1);
+// Every patch test runs for both 4-node formulations: Belytschko-Tsay (Ishell 1) and the physically stabilised
+// element (Ishell 24), whose hourglass modes must stay at rest under the linear fields of a patch.
+class PatchTest : public ::testing::TestWithParam<int> {};
+INSTANTIATE_TEST_SUITE_P(Ishell, PatchTest, ::testing::Values(1, 24));
+
+TEST_P(PatchTest, MembraneConstantStrainOnDistortedMesh) {
+  Patch patch(1, GetParam());
   // v = G x with a non-symmetric G: strain rates (exx, eyy, gxy) = (G11, G22, G12 + G21) and a spin
   // (G21 - G12) / 2 that must not produce stress.
   const double G[2][2] = {{1.0e-3, 0.4e-3}, {-0.7e-3, -0.3e-3}};
@@ -156,9 +161,9 @@ TEST(PatchTest, MembraneConstantStrainOnDistortedMesh) {
               worst_stress, worst_interior, worst_boundary, worst_hourglass);
 }
 
-TEST(PatchTest, BendingConstantCurvatureOnDistortedMesh) {
+TEST_P(PatchTest, BendingConstantCurvatureOnDistortedMesh) {
   // Five points through the thickness: the equally spaced rule integrates a linear stress profile exactly.
-  Patch patch(5);
+  Patch patch(5, GetParam());
   // Angular velocities linear in x, y give constant curvature rates (S-3):
   //   k_xx = d(thy)/dx = K[0],  k_yy = -d(thx)/dy = K[1],  k_xy = d(thy)/dy - d(thx)/dx = K[2].
   // The transverse shear of this field is the mean rotation of each element, which is not constant; a
@@ -232,12 +237,12 @@ TEST(PatchTest, BendingConstantCurvatureOnDistortedMesh) {
 //    co-rotational stresses differ by O(strain) relative; the final strain is kept at 1e-7;
 //  - coordinate round-off: x += dt v adds ~1e-17 m of rounding per cycle to coordinates of 0.1 m, against a
 //    displacement of 2.4e-8 m: ~1e-7 relative after 2000 cycles. The velocities do not suffer from it.
-TEST(PatchTest, MembranePatchThroughTheSolver) {
+TEST_P(PatchTest, MembranePatchThroughTheSolver) {
   test::TempDir dir;
   const double end_time = 0.08, strain = 1.0e-7, rate = strain / end_time;
   const double G[2][2] = {{rate, 0.5 * rate}, {-0.3 * rate, 0.6 * rate}};
   // Function 1 is 1, function 2 is 0: a zero Fscale_Y means 1 on /IMPVEL, so a zero velocity needs a zero function.
-  std::string starter = patch_starter(1) + unit_function(1) + function_card(2, {{0.0, 0.0}, {1e3, 0.0}});
+  std::string starter = patch_starter(1, GetParam()) + unit_function(1) + function_card(2, {{0.0, 0.0}, {1e3, 0.0}});
   const auto impose = [](long long id, const std::string& axis, long long group, double v) {
     return v == 0.0 ? imposed_velocity(id, 2, axis, group, 1.0) : imposed_velocity(id, 1, axis, group, v);
   };

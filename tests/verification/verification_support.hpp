@@ -63,9 +63,10 @@ inline std::string shell_cards(long long part, const std::vector<ShellRow>& shel
 // Part 1 with property 1 and material 1.
 inline std::string part_card() { return "/PART/1\npart\n" + I(1) + I(1) + "\n"; }
 
-// /PROP/SHELL/1: Belytschko-Tsay (Ishell 1), hourglass coefficients hm = hf = hr (0: default 0.01), N points.
-inline std::string shell_property(double thickness, int points, double hourglass = 0.0) {
-  return "/PROP/SHELL/1\nshell\n" + I(1) + I(0) + I(0) + "\n" + R(hourglass) + R(hourglass) + R(hourglass) + "\n" +
+// /PROP/SHELL/1: Belytschko-Tsay (Ishell 1) unless told, hourglass coefficients hm = hf = hr (0: default 0.01),
+// N points.
+inline std::string shell_property(double thickness, int points, double hourglass = 0.0, int ishell = 1) {
+  return "/PROP/SHELL/1\nshell\n" + I(ishell) + I(0) + I(0) + "\n" + R(hourglass) + R(hourglass) + R(hourglass) + "\n" +
          I(points) + I(0) + R(thickness) + "\n";
 }
 
