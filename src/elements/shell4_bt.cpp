@@ -6,6 +6,7 @@
 
 #include "crumple/elements/shell4.hpp"
 #include "crumple/materials/plane_stress.hpp"
+#include "crumple/materials/resultant_plasticity.hpp"
 #include "shell4_hourglass.hpp"
 
 namespace crumple {
@@ -152,7 +153,39 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
     double tangent_ratio = 1.0;  // through-thickness mean of the points' tangent over E (eq. S-12)
     bool failed = false;
     const std::size_t first = p.first_point + static_cast<std::size_t>(e - group.begin) * static_cast<std::size_t>(np);
-    for (int k = 0; k < np; ++k) {
+    if (p.resultant_plasticity) {
+      // N = 0: one set of resultants, carried as the membrane stress N / t at the point and the outer-fibre
+      // bending stress 6 M / t^2 per element (docs/theory/materials.md, RP-1 to RP-3).
+      double* sm[3] = {&state.sxx[first], &state.syy[first], &state.sxy[first]};
+      double* sb = &state.bending_stress[3 * ue];
+      double membrane[3] = {*sm[0], *sm[1], *sm[2]};
+      const double bending_lever = t * t / 6.0;
+      for (int c = 0; c < 3; ++c) old_n[c] = t * membrane[c], old_m[c] = bending_lever * sb[c];
+      if (dt > 0.0) {
+        const double h = 0.5 * t;
+        const materials::ResultantIncrement d{{dxx * dt, dyy * dt, gxy * dt}, {h * kxx * dt, h * kyy * dt, h * kxy * dt}};
+        // Strain rate of the more strained surface fibre.
+        auto fibre_rate = [&](double s) {
+          const double ex = d.membrane[0] + s * d.bending[0], ey = d.membrane[1] + s * d.bending[1];
+          const double g = d.membrane[2] + s * d.bending[2];
+          return std::sqrt(2.0 / 3.0 * (ex * ex + ey * ey + (ex + ey) * (ex + ey) + 0.5 * g * g)) / dt;
+        };
+        const double rate = p.hardening.filtered_rate(std::max(fibre_rate(1.0), fibre_rate(-1.0)), state.eps_rate[first], dt);
+        state.eps_rate[first] = rate;
+        const auto r = materials::resultant_update(elastic, p.hardening, d, rate, state.eps_p[first], membrane, sb);
+        state.eps_p[first] += r.plastic_strain_increment;
+        if (r.plastic_strain_increment > 0.0 && p.physical_hourglass) {
+          const double slope = std::max(p.hardening.slope(state.eps_p[first], rate), 0.0);
+          tangent_ratio = slope / (E + slope);  // eq. S-12
+        }
+        thickness_strain = r.thickness_strain;
+        if (p.failure_strain > 0.0 && state.eps_p[first] >= p.failure_strain) failed = true;
+        for (int c = 0; c < 3; ++c) *sm[c] = membrane[c];
+      }
+      nxx = t * membrane[0], nyy = t * membrane[1], nxy = t * membrane[2];
+      mxx = bending_lever * sb[0], myy = bending_lever * sb[1], mxy = bending_lever * sb[2];
+    }
+    for (int k = 0; k < np && !p.resultant_plasticity; ++k) {
       const std::size_t ip = first + static_cast<std::size_t>(k);
       const double z = p.zeta[k] * t;
       const double wn = p.membrane_weight[k] * t, wm = p.bending_weight[k] * t * t;

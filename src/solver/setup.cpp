@@ -13,9 +13,6 @@ namespace {
 
 constexpr double kDefaultHourglass = 0.01;  // Radioss default hm, hf, hr for 4-node shells
 
-void note_once(std::vector<std::string>& notes, const std::string& note) {
-  if (std::find(notes.begin(), notes.end(), note) == notes.end()) notes.push_back(note);
-}
 
 void setup_nodes(const Model& m, SolverState& s) {
   const std::size_t n = m.nodes.size();
@@ -42,7 +39,7 @@ void setup_nodes(const Model& m, SolverState& s) {
 }
 
 // Shell state and group parameters for the 4-node (kind Shell4) or 3-node (kind Shell3) shells.
-void setup_shells(const Model& m, SolverState& s, ElementKind kind, std::vector<std::string>& notes) {
+void setup_shells(const Model& m, SolverState& s, ElementKind kind) {
   const ElementTable& table = m.elements[static_cast<int>(kind)];
   const int nodes_per = nodes_per_element(kind);
   const std::size_t n = table.size();
@@ -67,12 +64,10 @@ void setup_shells(const Model& m, SolverState& s, ElementKind kind, std::vector<
     p.hm = prop.shell.hm > 0.0 ? prop.shell.hm : kDefaultHourglass;
     p.hf = prop.shell.hf > 0.0 ? prop.shell.hf : kDefaultHourglass;
     p.hr = prop.shell.hr > 0.0 ? prop.shell.hr : kDefaultHourglass;
-    int np = f.n_points;
-    if (np == 0) {
-      // N = 0 asks for stress-resultant (global) plasticity; until it exists, 5 points integrate it.
-      np = 5;
-      note_once(notes, "shell property N = 0 (global plasticity) is integrated with 5 points through the thickness");
-    }
+    // N = 0: stress-resultant (global) plasticity, one membrane point plus the element's bending stress.
+    const int np = f.n_points == 0 ? 1 : f.n_points;
+    p.resultant_plasticity = f.n_points == 0;
+    if (p.resultant_plasticity && st.bending_stress.empty()) st.bending_stress.assign(3 * table.size(), 0.0);
     p.physical_hourglass = kind == ElementKind::Shell4 && f.ishell == 24;
     if (prop.shell.dn > 0.0) p.numerical_damping = prop.shell.dn;
     p.points = np;
@@ -115,13 +110,13 @@ void setup_through_thickness_rules(SolverState& s) {
 
 }  // namespace
 
-SolverState make_state(const Model& m, std::vector<std::string>& notes) {
+SolverState make_state(const Model& m, [[maybe_unused]] std::vector<std::string>& notes) {
   SolverState s;
   setup_nodes(m, s);
   setup_through_thickness_rules(s);
   s.shell_groups.assign(m.element_groups.size(), ShellGroupParameters{});
-  setup_shells(m, s, ElementKind::Shell4, notes);
-  setup_shells(m, s, ElementKind::Shell3, notes);
+  setup_shells(m, s, ElementKind::Shell4);
+  setup_shells(m, s, ElementKind::Shell3);
   setup_bricks(m, s);
   setup_rigid_bodies(m, s);
   setup_rigid_walls(m, s);

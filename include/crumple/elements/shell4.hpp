@@ -18,7 +18,8 @@ struct ShellGroupParameters {
   double hm = 0.01, hf = 0.01, hr = 0.01;  // hourglass stiffness coefficients (membrane, out-of-plane, rotation)
   bool physical_hourglass = false;         // Ishell 24 (QEPH): stiffness from the material, eqs. S-10 to S-14
   double numerical_damping = 0.015;        // dn: viscous fraction on the physical hourglass modes (eq. S-14)
-  int points = 1;                          // through-thickness integration points
+  int points = 1;                          // through-thickness integration points (1 when resultant_plasticity)
+  bool resultant_plasticity = false;       // N = 0: plasticity on the stress resultants (RP-1 to RP-3)
   std::size_t first_point = 0;             // ShellState index of the group's first element's first point
   const double* zeta = nullptr;            // point heights in units of the thickness, in [-1/2, 1/2]
   const double* membrane_weight = nullptr; // N = t sum w_i sigma_i (weights sum to 1)

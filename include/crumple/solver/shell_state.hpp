@@ -20,6 +20,7 @@ struct ShellState {
   // Per element (index in the kind's ElementTable).
   std::vector<double> qx, qy;           // transverse shear resultants (per unit length) [M T^-2]
   std::vector<double> thickness;        // current thickness [L]
+  std::vector<double> bending_stress;   // 6 M / t^2 (xx, yy, xy) per element of N = 0 groups; empty if none [stress]
   std::vector<double> hourglass;        // 5 hourglass generalized stresses per element (membrane x, y, w, rx, ry)
   std::vector<double> internal_energy;  // [M L^2 T^-2]
   std::vector<double> critical_dt;      // critical step of the last cycle [T] (nodal time step, mass scaling)
