@@ -9,8 +9,7 @@
 
 namespace crumple::solver {
 
-// Start state of a run; `notes` receives start-up remarks for the listing (none at present; contact adds its
-// initial penetrations there).
+// Start state of a run; `notes` receives start-up remarks for the listing and the console.
 SolverState make_state(const Model& model, std::vector<std::string>& notes);
 void setup_rigid_bodies(const Model& model, SolverState& state);
 // Brick groups' parameters and state (setup_bricks.cpp, docs/theory/brick8.md).
