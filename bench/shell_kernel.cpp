@@ -2,6 +2,8 @@
 // elastic and plastic, 3 and 5 through-thickness points. Run: build/release/bench/crumple_bench
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+
 #include <cmath>
 
 #include "crumple/elements/shell4.hpp"
@@ -20,7 +22,7 @@ struct Plate {
   std::vector<Function> functions;
   double zeta[10], wn[10], wb[10];
 
-  Plate(int points, bool plastic) {
+  Plate(int points, bool plastic, int ishell = 1) {
     constexpr int nx = 16, ny = 8;  // 128 elements, 5 mm, a bending and stretching velocity field
     nodes.resize((nx + 1) * (ny + 1));
     for (int j = 0; j <= ny; ++j)
@@ -40,22 +42,29 @@ struct Plate {
       }
     group.end = static_cast<std::int32_t>(table.size());
     const std::size_t n = table.size();
-    state.resize_points(n * static_cast<std::size_t>(points));
+    state.resize_points(n * static_cast<std::size_t>(std::max(points, 1)));
     state.qx.assign(n, 0.0), state.qy = state.qx, state.thickness.assign(n, 1.5), state.hourglass.assign(5 * n, 0.0);
     state.internal_energy = state.qx, state.hourglass_energy = state.qx, state.critical_dt = state.qx;
     state.mass = state.qx, state.deleted.assign(n, 0);
     material.law = plastic ? MaterialLaw::JohnsonCook : MaterialLaw::Elastic;
     material.young = 205.0, material.poisson = 0.3, material.density = 7.8e-6;
     material.johnson_cook.a = 0.0002, material.johnson_cook.b = 0.35, material.johnson_cook.n = 0.52;
-    through_thickness_rule(points, zeta, wn, wb);
+    through_thickness_rule(points > 0 ? points : 1, zeta, wn, wb);
     p.hardening = materials::Hardening::of(material, functions);
     p.young = 205.0, p.poisson = 0.3, p.density = 7.8e-6, p.points = points;
     p.zeta = zeta, p.membrane_weight = wn, p.bending_weight = wb;
+    p.physical_hourglass = ishell == 24;
+    p.resultant_plasticity = points == 0;
+    if (p.resultant_plasticity) {  // N = 0: one membrane point plus the bending stress per element
+      p.points = 1;
+      state.resize_points(n);
+      state.bending_stress.assign(3 * n, 0.0);
+    }
   }
 };
 
-void shell4(benchmark::State& bench, int points, bool plastic) {
-  Plate plate(points, plastic);
+void shell4(benchmark::State& bench, int points, bool plastic, int ishell) {
+  Plate plate(points, plastic, ishell);
   for (auto _ : bench) {
     plate.nodes.clear_forces();
     auto r = shell4_forces(plate.table, plate.group, plate.p, plate.nodes, plate.state, 1e-4);
@@ -68,9 +77,13 @@ void shell4(benchmark::State& bench, int points, bool plastic) {
                          benchmark::Counter::kIsRate);
 }
 
-BENCHMARK_CAPTURE(shell4, elastic_3_points, 3, false);
-BENCHMARK_CAPTURE(shell4, plastic_3_points, 3, true);
-BENCHMARK_CAPTURE(shell4, plastic_5_points, 5, true);
+// Ishell 1 (Belytschko-Tsay) against Ishell 24 (physical stabilisation) in one run; N = 0 is resultant plasticity.
+BENCHMARK_CAPTURE(shell4, elastic_3_points_ishell1, 3, false, 1);
+BENCHMARK_CAPTURE(shell4, elastic_3_points_ishell24, 3, false, 24);
+BENCHMARK_CAPTURE(shell4, plastic_3_points_ishell1, 3, true, 1);
+BENCHMARK_CAPTURE(shell4, plastic_3_points_ishell24, 3, true, 24);
+BENCHMARK_CAPTURE(shell4, plastic_5_points_ishell24, 5, true, 24);
+BENCHMARK_CAPTURE(shell4, plastic_resultant_n0_ishell24, 0, true, 24);
 
 }  // namespace
 
