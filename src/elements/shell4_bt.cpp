@@ -265,13 +265,16 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
         double cx[4], cy[4];
         shell_hourglass::shear_rotation_coefficients(shell_hourglass::quadratic_moments(gamma, lx, ly), b1, b2, cx, cy);
         for (int a = 0; a < 4; ++a) rates[2] += cx[a] * tx[a] + cy[a] * ty[a];
-        const double modulus = E * std::max(tangent_ratio, 0.0);
-        const double membrane = modulus * t, plate = modulus * t * t * t / 12.0;
-        const double shear = p.shear_factor * G * std::max(tangent_ratio, 0.0) * t * (H.xx + H.yy);
-        const double increment[5] = {
+        const double membrane = E * t, plate = E * t * t * t / 12.0;
+        const double shear = p.shear_factor * G * t * (H.xx + H.yy);
+        double increment[5] = {
             membrane * (H.xx * rates[0] + H.xy * rates[1]) * dt, membrane * (H.xy * rates[0] + H.yy * rates[1]) * dt,
             shear * rates[2] * dt, -plate * (H.xy * rates[4] - H.yy * rates[3]) * dt,
             plate * (H.xx * rates[4] - H.xy * rates[3]) * dt};
+        // A yielding element loads its hourglass modes with its tangent modulus and unloads them elastically
+        // (eq. S-12): a softer unloading would give back more than was stored.
+        for (int m = 0; m < 5; ++m)
+          if (hq[m] * increment[m] > 0.0) increment[m] *= std::max(tangent_ratio, 0.0);
         // Viscous part dn: the elastic increment over the element's own transit time, not stored (eq. S-14).
         const double viscous = dt > 0.0 ? p.numerical_damping * step / dt : 0.0;
         for (int m = 0; m < 5; ++m) {
