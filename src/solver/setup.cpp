@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "crumple/contact/contact.hpp"
 #include "crumple/model/geometry.hpp"
 #include "crumple/model/mass.hpp"
 #include "solver/internal.hpp"
@@ -113,6 +114,11 @@ void setup_through_thickness_rules(SolverState& s) {
 SolverState make_state(const Model& m, std::vector<std::string>& notes) {
   SolverState s;
   setup_nodes(m, s);
+  if (!m.type7_interfaces.empty()) {
+    // Inacti 3 moves initially penetrated nodes: the run starts from the moved coordinates.
+    s.contact = contact::setup_contact(m, s.nodes, notes);
+    s.x0 = s.nodes.x, s.y0 = s.nodes.y, s.z0 = s.nodes.z;
+  }
   setup_through_thickness_rules(s);
   s.shell_groups.assign(m.element_groups.size(), ShellGroupParameters{});
   setup_shells(m, s, ElementKind::Shell4);
@@ -120,11 +126,6 @@ SolverState make_state(const Model& m, std::vector<std::string>& notes) {
   setup_bricks(m, s);
   setup_rigid_bodies(m, s);
   setup_rigid_walls(m, s);
-  // Never silently: a deck's contact interfaces are read and checked, but the contact module is not part of the
-  // time loop yet (issue 5), so bodies pass through each other.
-  if (!m.type7_interfaces.empty())
-    notes.push_back(std::to_string(m.type7_interfaces.size()) +
-                    " /INTER/TYPE7 interface(s) read but NOT APPLIED: contact is not implemented yet");
   s.mass_initial = 0.0;
   for (double mass : s.nodes.mass) s.mass_initial += mass;
   s.energy.initial_kinetic = kinetic_energy(s).first;

@@ -13,6 +13,7 @@
 #include <limits>
 #include <optional>
 
+#include "crumple/contact/contact.hpp"
 #include "crumple/output/listing.hpp"
 #include "crumple/output/results_file.hpp"
 #include "crumple/solver/solver.hpp"
@@ -145,6 +146,7 @@ RunSummary run_simulation(const Model& m, const SolverOptions& options, std::ost
     // 1. Internal forces and critical steps of the elements.
     n.clear_forces();
     double dt_elements = std::numeric_limits<double>::infinity();
+    bool elements_deleted = false;
     for (std::size_t g = 0; g < m.element_groups.size(); ++g) {
       const ElementGroup& group = m.element_groups[g];
       const ElementTable& table = m.elements[static_cast<int>(group.kind)];
@@ -155,6 +157,7 @@ RunSummary run_simulation(const Model& m, const SolverOptions& options, std::ost
         case ElementKind::Brick8: r = brick8_forces(table, group, s.brick_groups[g], n, s.bricks, s.dt); break;
       }
       s.energy.internal += r.internal_energy;
+      elements_deleted = elements_deleted || r.failed > 0;
       s.energy.hourglass += r.hourglass_energy;
       const std::string_view kind = element_kind_name(group.kind);
       if (r.non_finite >= 0 && status == RunStatus::Normal) {
@@ -212,6 +215,18 @@ RunSummary run_simulation(const Model& m, const SolverOptions& options, std::ost
       }
     }
     if (status != RunStatus::Normal) break;
+    // 1b. Contact (docs/theory/contact.md), only when the deck has interfaces: forces at x^n with v^(n-1/2),
+    // the interface step joins the elements'.
+    if (!s.contact.interfaces.empty()) {
+      if (elements_deleted)
+        contact::remove_deleted_segments(s.contact, {&s.shells.deleted, &s.shells3.deleted, &s.bricks.deleted});
+      const contact::ContactStep cs = contact::contact_forces(m, s.contact, n, s.time, s.dt, scale, s.mass_added);
+      if (cs.dt < dt_elements) {
+        dt_elements = cs.dt;
+        controlling = fmt::format("INTER {} NODE {}", m.type7_interfaces[static_cast<std::size_t>(cs.interface)].user_id,
+                                  m.nodes.user_id[static_cast<std::size_t>(cs.node)]);
+      }
+    }
     // 2. External forces; rigid bodies collect their nodes' forces.
     solver::add_external_forces(m, s, s.time);
     solver::gather_rigid_body_forces(s);
@@ -271,6 +286,7 @@ RunSummary run_simulation(const Model& m, const SolverOptions& options, std::ost
     solver::impose_kinematics(m, s, s.time, dt_next);
     solver::apply_rigid_walls(m, s, dt_average, dt_next);
     s.energy.external_work += load_work(m, s, scratch, s.time, dt_average) + constraint_work(s, scratch);
+    if (!s.contact.interfaces.empty()) s.energy.contact = contact::contact_work(s.contact, n, scratch.v_old, dt_average);
     // 6. Positions.
     for (std::size_t k = 0; k < n.size(); ++k) {
       n.x[k] += dt_next * n.vx[k];

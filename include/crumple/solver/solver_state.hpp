@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "crumple/contact/contact_state.hpp"
 #include "crumple/elements/brick8.hpp"
 #include "crumple/elements/shell4.hpp"
 #include "crumple/model/model.hpp"
@@ -57,6 +58,7 @@ struct SolverState {
   std::vector<BrickGroupParameters> brick_groups;  // per element group (meaningful for brick groups only)
   std::vector<RigidBodyState> bodies;
   std::vector<RigidWallState> walls;
+  ContactState contact;                             // TYPE7 interfaces (empty without /INTER/TYPE7)
   std::vector<std::int32_t> rigid_owner;           // per node: rigid body index, -1 when none
   double time = 0.0;
   double dt = 0.0;        // step of the last position update dt^(n-1/2) [T]

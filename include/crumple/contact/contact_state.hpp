@@ -1,0 +1,104 @@
+#pragma once
+// State of the TYPE7 contact interfaces (docs/theory/contact.md). Built once by setup_contact from the model;
+// the contact pass owns and updates it. Per-pair arrays are structures of arrays indexed by candidate pair.
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace crumple {
+
+struct InitialPenetration {
+  std::int32_t node;     // dense node index
+  std::int32_t segment;  // index into the interface's main segments
+  double penetration;    // p0 = g - d at the start [L]
+};
+
+// Per interface, in the order of Model::type7_interfaces. Forces are those the interface applied during the last
+// cycle; energies accumulate from the start.
+struct InterfaceResult {
+  std::array<double, 3> normal_force{};      // sum of the normal (penalty + damping) forces ON the secondary nodes [F]
+  std::array<double, 3> tangential_force{};  // sum of the friction forces on the secondary nodes [F]
+  double elastic_energy = 0.0;  // stored penalty energy now, sum of K0 g (-p - g ln((g - p) / g)) (eq. C-4) [E]
+  double damping_work = 0.0;    // energy dissipated by the normal damping so far (>= 0) [E]
+  double friction_work = 0.0;   // energy dissipated by friction so far (>= 0) [E]
+  double absorbed = 0.0;        // minus the accumulated work of all contact forces on all nodes (E_contact) [E]
+  int active_nodes = 0;         // secondary nodes with a non-zero force in the last cycle
+  double dt = std::numeric_limits<double>::infinity();  // interface step of the last cycle, scaled [T]
+  std::int32_t dt_node = -1;    // dense index of the secondary node controlling it
+  double added_mass = 0.0;      // mass added by /DT/INTER/CST so far [M]
+  long long released = 0;       // contacts released by /DT/INTER/DEL or the card's dtmin so far
+  std::vector<InitialPenetration> initial_penetrations;  // found before the run (type7.md §7)
+  double max_penetration_ratio = 0.0;  // largest p / g seen in any cycle
+};
+
+// What the contact pass needs of one interface, fixed at setup, plus its search and friction state.
+struct ContactInterface {
+  // Parameters with the defaults applied (type7.md §1, §3, §4, §5).
+  double stiffness_scale = 1.0;  // Stfac
+  double damping = 0.05;         // VisS: critical-damping fraction of the normal force
+  double friction_damping = 1.0; // VisF
+  double friction = 0.0;         // Fric: Coulomb coefficient (Ifric 0)
+  int friction_form = 1;         // Iform: 1 viscous, 2 stiffness (incremental)
+  double t_start = 0.0, t_stop = std::numeric_limits<double>::infinity();  // [T]
+  double dt_minimum = 0.0;       // card dtmin: contacts whose step falls below it are released [T]
+  int idel = 0;
+
+  std::vector<std::int32_t> secondary_nodes;          // dense node indices
+  std::vector<double> node_gap;                       // secondary gap per secondary node (variable gap) [L]
+  std::vector<double> gap_reduction;                  // Inacti 5, 6: gap taken off per secondary node [L]
+  std::vector<std::uint8_t> node_active;              // 0: Inacti 1 or no live element left
+  std::vector<std::array<std::int32_t, 4>> segments;  // main segment nodes (triangles repeat the third)
+  std::vector<std::uint8_t> segment_is_triangle;
+  std::vector<double> segment_gap;                    // gap per segment (Igap 0: the constant gap) [L]
+  std::vector<double> segment_stiffness;              // K0 per segment (eq. C-3) [F/L]
+  std::vector<std::uint8_t> segment_active;           // 0: Inacti 2 or element deleted (Idel)
+  std::vector<std::int32_t> segment_owner;            // owning element index (ElementTable of segment_owner_kind)
+  std::vector<std::uint8_t> segment_owner_kind;       // ElementKind of the owner
+  int stiffness_mode = 0;                             // Istf: 0 main side, 1 Stfac, 2..5 combined with the node's
+  std::vector<double> node_stiffness;                 // stiffness of the secondary side per node (Istf 2..5) [F/L]
+  bool variable_gap = false;
+  double gap_min = 0.0, gap_max = std::numeric_limits<double>::infinity(), gap_scale = 1.0;
+  double largest_gap = 0.0;                           // bound of every pair's gap, for the search [L]
+
+  // Search (type7.md §2): candidate pairs of the last sort and the motion since.
+  std::vector<std::int32_t> candidate_node;     // index into secondary_nodes
+  std::vector<std::int32_t> candidate_segment;  // index into segments
+  std::vector<double> friction_x, friction_y, friction_z;  // tangential force history per pair [F]
+  std::vector<std::int32_t> main_nodes;         // the segments' nodes, each once (motion since the sort)
+  // Forces of the last cycle, node by node as applied (secondary node and segment nodes), for the work (eq. C-10).
+  std::vector<std::int32_t> applied_node;
+  std::vector<double> applied_x, applied_y, applied_z;
+  std::vector<std::uint8_t> node_touched;       // scratch: secondary node had a force this cycle
+  double margin = 0.0;                          // search margin beyond the gap [L]
+  double bucket_scale = 0.2;                    // Bumult: bucket size factor
+  double motion = std::numeric_limits<double>::infinity();  // accumulated largest nodal motion since the sort [L]
+  long long sorts = 0;                          // number of bucket sorts so far
+
+  // Gap of the pair (secondary node i, segment s), before the Inacti reduction (eq. C-2).
+  double pair_gap(std::size_t i, std::size_t s) const {
+    if (!variable_gap) return segment_gap[s];
+    const double g = segment_gap[s] + node_gap[i];
+    return (g < gap_min ? gap_min : g > gap_max ? gap_max : g) * gap_scale;
+  }
+  // Stiffness K0 of the pair (eq. C-3): Istf 2..5 combine the main and the secondary side.
+  double pair_stiffness(std::size_t i, std::size_t s) const {
+    const double km = segment_stiffness[s], ks = node_stiffness[i];
+    switch (stiffness_mode) {
+      case 2: return 0.5 * (km + ks);
+      case 3: return km > ks ? km : ks;
+      case 4: return km < ks ? km : ks;
+      case 5: return km + ks > 0.0 ? km * ks / (km + ks) : 0.0;
+      default: return km;
+    }
+  }
+};
+
+struct ContactState {
+  std::vector<ContactInterface> interfaces;
+  std::vector<InterfaceResult> results;
+  std::vector<double> fx, fy, fz;  // per node: total contact force of the last cycle (all interfaces) [F]
+  std::vector<std::int32_t> touched;  // nodes with a contact force this cycle (to clear and to sum work)
+};
+
+}  // namespace crumple

@@ -1,0 +1,180 @@
+// The contact pass of one cycle (docs/theory/contact.md): for each candidate pair, the closest point, the
+// penetration, the penalty and damping force, friction, the interface step; forces go to the nodes equal and
+// opposite, the segment's share by the shape functions of the contact point.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "crumple/contact/contact.hpp"
+#include "crumple/contact/kernels.hpp"
+
+namespace crumple::contact {
+namespace {
+
+// Largest nodal speed of the interface's nodes, for the motion since the last sort (eq. C-12).
+double largest_speed(const ContactInterface& in, const NodalState& n) {
+  double v2 = 0.0;
+  auto visit = [&](std::int32_t node) {
+    const auto k = static_cast<std::size_t>(node);
+    v2 = std::max(v2, n.vx[k] * n.vx[k] + n.vy[k] * n.vy[k] + n.vz[k] * n.vz[k]);
+  };
+  for (std::int32_t node : in.secondary_nodes) visit(node);
+  for (std::int32_t node : in.main_nodes) visit(node);
+  return std::sqrt(v2);
+}
+
+}  // namespace
+
+ContactStep contact_forces(const Model& m, ContactState& c, NodalState& nodes, double time, double dt_previous,
+                           double scale, double& added_mass) {
+  ContactStep step;
+  for (std::int32_t node : c.touched) {
+    const auto k = static_cast<std::size_t>(node);
+    c.fx[k] = c.fy[k] = c.fz[k] = 0.0;
+  }
+  c.touched.clear();
+  const RunControl& rc = m.run;
+  for (std::size_t f = 0; f < c.interfaces.size(); ++f) {
+    ContactInterface& in = c.interfaces[f];
+    InterfaceResult& res = c.results[f];
+    res.normal_force = {0.0, 0.0, 0.0}, res.tangential_force = {0.0, 0.0, 0.0};
+    res.elastic_energy = 0.0, res.active_nodes = 0, res.dt = std::numeric_limits<double>::infinity(), res.dt_node = -1;
+    in.applied_node.clear(), in.applied_x.clear(), in.applied_y.clear(), in.applied_z.clear();
+    if (time < in.t_start || time > in.t_stop) continue;
+    // Search only when the nodes may have moved by more than the margin since the last sort (eq. C-12): a node
+    // and a segment closing at the largest speed each.
+    in.motion += largest_speed(in, nodes) * dt_previous;
+    if (2.0 * in.motion > in.margin) sort_candidates(in, nodes);
+    // Idel: segments of deleted elements leave the surface (checked by the time loop's deleted flags).
+    const double release_step = std::max(in.dt_minimum, rc.dt_inter_del.given ? rc.dt_inter_del.minimum : 0.0);
+    const double mass_step = rc.dt_inter_cst.given ? rc.dt_inter_cst.minimum : 0.0;
+    const double viss = in.damping;
+    const double stiffness_factor = std::sqrt(1.0 + viss * viss) - viss;
+    std::fill(in.node_touched.begin(), in.node_touched.end(), 0);
+
+    for (std::size_t q = 0; q < in.candidate_node.size(); ++q) {
+      const auto i = static_cast<std::size_t>(in.candidate_node[q]);
+      const auto s = static_cast<std::size_t>(in.candidate_segment[q]);
+      double* friction[3] = {&in.friction_x[q], &in.friction_y[q], &in.friction_z[q]};
+      if (!in.node_active[i] || !in.segment_active[s]) continue;
+      const auto n = static_cast<std::size_t>(in.secondary_nodes[i]);
+      double x[4][3], v[4][3];
+      for (int a = 0; a < 4; ++a) {
+        const auto k = static_cast<std::size_t>(in.segments[s][static_cast<std::size_t>(a)]);
+        x[a][0] = nodes.x[k], x[a][1] = nodes.y[k], x[a][2] = nodes.z[k];
+        v[a][0] = nodes.vx[k], v[a][1] = nodes.vy[k], v[a][2] = nodes.vz[k];
+      }
+      const double p_node[3] = {nodes.x[n], nodes.y[n], nodes.z[n]};
+      const SegmentPoint cp = closest_point_on_segment(p_node, x, in.segment_is_triangle[s]);
+      // Gap of the pair (eq. C-2), less the Inacti 5 / 6 reduction, which shrinks as the node moves out.
+      const double full_gap = in.pair_gap(i, s);
+      if (in.gap_reduction[i] > 0.0) in.gap_reduction[i] = std::min(in.gap_reduction[i], std::max(0.0, full_gap - cp.distance));
+      const double g = full_gap - in.gap_reduction[i];
+      // No force outside the gap, nor within 1e-10 g of the mid-surface (released, eq. C-4).
+      if (!(cp.distance < g) || cp.distance < 1e-10 * g) {
+        *friction[0] = *friction[1] = *friction[2] = 0.0;
+        continue;
+      }
+      const double d = cp.distance, p = g - d;
+      const double normal[3] = {(p_node[0] - cp.point[0]) / d, (p_node[1] - cp.point[1]) / d, (p_node[2] - cp.point[2]) / d};
+      double vr[3];  // velocity of the node relative to the contact point
+      for (int k = 0; k < 3; ++k)
+        vr[k] = (k == 0 ? nodes.vx[n] : k == 1 ? nodes.vy[n] : nodes.vz[n]) -
+                (cp.weight[0] * v[0][k] + cp.weight[1] * v[1][k] + cp.weight[2] * v[2][k] + cp.weight[3] * v[3][k]);
+      const double vn = vr[0] * normal[0] + vr[1] * normal[1] + vr[2] * normal[2];
+      const double penetration_rate = -vn;
+      const double k0 = in.pair_stiffness(i, s);
+      const double kt = tangent_stiffness(k0, g, p);
+      double mass = nodes.mass[n];
+      // Interface step of the pair (eq. C-11); /DT/INTER/DEL (or the card's dtmin) releases the pair instead,
+      // /DT/INTER/CST adds mass to the node so that its stiffness step stays at the minimum.
+      double pair_step = scale * std::min(kinematic_step(g, p, penetration_rate), stiffness_step(mass, kt, viss));
+      if (release_step > 0.0 && pair_step < release_step) {
+        ++res.released;
+        *friction[0] = *friction[1] = *friction[2] = 0.0;
+        continue;
+      }
+      if (mass_step > 0.0 && scale * stiffness_step(mass, kt, viss) < mass_step) {
+        const double ratio = mass_step / (scale * stiffness_factor);
+        const double needed = 0.5 * kt * ratio * ratio;
+        added_mass += needed - mass;
+        res.added_mass += needed - mass;
+        nodes.mass[n] = mass = needed;
+        pair_step = scale * std::min(kinematic_step(g, p, penetration_rate), stiffness_step(mass, kt, viss));
+      }
+      if (pair_step < res.dt) res.dt = pair_step, res.dt_node = static_cast<std::int32_t>(n);
+      // Normal force: penalty plus the pushing part of the damping (eqs. C-5, C-8).
+      const double elastic = penalty_force(k0, g, p);
+      const double damping = damping_force(viss, kt, mass, penetration_rate);
+      const double fn = elastic + damping;
+      res.elastic_energy += elastic_energy(k0, g, p);
+      res.damping_work += damping * penetration_rate * dt_previous;
+      res.max_penetration_ratio = std::max(res.max_penetration_ratio, p / g);
+      // Friction (eq. C-9): trial force in the tangent plane, capped by the Coulomb cone.
+      double ft[3] = {0.0, 0.0, 0.0};
+      if (in.friction > 0.0) {
+        const double vt[3] = {vr[0] - vn * normal[0], vr[1] - vn * normal[1], vr[2] - vn * normal[2]};
+        if (in.friction_form == 2) {
+          // Stiffness form: the old force turned into the new tangent plane plus Kt times the sliding increment.
+          const double along = *friction[0] * normal[0] + *friction[1] * normal[1] + *friction[2] * normal[2];
+          for (int k = 0; k < 3; ++k) ft[k] = *friction[k] - along * normal[k] - kt * vt[k] * dt_previous;
+        } else {
+          // Viscous form: C_t = VisF sqrt(2 Kt M) times the sliding velocity.
+          const double ct = in.friction_damping * std::sqrt(2.0 * kt * mass);
+          for (int k = 0; k < 3; ++k) ft[k] = -ct * vt[k];
+        }
+        friction_cone(ft, in.friction * fn);
+        res.friction_work -= (ft[0] * vt[0] + ft[1] * vt[1] + ft[2] * vt[2]) * dt_previous;
+      }
+      *friction[0] = ft[0], *friction[1] = ft[1], *friction[2] = ft[2];
+      const double force[3] = {fn * normal[0] + ft[0], fn * normal[1] + ft[1], fn * normal[2] + ft[2]};
+      for (int k = 0; k < 3; ++k) res.normal_force[static_cast<std::size_t>(k)] += fn * normal[k];
+      for (int k = 0; k < 3; ++k) res.tangential_force[static_cast<std::size_t>(k)] += ft[k];
+      if (!in.node_touched[i]) in.node_touched[i] = 1, ++res.active_nodes;
+      // Equal and opposite: the node gets `force`, the segment nodes -weight_a force (momentum conserved).
+      auto apply = [&](std::size_t k, double w) {
+        const double gx = w * force[0], gy = w * force[1], gz = w * force[2];
+        nodes.fx[k] += gx, nodes.fy[k] += gy, nodes.fz[k] += gz;
+        if (c.fx[k] == 0.0 && c.fy[k] == 0.0 && c.fz[k] == 0.0) c.touched.push_back(static_cast<std::int32_t>(k));
+        c.fx[k] += gx, c.fy[k] += gy, c.fz[k] += gz;
+        in.applied_node.push_back(static_cast<std::int32_t>(k));
+        in.applied_x.push_back(gx), in.applied_y.push_back(gy), in.applied_z.push_back(gz);
+      };
+      apply(n, 1.0);
+      const int corners = in.segment_is_triangle[s] ? 3 : 4;
+      for (int a = 0; a < corners; ++a)
+        if (cp.weight[a] != 0.0) apply(static_cast<std::size_t>(in.segments[s][static_cast<std::size_t>(a)]), -cp.weight[a]);
+    }
+    if (res.dt < step.dt) step.dt = res.dt, step.interface = static_cast<int>(f), step.node = res.dt_node;
+  }
+  return step;
+}
+
+double contact_work(ContactState& c, const NodalState& n, const std::vector<double>* v_old, double dt_average) {
+  double total = 0.0;
+  for (std::size_t f = 0; f < c.interfaces.size(); ++f) {
+    const ContactInterface& in = c.interfaces[f];
+    double work = 0.0;
+    for (std::size_t e = 0; e < in.applied_node.size(); ++e) {
+      const auto k = static_cast<std::size_t>(in.applied_node[e]);
+      work += in.applied_x[e] * 0.5 * (v_old[0][k] + n.vx[k]) + in.applied_y[e] * 0.5 * (v_old[1][k] + n.vy[k]) +
+              in.applied_z[e] * 0.5 * (v_old[2][k] + n.vz[k]);
+    }
+    c.results[f].absorbed -= work * dt_average;
+    total += c.results[f].absorbed;
+  }
+  return total;
+}
+
+void remove_deleted_segments(ContactState& c, const std::array<const std::vector<std::uint8_t>*, kElementKinds>& deleted) {
+  for (ContactInterface& in : c.interfaces) {
+    if (in.idel == 0) continue;
+    for (std::size_t s = 0; s < in.segments.size(); ++s) {
+      const std::vector<std::uint8_t>* flags = deleted[in.segment_owner_kind[s]];
+      const std::int32_t owner = in.segment_owner[s];
+      if (flags != nullptr && owner >= 0 && (*flags)[static_cast<std::size_t>(owner)]) in.segment_active[s] = 0;
+    }
+  }
+}
+
+}  // namespace crumple::contact

@@ -1,0 +1,251 @@
+// TYPE7 interfaces from the model (docs/theory/contact.md, "Gap" and "Stiffness"; type7.md §1, §3, §4, §7).
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "crumple/contact/contact.hpp"
+#include "crumple/contact/kernels.hpp"
+
+namespace crumple::contact {
+namespace {
+
+struct ElementFacts {  // what a segment or a node needs of an element
+  bool shell = false;
+  double thickness = 0.0;  // shells [L]
+  double stiffness = 0.0;  // K0 it gives a segment of area `area` (eq. C-3), before Stfac [F/L]
+};
+
+double brick_volume(const Model& m, std::int32_t e) {
+  // Volume of the hexahedron as 24 tetrahedra (centroid, face centre, face edge); the faces are consistently
+  // oriented, so the signed volumes add up to plus or minus the volume.
+  const std::int32_t* c = m.elements[static_cast<int>(ElementKind::Brick8)].nodes_of(static_cast<std::size_t>(e));
+  auto X = [&](int a) {
+    const auto k = static_cast<std::size_t>(c[a]);
+    return std::array<double, 3>{m.nodes.x[k], m.nodes.y[k], m.nodes.z[k]};
+  };
+  static constexpr int faces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+  std::array<double, 3> centre{};
+  for (int a = 0; a < 8; ++a)
+    for (int d = 0; d < 3; ++d) centre[static_cast<std::size_t>(d)] += X(a)[static_cast<std::size_t>(d)] / 8.0;
+  double volume = 0.0;
+  for (const auto& f : faces) {
+    std::array<double, 3> fc{};
+    for (int a : f)
+      for (int d = 0; d < 3; ++d) fc[static_cast<std::size_t>(d)] += X(a)[static_cast<std::size_t>(d)] / 4.0;
+    for (int a = 0; a < 4; ++a) {
+      const auto p = X(f[a]), q = X(f[(a + 1) % 4]);
+      double u[3], v[3], w[3];
+      for (std::size_t d = 0; d < 3; ++d) u[d] = p[d] - centre[d], v[d] = q[d] - centre[d], w[d] = fc[d] - centre[d];
+      volume -= (u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) + u[2] * (v[0] * w[1] - v[1] * w[0])) / 6.0;
+    }
+  }
+  return std::abs(volume);
+}
+
+double segment_area(const Model& m, const std::array<std::int32_t, 4>& s) {
+  auto X = [&](int a) {
+    const auto k = static_cast<std::size_t>(s[static_cast<std::size_t>(a)]);
+    return std::array<double, 3>{m.nodes.x[k], m.nodes.y[k], m.nodes.z[k]};
+  };
+  const auto a = X(0), b = X(1), c = X(2), d = X(3);
+  double u[3], v[3];
+  for (std::size_t k = 0; k < 3; ++k) u[k] = c[k] - a[k], v[k] = d[k] - b[k];
+  if (s[2] == s[3])
+    for (std::size_t k = 0; k < 3; ++k) u[k] = b[k] - a[k], v[k] = c[k] - a[k];
+  const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+  return 0.5 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+}
+
+double shortest_side(const Model& m, const std::array<std::int32_t, 4>& s) {
+  double shortest = std::numeric_limits<double>::infinity();
+  const int corners = s[2] == s[3] ? 3 : 4;
+  for (int a = 0; a < corners; ++a) {
+    const auto i = static_cast<std::size_t>(s[static_cast<std::size_t>(a)]);
+    const auto j = static_cast<std::size_t>(s[static_cast<std::size_t>((a + 1) % corners)]);
+    shortest = std::min(shortest, std::hypot(m.nodes.x[i] - m.nodes.x[j], m.nodes.y[i] - m.nodes.y[j],
+                                             m.nodes.z[i] - m.nodes.z[j]));
+  }
+  return shortest;
+}
+
+ElementFacts facts_of(const Model& m, ElementRef ref, double area) {
+  ElementFacts f;
+  const ElementTable& table = m.elements[static_cast<int>(ref.kind)];
+  const Part& part = m.parts[static_cast<std::size_t>(table.part[static_cast<std::size_t>(ref.index)])];
+  const Property& prop = m.properties[static_cast<std::size_t>(part.property)];
+  const Material& mat = m.materials[static_cast<std::size_t>(part.material)];
+  if (ref.kind == ElementKind::Brick8) {
+    f.stiffness = mat.bulk_modulus() * area * area / brick_volume(m, ref.index);
+  } else {
+    f.shell = true;
+    f.thickness = prop.shell.thickness;
+    f.stiffness = 0.5 * mat.young * prop.shell.thickness;
+  }
+  return f;
+}
+
+}  // namespace
+
+ContactState setup_contact(const Model& m, NodalState& nodes, std::vector<std::string>& notes) {
+  ContactState state;
+  state.fx.assign(nodes.size(), 0.0), state.fy.assign(nodes.size(), 0.0), state.fz.assign(nodes.size(), 0.0);
+  // Per node: largest attached shell thickness and the stiffest attached element (secondary side, Igap, Istf).
+  std::vector<double> node_thickness(nodes.size(), 0.0), node_stiffness(nodes.size(), 0.0);
+  for (int kind = 0; kind < kElementKinds; ++kind) {
+    const ElementTable& table = m.elements[static_cast<std::size_t>(kind)];
+    for (std::size_t e = 0; e < table.size(); ++e) {
+      const ElementFacts f = facts_of(m, {table.kind, static_cast<std::int32_t>(e)}, 0.0);
+      const int count = nodes_per_element(table.kind);
+      for (int a = 0; a < count; ++a) {
+        const auto k = static_cast<std::size_t>(table.nodes_of(e)[a]);
+        if (f.shell) node_thickness[k] = std::max(node_thickness[k], f.thickness);
+        node_stiffness[k] = std::max(node_stiffness[k], f.stiffness);
+      }
+    }
+  }
+  for (const Type7Interface& card : m.type7_interfaces) {
+    ContactInterface in;
+    InterfaceResult result;
+    in.stiffness_scale = card.stfac > 0.0 ? card.stfac : 1.0;
+    in.damping = card.viss > 0.0 ? card.viss : 0.05;
+    in.friction_damping = card.visf > 0.0 ? card.visf : 1.0;
+    in.friction = card.fric;
+    in.friction_form = card.iform == 2 ? 2 : 1;
+    in.t_start = card.tstart;
+    in.t_stop = card.tstop > 0.0 ? card.tstop : std::numeric_limits<double>::infinity();
+    in.dt_minimum = card.dtmin;
+    in.idel = card.idel;
+    in.bucket_scale = card.bumult > 0.0 ? card.bumult : 0.2;
+    in.stiffness_mode = card.istf;
+    in.secondary_nodes = m.node_groups[static_cast<std::size_t>(card.secondary_group)].nodes;
+    const Surface& surface = m.surfaces[static_cast<std::size_t>(card.main_surface)];
+    double thickness_sum = 0.0, shortest_side_all = std::numeric_limits<double>::infinity();
+    int shell_segments = 0;
+    for (const Segment& seg : surface.segments) {
+      in.segments.push_back(seg.nodes);
+      in.segment_is_triangle.push_back(seg.nodes[2] == seg.nodes[3]);
+      in.segment_owner.push_back(seg.owner.index);
+      in.segment_owner_kind.push_back(static_cast<std::uint8_t>(seg.owner.kind));
+      const ElementFacts f = seg.owner.index >= 0 ? facts_of(m, seg.owner, segment_area(m, seg.nodes)) : ElementFacts{};
+      // Eq. C-3: K0 from the owning element (Istf 0) or Stfac itself (Istf 1), clamped to [Stmin, Stmax].
+      double k0 = card.istf == 1 ? in.stiffness_scale : in.stiffness_scale * f.stiffness;
+      k0 = std::clamp(k0, card.stmin, card.stmax > 0.0 ? card.stmax : 1e30);
+      in.segment_stiffness.push_back(k0);
+      in.segment_gap.push_back(f.shell ? 0.5 * f.thickness : 0.0);
+      if (f.shell) thickness_sum += f.thickness, ++shell_segments;
+      shortest_side_all = std::min(shortest_side_all, shortest_side(m, seg.nodes));
+    }
+    in.segment_active.assign(in.segments.size(), 1);
+    for (const auto& seg : in.segments) in.main_nodes.insert(in.main_nodes.end(), seg.begin(), seg.end());
+    std::sort(in.main_nodes.begin(), in.main_nodes.end());
+    in.main_nodes.erase(std::unique(in.main_nodes.begin(), in.main_nodes.end()), in.main_nodes.end());
+    // Eq. C-2: constant gap (Igap 0) from Gapmin or the main surface; variable gap (Igap 1, 2) per pair.
+    in.variable_gap = card.igap == 1 || card.igap == 2;
+    in.gap_min = card.gapmin;
+    in.gap_max = card.gap_max > 0.0 ? card.gap_max : std::numeric_limits<double>::infinity();
+    in.gap_scale = card.igap == 2 && card.fscale_gap > 0.0 ? card.fscale_gap : 1.0;
+    for (std::int32_t n : in.secondary_nodes) {
+      in.node_gap.push_back(0.5 * node_thickness[static_cast<std::size_t>(n)]);
+      in.node_stiffness.push_back(in.stiffness_scale * node_stiffness[static_cast<std::size_t>(n)]);
+    }
+    if (!in.variable_gap) {
+      double gap = card.gapmin;
+      // Computed default (eq. C-2): the mean shell thickness, but never more than a tenth of the smallest side, so
+      // that the gap of a segment cannot reach the nodes of its neighbours (self contact, coarse meshes of thick
+      // shells); brick surfaces: a tenth of the smallest side.
+      if (!(gap > 0.0)) {
+        const double tenth = std::isfinite(shortest_side_all) ? 0.1 * shortest_side_all : 0.0;
+        gap = shell_segments > 0 ? std::min(thickness_sum / shell_segments, tenth) : tenth;
+      }
+      std::fill(in.segment_gap.begin(), in.segment_gap.end(), gap);
+      std::fill(in.node_gap.begin(), in.node_gap.end(), 0.0);
+      in.gap_min = 0.0, in.gap_max = std::numeric_limits<double>::infinity(), in.gap_scale = 1.0;
+    }
+    double largest_segment = 0.0, largest_node = 0.0;
+    for (double g : in.segment_gap) largest_segment = std::max(largest_segment, g);
+    for (double g : in.node_gap) largest_node = std::max(largest_node, g);
+    in.largest_gap = std::min(std::max(largest_segment + largest_node, in.gap_min), in.gap_max) * in.gap_scale;
+    in.margin = in.largest_gap;  // re-sort after the nodes have moved by a gap (eq. C-12)
+    in.gap_reduction.assign(in.secondary_nodes.size(), 0.0);
+    in.node_active.assign(in.secondary_nodes.size(), 1);
+    in.node_touched.assign(in.secondary_nodes.size(), 0);
+    if (!(in.largest_gap > 0.0))
+      throw DeckError(card.where, fmt::format("/INTER/TYPE7/{}", card.user_id), "Gapmin",
+                      "a positive gap (the main surface gives none: no thickness and no side length)", "0");
+
+    // Initial penetrations (type7.md §7): every candidate pair whose distance is already inside the gap.
+    sort_candidates(in, nodes);
+    std::vector<double> worst(in.secondary_nodes.size(), 0.0);
+    std::vector<std::int32_t> worst_segment(in.secondary_nodes.size(), -1);
+    std::vector<std::array<double, 3>> outward(in.secondary_nodes.size());
+    for (std::size_t q = 0; q < in.candidate_node.size(); ++q) {
+      const auto i = static_cast<std::size_t>(in.candidate_node[q]);
+      const auto s = static_cast<std::size_t>(in.candidate_segment[q]);
+      const auto n = static_cast<std::size_t>(in.secondary_nodes[i]);
+      double x[4][3];
+      for (int a = 0; a < 4; ++a) {
+        const auto k = static_cast<std::size_t>(in.segments[s][static_cast<std::size_t>(a)]);
+        x[a][0] = nodes.x[k], x[a][1] = nodes.y[k], x[a][2] = nodes.z[k];
+      }
+      const double p[3] = {nodes.x[n], nodes.y[n], nodes.z[n]};
+      const SegmentPoint c = closest_point_on_segment(p, x, in.segment_is_triangle[s]);
+      const double g = in.pair_gap(i, s);
+      if (c.distance < g && g - c.distance > worst[i]) {
+        worst[i] = g - c.distance, worst_segment[i] = static_cast<std::int32_t>(s);
+        for (int d = 0; d < 3; ++d) outward[i][static_cast<std::size_t>(d)] = c.distance > 0.0 ? (p[d] - c.point[d]) / c.distance : 0.0;
+      }
+    }
+    const std::string name = fmt::format("INTER {}", card.user_id);
+    double deepest = 0.0;
+    std::int32_t deepest_node = -1;
+    for (std::size_t i = 0; i < worst.size(); ++i) {
+      if (worst_segment[i] < 0) continue;
+      const std::int32_t n = in.secondary_nodes[i];
+      result.initial_penetrations.push_back({n, worst_segment[i], worst[i]});
+      if (worst[i] > deepest) deepest = worst[i], deepest_node = n;
+      switch (card.inacti) {
+        case 1: in.node_active[i] = 0; break;
+        case 2: in.segment_active[static_cast<std::size_t>(worst_segment[i])] = 0; break;
+        case 3: {
+          const auto k = static_cast<std::size_t>(n);
+          nodes.x[k] += worst[i] * outward[i][0], nodes.y[k] += worst[i] * outward[i][1], nodes.z[k] += worst[i] * outward[i][2];
+          break;
+        }
+        case 5: in.gap_reduction[i] = worst[i]; break;
+        case 6: in.gap_reduction[i] = worst[i] + 0.05 * (in.largest_gap - worst[i]); break;
+        default: break;
+      }
+    }
+    if (!result.initial_penetrations.empty()) {
+      static constexpr const char* action[7] = {"no action: they start with a contact force",
+                                                "their stiffness is removed (Inacti 1)",
+                                                "the segments they touch are removed (Inacti 2)",
+                                                "they are moved out of the gap (Inacti 3)", "", 
+                                                "their gap is reduced to the initial distance (Inacti 5)",
+                                                "their gap is reduced to the initial distance less 5 % (Inacti 6)"};
+      notes.push_back(fmt::format("{}: {} secondary node(s) start inside the gap, deepest node {} with "
+                                  "penetration {:.4g} (gap {:.4g}); {}",
+                                  name, result.initial_penetrations.size(), m.nodes.user_id[static_cast<std::size_t>(deepest_node)],
+                                  deepest, in.largest_gap, action[std::clamp(card.inacti, 0, 6)]));
+      std::size_t listed = 0;
+      for (const InitialPenetration& ip : result.initial_penetrations) {
+        if (++listed > 20) {
+          notes.push_back(fmt::format("{}: ... and {} more initially penetrated nodes", name,
+                                      result.initial_penetrations.size() - 20));
+          break;
+        }
+        const auto k = static_cast<std::size_t>(ip.node);
+        notes.push_back(fmt::format("{}: node {} segment {} penetration {:.4g}{}", name, m.nodes.user_id[k],
+                                    ip.segment + 1, ip.penetration,
+                                    card.inacti == 3 ? fmt::format(" moved to ({:.6g}, {:.6g}, {:.6g})", nodes.x[k], nodes.y[k], nodes.z[k]) : ""));
+      }
+    }
+    in.motion = std::numeric_limits<double>::infinity();  // sort again at the first cycle (Inacti 3 moved nodes)
+    state.interfaces.push_back(std::move(in));
+    state.results.push_back(std::move(result));
+  }
+  return state;
+}
+
+}  // namespace crumple::contact
