@@ -43,9 +43,7 @@ struct Plate {
     group.end = static_cast<std::int32_t>(table.size());
     const std::size_t n = table.size();
     state.resize_points(n * static_cast<std::size_t>(std::max(points, 1)));
-    state.qx.assign(n, 0.0), state.qy = state.qx, state.thickness.assign(n, 1.5), state.hourglass.assign(5 * n, 0.0);
-    state.internal_energy = state.qx, state.hourglass_energy = state.qx, state.critical_dt = state.qx;
-    state.mass = state.qx, state.deleted.assign(n, 0);
+    state.resize_elements(n, 1.5);
     material.law = plastic ? MaterialLaw::JohnsonCook : MaterialLaw::Elastic;
     material.young = 205.0, material.poisson = 0.3, material.density = 7.8e-6;
     material.johnson_cook.a = 0.0002, material.johnson_cook.b = 0.35, material.johnson_cook.n = 0.52;

@@ -100,6 +100,14 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
       ty[a] = dot(w[a], e2);
     }
     // Gradient operator at the centre (eq. S-2; triangle: eq. S-9).
+    if (p.small_strain) {
+      // Ismstr 1, 3 (eq. S-15): strains and forces on the initial shape, carried by the current frame; the
+      // element keeps its first step and cannot invert in this formulation.
+      double* shape = &state.initial_shape[2 * NN * ue];
+      if (state.initial_length[ue] == 0.0)
+        for (int a = 0; a < NN; ++a) shape[a] = lx[a], shape[NN + a] = ly[a];
+      for (int a = 0; a < NN; ++a) lx[a] = shape[a], ly[a] = shape[NN + a];
+    }
     double area, b1[NN], b2[NN];
     if constexpr (NN == 4) {
       area = 0.5 * ((lx[2] - lx[0]) * (ly[3] - ly[1]) - (lx[3] - lx[1]) * (ly[2] - ly[0]));
@@ -230,7 +238,11 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
       const double sx = lx[(a + 1) % NN] - lx[a], sy = ly[(a + 1) % NN] - ly[a];
       longest = std::max(longest, sx * sx + sy * sy);
     }
-    const double length = (NN == 4 ? area : 2.0 * area) / std::sqrt(longest);
+    double length = (NN == 4 ? area : 2.0 * area) / std::sqrt(longest);
+    if (p.small_strain) {  // eq. S-15: the step of the initial geometry
+      if (state.initial_length[ue] == 0.0) state.initial_length[ue] = length;
+      length = state.initial_length[ue];
+    }
     const double step = length / wave_speed;
 
     // Hourglass stiffness on the five one-point hourglass modes of the quadrilateral (eq. S-5); the linear

@@ -45,9 +45,7 @@ void setup_shells(const Model& m, SolverState& s, ElementKind kind) {
   const int nodes_per = nodes_per_element(kind);
   const std::size_t n = table.size();
   ShellState& st = kind == ElementKind::Shell4 ? s.shells : s.shells3;
-  st.qx.assign(n, 0.0), st.qy.assign(n, 0.0), st.thickness.assign(n, 0.0), st.hourglass.assign(5 * n, 0.0);
-  st.internal_energy.assign(n, 0.0), st.hourglass_energy.assign(n, 0.0), st.deleted.assign(n, 0);
-  st.critical_dt.assign(n, 0.0), st.mass.assign(n, 0.0);
+  st.resize_elements(n, 0.0);
   st.point_offset.assign(m.element_groups.size(), 0);
   st.points.assign(m.element_groups.size(), 0);
 
@@ -70,6 +68,8 @@ void setup_shells(const Model& m, SolverState& s, ElementKind kind) {
     p.resultant_plasticity = f.n_points == 0;
     if (p.resultant_plasticity && st.bending_stress.empty()) st.bending_stress.assign(3 * table.size(), 0.0);
     p.physical_hourglass = kind == ElementKind::Shell4 && f.ishell == 24;
+    p.small_strain = f.ismstr == 1 || f.ismstr == 3;
+    if (p.small_strain && st.initial_shape.empty()) st.initial_shape.assign(2 * static_cast<std::size_t>(nodes_per) * n, 0.0);
     if (prop.shell.dn > 0.0) p.numerical_damping = prop.shell.dn;
     p.points = np;
     const auto at = static_cast<std::size_t>(np) * 11;

@@ -31,9 +31,7 @@ void make_triangle(Triangle& t) {
   t.nodes.resize(3);
   t.nodes.x = t.model.nodes.x, t.nodes.y = t.model.nodes.y, t.nodes.z = t.model.nodes.z;
   t.state.resize_points(3);
-  t.state.qx.assign(1, 0.0), t.state.qy.assign(1, 0.0), t.state.thickness.assign(1, 0.01);
-  t.state.hourglass.assign(5, 0.0), t.state.internal_energy.assign(1, 0.0), t.state.hourglass_energy.assign(1, 0.0);
-  t.state.deleted.assign(1, 0), t.state.critical_dt.assign(1, 0.0), t.state.mass.assign(1, 0.0);
+  t.state.resize_elements(1, 0.01);
   through_thickness_rule(3, t.zeta, t.wn, t.wb);
   t.p.hardening = materials::Hardening::of(t.model.materials[0], t.model.functions);
   t.p.young = 2.0e11, t.p.poisson = 0.25, t.p.density = 7800.0, t.p.points = 3;

@@ -45,9 +45,7 @@ void make_quad(Quad& q, double a, double b, int ishell) {
   q.nodes.resize(4);
   q.nodes.x = q.model.nodes.x, q.nodes.y = q.model.nodes.y, q.nodes.z = q.model.nodes.z;
   q.state.resize_points(5);
-  q.state.qx.assign(1, 0.0), q.state.qy.assign(1, 0.0), q.state.thickness.assign(1, kThickness);
-  q.state.hourglass.assign(5, 0.0), q.state.internal_energy.assign(1, 0.0), q.state.hourglass_energy.assign(1, 0.0);
-  q.state.deleted.assign(1, 0), q.state.critical_dt.assign(1, 0.0), q.state.mass.assign(1, 0.0);
+  q.state.resize_elements(1, kThickness);
   through_thickness_rule(5, q.zeta, q.wn, q.wb);
   q.p.hardening = materials::Hardening::of(q.model.materials[0], q.model.functions);
   q.p.young = kE, q.p.poisson = kNu, q.p.density = 7800.0, q.p.points = 5;

@@ -16,6 +16,7 @@ struct ShellGroupParameters {
   double young = 0.0, poisson = 0.0, density = 0.0;
   double shear_factor = 5.0 / 6.0;  // transverse shear correction
   double hm = 0.01, hf = 0.01, hr = 0.01;  // hourglass stiffness coefficients (membrane, out-of-plane, rotation)
+  bool small_strain = false;               // Ismstr 1 or 3: strains and step on the initial shape (eq. S-15)
   bool physical_hourglass = false;         // Ishell 24 (QEPH): stiffness from the material, eqs. S-10 to S-14
   double numerical_damping = 0.015;        // dn: viscous fraction on the physical hourglass modes (eq. S-14)
   int points = 1;                          // through-thickness integration points (1 when resultant_plasticity)

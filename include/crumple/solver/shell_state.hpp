@@ -24,10 +24,19 @@ struct ShellState {
   std::vector<double> hourglass;        // 5 hourglass generalized stresses per element (membrane x, y, w, rx, ry)
   std::vector<double> internal_energy;  // [M L^2 T^-2]
   std::vector<double> critical_dt;      // critical step of the last cycle [T] (nodal time step, mass scaling)
+  std::vector<double> initial_length;   // characteristic length of the first cycle (Ismstr 1, 3) [L]
+  std::vector<double> initial_shape;    // local x then y of the nodes at the first cycle, Ismstr 1, 3 only [L]
   std::vector<double> mass;             // element mass [M] (nodal stiffness estimate of the nodal time step)
   std::vector<double> hourglass_energy; // [M L^2 T^-2]
   std::vector<std::uint8_t> deleted;    // 1 once the element has failed
 
+  // Sizes the per-element arrays for n elements of the given thickness, every other value zero.
+  void resize_elements(std::size_t n, double initial_thickness) {
+    for (auto* v : {&qx, &qy, &internal_energy, &critical_dt, &initial_length, &mass, &hourglass_energy}) v->assign(n, 0.0);
+    thickness.assign(n, initial_thickness);
+    hourglass.assign(5 * n, 0.0);
+    deleted.assign(n, 0);
+  }
   // Sizes the per-point arrays for `total` through-thickness points, every value zero.
   void resize_points(std::size_t total) {
     for (auto* v : {&sxx, &syy, &sxy, &eps_p, &eps_rate}) v->assign(total, 0.0);
