@@ -1,0 +1,226 @@
+// TYPE7 contact kernels and pass against hand calculations (docs/theory/contact.md, eqs. C-1 to C-12).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <set>
+#include <utility>
+
+#include "crumple/contact/contact.hpp"
+#include "crumple/contact/kernels.hpp"
+
+using namespace crumple;
+using namespace crumple::contact;
+
+TEST(ContactKernels, PenaltyForceStiffnessAndEnergyByHand) {
+  const double k0 = 1000.0, g = 0.1, p = 0.05;
+  EXPECT_DOUBLE_EQ(penalty_force(k0, g, p), 100.0);      // 1000 * 0.1 * 0.05 / 0.05
+  EXPECT_DOUBLE_EQ(secant_stiffness(k0, g, p), 2000.0);  // 1000 * 0.1 / 0.05
+  EXPECT_DOUBLE_EQ(tangent_stiffness(k0, g, p), 4000.0); // 1000 * (0.1 / 0.05)^2
+  // 1000 * 0.1 * (-0.05 - 0.1 ln 0.5) = 1.9314718...
+  EXPECT_NEAR(elastic_energy(k0, g, p), 100.0 * (-0.05 + 0.1 * std::log(2.0)), 1e-12);
+  // The energy is the integral of the force (Simpson, 2000 intervals) and the tangent its derivative.
+  const int n = 2000;
+  double integral = 0.0;
+  for (int k = 0; k <= n; ++k) {
+    const double w = (k == 0 || k == n) ? 1.0 : (k % 2 ? 4.0 : 2.0);
+    integral += w * penalty_force(k0, g, p * k / n);
+  }
+  integral *= p / n / 3.0;
+  EXPECT_NEAR(elastic_energy(k0, g, p), integral, 1e-9);
+  const double h = 1e-7;
+  EXPECT_NEAR(tangent_stiffness(k0, g, p), (penalty_force(k0, g, p + h) - penalty_force(k0, g, p - h)) / (2 * h), 1e-3);
+  // At release, (1 - 1e-10) g, a node has stored about 23 K0 g^2 (ln 1e10 = 23.03): the most one node can absorb.
+  EXPECT_NEAR(elastic_energy(k0, g, (1.0 - 1e-10) * g) / (k0 * g * g), std::log(1e10) - 1.0, 1e-6);
+}
+
+TEST(ContactKernels, DampingNeverPulls) {
+  const double kt = 4000.0, mass = 2.0, viss = 0.05;
+  EXPECT_NEAR(damping_force(viss, kt, mass, 3.0), 0.05 * std::sqrt(2.0 * 4000.0 * 2.0) * 3.0, 1e-12);
+  EXPECT_EQ(damping_force(viss, kt, mass, -3.0), 0.0);  // separating: no pull
+  EXPECT_EQ(damping_force(viss, kt, mass, 0.0), 0.0);
+}
+
+TEST(ContactKernels, FrictionCone) {
+  double trial[3] = {3.0, 4.0, 0.0};
+  EXPECT_TRUE(friction_cone(trial, 2.0));  // |trial| = 5 > mu Fn = 2: slides, scaled to 2 along (0.6, 0.8)
+  EXPECT_NEAR(trial[0], 1.2, 1e-15);
+  EXPECT_NEAR(trial[1], 1.6, 1e-15);
+  double inside[3] = {0.3, -0.4, 0.0};
+  EXPECT_FALSE(friction_cone(inside, 2.0));  // sticks: unchanged
+  EXPECT_EQ(inside[0], 0.3);
+  EXPECT_EQ(inside[1], -0.4);
+}
+
+TEST(ContactKernels, KinematicAndStiffnessSteps) {
+  EXPECT_DOUBLE_EQ(kinematic_step(0.1, 0.05, 10.0), 0.5 * 0.05 / 10.0);
+  EXPECT_TRUE(std::isinf(kinematic_step(0.1, 0.05, -1.0)));  // separating: no kinematic limit
+  EXPECT_DOUBLE_EQ(stiffness_step(2.0, 4000.0, 0.0), std::sqrt(2.0 * 2.0 / 4000.0));
+  const double xi = 0.05;
+  EXPECT_DOUBLE_EQ(stiffness_step(2.0, 4000.0, xi), std::sqrt(2.0 * 2.0 / 4000.0) * (std::sqrt(1.0 + xi * xi) - xi));
+}
+
+namespace {
+const double kSquare[4][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+void expect_reproduces(const SegmentPoint& c) {
+  double sum = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    double q = 0.0;
+    for (int a = 0; a < 4; ++a) q += c.weight[a] * kSquare[a][k];
+    EXPECT_NEAR(q, c.point[k], 1e-15);
+  }
+  for (double w : c.weight) {
+    sum += w;
+    EXPECT_GE(w, -1e-15);
+  }
+  EXPECT_NEAR(sum, 1.0, 1e-15);
+}
+}  // namespace
+
+TEST(ContactKernels, ClosestPointOnFaceEdgeAndCorner) {
+  // Above the face: along the normal.
+  const double above[3] = {0.3, 0.6, 0.2};
+  const SegmentPoint f = closest_point_on_segment(above, kSquare, false);
+  EXPECT_NEAR(f.distance, 0.2, 1e-15);
+  EXPECT_NEAR(f.point[0], 0.3, 1e-15);
+  EXPECT_NEAR(f.point[1], 0.6, 1e-15);
+  expect_reproduces(f);
+  // Beside an edge: radially from the edge, shared by its two nodes.
+  const double beside[3] = {1.2, 0.5, 0.1};
+  const SegmentPoint e = closest_point_on_segment(beside, kSquare, false);
+  EXPECT_NEAR(e.distance, std::hypot(0.2, 0.1), 1e-15);
+  EXPECT_NEAR(e.weight[1], 0.5, 1e-15);
+  EXPECT_NEAR(e.weight[2], 0.5, 1e-15);
+  expect_reproduces(e);
+  // Beyond a corner: from the corner node alone.
+  const double corner[3] = {-0.1, -0.2, 0.3};
+  const SegmentPoint c = closest_point_on_segment(corner, kSquare, false);
+  EXPECT_NEAR(c.distance, std::sqrt(0.01 + 0.04 + 0.09), 1e-15);
+  EXPECT_NEAR(c.weight[0], 1.0, 1e-15);
+  // Triangle segment (third node repeated).
+  const double tri[4][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 1, 0}};
+  const double over[3] = {0.7, 0.7, 0.1};  // beyond the hypotenuse: its midpoint
+  const SegmentPoint t = closest_point_on_segment(over, tri, true);
+  EXPECT_NEAR(t.point[0], 0.5, 1e-15);
+  EXPECT_NEAR(t.point[1], 0.5, 1e-15);
+  EXPECT_NEAR(t.distance, std::sqrt(0.04 + 0.04 + 0.01), 1e-15);
+}
+
+namespace {
+
+// Two unit squares side by side in z = 0 (nodes 0..5) and secondary node 6; gap 0.1, K0 = 1000.
+struct TwoSegments {
+  Model model;
+  NodalState nodes;
+  ContactState contact;
+  TwoSegments(double x, double y, double z) {
+    nodes.resize(7);
+    const double xy[6][2] = {{0, 0}, {1, 0}, {2, 0}, {0, 1}, {1, 1}, {2, 1}};
+    for (std::size_t k = 0; k < 6; ++k) nodes.x[k] = xy[k][0], nodes.y[k] = xy[k][1], nodes.mass[k] = 1.0;
+    nodes.x[6] = x, nodes.y[6] = y, nodes.z[6] = z, nodes.mass[6] = 0.5;
+    ContactInterface in;
+    in.secondary_nodes = {6};
+    in.node_gap = {0.0}, in.gap_reduction = {0.0}, in.node_active = {1}, in.node_touched = {0}, in.node_stiffness = {0.0};
+    in.segments = {{0, 1, 4, 3}, {1, 2, 5, 4}};
+    in.segment_is_triangle = {0, 0}, in.segment_gap = {0.1, 0.1}, in.segment_stiffness = {1000.0, 1000.0};
+    in.segment_active = {1, 1}, in.segment_owner = {-1, -1}, in.segment_owner_kind = {0, 0};
+    in.main_nodes = {0, 1, 2, 3, 4, 5};
+    in.largest_gap = 0.1, in.margin = 0.1, in.damping = 0.0;
+    contact.interfaces.push_back(in);
+    contact.results.resize(1);
+    contact.fx.assign(7, 0.0), contact.fy.assign(7, 0.0), contact.fz.assign(7, 0.0);
+  }
+  ContactStep run() {
+    double added = 0.0;
+    return contact_forces(model, contact, nodes, 0.0, 1e-6, 0.9, added);
+  }
+};
+
+}  // namespace
+
+TEST(ContactPass, ForceAlongTheNormalEqualAndOpposite) {
+  TwoSegments s(0.5, 0.25, 0.04);  // above the first square: p = 0.06
+  s.run();
+  EXPECT_NEAR(s.nodes.fz[6], penalty_force(1000.0, 0.1, 0.06), 1e-12);
+  EXPECT_NEAR(s.nodes.fx[6], 0.0, 1e-15);
+  double total[3] = {0, 0, 0};
+  for (std::size_t k = 0; k < 7; ++k) total[0] += s.nodes.fx[k], total[1] += s.nodes.fy[k], total[2] += s.nodes.fz[k];
+  for (double t : total) EXPECT_NEAR(t, 0.0, 1e-12);  // momentum: the segment takes the opposite force
+  EXPECT_EQ(s.contact.results[0].active_nodes, 1);
+  EXPECT_NEAR(s.contact.results[0].elastic_energy, elastic_energy(1000.0, 0.1, 0.06), 1e-12);
+}
+
+TEST(ContactPass, OverlappingGapsAtASharedEdgeDoubleTheForce) {
+  TwoSegments s(1.0, 0.5, 0.04);  // above the shared edge x = 1: each segment pushes along z
+  s.run();
+  EXPECT_NEAR(s.nodes.fz[6], 2.0 * penalty_force(1000.0, 0.1, 0.06), 1e-12);
+}
+
+TEST(ContactPass, NoForceOutsideTheGapNorBesideTheEdgeBeyondIt) {
+  TwoSegments above(0.5, 0.5, 0.1 * (1.0 + 1e-9));
+  above.run();
+  EXPECT_EQ(above.nodes.fz[6], 0.0);
+  // Beside the free edge x = 2 at distance 0.08 radially (0.06 out, 0.0529 up): pushed radially away from the edge.
+  TwoSegments beside(2.06, 0.5, std::sqrt(0.08 * 0.08 - 0.06 * 0.06));
+  beside.run();
+  const double f = penalty_force(1000.0, 0.1, 0.02);
+  EXPECT_NEAR(beside.nodes.fx[6], f * 0.06 / 0.08, 1e-9);
+  EXPECT_NEAR(beside.nodes.fz[6], f * std::sqrt(0.08 * 0.08 - 0.06 * 0.06) / 0.08, 1e-9);
+}
+
+TEST(ContactPass, StepOfAClosingNodeIsTheSmallerOfKinematicAndStiffness) {
+  TwoSegments s(0.5, 0.25, 0.04);
+  s.nodes.vz[6] = -100.0;  // closing at 100
+  const ContactStep step = s.run();
+  const double kt = tangent_stiffness(1000.0, 0.1, 0.06);
+  const double expected = 0.9 * std::min(kinematic_step(0.1, 0.06, 100.0), stiffness_step(0.5, kt, 0.0));
+  EXPECT_NEAR(step.dt, expected, 1e-15);
+  EXPECT_EQ(step.node, 6);
+}
+
+// The bucket sort finds exactly the pairs a brute-force test of every node against every grown segment box finds.
+TEST(ContactSearch, BucketSortMatchesBruteForceOnRandomClouds) {
+  std::mt19937 rng(12345);
+  std::uniform_real_distribution<double> u(0.0, 10.0), small(-0.5, 0.5);
+  for (int trial = 0; trial < 5; ++trial) {
+    NodalState nodes;
+    const std::size_t secondary = 300, segments = 200;
+    nodes.resize(secondary + 4 * segments);
+    ContactInterface in;
+    for (std::size_t k = 0; k < secondary; ++k) {
+      nodes.x[k] = u(rng), nodes.y[k] = u(rng), nodes.z[k] = u(rng);
+      in.secondary_nodes.push_back(static_cast<std::int32_t>(k));
+    }
+    for (std::size_t s = 0; s < segments; ++s) {
+      const double cx = u(rng), cy = u(rng), cz = u(rng);
+      std::array<std::int32_t, 4> seg{};
+      for (int a = 0; a < 4; ++a) {
+        const std::size_t k = secondary + 4 * s + static_cast<std::size_t>(a);
+        nodes.x[k] = cx + small(rng), nodes.y[k] = cy + small(rng), nodes.z[k] = cz + small(rng);
+        seg[static_cast<std::size_t>(a)] = static_cast<std::int32_t>(k);
+      }
+      in.segments.push_back(seg);
+    }
+    in.segment_active.assign(segments, 1), in.node_active.assign(secondary, 1);
+    in.largest_gap = 0.2, in.margin = 0.3;
+    sort_candidates(in, nodes);
+    std::set<std::pair<int, int>> found, expected;
+    for (std::size_t q = 0; q < in.candidate_node.size(); ++q) found.emplace(in.candidate_node[q], in.candidate_segment[q]);
+    EXPECT_EQ(found.size(), in.candidate_node.size()) << "a pair was listed twice";
+    const double reach = 0.5;
+    for (std::size_t i = 0; i < secondary; ++i)
+      for (std::size_t s = 0; s < segments; ++s) {
+        bool inside = true;
+        const double p[3] = {nodes.x[i], nodes.y[i], nodes.z[i]};
+        const std::vector<double>* c[3] = {&nodes.x, &nodes.y, &nodes.z};
+        for (int d = 0; d < 3; ++d) {
+          double lo = 1e300, hi = -1e300;
+          for (std::int32_t n : in.segments[s]) lo = std::min(lo, (*c[d])[static_cast<std::size_t>(n)]), hi = std::max(hi, (*c[d])[static_cast<std::size_t>(n)]);
+          inside = inside && p[d] >= lo - reach && p[d] <= hi + reach;
+        }
+        if (inside) expected.emplace(static_cast<int>(i), static_cast<int>(s));
+      }
+    EXPECT_EQ(found, expected);
+    EXPECT_GT(expected.size(), 10u);
+  }
+}
