@@ -26,7 +26,7 @@ double largest_speed(const ContactInterface& in, const NodalState& n) {
 }  // namespace
 
 ContactStep contact_forces(const Model& m, ContactState& c, NodalState& nodes, double time, double dt_previous,
-                           double scale, double& added_mass) {
+                           double dt_estimate, double scale, double& added_mass) {
   ContactStep step;
   for (std::int32_t node : c.touched) {
     const auto k = static_cast<std::size_t>(node);
@@ -43,8 +43,14 @@ ContactStep contact_forces(const Model& m, ContactState& c, NodalState& nodes, d
     if (time < in.t_start || time > in.t_stop) continue;
     // Search only when the nodes may have moved by more than the margin since the last sort (eq. C-12): a node
     // and a segment closing at the largest speed each.
-    in.motion += largest_speed(in, nodes) * dt_previous;
-    if (2.0 * in.motion > in.margin) sort_candidates(in, nodes);
+    const double speed = largest_speed(in, nodes);
+    in.motion += speed * dt_previous;
+    if (2.0 * in.motion > in.margin) {
+      // The margin covers a few steps of the fastest node, so that a node closing in is a candidate, and under
+      // the kinematic step, before it can reach the gap (eq. C-12).
+      in.margin = std::max(in.largest_gap, 4.0 * speed * (std::isfinite(dt_estimate) ? dt_estimate : dt_previous));
+      sort_candidates(in, nodes);
+    }
     // Idel: segments of deleted elements leave the surface (checked by the time loop's deleted flags).
     const double release_step = std::max(in.dt_minimum, rc.dt_inter_del.given ? rc.dt_inter_del.minimum : 0.0);
     const double mass_step = rc.dt_inter_cst.given ? rc.dt_inter_cst.minimum : 0.0;
@@ -70,12 +76,11 @@ ContactStep contact_forces(const Model& m, ContactState& c, NodalState& nodes, d
       const double full_gap = in.pair_gap(i, s);
       if (in.gap_reduction[i] > 0.0) in.gap_reduction[i] = std::min(in.gap_reduction[i], std::max(0.0, full_gap - cp.distance));
       const double g = full_gap - in.gap_reduction[i];
-      // No force outside the gap, nor within 1e-10 g of the mid-surface (released, eq. C-4).
-      if (!(cp.distance < g) || cp.distance < 1e-10 * g) {
+      const double d = cp.distance, p = g - d;
+      if (d < 1e-10 * g) {  // at the mid-surface: released (eq. C-4)
         *friction[0] = *friction[1] = *friction[2] = 0.0;
         continue;
       }
-      const double d = cp.distance, p = g - d;
       const double normal[3] = {(p_node[0] - cp.point[0]) / d, (p_node[1] - cp.point[1]) / d, (p_node[2] - cp.point[2]) / d};
       double vr[3];  // velocity of the node relative to the contact point
       for (int k = 0; k < 3; ++k)
@@ -83,6 +88,15 @@ ContactStep contact_forces(const Model& m, ContactState& c, NodalState& nodes, d
                 (cp.weight[0] * v[0][k] + cp.weight[1] * v[1][k] + cp.weight[2] * v[2][k] + cp.weight[3] * v[3][k]);
       const double vn = vr[0] * normal[0] + vr[1] * normal[1] + vr[2] * normal[2];
       const double penetration_rate = -vn;
+      if (!(d < g)) {
+        // Outside the gap: no force, but a candidate closing in must not cross the mid-surface within a step: the
+        // kinematic step 0.5 (g - p) / (dp/dt) = 0.5 d / (dp/dt) holds for it too (eq. C-11).
+        *friction[0] = *friction[1] = *friction[2] = 0.0;
+        const double approach = scale * kinematic_step(g, p, penetration_rate);
+        if (approach < res.dt && !(release_step > 0.0 && approach < release_step))
+          res.dt = approach, res.dt_node = static_cast<std::int32_t>(n);
+        continue;
+      }
       const double k0 = in.pair_stiffness(i, s);
       const double kt = tangent_stiffness(k0, g, p);
       double mass = nodes.mass[n];

@@ -220,7 +220,8 @@ RunSummary run_simulation(const Model& m, const SolverOptions& options, std::ost
     if (!s.contact.interfaces.empty()) {
       if (elements_deleted)
         contact::remove_deleted_segments(s.contact, {&s.shells.deleted, &s.shells3.deleted, &s.bricks.deleted});
-      const contact::ContactStep cs = contact::contact_forces(m, s.contact, n, s.time, s.dt, scale, s.mass_added);
+      const contact::ContactStep cs = contact::contact_forces(m, s.contact, n, s.time, s.dt, dt_elements, scale,
+                                                                s.mass_added);
       if (cs.dt < dt_elements) {
         dt_elements = cs.dt;
         controlling = fmt::format("INTER {} NODE {}", m.type7_interfaces[static_cast<std::size_t>(cs.interface)].user_id,

@@ -132,7 +132,7 @@ struct TwoSegments {
   }
   ContactStep run() {
     double added = 0.0;
-    return contact_forces(model, contact, nodes, 0.0, 1e-6, 0.9, added);
+    return contact_forces(model, contact, nodes, 0.0, 1e-6, 1e-6, 0.9, added);
   }
 };
 

@@ -26,10 +26,10 @@ struct ContactStep {
 };
 
 // One cycle at x^n with v^(n-1/2): forces added to the nodal forces (and kept in state.fx..), energies and steps
-// per interface. `dt_previous` is dt^(n-1/2); `scale` the /DT scale of the steps; /DT/INTER/CST mass goes into
-// nodes.mass and `added_mass`.
+// per interface. `dt_previous` is dt^(n-1/2), `dt_estimate` the elements' step for the coming cycle (search
+// margin); `scale` the /DT scale of the steps; /DT/INTER/CST mass goes into nodes.mass and `added_mass`.
 ContactStep contact_forces(const Model& model, ContactState& state, NodalState& nodes, double time,
-                           double dt_previous, double scale, double& added_mass);
+                           double dt_previous, double dt_estimate, double scale, double& added_mass);
 
 // Idel 1, 2 (type7.md §2): segments whose element has been deleted leave the main surface. `deleted` holds the
 // deletion flags of each element kind (nullptr for a kind without them).
