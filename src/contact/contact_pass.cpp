@@ -56,7 +56,11 @@ ContactStep contact_forces(const Model& m, ContactState& c, NodalState& nodes, d
     const double mass_step = rc.dt_inter_cst.given ? rc.dt_inter_cst.minimum : 0.0;
     const double viss = in.damping;
     const double stiffness_factor = std::sqrt(1.0 + viss * viss) - viss;
-    std::fill(in.node_touched.begin(), in.node_touched.end(), 0);
+    for (std::int32_t i : in.touched_list) {
+      in.node_touched[static_cast<std::size_t>(i)] = 0;
+      in.node_tangent_sum[static_cast<std::size_t>(i)] = 0.0;
+    }
+    in.touched_list.clear();
 
     for (std::size_t q = 0; q < in.candidate_node.size(); ++q) {
       const auto i = static_cast<std::size_t>(in.candidate_node[q]);
@@ -95,6 +99,13 @@ ContactStep contact_forces(const Model& m, ContactState& c, NodalState& nodes, d
         const double approach = scale * kinematic_step(g, p, penetration_rate);
         if (approach < res.dt && !(release_step > 0.0 && approach < release_step))
           res.dt = approach, res.dt_node = static_cast<std::int32_t>(n);
+        // A node near the gap may enter it within a step or two and meet the penalty's initial stiffness K0: the
+        // force then acts over the mean of that step and the one before, so both must already be stable for K0.
+        // Nodes within a gap (plus two steps of their normal motion) of entering keep the contact step.
+        if (d - g < g + 2.0 * std::abs(penetration_rate) * dt_estimate) {
+          if (in.node_touched[i] == 0) in.node_touched[i] = 1, in.touched_list.push_back(static_cast<std::int32_t>(i));
+          in.node_tangent_sum[i] += in.pair_stiffness(i, s);
+        }
         continue;
       }
       const double k0 = in.pair_stiffness(i, s);
@@ -102,7 +113,7 @@ ContactStep contact_forces(const Model& m, ContactState& c, NodalState& nodes, d
       double mass = nodes.mass[n];
       // Interface step of the pair (eq. C-11); /DT/INTER/DEL (or the card's dtmin) releases the pair instead,
       // /DT/INTER/CST adds mass to the node so that its stiffness step stays at the minimum.
-      double pair_step = scale * std::min(kinematic_step(g, p, penetration_rate), stiffness_step(mass, kt, viss));
+      const double pair_step = scale * std::min(kinematic_step(g, p, penetration_rate), stiffness_step(mass, kt, viss));
       if (release_step > 0.0 && pair_step < release_step) {
         ++res.released;
         *friction[0] = *friction[1] = *friction[2] = 0.0;
@@ -114,9 +125,12 @@ ContactStep contact_forces(const Model& m, ContactState& c, NodalState& nodes, d
         added_mass += needed - mass;
         res.added_mass += needed - mass;
         nodes.mass[n] = mass = needed;
-        pair_step = scale * std::min(kinematic_step(g, p, penetration_rate), stiffness_step(mass, kt, viss));
       }
-      if (pair_step < res.dt) res.dt = pair_step, res.dt_node = static_cast<std::int32_t>(n);
+      // The stiffness step is taken per node below, with the tangent stiffnesses of all its pairs summed (a node
+      // at an edge or corner feels two or three segments at once); here the kinematic part.
+      const double closing = scale * kinematic_step(g, p, penetration_rate);
+      if (closing < res.dt) res.dt = closing, res.dt_node = static_cast<std::int32_t>(n);
+      in.node_tangent_sum[i] += kt;
       // Normal force: penalty plus the pushing part of the damping (eqs. C-5, C-8).
       const double elastic = penalty_force(k0, g, p);
       const double damping = damping_force(viss, kt, mass, penetration_rate);
@@ -144,7 +158,8 @@ ContactStep contact_forces(const Model& m, ContactState& c, NodalState& nodes, d
       const double force[3] = {fn * normal[0] + ft[0], fn * normal[1] + ft[1], fn * normal[2] + ft[2]};
       for (int k = 0; k < 3; ++k) res.normal_force[static_cast<std::size_t>(k)] += fn * normal[k];
       for (int k = 0; k < 3; ++k) res.tangential_force[static_cast<std::size_t>(k)] += ft[k];
-      if (!in.node_touched[i]) in.node_touched[i] = 1, ++res.active_nodes;
+      if (in.node_touched[i] == 0) in.touched_list.push_back(static_cast<std::int32_t>(i));
+      if (in.node_touched[i] != 2) in.node_touched[i] = 2, ++res.active_nodes;
       // Equal and opposite: the node gets `force`, the segment nodes -weight_a force (momentum conserved).
       auto apply = [&](std::size_t k, double w) {
         const double gx = w * force[0], gy = w * force[1], gz = w * force[2];
@@ -158,6 +173,15 @@ ContactStep contact_forces(const Model& m, ContactState& c, NodalState& nodes, d
       const int corners = in.segment_is_triangle[s] ? 3 : 4;
       for (int a = 0; a < corners; ++a)
         if (cp.weight[a] != 0.0) apply(static_cast<std::size_t>(in.segments[s][static_cast<std::size_t>(a)]), -cp.weight[a]);
+    }
+    // Stiffness step per node (eq. C-11) on the sum of its pairs' tangent stiffnesses plus the stiffness of its own
+    // elements: the node sits between the contact springs and its element, and both act in the same cycle.
+    for (std::int32_t i : in.touched_list) {
+      const auto ui = static_cast<std::size_t>(i);
+      const auto n = static_cast<std::size_t>(in.secondary_nodes[ui]);
+      const double stiffness = in.node_tangent_sum[ui] + in.node_element_stiffness[ui];
+      const double node_step = scale * stiffness_step(nodes.mass[n], stiffness, viss);
+      if (node_step < res.dt) res.dt = node_step, res.dt_node = static_cast<std::int32_t>(n);
     }
     if (res.dt < step.dt) step.dt = res.dt, step.interface = static_cast<int>(f), step.node = res.dt_node;
   }

@@ -76,7 +76,10 @@ ElementFacts facts_of(const Model& m, ElementRef ref, double area) {
   const Property& prop = m.properties[static_cast<std::size_t>(part.property)];
   const Material& mat = m.materials[static_cast<std::size_t>(part.material)];
   if (ref.kind == ElementKind::Brick8) {
-    f.stiffness = mat.bulk_modulus() * area * area / brick_volume(m, ref.index);
+    // B A^2 / V; for a node (area 0) the element's own face, A = V^(2/3): B V^(1/3).
+    const double volume = brick_volume(m, ref.index);
+    const double face = area > 0.0 ? area : std::cbrt(volume * volume);
+    f.stiffness = mat.bulk_modulus() * face * face / volume;
   } else {
     f.shell = true;
     f.thickness = prop.shell.thickness;
@@ -148,6 +151,7 @@ ContactState setup_contact(const Model& m, NodalState& nodes, std::vector<std::s
     for (std::int32_t n : in.secondary_nodes) {
       in.node_gap.push_back(0.5 * node_thickness[static_cast<std::size_t>(n)]);
       in.node_stiffness.push_back(in.stiffness_scale * node_stiffness[static_cast<std::size_t>(n)]);
+      in.node_element_stiffness.push_back(node_stiffness[static_cast<std::size_t>(n)]);
     }
     if (!in.variable_gap) {
       double gap = card.gapmin;
@@ -170,6 +174,7 @@ ContactState setup_contact(const Model& m, NodalState& nodes, std::vector<std::s
     in.gap_reduction.assign(in.secondary_nodes.size(), 0.0);
     in.node_active.assign(in.secondary_nodes.size(), 1);
     in.node_touched.assign(in.secondary_nodes.size(), 0);
+    in.node_tangent_sum.assign(in.secondary_nodes.size(), 0.0);
     if (!(in.largest_gap > 0.0))
       throw DeckError(card.where, fmt::format("/INTER/TYPE7/{}", card.user_id), "Gapmin",
                       "a positive gap (the main surface gives none: no thickness and no side length)", "0");

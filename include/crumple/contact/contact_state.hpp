@@ -57,6 +57,7 @@ struct ContactInterface {
   std::vector<std::uint8_t> segment_owner_kind;       // ElementKind of the owner
   int stiffness_mode = 0;                             // Istf: 0 main side, 1 Stfac, 2..5 combined with the node's
   std::vector<double> node_stiffness;                 // stiffness of the secondary side per node (Istf 2..5) [F/L]
+  std::vector<double> node_element_stiffness;         // stiffest attached element's K0-like stiffness (eq. C-11) [F/L]
   bool variable_gap = false;
   double gap_min = 0.0, gap_max = std::numeric_limits<double>::infinity(), gap_scale = 1.0;
   double largest_gap = 0.0;                           // bound of every pair's gap, for the search [L]
@@ -70,6 +71,8 @@ struct ContactInterface {
   std::vector<std::int32_t> applied_node;
   std::vector<double> applied_x, applied_y, applied_z;
   std::vector<std::uint8_t> node_touched;       // scratch: secondary node had a force this cycle
+  std::vector<std::int32_t> touched_list;       // scratch: those nodes (index into secondary_nodes)
+  std::vector<double> node_tangent_sum;         // scratch: sum of the node's pairs' tangent stiffnesses [F/L]
   double margin = 0.0;                          // search margin beyond the gap [L]
   double bucket_scale = 0.2;                    // Bumult: bucket size factor
   double motion = std::numeric_limits<double>::infinity();  // accumulated largest nodal motion since the sort [L]
