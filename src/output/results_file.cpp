@@ -171,13 +171,14 @@ struct ResultsFile::Impl {
   std::array<std::size_t, kElementKinds> elements{};
   std::size_t element_groups = 0;
   std::vector<Frame> frames;
+  bool contact_field = false;  // frames carry contact_force (the model has contact interfaces)
 
-  // Histories: 9 scalar series, then rigid_wall_force, node_values, rigid_body_values.
-  static constexpr std::size_t kScalars = 9;
-  std::array<Series, kScalars + 3> series;
+  // Histories: 9 scalar series, then rigid_wall_force, node_values, rigid_body_values, interface_values.
+  static constexpr std::size_t kScalars = 9, kWide = 4;
+  std::array<Series, kScalars + kWide> series;
   bool widths_known = false;
-  std::array<std::size_t, 3> widths{};        // values per row of the 2-D series
-  std::array<std::vector<double>, kScalars + 3> pending;  // rows not yet appended, row-major
+  std::array<std::size_t, kWide> widths{};        // values per row of the 2-D series
+  std::array<std::vector<double>, kScalars + kWide> pending;  // rows not yet appended, row-major
   std::size_t pending_rows = 0;
 
   [[noreturn]] void fail(const std::string& what) const {
@@ -307,9 +308,10 @@ struct ResultsFile::Impl {
 
   void create_history() {
     Handle history = group(file.get(), "history");
-    constexpr std::array<const char*, kScalars + 3> names{
+    constexpr std::array<const char*, kScalars + kWide> names{
         "time",    "dt",      "internal",      "kinetic_translational", "kinetic_rotational", "hourglass",
-        "contact", "external_work", "total", "rigid_wall_force",      "node_values",        "rigid_body_values"};
+        "contact", "external_work", "total", "rigid_wall_force",      "node_values",        "rigid_body_values",
+        "interface_values"};
     for (std::size_t s = 0; s < series.size(); ++s) {
       series[s].name = names[s];
       series[s].two_d = s >= kScalars;
@@ -337,7 +339,7 @@ struct ResultsFile::Impl {
   // Creates the 2-D series once their widths are known (first row, or close() with no row: width 0).
   void create_wide_series() {
     Handle history(check(H5Gopen2(file.get(), "history", H5P_DEFAULT), "cannot open /history"), H5Gclose);
-    for (std::size_t w = 0; w < 3; ++w) {
+    for (std::size_t w = 0; w < kWide; ++w) {
       Series& s = series[kScalars + w];
       s.columns = widths[w];
       create_series(history.get(), s);
@@ -373,13 +375,13 @@ struct ResultsFile::Impl {
   }
 
   void append_history(const HistoryRow& row) {
-    const std::array<const std::vector<double>*, 3> wide{&row.rigid_wall_force, &row.node_values,
-                                                         &row.rigid_body_values};
+    const std::array<const std::vector<double>*, kWide> wide{&row.rigid_wall_force, &row.node_values,
+                                                             &row.rigid_body_values, &row.interface_values};
     if (!widths_known) {
-      for (std::size_t w = 0; w < 3; ++w) widths[w] = wide[w]->size();
+      for (std::size_t w = 0; w < kWide; ++w) widths[w] = wide[w]->size();
       create_wide_series();
     }
-    for (std::size_t w = 0; w < 3; ++w)
+    for (std::size_t w = 0; w < kWide; ++w)
       if (wide[w]->size() != widths[w])
         throw std::runtime_error(fmt::format("results file {}: history row at time {} has {} {} values, the first row "
                                              "had {}",
@@ -389,7 +391,7 @@ struct ResultsFile::Impl {
                                                row.kinetic_rotational, row.hourglass, row.contact,
                                                row.external_work,      row.total};
     for (std::size_t s = 0; s < kScalars; ++s) pending[s].push_back(scalars[s]);
-    for (std::size_t w = 0; w < 3; ++w)
+    for (std::size_t w = 0; w < kWide; ++w)
       pending[kScalars + w].insert(pending[kScalars + w].end(), wide[w]->begin(), wide[w]->end());
     ++pending_rows;
     if (pending_rows >= kHistoryBuffer) flush_history();
@@ -498,6 +500,13 @@ struct ResultsFile::Impl {
       buffer[3 * i] = ns.vx[i], buffer[3 * i + 1] = ns.vy[i], buffer[3 * i + 2] = ns.vz[i];
     }
     dataset(frame.get(), "velocity", buffer.data(), {nodes, 3});
+    if (!state.contact.interfaces.empty()) {  // only decks with contact pay for this field
+      for (std::size_t i = 0; i < nodes; ++i) {
+        buffer[3 * i] = state.contact.fx[i], buffer[3 * i + 1] = state.contact.fy[i], buffer[3 * i + 2] = state.contact.fz[i];
+      }
+      dataset(frame.get(), "contact_force", buffer.data(), {nodes, 3});
+      contact_field = true;
+    }
     write_shells(frame.get(), model, state, ElementKind::Shell4);
     write_shells(frame.get(), model, state, ElementKind::Shell3);
     frames.push_back(std::move(f));
@@ -538,6 +547,8 @@ struct ResultsFile::Impl {
       const std::string f = "/frames/" + frame->name;
       attribute_xml("displacement", "Vector", "Node", item<double>(fmt::format("{} 3", nodes), f + "/displacement"));
       attribute_xml("velocity", "Vector", "Node", item<double>(fmt::format("{} 3", nodes), f + "/velocity"));
+      if (contact_field)
+        attribute_xml("contact_force", "Vector", "Node", item<double>(fmt::format("{} 3", nodes), f + "/contact_force"));
       if (k.kind == ElementKind::Shell4 || k.kind == ElementKind::Shell3) {
         const std::string shell = f + "/" + k.group;
         attribute_xml("stress", "Vector", "Cell", item<double>(fmt::format("{} 3", n), shell + "/stress"));

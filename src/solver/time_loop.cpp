@@ -137,6 +137,12 @@ RunSummary run_simulation(const Model& m, const SolverOptions& options, std::ost
       for (double v : {n.x[k], n.y[k], n.z[k], n.vx[k], n.vy[k], n.vz[k], b.omega[0], b.omega[1], b.omega[2]})
         row.rigid_body_values.push_back(v);
     }
+    for (const InterfaceResult& r : s.contact.results) {
+      row.interface_values.insert(row.interface_values.end(), r.normal_force.begin(), r.normal_force.end());
+      row.interface_values.insert(row.interface_values.end(), r.tangential_force.begin(), r.tangential_force.end());
+      for (double v : {r.elastic_energy, r.friction_work, r.absorbed, static_cast<double>(r.active_nodes)})
+        row.interface_values.push_back(v);
+    }
     results->write_history(row);
   };
 

@@ -20,6 +20,9 @@ struct HistoryRow {
   std::vector<double> rigid_wall_force;  // 3 per rigid wall (force of the wall on its nodes)
   std::vector<double> node_values;       // per /TH/NODE node: x y z vx vy vz (6 values)
   std::vector<double> rigid_body_values; // per rigid body: x y z vx vy vz wx wy wz (9 values)
+  // per TYPE7 interface: normal force (3), tangential force (3) on the secondary nodes, elastic energy, friction
+  // work, absorbed energy, active nodes (10 values)
+  std::vector<double> interface_values;
 };
 
 class ResultsFile {
