@@ -110,21 +110,14 @@ ContactStep contact_forces(const Model& m, ContactState& c, NodalState& nodes, d
       }
       const double k0 = in.pair_stiffness(i, s);
       const double kt = tangent_stiffness(k0, g, p);
-      double mass = nodes.mass[n];
-      // Interface step of the pair (eq. C-11); /DT/INTER/DEL (or the card's dtmin) releases the pair instead,
-      // /DT/INTER/CST adds mass to the node so that its stiffness step stays at the minimum.
+      const double mass = nodes.mass[n];
+      // Interface step of the pair (eq. C-11): /DT/INTER/DEL (or the card's dtmin) releases the pair when it
+      // would fall below the minimum (/DT/INTER/CST acts per node, below).
       const double pair_step = scale * std::min(kinematic_step(g, p, penetration_rate), stiffness_step(mass, kt, viss));
       if (release_step > 0.0 && pair_step < release_step) {
         ++res.released;
         *friction[0] = *friction[1] = *friction[2] = 0.0;
         continue;
-      }
-      if (mass_step > 0.0 && scale * stiffness_step(mass, kt, viss) < mass_step) {
-        const double ratio = mass_step / (scale * stiffness_factor);
-        const double needed = 0.5 * kt * ratio * ratio;
-        added_mass += needed - mass;
-        res.added_mass += needed - mass;
-        nodes.mass[n] = mass = needed;
       }
       // The stiffness step is taken per node below, with the tangent stiffnesses of all its pairs summed (a node
       // at an edge or corner feels two or three segments at once); here the kinematic part.
@@ -176,11 +169,22 @@ ContactStep contact_forces(const Model& m, ContactState& c, NodalState& nodes, d
     }
     // Stiffness step per node (eq. C-11) on the sum of its pairs' tangent stiffnesses plus the stiffness of its own
     // elements: the node sits between the contact springs and its element, and both act in the same cycle.
+    // /DT/INTER/CST adds mass to the node so that this step stays at the minimum (reported as added mass); with
+    // /DT/INTER/DEL the pairs release themselves below the minimum, so the step does not follow them down.
     for (std::int32_t i : in.touched_list) {
       const auto ui = static_cast<std::size_t>(i);
       const auto n = static_cast<std::size_t>(in.secondary_nodes[ui]);
       const double stiffness = in.node_tangent_sum[ui] + in.node_element_stiffness[ui];
-      const double node_step = scale * stiffness_step(nodes.mass[n], stiffness, viss);
+      double node_step = scale * stiffness_step(nodes.mass[n], stiffness, viss);
+      if (mass_step > 0.0 && node_step < mass_step) {
+        const double ratio = mass_step / (scale * stiffness_factor);
+        const double needed = 0.5 * stiffness * ratio * ratio;
+        added_mass += needed - nodes.mass[n];
+        res.added_mass += needed - nodes.mass[n];
+        nodes.mass[n] = needed;
+        node_step = mass_step;
+      }
+      if (release_step > 0.0 && node_step < release_step) continue;
       if (node_step < res.dt) res.dt = node_step, res.dt_node = static_cast<std::int32_t>(n);
     }
     if (res.dt < step.dt) step.dt = res.dt, step.interface = static_cast<int>(f), step.node = res.dt_node;

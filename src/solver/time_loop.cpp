@@ -350,7 +350,14 @@ RunSummary run_simulation(const Model& m, const SolverOptions& options, std::ost
   listing.line(status == RunStatus::Normal ? "NORMAL TERMINATION" : "ERROR TERMINATION: " + message);
   if (s.deleted_by_time_step > 0)
     listing.line(fmt::format("ELEMENTS DELETED BELOW THEIR MINIMUM TIME STEP: {}", s.deleted_by_time_step));
-  if (s.mass_added > 0.0) listing.line(fmt::format("MASS ADDED BY /DT/NODA/CST: {:.6g}", s.mass_added));
+  if (s.mass_added > 0.0) listing.line(fmt::format("MASS ADDED BY /DT/NODA/CST OR /DT/INTER/CST: {:.6g}", s.mass_added));
+  for (std::size_t f = 0; f < s.contact.results.size(); ++f) {
+    const InterfaceResult& r = s.contact.results[f];
+    listing.line(fmt::format("INTER {}: largest p/g {:.4f}, absorbed energy {:.6g} (elastic now {:.6g}, damping {:.6g}, "
+                             "friction {:.6g}), contacts released below dtmin {}, mass added {:.6g}",
+                             m.type7_interfaces[f].user_id, r.max_penetration_ratio, r.absorbed, r.elastic_energy,
+                             r.damping_work, r.friction_work, r.released, r.added_mass));
+  }
   listing.line(fmt::format("TOTAL NUMBER OF CYCLES {}   ELAPSED {:.3f} s", s.cycle, wall));
 
   summary.cycles = s.cycle;
