@@ -78,7 +78,9 @@ ContactStep contact_forces(const Model& m, ContactState& c, NodalState& nodes, d
       const SegmentPoint cp = closest_point_on_segment(p_node, x, in.segment_is_triangle[s]);
       // Gap of the pair (eq. C-2), less the Inacti 5 / 6 reduction, which shrinks as the node moves out.
       const double full_gap = in.pair_gap(i, s);
-      if (in.gap_reduction[i] > 0.0) in.gap_reduction[i] = std::min(in.gap_reduction[i], std::max(0.0, full_gap - cp.distance));
+      // The corrected gap g - r only grows: to the node's distance (less the Inacti 6 clearance) as it moves out.
+      if (in.gap_reduction[i] > 0.0)
+        in.gap_reduction[i] = std::min(in.gap_reduction[i], std::max(0.0, full_gap - cp.distance + in.gap_clearance[i]));
       const double g = full_gap - in.gap_reduction[i];
       const double d = cp.distance, p = g - d;
       if (d < 1e-10 * g) {  // at the mid-surface: released (eq. C-4)

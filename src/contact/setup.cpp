@@ -172,6 +172,7 @@ ContactState setup_contact(const Model& m, NodalState& nodes, std::vector<std::s
     in.largest_gap = std::min(std::max(largest_segment + largest_node, in.gap_min), in.gap_max) * in.gap_scale;
     in.margin = in.largest_gap;  // re-sort after the nodes have moved by a gap (eq. C-12)
     in.gap_reduction.assign(in.secondary_nodes.size(), 0.0);
+    in.gap_clearance.assign(in.secondary_nodes.size(), 0.0);
     in.node_active.assign(in.secondary_nodes.size(), 1);
     in.node_touched.assign(in.secondary_nodes.size(), 0);
     in.node_tangent_sum.assign(in.secondary_nodes.size(), 0.0);
@@ -218,7 +219,10 @@ ContactState setup_contact(const Model& m, NodalState& nodes, std::vector<std::s
           break;
         }
         case 5: in.gap_reduction[i] = worst[i]; break;
-        case 6: in.gap_reduction[i] = worst[i] + 0.05 * (in.largest_gap - worst[i]); break;
+        case 6:
+          in.gap_clearance[i] = 0.05 * (in.largest_gap - worst[i]);
+          in.gap_reduction[i] = worst[i] + in.gap_clearance[i];
+          break;
         default: break;
       }
     }

@@ -47,6 +47,7 @@ struct ContactInterface {
   std::vector<std::int32_t> secondary_nodes;          // dense node indices
   std::vector<double> node_gap;                       // secondary gap per secondary node (variable gap) [L]
   std::vector<double> gap_reduction;                  // Inacti 5, 6: gap taken off per secondary node [L]
+  std::vector<double> gap_clearance;                  // Inacti 6: the extra 5 % kept while the reduction shrinks [L]
   std::vector<std::uint8_t> node_active;              // 0: Inacti 1 or no live element left
   std::vector<std::array<std::int32_t, 4>> segments;  // main segment nodes (triangles repeat the third)
   std::vector<std::uint8_t> segment_is_triangle;
