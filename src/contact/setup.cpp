@@ -110,6 +110,20 @@ ContactState setup_contact(const Model& m, NodalState& nodes, std::vector<std::s
   for (const Type7Interface& card : m.type7_interfaces) {
     ContactInterface in;
     InterfaceResult result;
+    // Fields the reader accepts but the module does not implement yet: said by name, never silently dropped.
+    const std::string label = fmt::format("INTER {}", card.user_id);
+    if (card.ifric > 0)
+      notes.push_back(fmt::format("{}: WARNING Ifric = {} (pressure- and velocity-dependent friction) is not "
+                                  "implemented yet: Coulomb friction with Fric = {:g} is used", label, card.ifric, card.fric));
+    if (card.ifiltr > 0)
+      notes.push_back(fmt::format("{}: WARNING Ifiltr = {} (friction filtering) is not implemented yet: no filter",
+                                  label, card.ifiltr));
+    if (card.ibc[0] || card.ibc[1] || card.ibc[2])
+      notes.push_back(fmt::format("{}: WARNING IBC (release of boundary conditions at impact) is not implemented yet: "
+                                  "the secondary nodes keep their boundary conditions", label));
+    if (card.irem_gap == 1)
+      notes.push_back(fmt::format("{}: WARNING Irem_gap = 1 is not implemented yet: no node is removed for a gap "
+                                  "larger than its elements", label));
     in.stiffness_scale = card.stfac > 0.0 ? card.stfac : 1.0;
     in.damping = card.viss > 0.0 ? card.viss : 0.05;
     in.friction_damping = card.visf > 0.0 ? card.visf : 1.0;
