@@ -51,3 +51,29 @@ TEST(TimeLoop, TinyHistoryIntervalGivesOneSamplePerCycle) {
 
 }  // namespace
 }  // namespace crumple::verification
+
+namespace crumple::verification {
+namespace {
+
+// A deck without /INTER/TYPE7 pays nothing for contact: no contact state is allocated, and the time loop's only
+// contact code is the test of an empty interface list (docs/performance.md, "Contact").
+TEST(TimeLoop, ContactFreeDeckCarriesNoContactState) {
+  Strip strip;
+  strip.nx = 2;
+  const std::string starter = node_cards(strip.nodes()) + shell_cards(1, strip.shells()) + part_card() +
+                              shell_property(0.01, 1) + elastic_material(7800.0, 2.1e11, 0.3) +
+                              node_group(1, strip.all()) + initial_velocity(1, 1.0, 0.0, 0.0, 1);
+  bool checked = false;
+  test::TempDir dir;
+  const RunResult run = run_deck(dir, starter, 1e-4, 1e-5, [&](const Model&, const SolverState& s) {
+    EXPECT_TRUE(s.contact.interfaces.empty());
+    EXPECT_TRUE(s.contact.fx.empty() && s.contact.fy.empty() && s.contact.fz.empty());
+    EXPECT_EQ(s.energy.contact, 0.0);
+    checked = true;
+  });
+  ASSERT_EQ(run.summary.status, RunStatus::Normal) << run.summary.message;
+  EXPECT_TRUE(checked);
+}
+
+}  // namespace
+}  // namespace crumple::verification
