@@ -2,6 +2,11 @@
 // Reads ../shared/qa/<case>/ref.extract: end-of-run values of the reference solver. Each line is
 // "<line number> <KEY> <value> [<scale>]".
 #include <filesystem>
+#include <sstream>
+
+#include "crumple/deck/reader.hpp"
+#include "crumple/solver/solver.hpp"
+#include "deck_files.hpp"
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -27,6 +32,16 @@ inline std::map<std::string, ReferenceValue> read_reference(const std::filesyste
     values[key] = v;
   }
   return values;
+}
+
+// Runs a QA deck to its end time with its results in a temporary folder; returns the run summary.
+inline RunSummary run_qa_deck(const std::filesystem::path& starter) {
+  const Deck deck = read_deck(starter);
+  TempDir dir;
+  SolverOptions options;
+  options.output_directory = dir.path();
+  std::ostringstream console;
+  return run_simulation(deck.model, options, console);
 }
 
 }  // namespace crumple::test

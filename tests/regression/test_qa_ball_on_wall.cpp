@@ -2,11 +2,6 @@
 // against the reference solver's end-of-run values.
 #include <gtest/gtest.h>
 
-#include <sstream>
-
-#include "crumple/deck/reader.hpp"
-#include "crumple/solver/solver.hpp"
-#include "deck_files.hpp"
 #include "qa_reference.hpp"
 
 namespace {
@@ -14,12 +9,7 @@ namespace {
 const std::filesystem::path kCase = std::filesystem::path(CRUMPLE_QA_DIR) / "ball_on_wall";
 
 TEST(QaBallOnWall, EndOfRunMatchesTheReference) {
-  const crumple::Deck deck = crumple::read_deck(kCase / "BOULE1V4_0000.rad");
-  crumple::test::TempDir dir;
-  crumple::SolverOptions options;
-  options.output_directory = dir.path();
-  std::ostringstream console;
-  const crumple::RunSummary run = crumple::run_simulation(deck.model, options, console);
+  const crumple::RunSummary run = crumple::test::run_qa_deck(kCase / "BOULE1V4_0000.rad");
   const auto ref = crumple::test::read_reference(kCase / "ref.extract");
 
   ASSERT_EQ(run.status, crumple::RunStatus::Normal) << run.message;

@@ -35,13 +35,17 @@ TEST(TimeLoop, NextOutputTimeJumpsOverManyIntervals) {
   EXPECT_LE(next, t + 2.0 * tiny + 2e-15);
 }
 
-// A /TFILE interval far below the step: one history call per cycle, and the run takes no longer for it.
-TEST(TimeLoop, TinyHistoryIntervalGivesOneSamplePerCycle) {
+// Two steel shells in a row, flying at 1 m/s along x.
+std::string moving_strip() {
   Strip strip;
   strip.nx = 2;
-  const std::string starter = node_cards(strip.nodes()) + shell_cards(1, strip.shells()) + part_card() +
-                              shell_property(0.01, 1) + elastic_material(7800.0, 2.1e11, 0.3) +
-                              node_group(1, strip.all()) + initial_velocity(1, 1.0, 0.0, 0.0, 1);
+  return node_cards(strip.nodes()) + shell_cards(1, strip.shells()) + part_card() + shell_property(0.01, 1) +
+         elastic_material(7800.0, 2.1e11, 0.3) + node_group(1, strip.all()) + initial_velocity(1, 1.0, 0.0, 0.0, 1);
+}
+
+// A /TFILE interval far below the step: one history call per cycle, and the run takes no longer for it.
+TEST(TimeLoop, TinyHistoryIntervalGivesOneSamplePerCycle) {
+  const std::string starter = moving_strip();
   long long calls = 0;
   test::TempDir dir;
   const RunResult run = run_deck(dir, starter, 1e-3, 1e-15, [&](const Model&, const SolverState&) { ++calls; });
@@ -49,20 +53,10 @@ TEST(TimeLoop, TinyHistoryIntervalGivesOneSamplePerCycle) {
   EXPECT_EQ(calls, run.summary.cycles);
 }
 
-}  // namespace
-}  // namespace crumple::verification
-
-namespace crumple::verification {
-namespace {
-
 // A deck without /INTER/TYPE7 pays nothing for contact: no contact state is allocated, and the time loop's only
 // contact code is the test of an empty interface list (docs/performance.md, "Contact").
 TEST(TimeLoop, ContactFreeDeckCarriesNoContactState) {
-  Strip strip;
-  strip.nx = 2;
-  const std::string starter = node_cards(strip.nodes()) + shell_cards(1, strip.shells()) + part_card() +
-                              shell_property(0.01, 1) + elastic_material(7800.0, 2.1e11, 0.3) +
-                              node_group(1, strip.all()) + initial_velocity(1, 1.0, 0.0, 0.0, 1);
+  const std::string starter = moving_strip();
   bool checked = false;
   test::TempDir dir;
   const RunResult run = run_deck(dir, starter, 1e-4, 1e-5, [&](const Model&, const SolverState& s) {
