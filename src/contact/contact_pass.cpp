@@ -51,7 +51,6 @@ ContactStep contact_forces(const Model& m, ContactState& c, NodalState& nodes, d
       in.margin = std::max(in.largest_gap, 4.0 * speed * (std::isfinite(dt_estimate) ? dt_estimate : dt_previous));
       sort_candidates(in, nodes);
     }
-    // Idel: segments of deleted elements leave the surface (checked by the time loop's deleted flags).
     const double release_step = std::max(in.dt_minimum, rc.dt_inter_del.given ? rc.dt_inter_del.minimum : 0.0);
     const double mass_step = rc.dt_inter_cst.given ? rc.dt_inter_cst.minimum : 0.0;
     const double viss = in.damping;
