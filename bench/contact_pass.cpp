@@ -54,7 +54,7 @@ struct Scene {
     for (auto* v : {&in.node_gap, &in.gap_reduction, &in.gap_clearance, &in.node_stiffness, &in.node_element_stiffness,
                     &in.node_tangent_sum})
       v->assign(secondary, 0.0);
-    in.node_active.assign(secondary, 1), in.node_touched.assign(secondary, 0);
+    in.node_active.assign(secondary, 1), in.node_touched.assign(secondary, 0), in.node_impacted.assign(secondary, 0);
     in.largest_gap = gap, in.margin = gap;
     contact.interfaces.push_back(in);
     contact.results.resize(1);

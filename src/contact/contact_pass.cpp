@@ -154,6 +154,8 @@ ContactStep contact_forces(const Model& m, ContactState& c, NodalState& nodes, d
       for (int k = 0; k < 3; ++k) res.tangential_force[static_cast<std::size_t>(k)] += ft[k];
       if (in.node_touched[i] == 0) in.touched_list.push_back(static_cast<std::int32_t>(i));
       if (in.node_touched[i] != 2) in.node_touched[i] = 2, ++res.active_nodes;
+      if (in.release_bc != 0 && !in.node_impacted[i]) c.bc_releases.emplace_back(static_cast<std::int32_t>(n), in.release_bc);
+      in.node_impacted[i] = 1;
       // Equal and opposite: the node gets `force`, the segment nodes -weight_a force (momentum conserved).
       auto apply = [&](std::size_t k, double w) {
         const double gx = w * force[0], gy = w * force[1], gz = w * force[2];

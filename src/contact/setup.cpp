@@ -118,9 +118,7 @@ ContactState setup_contact(const Model& m, NodalState& nodes, std::vector<std::s
     if (card.ifiltr > 0)
       notes.push_back(fmt::format("{}: WARNING Ifiltr = {} (friction filtering) is not implemented yet: no filter",
                                   label, card.ifiltr));
-    if (card.ibc[0] || card.ibc[1] || card.ibc[2])
-      notes.push_back(fmt::format("{}: WARNING IBC (release of boundary conditions at impact) is not implemented yet: "
-                                  "the secondary nodes keep their boundary conditions", label));
+    in.release_bc = static_cast<std::uint8_t>((card.ibc[0] ? 1u : 0u) | (card.ibc[1] ? 2u : 0u) | (card.ibc[2] ? 4u : 0u));
     if (card.irem_gap == 1)
       notes.push_back(fmt::format("{}: WARNING Irem_gap = 1 is not implemented yet: no node is removed for a gap "
                                   "larger than its elements", label));
@@ -189,6 +187,7 @@ ContactState setup_contact(const Model& m, NodalState& nodes, std::vector<std::s
     in.gap_clearance.assign(in.secondary_nodes.size(), 0.0);
     in.node_active.assign(in.secondary_nodes.size(), 1);
     in.node_touched.assign(in.secondary_nodes.size(), 0);
+    in.node_impacted.assign(in.secondary_nodes.size(), 0);
     in.node_tangent_sum.assign(in.secondary_nodes.size(), 0.0);
     if (!(in.largest_gap > 0.0))
       throw DeckError(card.where, fmt::format("/INTER/TYPE7/{}", card.user_id), "Gapmin",

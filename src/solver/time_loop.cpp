@@ -228,6 +228,10 @@ RunSummary run_simulation(const Model& m, const SolverOptions& options, std::ost
         contact::remove_deleted_segments(s.contact, {&s.shells.deleted, &s.shells3.deleted, &s.bricks.deleted});
       const contact::ContactStep cs = contact::contact_forces(m, s.contact, n, s.time, s.dt, dt_elements, scale,
                                                                 s.mass_added);
+      // IBC: boundary conditions of secondary nodes released at their first impact.
+      for (const auto& [node, dofs] : s.contact.bc_releases)
+        s.fixed[static_cast<std::size_t>(node)] &= static_cast<std::uint8_t>(~dofs);
+      s.contact.bc_releases.clear();
       if (cs.dt < dt_elements) {
         dt_elements = cs.dt;
         controlling = fmt::format("INTER {} NODE {}", m.type7_interfaces[static_cast<std::size_t>(cs.interface)].user_id,

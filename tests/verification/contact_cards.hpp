@@ -12,6 +12,7 @@ namespace crumple::verification {
 struct Type7Options {
   double gapmin = 0.0, stfac = 0.0, fric = 0.0, viss = 0.0, dtmin = 0.0;
   int istf = 0, igap = 0, inacti = 0, iform = 0;
+  std::string ibc = "000";  // IBC flags x y z
 };
 
 // /INTER/TYPE7/id: secondary node group, main surface, the fields of Type7Options, everything else default.
@@ -22,7 +23,7 @@ inline std::string type7_card(long long id, long long group, long long surface, 
   s += R(0.0) + R(0.0) + R(0.0) + "\n";
   s += R(0.0) + R(0.0) + R(0.0) + R(o.dtmin) + I(0) + I(0) + "\n";
   s += R(o.stfac) + R(o.fric) + R(o.gapmin) + R(0.0) + R(0.0) + "\n";
-  s += "       000" + std::string(20, ' ') + I(o.inacti) + R(o.viss) + R(0.0) + R(0.0) + "\n";
+  s += "       " + o.ibc + std::string(20, ' ') + I(o.inacti) + R(o.viss) + R(0.0) + R(0.0) + "\n";
   s += I(0) + I(0) + R(0.0) + I(o.iform) + I(0) + I(0) + R(0.0) + I(0) + "\n";
   return s;
 }

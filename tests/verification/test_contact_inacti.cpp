@@ -18,9 +18,11 @@ struct Outcome {
   RunResult run;
   double largest_force = 0.0, first_z = 0.0, last_z = 0.0;
   std::size_t penetrated = 0;
+  unsigned first_fixed = 0, last_fixed = 0;  // fixed-dof bits of the block's centre node
 };
 
-Outcome start_inside(int inacti) {
+// `ibc`: the IBC flags; `block_bcs`: a /BCS code for the block's nodes ("" for none).
+Outcome start_inside(int inacti, const std::string& ibc = "000", const std::string& block_bcs = "") {
   std::vector<NodeRow> nodes;
   std::vector<ShellRow> plate, block;
   for (int j = 0; j <= 4; ++j)
@@ -38,8 +40,9 @@ Outcome start_inside(int inacti) {
     for (int i = 0; i < 2; ++i) block.push_back({id++, 101 + i + 3 * j, 102 + i + 3 * j, 105 + i + 3 * j, 104 + i + 3 * j});
   for (long long k = 1; k <= 25; ++k) plate_nodes.push_back(k);
   Type7Options o;
-  o.gapmin = kGap, o.inacti = inacti;
-  const std::string starter = node_cards(nodes) + shell_cards(1, block) + shell_cards(2, plate) + part_card(1) +
+  o.gapmin = kGap, o.inacti = inacti, o.ibc = ibc;
+  const std::string bcs = block_bcs.empty() ? "" : boundary_condition(2, block_bcs, 1);
+  const std::string starter = bcs + node_cards(nodes) + shell_cards(1, block) + shell_cards(2, plate) + part_card(1) +
                               part_card(2) + shell_property(0.002, 3, 0.0, 24) + elastic_material(7800.0, 2.1e11, 0.3) +
                               node_group(1, block_nodes) + node_group(2, plate_nodes) + boundary_condition(1, "111 111", 2) +
                               surface_of_part(2, 2) + type7_card(1, 1, 2, o);
@@ -48,9 +51,13 @@ Outcome start_inside(int inacti) {
   bool first = true;
   out.run = run_deck(dir, starter, 2e-5, 1e-12, [&](const Model& m, const SolverState& s) {
     const std::size_t k = node_index(m, 105);  // the block's centre node
-    if (first) out.first_z = s.nodes.z[k] - s.dt * s.nodes.vz[k], out.penetrated = s.contact.results.at(0).initial_penetrations.size();
+    if (first) {
+      out.first_z = s.nodes.z[k] - s.dt * s.nodes.vz[k], out.penetrated = s.contact.results.at(0).initial_penetrations.size();
+      out.first_fixed = s.fixed[k];
+    }
     first = false;
     out.last_z = s.nodes.z[k];
+    out.last_fixed = s.fixed[k];
     for (long long n : block_nodes) out.largest_force = std::max(out.largest_force, std::abs(s.contact.fz[node_index(m, n)]));
   });
   return out;
@@ -84,6 +91,17 @@ TEST_P(InitialPenetration, DocumentedBehaviour) {
   }
   std::printf("[Inacti %d] listed %zu  largest force %.4g N (full %.4g)  z %.6e -> %.6e\n", inacti, o.penetrated,
               o.largest_force, full, o.first_z, o.last_z);
+}
+
+// IBC (type7.md §8): the block's nodes are fixed in x and y (and free in z); IBC = 110 releases x and y at their
+// first impact, which is the first cycle here (they start inside the gap with Inacti 0). Without IBC the
+// boundary conditions stay.
+TEST(ContactIbc, ReleasesTheFlaggedBoundaryConditionsAtFirstImpact) {
+  const Outcome released = start_inside(0, "110", "110 000");
+  ASSERT_EQ(released.run.summary.status, RunStatus::Normal) << released.run.summary.message;
+  EXPECT_EQ(released.last_fixed & 7u, 0u) << "x and y released, z was free";
+  const Outcome kept = start_inside(0, "000", "110 000");
+  EXPECT_EQ(kept.last_fixed & 7u, 3u) << "without IBC the block stays fixed in x and y";
 }
 
 }  // namespace

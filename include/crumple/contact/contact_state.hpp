@@ -4,6 +4,7 @@
 #include <array>
 #include <cstdint>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace crumple {
@@ -43,12 +44,14 @@ struct ContactInterface {
   double t_start = 0.0, t_stop = std::numeric_limits<double>::infinity();  // [T]
   double dt_minimum = 0.0;       // card dtmin: contacts whose step falls below it are released [T]
   int idel = 0;
+  std::uint8_t release_bc = 0;   // IBC: fixed dofs (bits x 1, y 2, z 4) released at a secondary node's first impact
 
   std::vector<std::int32_t> secondary_nodes;          // dense node indices
   std::vector<double> node_gap;                       // secondary gap per secondary node (variable gap) [L]
   std::vector<double> gap_reduction;                  // Inacti 5, 6: gap taken off per secondary node [L]
   std::vector<double> gap_clearance;                  // Inacti 6: the extra 5 % kept while the reduction shrinks [L]
   std::vector<std::uint8_t> node_active;              // 0: Inacti 1 or no live element left
+  std::vector<std::uint8_t> node_impacted;            // 1 once the node has had a contact force (IBC)
   std::vector<std::array<std::int32_t, 4>> segments;  // main segment nodes (triangles repeat the third)
   std::vector<std::uint8_t> segment_is_triangle;
   std::vector<double> segment_gap;                    // gap per segment (Igap 0: the constant gap) [L]
@@ -103,6 +106,8 @@ struct ContactState {
   std::vector<InterfaceResult> results;
   std::vector<double> fx, fy, fz;  // per node: total contact force of the last cycle (all interfaces) [F]
   std::vector<std::int32_t> touched;  // nodes with a contact force this cycle (to clear and to sum work)
+  // IBC: (node, dof mask) whose boundary conditions the time loop releases after this cycle's pass.
+  std::vector<std::pair<std::int32_t, std::uint8_t>> bc_releases;
 };
 
 }  // namespace crumple
