@@ -9,10 +9,15 @@ namespace crumple::contact {
 
 void sort_candidates(ContactInterface& in, const NodalState& nodes) {
   const std::size_t segments = in.segments.size(), secondary = in.secondary_nodes.size();
-  // Keep the friction history of the pairs that survive the sort.
-  std::vector<std::int32_t> old_node = std::move(in.candidate_node), old_segment = std::move(in.candidate_segment);
-  std::vector<double> old_fx = std::move(in.friction_x), old_fy = std::move(in.friction_y),
-                      old_fz = std::move(in.friction_z);
+  // Keep the friction history of the pairs that survive the sort (swapped into the scratch, capacity kept).
+  ContactInterface::SortScratch& w = in.scratch;
+  std::swap(w.node, in.candidate_node), std::swap(w.segment, in.candidate_segment);
+  std::swap(w.fx, in.friction_x), std::swap(w.fy, in.friction_y), std::swap(w.fz, in.friction_z);
+  const std::vector<std::int32_t>& old_node = w.node;
+  const std::vector<std::int32_t>& old_segment = w.segment;
+  const std::vector<double>& old_fx = w.fx;
+  const std::vector<double>& old_fy = w.fy;
+  const std::vector<double>& old_fz = w.fz;
   in.candidate_node.clear(), in.candidate_segment.clear();
   in.friction_x.clear(), in.friction_y.clear(), in.friction_z.clear();
   in.motion = 0.0;
@@ -22,7 +27,9 @@ void sort_candidates(ContactInterface& in, const NodalState& nodes) {
   // Segment boxes grown by the reach: the largest gap plus the margin (a pair is a candidate when the node is
   // inside the grown box).
   const double reach = in.largest_gap + in.margin;
-  std::vector<double> lo(3 * segments), hi(3 * segments);
+  std::vector<double>& lo = w.lo;
+  std::vector<double>& hi = w.hi;
+  lo.assign(3 * segments, 0.0), hi.assign(3 * segments, 0.0);
   double box_lo[3] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
                       std::numeric_limits<double>::infinity()};
   double box_hi[3] = {-box_lo[0], -box_lo[1], -box_lo[2]};
@@ -64,7 +71,8 @@ void sort_candidates(ContactInterface& in, const NodalState& nodes) {
                static_cast<std::size_t>(cells[0]) + static_cast<std::size_t>(i);
   };
   // Counting sort of (cell, segment) entries: count, prefix sum, fill. O(segments x cells per segment).
-  std::vector<std::uint32_t> start(total_cells + 1, 0);
+  std::vector<std::uint32_t>& start = w.start;
+  start.assign(total_cells + 1, 0);
   auto for_cells = [&](std::size_t s, auto&& f) {
     const int i0 = cell_of(lo[3 * s], 0), i1 = cell_of(hi[3 * s], 0), j0 = cell_of(lo[3 * s + 1], 1),
               j1 = cell_of(hi[3 * s + 1], 1), k0 = cell_of(lo[3 * s + 2], 2), k1 = cell_of(hi[3 * s + 2], 2);
@@ -75,8 +83,10 @@ void sort_candidates(ContactInterface& in, const NodalState& nodes) {
   for (std::size_t s = 0; s < segments; ++s)
     if (in.segment_active[s]) for_cells(s, [&](std::size_t c) { ++start[c + 1]; });
   for (std::size_t c = 0; c < total_cells; ++c) start[c + 1] += start[c];
-  std::vector<std::int32_t> entries(start[total_cells]);
-  std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+  std::vector<std::int32_t>& entries = w.entries;
+  entries.assign(start[total_cells], 0);
+  std::vector<std::uint32_t>& fill = w.fill;
+  fill.assign(start.begin(), start.end() - 1);
   for (std::size_t s = 0; s < segments; ++s)
     if (in.segment_active[s]) for_cells(s, [&](std::size_t c) { entries[fill[c]++] = static_cast<std::int32_t>(s); });
 
@@ -110,7 +120,9 @@ void sort_candidates(ContactInterface& in, const NodalState& nodes) {
   auto key = [](std::int32_t a, std::int32_t b) {
     return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
   };
-  std::vector<std::pair<std::uint64_t, std::size_t>> before, after;
+  auto& before = w.before;
+  auto& after = w.after;
+  before.clear(), after.clear();
   for (std::size_t q = 0; q < old_node.size(); ++q)
     if (old_fx[q] != 0.0 || old_fy[q] != 0.0 || old_fz[q] != 0.0) before.emplace_back(key(old_node[q], old_segment[q]), q);
   if (before.empty()) return;

@@ -81,6 +81,15 @@ struct ContactInterface {
   double bucket_scale = 0.2;                    // Bumult: bucket size factor
   double motion = std::numeric_limits<double>::infinity();  // accumulated largest nodal motion since the sort [L]
   long long sorts = 0;                          // number of bucket sorts so far
+  // Scratch of the sort, kept between sorts so that a re-sort inside the cycle allocates nothing once warm.
+  struct SortScratch {
+    std::vector<double> lo, hi;                 // grown segment boxes
+    std::vector<std::uint32_t> start, fill;     // bucket offsets
+    std::vector<std::int32_t> entries;          // segments by bucket
+    std::vector<std::int32_t> node, segment;    // the previous sort's pairs
+    std::vector<double> fx, fy, fz;             // and their friction history
+    std::vector<std::pair<std::uint64_t, std::size_t>> before, after;  // history matching
+  } scratch;
 
   // Gap of the pair (secondary node i, segment s), before the Inacti reduction (eq. C-2).
   double pair_gap(std::size_t i, std::size_t s) const {
