@@ -211,13 +211,21 @@ double contact_work(ContactState& c, const NodalState& n, const std::vector<doub
   return total;
 }
 
-void remove_deleted_segments(ContactState& c, const std::array<const std::vector<std::uint8_t>*, kElementKinds>& deleted) {
+void remove_deleted_elements(ContactState& c, const std::array<const std::vector<std::uint8_t>*, kElementKinds>& deleted) {
+  auto is_deleted = [&](std::uint8_t kind, std::int32_t element) {
+    const std::vector<std::uint8_t>* flags = deleted[kind];
+    return flags != nullptr && element >= 0 && (*flags)[static_cast<std::size_t>(element)] != 0;
+  };
   for (ContactInterface& in : c.interfaces) {
     if (in.idel == 0) continue;
-    for (std::size_t s = 0; s < in.segments.size(); ++s) {
-      const std::vector<std::uint8_t>* flags = deleted[in.segment_owner_kind[s]];
-      const std::int32_t owner = in.segment_owner[s];
-      if (flags != nullptr && owner >= 0 && (*flags)[static_cast<std::size_t>(owner)]) in.segment_active[s] = 0;
+    for (std::size_t s = 0; s < in.segments.size(); ++s)
+      if (is_deleted(in.segment_owner_kind[s], in.segment_owner[s])) in.segment_active[s] = 0;
+    for (std::size_t i = 0; i + 1 < in.node_elements.size(); ++i) {
+      if (!in.node_active[i]) continue;
+      bool alive = false;
+      for (std::uint32_t k = in.node_elements[i]; k < in.node_elements[i + 1] && !alive; ++k)
+        alive = !is_deleted(in.element_kind_of_node[k], in.element_of_node[k]);
+      if (!alive) in.node_active[i] = 0;
     }
   }
 }

@@ -188,6 +188,26 @@ ContactState setup_contact(const Model& m, NodalState& nodes, std::vector<std::s
     in.node_active.assign(in.secondary_nodes.size(), 1);
     in.node_touched.assign(in.secondary_nodes.size(), 0);
     in.node_impacted.assign(in.secondary_nodes.size(), 0);
+    if (in.idel > 0) {
+      // Idel: a secondary node leaves the interface once none of its elements is left (type7.md §2).
+      std::vector<std::int32_t> slot(nodes.size(), -1);
+      for (std::size_t i = 0; i < in.secondary_nodes.size(); ++i) slot[static_cast<std::size_t>(in.secondary_nodes[i])] = static_cast<std::int32_t>(i);
+      std::vector<std::vector<std::pair<std::uint8_t, std::int32_t>>> attached(in.secondary_nodes.size());
+      for (int kind = 0; kind < kElementKinds; ++kind) {
+        const ElementTable& table = m.elements[static_cast<std::size_t>(kind)];
+        for (std::size_t e = 0; e < table.size(); ++e)
+          for (int a = 0; a < nodes_per_element(table.kind); ++a) {
+            const std::int32_t i = slot[static_cast<std::size_t>(table.nodes_of(e)[a])];
+            if (i >= 0) attached[static_cast<std::size_t>(i)].emplace_back(static_cast<std::uint8_t>(kind), static_cast<std::int32_t>(e));
+          }
+      }
+      in.node_elements.assign(1, 0);
+      for (std::size_t i = 0; i < attached.size(); ++i) {
+        for (const auto& [kind, e] : attached[i]) in.element_kind_of_node.push_back(kind), in.element_of_node.push_back(e);
+        in.node_elements.push_back(static_cast<std::uint32_t>(in.element_of_node.size()));
+        if (attached[i].empty()) in.node_active[i] = 0;  // a node of no element is never a secondary node
+      }
+    }
     in.node_tangent_sum.assign(in.secondary_nodes.size(), 0.0);
     if (!(in.largest_gap > 0.0))
       throw DeckError(card.where, fmt::format("/INTER/TYPE7/{}", card.user_id), "Gapmin",

@@ -225,7 +225,7 @@ RunSummary run_simulation(const Model& m, const SolverOptions& options, std::ost
     // the interface step joins the elements'.
     if (!s.contact.interfaces.empty()) {
       if (elements_deleted)
-        contact::remove_deleted_segments(s.contact, {&s.shells.deleted, &s.shells3.deleted, &s.bricks.deleted});
+        contact::remove_deleted_elements(s.contact, {&s.shells.deleted, &s.shells3.deleted, &s.bricks.deleted});
       const contact::ContactStep cs = contact::contact_forces(m, s.contact, n, s.time, s.dt, dt_elements, scale,
                                                                 s.mass_added);
       // IBC: boundary conditions of secondary nodes released at their first impact.

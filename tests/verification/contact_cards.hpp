@@ -11,7 +11,7 @@ namespace crumple::verification {
 
 struct Type7Options {
   double gapmin = 0.0, stfac = 0.0, fric = 0.0, viss = 0.0, dtmin = 0.0;
-  int istf = 0, igap = 0, inacti = 0, iform = 0;
+  int istf = 0, igap = 0, inacti = 0, iform = 0, idel = 0;
   std::string ibc = "000";  // IBC flags x y z
 };
 
@@ -19,7 +19,7 @@ struct Type7Options {
 inline std::string type7_card(long long id, long long group, long long surface, const Type7Options& o) {
   const std::string blank10(10, ' ');
   std::string s = "/INTER/TYPE7/" + std::to_string(id) + "\ncontact\n";
-  s += I(group) + I(surface) + I(o.istf) + I(0) + I(o.igap) + blank10 + I(0) + I(0) + I(0) + I(0) + "\n";
+  s += I(group) + I(surface) + I(o.istf) + I(0) + I(o.igap) + blank10 + I(0) + I(o.idel) + I(0) + I(0) + "\n";
   s += R(0.0) + R(0.0) + R(0.0) + "\n";
   s += R(0.0) + R(0.0) + R(0.0) + R(o.dtmin) + I(0) + I(0) + "\n";
   s += R(o.stfac) + R(o.fric) + R(o.gapmin) + R(0.0) + R(0.0) + "\n";

@@ -31,9 +31,10 @@ struct ContactStep {
 ContactStep contact_forces(const Model& model, ContactState& state, NodalState& nodes, double time,
                            double dt_previous, double dt_estimate, double scale, double& added_mass);
 
-// Idel 1, 2 (type7.md §2): segments whose element has been deleted leave the main surface. `deleted` holds the
-// deletion flags of each element kind (nullptr for a kind without them).
-void remove_deleted_segments(ContactState& state,
+// Idel 1, 2 (type7.md §2): segments whose element has been deleted leave the main surface, and secondary nodes
+// none of whose elements is left leave the secondary set. `deleted` holds the deletion flags of each element
+// kind (nullptr for a kind without them).
+void remove_deleted_elements(ContactState& state,
                              const std::array<const std::vector<std::uint8_t>*, kElementKinds>& deleted);
 
 // Work of the last cycle's contact forces over the step, with v_old = v^(n-1/2) and the nodes' v^(n+1/2):

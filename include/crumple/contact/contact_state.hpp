@@ -52,6 +52,11 @@ struct ContactInterface {
   std::vector<double> gap_clearance;                  // Inacti 6: the extra 5 % kept while the reduction shrinks [L]
   std::vector<std::uint8_t> node_active;              // 0: Inacti 1 or no live element left
   std::vector<std::uint8_t> node_impacted;            // 1 once the node has had a contact force (IBC)
+  // Idel: the elements of each secondary node (CSR: node i owns element_of_node[node_elements[i] ..
+  // node_elements[i+1]), kinds in element_kind_of_node); filled only when Idel > 0.
+  std::vector<std::uint32_t> node_elements;
+  std::vector<std::int32_t> element_of_node;
+  std::vector<std::uint8_t> element_kind_of_node;
   std::vector<std::array<std::int32_t, 4>> segments;  // main segment nodes (triangles repeat the third)
   std::vector<std::uint8_t> segment_is_triangle;
   std::vector<double> segment_gap;                    // gap per segment (Igap 0: the constant gap) [L]
