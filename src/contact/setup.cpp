@@ -162,7 +162,6 @@ ContactState setup_contact(const Model& m, NodalState& nodes, std::vector<std::s
     in.gap_scale = card.igap == 2 && card.fscale_gap > 0.0 ? card.fscale_gap : 1.0;
     for (std::int32_t n : in.secondary_nodes) {
       in.node_gap.push_back(0.5 * node_thickness[static_cast<std::size_t>(n)]);
-      in.node_stiffness.push_back(in.stiffness_scale * node_stiffness[static_cast<std::size_t>(n)]);
       in.node_element_stiffness.push_back(node_stiffness[static_cast<std::size_t>(n)]);
     }
     if (!in.variable_gap) {

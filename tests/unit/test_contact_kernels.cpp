@@ -120,7 +120,7 @@ struct TwoSegments {
     nodes.x[6] = x, nodes.y[6] = y, nodes.z[6] = z, nodes.mass[6] = 0.5;
     ContactInterface in;
     in.secondary_nodes = {6};
-    in.node_gap = {0.0}, in.gap_reduction = {0.0}, in.gap_clearance = {0.0}, in.node_active = {1}, in.node_touched = {0}, in.node_impacted = {0}, in.node_stiffness = {0.0};
+    in.node_gap = {0.0}, in.gap_reduction = {0.0}, in.gap_clearance = {0.0}, in.node_active = {1}, in.node_touched = {0}, in.node_impacted = {0};
     in.node_tangent_sum = {0.0}, in.node_element_stiffness = {0.0};
     in.segments = {{0, 1, 4, 3}, {1, 2, 5, 4}};
     in.segment_is_triangle = {0, 0}, in.segment_gap = {0.1, 0.1}, in.segment_stiffness = {1000.0, 1000.0};

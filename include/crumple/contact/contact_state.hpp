@@ -65,8 +65,9 @@ struct ContactInterface {
   std::vector<std::int32_t> segment_owner;            // owning element index (ElementTable of segment_owner_kind)
   std::vector<std::uint8_t> segment_owner_kind;       // ElementKind of the owner
   int stiffness_mode = 0;                             // Istf: 0 main side, 1 Stfac, 2..5 combined with the node's
-  std::vector<double> node_stiffness;                 // stiffness of the secondary side per node (Istf 2..5) [F/L]
-  std::vector<double> node_element_stiffness;         // stiffest attached element's K0-like stiffness (eq. C-11) [F/L]
+  // Stiffest attached element's K0-like stiffness per secondary node (eq. C-11; times Stfac, the secondary side
+  // of Istf 2..5) [F/L]
+  std::vector<double> node_element_stiffness;
   bool variable_gap = false;
   double gap_min = 0.0, gap_max = std::numeric_limits<double>::infinity(), gap_scale = 1.0;
   double largest_gap = 0.0;                           // bound of every pair's gap, for the search [L]
@@ -104,7 +105,7 @@ struct ContactInterface {
   }
   // Stiffness K0 of the pair (eq. C-3): Istf 2..5 combine the main and the secondary side.
   double pair_stiffness(std::size_t i, std::size_t s) const {
-    const double km = segment_stiffness[s], ks = node_stiffness[i];
+    const double km = segment_stiffness[s], ks = stiffness_scale * node_element_stiffness[i];
     switch (stiffness_mode) {
       case 2: return 0.5 * (km + ks);
       case 3: return km > ks ? km : ks;
