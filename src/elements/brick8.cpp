@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "crumple/materials/solid_update.hpp"
 
@@ -330,10 +331,24 @@ GroupStepResult brick8_one_point_forces(const ElementTable& table, const Element
     }
     double hourglass_work = 0.0;
     double global_q[3][4];  // generalized hourglass forces in the global frame
+    double damper_rate = 0.0;  // bound of the hourglass damper's largest eigenvalue (C = m lambda) [M/T]
     if (!physical) {
       // Viscous hourglass forces (eq. B-6): Q = h rho c V^(2/3) / 4 q.
       const double cbrt_v = std::cbrt(volume);
       const double coefficient = 0.25 * p.hourglass * rho * c * cbrt_v * cbrt_v;
+      // These forces are a damper on the hourglass modes, its largest rate bounded by Gershgorin on gamma gamma^T
+      // (eq. B-13). On flattened elements gamma grows.
+      double largest_row = 0.0;
+      for (int m = 0; m < 4; ++m) {
+        double row = 0.0;
+        for (int k = 0; k < 4; ++k) {
+          double dot = 0.0;
+          for (int a = 0; a < 8; ++a) dot += gamma[m][a] * gamma[k][a];
+          row += std::abs(dot);
+        }
+        largest_row = std::max(largest_row, row);
+      }
+      damper_rate = coefficient * largest_row;
       for (int i = 0; i < 3; ++i)
         for (int m = 0; m < 4; ++m) {
           global_q[i][m] = coefficient * q[i][m];
@@ -394,8 +409,12 @@ GroupStepResult brick8_one_point_forces(const ElementTable& table, const Element
     result.internal_energy += internal;
     result.hourglass_energy += hourglass_work;
 
-    // Critical step L / (Q + sqrt(Q^2 + c^2)) (eq. B-12).
-    const double step = length / (visc.speed + std::sqrt(visc.speed * visc.speed + c * c));
+    // Critical step L / (Q + sqrt(Q^2 + c^2)) (eq. B-12), where Q carries the bulk viscosity, and the hourglass
+    // damper's own bound 2 m / lambda_max (eq. B-13): hourglass modes carry no stiffness in Isolid 1.
+    const double nodal_mass = 0.125 * p.density * state.volume0[ue];
+    const double step = std::min(length / (visc.speed + std::sqrt(visc.speed * visc.speed + c * c)),
+                                 damper_rate > 0.0 ? 2.0 * nodal_mass / damper_rate
+                                                   : std::numeric_limits<double>::infinity());
     state.critical_dt[ue] = step;
     if (step < result.min_dt) result.min_dt = step, result.controlling = e;
     if (u.failed) {

@@ -719,6 +719,59 @@ TEST(Brick8, CriticalStepAgainstTheStabilityLimit) {
     }
 }
 
+// The corner element of a cube mapped onto a ball by shells (r = max(|u|, |v|, |w|) onto the sphere of radius r):
+// seven of its eight nodes lie on the outer sphere, so the element is flat-ish and its hourglass vectors are long.
+std::vector<Point> ball_corner_brick() {
+  auto on_ball = [](double u, double v, double w) -> Point {
+    const double r = std::max({u, v, w}), a = u / r, b = v / r, c = w / r;
+    return {r * a * std::sqrt(1.0 - b * b / 2.0 - c * c / 2.0 + b * b * c * c / 3.0),
+            r * b * std::sqrt(1.0 - c * c / 2.0 - a * a / 2.0 + c * c * a * a / 3.0),
+            r * c * std::sqrt(1.0 - a * a / 2.0 - b * b / 2.0 + a * a * b * b / 3.0)};
+  };
+  std::vector<Point> p;
+  const double h = 1.0 / 16.0;
+  for (const Point& c : kCorners) p.push_back(on_ball(1.0 - h + h * c[0], 1.0 - h + h * c[1], 1.0 - h + h * c[2]));
+  return p;
+}
+
+TEST(Brick8, CriticalStepHoldsTheViscousDampersStable) {
+  // Isolid 1's hourglass forces are a damper F = -C v on modes without stiffness. Central differences integrate a
+  // damper on a mass stably only for dt <= 2 / lambda_max(M^-1 C) (eq. B-13). C is probed column by column with a
+  // velocity over a vanishing step (so that no strain accumulates), without bulk viscosity (whose linear part B-12
+  // covers in compression). A cube is far from the bound; on the flat corner element of a mapped ball, L / c alone
+  // (eq. B-12) overshoots it by 8 % (a 16^3 ball blew up in hourglass modes once its contact let go).
+  for (const auto& shape : {box(1.0, 1.0, 1.0), ball_corner_brick()}) {
+    Bricks probe(shape, {{0, 1, 2, 3, 4, 5, 6, 7}}, 1, elastic_material());
+    const double estimate = probe.forces(0.0).min_dt;
+    const double mass = kRho * probe.volume(0) / 8.0, dt = 1e-14, v = 1e-3;
+    constexpr std::size_t n = 24;
+    std::vector<double> damping(n * n);
+    for (std::size_t j = 0; j < n; ++j) {
+      Bricks b(shape, {{0, 1, 2, 3, 4, 5, 6, 7}}, 1, elastic_material());
+      b.p.qb = 0.0;
+      Point velocity{0, 0, 0};
+      velocity[j % 3] = v;
+      b.set_velocity(j / 3, velocity);
+      b.advance(dt);
+      for (std::size_t i = 0; i < n; ++i) damping[i * n + j] = -b.force(i / 3)[i % 3] / v / mass;
+    }
+    std::vector<double> x(n, 1.0), y(n);
+    for (std::size_t i = 0; i < n; ++i) x[i] += 0.1 * static_cast<double>(i % 5);
+    double lambda = 0.0;
+    for (int it = 0; it < 3000; ++it) {
+      double norm2 = 0.0;
+      for (std::size_t i = 0; i < n; ++i) {
+        double sum = 0.0;
+        for (std::size_t j = 0; j < n; ++j) sum += 0.5 * (damping[i * n + j] + damping[j * n + i]) * x[j];
+        y[i] = sum, norm2 += sum * sum;
+      }
+      lambda = std::sqrt(norm2);
+      for (std::size_t i = 0; i < n; ++i) x[i] = y[i] / lambda;
+    }
+    EXPECT_LE(estimate, 2.0 / lambda) << "lambda " << lambda;
+  }
+}
+
 TEST(Brick8, InvertedElementIsReported) {
   for (int isolid : kIsolids) {
     std::vector<Point> p = box(1.0, 1.0, 1.0);
