@@ -55,6 +55,9 @@ ContactStep contact_forces(const Model& m, ContactState& c, NodalState& nodes, d
     const double mass_step = rc.dt_inter_cst.given ? rc.dt_inter_cst.minimum : 0.0;
     const double viss = in.damping;
     const double stiffness_factor = std::sqrt(1.0 + viss * viss) - viss;
+    const bool filtered = in.friction_filter > 0;
+    ++in.passes;
+    const double alpha = filtered ? friction_filter_weight(in.friction_filter, in.filter_value, dt_previous) : 1.0;
     for (std::int32_t i : in.touched_list) {
       in.node_touched[static_cast<std::size_t>(i)] = 0;
       in.node_tangent_sum[static_cast<std::size_t>(i)] = 0.0;
@@ -65,6 +68,8 @@ ContactStep contact_forces(const Model& m, ContactState& c, NodalState& nodes, d
       const auto i = static_cast<std::size_t>(in.candidate_node[q]);
       const auto s = static_cast<std::size_t>(in.candidate_segment[q]);
       double* friction[3] = {&in.friction_x[q], &in.friction_y[q], &in.friction_z[q]};
+      // Out of contact: the pair forgets its friction force.
+      auto forget = [&] { *friction[0] = *friction[1] = *friction[2] = 0.0; };
       if (!in.node_active[i] || !in.segment_active[s]) continue;
       const auto n = static_cast<std::size_t>(in.secondary_nodes[i]);
       double x[4][3], v[4][3];
@@ -83,7 +88,7 @@ ContactStep contact_forces(const Model& m, ContactState& c, NodalState& nodes, d
       const double g = full_gap - in.gap_reduction[i];
       const double d = cp.distance, p = g - d;
       if (d < 1e-10 * g) {  // at the mid-surface: released (eq. C-4)
-        *friction[0] = *friction[1] = *friction[2] = 0.0;
+        forget();
         continue;
       }
       const double normal[3] = {(p_node[0] - cp.point[0]) / d, (p_node[1] - cp.point[1]) / d, (p_node[2] - cp.point[2]) / d};
@@ -96,7 +101,7 @@ ContactStep contact_forces(const Model& m, ContactState& c, NodalState& nodes, d
       if (!(d < g)) {
         // Outside the gap: no force, but a candidate closing in must not cross the mid-surface within a step: the
         // kinematic step 0.5 (g - p) / (dp/dt) = 0.5 d / (dp/dt) holds for it too (eq. C-11).
-        *friction[0] = *friction[1] = *friction[2] = 0.0;
+        forget();
         const double approach = scale * kinematic_step(g, p, penetration_rate);
         if (approach < res.dt && !(release_step > 0.0 && approach < release_step))
           res.dt = approach, res.dt_node = static_cast<std::int32_t>(n);
@@ -117,7 +122,7 @@ ContactStep contact_forces(const Model& m, ContactState& c, NodalState& nodes, d
       const double pair_step = scale * std::min(kinematic_step(g, p, penetration_rate), stiffness_step(mass, kt, viss));
       if (release_step > 0.0 && pair_step < release_step) {
         ++res.released;
-        *friction[0] = *friction[1] = *friction[2] = 0.0;
+        forget();
         continue;
       }
       // The stiffness step is taken per node below, with the tangent stiffnesses of all its pairs summed (a node
@@ -134,8 +139,21 @@ ContactStep contact_forces(const Model& m, ContactState& c, NodalState& nodes, d
       res.max_penetration_ratio = std::max(res.max_penetration_ratio, p / g);
       // Friction (eq. C-9): trial force in the tangent plane, capped by the Coulomb cone.
       double ft[3] = {0.0, 0.0, 0.0};
-      if (in.friction > 0.0) {
+      if (in.friction) {
         const double vt[3] = {vr[0] - vn * normal[0], vr[1] - vn * normal[1], vr[2] - vn * normal[2]};
+        // Coefficient (eq. C-9a..c) for the pressure on the node's share of the surface and the sliding speed,
+        // then filtered in time (eq. C-9d).
+        double mu = in.friction_law.fric;
+        if (in.friction_law.kind > 0)
+          mu = friction_coefficient(in.friction_law, fn / in.node_area[i],
+                                    std::sqrt(vt[0] * vt[0] + vt[1] * vt[1] + vt[2] * vt[2]));
+        if (filtered) {  // once per node and pass (its first active pair), restarted after a pass out of contact
+          double& mu_f = in.friction_mu[i];
+          long long& last = in.friction_mu_pass[i];
+          if (last != in.passes) mu_f = last == in.passes - 1 ? alpha * mu + (1.0 - alpha) * mu_f : mu;
+          last = in.passes;
+          mu = mu_f;
+        }
         if (in.friction_form == 2) {
           // Stiffness form: the old force turned into the new tangent plane plus Kt times the sliding increment.
           const double along = *friction[0] * normal[0] + *friction[1] * normal[1] + *friction[2] * normal[2];
@@ -145,7 +163,7 @@ ContactStep contact_forces(const Model& m, ContactState& c, NodalState& nodes, d
           const double ct = in.friction_damping * std::sqrt(2.0 * kt * mass);
           for (int k = 0; k < 3; ++k) ft[k] = -ct * vt[k];
         }
-        friction_cone(ft, in.friction * fn);
+        friction_cone(ft, mu * fn);
         res.friction_work -= (ft[0] * vt[0] + ft[1] * vt[1] + ft[2] * vt[2]) * dt_previous;
       }
       *friction[0] = ft[0], *friction[1] = ft[1], *friction[2] = ft[2];

@@ -107,17 +107,15 @@ ContactState setup_contact(const Model& m, NodalState& nodes, std::vector<std::s
       }
     }
   }
+  std::vector<double> surface_area;  // per node, computed once when some interface has a friction law
   for (const Type7Interface& card : m.type7_interfaces) {
     ContactInterface in;
     InterfaceResult result;
     // Fields the reader accepts but the module does not implement yet: said by name, never silently dropped.
     const std::string label = fmt::format("INTER {}", card.user_id);
-    if (card.ifric > 0)
-      notes.push_back(fmt::format("{}: WARNING Ifric = {} (pressure- and velocity-dependent friction) is not "
-                                  "implemented yet: Coulomb friction with Fric = {:g} is used", label, card.ifric, card.fric));
-    if (card.ifiltr > 0)
-      notes.push_back(fmt::format("{}: WARNING Ifiltr = {} (friction filtering) is not implemented yet: no filter",
-                                  label, card.ifiltr));
+    if (card.ifric > 1 && card.fric > 0.0)
+      notes.push_back(fmt::format("{}: WARNING Fric = {:g} is not used by Ifric = {} (the law's C1..C6 give the "
+                                  "whole coefficient)", label, card.fric, card.ifric));
     in.release_bc = static_cast<std::uint8_t>((card.ibc[0] ? 1u : 0u) | (card.ibc[1] ? 2u : 0u) | (card.ibc[2] ? 4u : 0u));
     if (card.irem_gap == 1)
       notes.push_back(fmt::format("{}: WARNING Irem_gap = 1 is not implemented yet: no node is removed for a gap "
@@ -125,7 +123,12 @@ ContactState setup_contact(const Model& m, NodalState& nodes, std::vector<std::s
     in.stiffness_scale = card.stfac > 0.0 ? card.stfac : 1.0;
     in.damping = card.viss > 0.0 ? card.viss : 0.05;
     in.friction_damping = card.visf > 0.0 ? card.visf : 1.0;
-    in.friction = card.fric;
+    in.friction_law.kind = card.ifric;
+    in.friction_law.fric = card.fric;
+    std::copy(card.friction_c.begin(), card.friction_c.end(), in.friction_law.c);
+    in.friction = card.fric > 0.0 || card.ifric > 0;
+    in.friction_filter = in.friction ? card.ifiltr : 0;
+    in.filter_value = card.xfreq;
     in.friction_form = card.iform == 2 ? 2 : 1;
     in.t_start = card.tstart;
     in.t_stop = card.tstop > 0.0 ? card.tstop : std::numeric_limits<double>::infinity();
@@ -164,6 +167,26 @@ ContactState setup_contact(const Model& m, NodalState& nodes, std::vector<std::s
       in.node_gap.push_back(0.5 * node_thickness[static_cast<std::size_t>(n)]);
       in.node_element_stiffness.push_back(node_stiffness[static_cast<std::size_t>(n)]);
     }
+    if (card.ifric > 0) {
+      // Pressure of the friction laws (eq. C-9a..c): normal force over the node's share of its surface. Only these
+      // interfaces pay for the areas. A node on no surface (no shell, no boundary brick face) takes the mean.
+      if (surface_area.empty()) surface_area = node_surface_areas(m);
+      double sum = 0.0;
+      long long bare = 0;
+      for (std::int32_t n : in.secondary_nodes) {
+        const double a = surface_area[static_cast<std::size_t>(n)];
+        in.node_area.push_back(a);
+        sum += a;
+        bare += a > 0.0 ? 0 : 1;
+      }
+      const auto count = static_cast<long long>(in.secondary_nodes.size());
+      const double mean = count > bare ? sum / static_cast<double>(count - bare) : 1.0;
+      for (double& a : in.node_area)
+        if (!(a > 0.0)) a = mean;
+      if (bare > 0)
+        notes.push_back(fmt::format("{}: WARNING {} secondary nodes lie on no surface; their friction pressure uses "
+                                    "the mean node area {:.4g}", label, bare, mean));
+    }
     if (!in.variable_gap) {
       double gap = card.gapmin;
       // Computed default (eq. C-2): the mean shell thickness, but never more than a tenth of the smallest side, so
@@ -183,6 +206,10 @@ ContactState setup_contact(const Model& m, NodalState& nodes, std::vector<std::s
     in.largest_gap = std::min(std::max(largest_segment + largest_node, in.gap_min), in.gap_max) * in.gap_scale;
     in.margin = in.largest_gap;  // re-sort after the nodes have moved by a gap (eq. C-12)
     in.gap_reduction.assign(in.secondary_nodes.size(), 0.0);
+    if (in.friction_filter > 0) {  // eq. C-9d: no node has a filtered coefficient yet
+      in.friction_mu.assign(in.secondary_nodes.size(), 0.0);
+      in.friction_mu_pass.assign(in.secondary_nodes.size(), -2);
+    }
     in.gap_clearance.assign(in.secondary_nodes.size(), 0.0);
     in.node_active.assign(in.secondary_nodes.size(), 1);
     in.node_touched.assign(in.secondary_nodes.size(), 0);

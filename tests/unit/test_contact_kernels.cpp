@@ -52,6 +52,44 @@ TEST(ContactKernels, FrictionCone) {
   EXPECT_EQ(inside[1], -0.4);
 }
 
+TEST(ContactKernels, FrictionLawsByHand) {
+  // Ifric 0: Coulomb, whatever p and v.
+  FrictionLaw coulomb;
+  coulomb.fric = 0.3;
+  EXPECT_DOUBLE_EQ(friction_coefficient(coulomb, 1e6, 5.0), 0.3);
+  // Ifric 1 (eq. C-9a): 0.1 + 1e-6 1e5 + 0.01 2 + 1e-8 1e5 2 + 1e-12 1e10 + 1e-3 4 = 0.236.
+  FrictionLaw viscous{1, 0.1, {1e-6, 0.01, 1e-8, 1e-12, 1e-3, 0.0}};
+  EXPECT_NEAR(friction_coefficient(viscous, 1e5, 2.0), 0.236, 1e-15);
+  // Ifric 2 (eq. C-9b): 1e-12 e^-0.2 1e10 + 1e-6 e^-0.4 1e5 + 0.2 e^-0.1; Fric plays no part.
+  FrictionLaw darmstad{2, 0.7, {1e-12, -0.1, 1e-6, -0.2, 0.2, -0.05}};
+  EXPECT_NEAR(friction_coefficient(darmstad, 1e5, 2.0),
+              0.01 * std::exp(-0.2) + 0.1 * std::exp(-0.4) + 0.2 * std::exp(-0.1), 1e-15);
+  // Ifric 3 (eq. C-9c): mu_s 0.3, mu_d 0.2, mu_max 0.4, mu_min 0.1, Vcr1 1, Vcr2 3.
+  FrictionLaw renard{3, 0.0, {0.3, 0.2, 0.4, 0.1, 1.0, 3.0}};
+  EXPECT_DOUBLE_EQ(friction_coefficient(renard, 0.0, 0.0), 0.3);    // static
+  EXPECT_NEAR(friction_coefficient(renard, 0.0, 0.5), 0.375, 1e-15); // 0.3 + 0.1 0.5 1.5
+  EXPECT_NEAR(friction_coefficient(renard, 0.0, 1.0), 0.4, 1e-15);   // maximum at Vcr1
+  EXPECT_NEAR(friction_coefficient(renard, 0.0, 2.0), 0.25, 1e-15);  // 0.4 - 0.3 0.25 2
+  EXPECT_NEAR(friction_coefficient(renard, 0.0, 3.0), 0.1, 1e-15);   // minimum at Vcr2
+  EXPECT_NEAR(friction_coefficient(renard, 0.0, 4.0), 0.2 - 1.0 / 11.0, 1e-15);
+  EXPECT_NEAR(friction_coefficient(renard, 0.0, 1e4), 0.2 - 1.0 / (10.0 + 9997.0 * 9997.0), 1e-15);  // -> mu_d
+  // Continuous across the critical speeds.
+  for (double v : {1.0, 3.0})
+    EXPECT_NEAR(friction_coefficient(renard, 0.0, v * (1 - 1e-9)), friction_coefficient(renard, 0.0, v * (1 + 1e-9)), 1e-8);
+  // A law that turns negative gives no friction rather than a driving force.
+  FrictionLaw falling{1, 0.1, {0.0, -1.0, 0.0, 0.0, 0.0, 0.0}};
+  EXPECT_EQ(friction_coefficient(falling, 0.0, 1.0), 0.0);
+}
+
+TEST(ContactKernels, FrictionFilterWeights) {
+  // eq. C-9d: Ifiltr 1 the factor itself; 2 2 pi dt / T; 3 2 pi f dt; never above 1.
+  EXPECT_DOUBLE_EQ(friction_filter_weight(1, 0.25, 1e-6), 0.25);
+  EXPECT_NEAR(friction_filter_weight(2, 1e-3, 1e-6), 2.0 * M_PI * 1e-3, 1e-15);
+  EXPECT_NEAR(friction_filter_weight(3, 100.0, 1e-6), 2.0 * M_PI * 1e-4, 1e-15);
+  EXPECT_DOUBLE_EQ(friction_filter_weight(3, 1e9, 1e-6), 1.0);
+  EXPECT_DOUBLE_EQ(friction_filter_weight(0, 0.0, 1e-6), 1.0);
+}
+
 TEST(ContactKernels, KinematicAndStiffnessSteps) {
   EXPECT_DOUBLE_EQ(kinematic_step(0.1, 0.05, 10.0), 0.5 * 0.05 / 10.0);
   EXPECT_TRUE(std::isinf(kinematic_step(0.1, 0.05, -1.0)));  // separating: no kinematic limit

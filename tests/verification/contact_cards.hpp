@@ -1,6 +1,7 @@
 #pragma once
 // Deck cards of the contact verification scenes: /INTER/TYPE7, /SURF/PART, second shell parts and properties.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -13,6 +14,9 @@ struct Type7Options {
   double gapmin = 0.0, stfac = 0.0, fric = 0.0, viss = 0.0, dtmin = 0.0;
   int istf = 0, igap = 0, inacti = 0, iform = 0, idel = 0;
   std::string ibc = "000";  // IBC flags x y z
+  int ifric = 0, ifiltr = 0;
+  double xfreq = 0.0;
+  std::array<double, 6> c{};  // C1..C6 of the friction law
 };
 
 // /INTER/TYPE7/id: secondary node group, main surface, the fields of Type7Options, everything else default.
@@ -24,7 +28,9 @@ inline std::string type7_card(long long id, long long group, long long surface, 
   s += R(0.0) + R(0.0) + R(0.0) + R(o.dtmin) + I(0) + I(0) + "\n";
   s += R(o.stfac) + R(o.fric) + R(o.gapmin) + R(0.0) + R(0.0) + "\n";
   s += "       " + o.ibc + std::string(20, ' ') + I(o.inacti) + R(o.viss) + R(0.0) + R(0.0) + "\n";
-  s += I(0) + I(0) + R(0.0) + I(o.iform) + I(0) + I(0) + R(0.0) + I(0) + "\n";
+  s += I(o.ifric) + I(o.ifiltr) + R(o.xfreq) + I(o.iform) + I(0) + I(0) + R(0.0) + I(0) + "\n";
+  if (o.ifric > 0) s += R(o.c[0]) + R(o.c[1]) + R(o.c[2]) + R(o.c[3]) + R(o.c[4]) + "\n";
+  if (o.ifric > 1) s += R(o.c[5]) + "\n";
   return s;
 }
 

@@ -19,6 +19,9 @@ ContactState setup_contact(const Model& model, NodalState& nodes, std::vector<st
 // fall within the gap before the accumulated motion exceeds the margin. O(nodes + segments).
 void sort_candidates(ContactInterface& interface, const NodalState& nodes);
 
+// Each node's share of the shell and boundary brick-face area around it (for the friction laws' pressure) [L^2].
+std::vector<double> node_surface_areas(const Model& model);
+
 struct ContactStep {
   double dt = 1e300;        // smallest interface step of the cycle, scaled [T]
   int interface = -1;       // its interface (index into Model::type7_interfaces)

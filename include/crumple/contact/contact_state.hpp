@@ -7,6 +7,8 @@
 #include <utility>
 #include <vector>
 
+#include "crumple/contact/kernels.hpp"
+
 namespace crumple {
 
 struct InitialPenetration {
@@ -39,7 +41,10 @@ struct ContactInterface {
   double stiffness_scale = 1.0;  // Stfac
   double damping = 0.05;         // VisS: critical-damping fraction of the normal force
   double friction_damping = 1.0; // VisF
-  double friction = 0.0;         // Fric: Coulomb coefficient (Ifric 0)
+  contact::FrictionLaw friction_law;      // Ifric, Fric, C1..C6 (eq. C-9a..c)
+  bool friction = false;         // any friction at all (Fric > 0 or Ifric > 0)
+  int friction_filter = 0;       // Ifiltr (eq. C-9d)
+  double filter_value = 0.0;     // Xfreq: a factor, a period [T] or a frequency [T^-1]
   int friction_form = 1;         // Iform: 1 viscous, 2 stiffness (incremental)
   double t_start = 0.0, t_stop = std::numeric_limits<double>::infinity();  // [T]
   double dt_minimum = 0.0;       // card dtmin: contacts whose step falls below it are released [T]
@@ -76,6 +81,12 @@ struct ContactInterface {
   std::vector<std::int32_t> candidate_node;     // index into secondary_nodes
   std::vector<std::int32_t> candidate_segment;  // index into segments
   std::vector<double> friction_x, friction_y, friction_z;  // tangential force history per pair [F]
+  // Ifiltr > 0, per secondary node: the filtered coefficient and the pass that last updated it (a node out of
+  // contact for a pass starts again from the unfiltered value).
+  std::vector<double> friction_mu;
+  std::vector<long long> friction_mu_pass;
+  long long passes = 0;             // contact passes run so far
+  std::vector<double> node_area;    // Ifric > 0: the secondary node's share of its surface, for the pressure [L^2]
   std::vector<std::int32_t> main_nodes;         // the segments' nodes, each once (motion since the sort)
   // Forces of the last cycle, node by node as applied (secondary node and segment nodes), for the work (eq. C-10).
   std::vector<std::int32_t> applied_node;

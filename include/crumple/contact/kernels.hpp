@@ -43,6 +43,54 @@ inline bool friction_cone(double trial[3], double limit) {
   return true;
 }
 
+// Friction laws (eq. C-9a..C-9c): the coefficient for the contact pressure p [P] and the sliding speed v [L/T].
+struct FrictionLaw {
+  int kind = 0;             // Ifric: 0 Coulomb, 1 generalized viscous, 2 Darmstad, 3 Renard
+  double fric = 0.0;        // Fric: Coulomb coefficient, the constant term of Ifric 1
+  double c[6] = {0, 0, 0, 0, 0, 0};  // C1..C6 (dimensions in model/interfaces.hpp)
+};
+inline double friction_coefficient(const FrictionLaw& law, double p, double v) {
+  const double* c = law.c;
+  double mu = law.fric;
+  switch (law.kind) {
+    case 1:  // C-9a
+      mu = law.fric + c[0] * p + c[1] * v + c[2] * p * v + c[3] * p * p + c[4] * v * v;
+      break;
+    case 2:  // C-9b
+      mu = c[0] * std::exp(c[1] * v) * p * p + c[2] * std::exp(c[3] * v) * p + c[4] * std::exp(c[5] * v);
+      break;
+    case 3: {  // C-9c: static C1, dynamic C2, maximum C3, minimum C4 at the critical speeds C5 < C6
+      const double v1 = c[4], v2 = c[5];
+      if (v <= v1) {
+        const double r = v / v1;
+        mu = c[0] + (c[2] - c[0]) * r * (2.0 - r);
+      } else if (v <= v2) {
+        const double r = (v - v1) / (v2 - v1);
+        mu = c[2] - (c[2] - c[3]) * r * r * (3.0 - 2.0 * r);
+      } else {
+        const double w = v - v2;
+        mu = c[1] == c[3] ? c[1] : c[1] - 1.0 / (1.0 / (c[1] - c[3]) + w * w);
+      }
+      break;
+    }
+    default:
+      break;
+  }
+  return std::max(0.0, mu);  // a negative coefficient has no meaning: no friction
+}
+
+// Weight alpha of the new value in the friction filter mu_f = alpha mu + (1 - alpha) mu_f_old (eq. C-9d):
+// Ifiltr 1 alpha = Xfreq; 2 alpha = 2 pi dt / Xfreq (Xfreq a period); 3 alpha = 2 pi Xfreq dt (a frequency);
+// at most 1 (no filter).
+inline double friction_filter_weight(int ifiltr, double xfreq, double dt) {
+  constexpr double two_pi = 6.283185307179586;
+  double alpha = 1.0;
+  if (ifiltr == 1) alpha = xfreq;
+  else if (ifiltr == 2) alpha = two_pi * dt / xfreq;
+  else if (ifiltr == 3) alpha = two_pi * xfreq * dt;
+  return std::clamp(alpha, 0.0, 1.0);
+}
+
 // Closest point of a main segment to a node (eq. C-1): the face, an edge or a corner. A quadrilateral is split
 // into four triangles around its centroid (robust for warped segments); `weight` are the shape-function weights
 // of the closest point on the four nodes (sum 1), used to move the contact force to the segment.

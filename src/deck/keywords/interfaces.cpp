@@ -169,6 +169,11 @@ void read_friction_law(CardReader& reader, Type7Interface& i) {
   if (i.ifric == 1) return;
   const Line second = reader.next(fmt::format("C6 (Ifric = {})", i.ifric));
   i.friction_c[5] = second.real(1, 20, "C6", dims[5]);
+  // Renard (eq. C-9c): the curve is defined between the critical speeds 0 < C5 < C6.
+  if (i.ifric == 3 && !(i.friction_c[4] > 0.0))
+    first.fail(81, 20, "C5", "a positive first critical speed Vcr1 when Ifric = 3");
+  if (i.ifric == 3 && !(i.friction_c[5] > i.friction_c[4]))
+    second.fail(1, 20, "C6", "a second critical speed Vcr2 above C5 when Ifric = 3");
 }
 
 void read_adaptive_line(const Line& line, Type7Interface& i) {
