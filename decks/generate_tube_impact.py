@@ -1,5 +1,7 @@
 #!/usr/bin/env python3
-"""Writes decks/tube_impact: a thin-walled square steel tube driven into a rigid wall.
+"""Writes decks/tube_impact: a thin-walled square steel tube driven into a rigid wall, and decks/tube_self_contact:
+the same with a TYPE7 self contact of the tube (every tube node against the tube's surface, Fric 0.2), the
+contact case of the time-profile benchmark (docs/performance.md).
 
 Units: kg, mm, ms (so stresses in GPa, velocities in m/s, energies in J). The tube is 50 x 50 mm, 200 mm long,
 1.2 mm thick, meshed with 5 mm shells; its rear end carries a 20 kg rigid body (a sled) and the whole tube moves
@@ -39,7 +41,23 @@ def perimeter_points():
     return pts
 
 
-def main():
+def self_contact_cards():
+    """/SURF/PART + /INTER/TYPE7: the whole tube's nodes (group 10) against its own surface, defaults otherwise."""
+    blank = " " * 10
+    return ["/SURF/PART/1\ntube surface\n", i10(1) + "\n",
+            "/INTER/TYPE7/1\ntube self contact\n",
+            "# grnd_IDs  surf_IDm      Istf      Ithe      Igap                Ibag      Idel     Icurv      Iadm\n",
+            i10(10) + i10(1) + i10(0) + i10(0) + i10(0) + blank + i10(0) + i10(0) + i10(0) + i10(0) + "\n",
+            r20(0.0) + r20(0.0) + r20(0.0) + "\n",
+            r20(0.0) + r20(0.0) + r20(0.0) + r20(0.0) + i10(0) + i10(0) + "\n",
+            "#              Stfac                Fric              Gapmin              Tstart               Tstop\n",
+            r20(0.0) + r20(0.2) + r20(0.0) + r20(0.0) + r20(0.0) + "\n",
+            "       000" + " " * 20 + i10(0) + r20(0.0) + r20(0.0) + r20(0.0) + "\n",
+            i10(0) + i10(0) + r20(0.0) + i10(0) + i10(0) + i10(0) + r20(0.0) + i10(0) + "\n",
+            "/TH/INTER/3\nself contact\n", f"{'DEF':<10}\n", i10(1) + "\n"]
+
+
+def main(self_contact=False):
     ring = perimeter_points()
     n_ring = len(ring)
     out = ["#RADIOSS STARTER\n", "# Crumple example deck, written by decks/generate_tube_impact.py\n", ruler()]
@@ -104,8 +122,10 @@ def main():
             "#               X_M1                Y_M1                Z_M1\n", r20(1.0) + r20(0.0) + r20(0.0) + "\n"]
     out += ["/TH/RWALL/1\nwall force\n", f"{'DEF':<10}\n", i10(1) + "\n"]
     out += ["/TH/RBODY/2\nsled\n", f"{'DEF':<10}\n", i10(1) + "\n"]
+    if self_contact:
+        out += self_contact_cards()
     out += ["/END\n"]
-    here = Path(__file__).parent / "tube_impact"
+    here = Path(__file__).parent / ("tube_self_contact" if self_contact else "tube_impact")
     here.mkdir(exist_ok=True)
     (here / "TUBE_0000.rad").write_text("".join(out))
     engine = ["/RUN/TUBE/1\n3.0\n", "/TFILE\n0.01\n", "/ANIM/DT\n0.0 0.5\n", "/PRINT/-1000\n", "/DT\n0.9 0.0\n",
@@ -115,3 +135,4 @@ def main():
 
 if __name__ == "__main__":
     main()
+    main(self_contact=True)

@@ -46,12 +46,15 @@ std::string to_json(const RunSummary& s) {
       "    \"internal\": {},\n    \"kinetic_translational\": {},\n    \"kinetic_rotational\": {},\n"
       "    \"contact\": {},\n    \"hourglass\": {},\n    \"external_work\": {},\n    \"total\": {},\n"
       "    \"error_percent\": {}\n  }},\n  \"mass\": {{\n    \"total\": {},\n    \"added\": {}\n  }},\n"
-      "  \"wall_seconds\": {},\n  \"element_cycles_per_second\": {},\n  \"ranks\": {},\n  \"precision\": \"{}\",\n"
+      "  \"wall_seconds\": {},\n  \"element_cycles_per_second\": {},\n"
+      "  \"profile\": {{\n    \"elements\": {},\n    \"contact\": {},\n    \"contact_passes\": {},\n"
+      "    \"loads\": {},\n    \"update\": {},\n    \"output\": {}\n  }},\n  \"ranks\": {},\n  \"precision\": \"{}\",\n"
       "  \"status\": \"{}\",\n  \"message\": \"{}\"\n}}\n",
       escaped(s.name), s.cycles, number(s.time), number(s.dt), number(e.internal), number(e.kinetic_translational),
       number(e.kinetic_rotational), number(e.contact), number(e.hourglass), number(e.external_work), number(e.total),
       number(e.error_percent), number(s.mass_total), number(s.mass_added), number(s.wall_seconds),
-      number(s.element_cycles_per_second), s.ranks, escaped(s.precision), status_name(s.status), escaped(s.message));
+      number(s.element_cycles_per_second), number(s.phases.elements), number(s.phases.contact),
+      s.phases.contact_passes, number(s.phases.loads), number(s.phases.update), number(s.phases.output), s.ranks, escaped(s.precision), status_name(s.status), escaped(s.message));
 }
 
 void write_summary(const RunSummary& summary, const std::filesystem::path& file) {

@@ -148,6 +148,14 @@ RunSummary run_simulation(const Model& m, const SolverOptions& options, std::ost
 
   RunStatus status = RunStatus::Normal;
   std::string message = "normal termination";
+  // Time profile: one clock read per stage boundary (five per cycle, far below the cost of any stage).
+  PhaseTimes& phases = summary.phases;
+  auto last_lap = std::chrono::steady_clock::now();
+  auto lap = [&last_lap](double& bucket) {
+    const auto now = std::chrono::steady_clock::now();
+    bucket += std::chrono::duration<double>(now - last_lap).count();
+    last_lap = now;
+  };
   for (;;) {
     // 1. Internal forces and critical steps of the elements.
     n.clear_forces();
@@ -220,6 +228,7 @@ RunSummary run_simulation(const Model& m, const SolverOptions& options, std::ost
         controlling = fmt::format("{} {}", kind, table.user_id[static_cast<std::size_t>(r.controlling)]);
       }
     }
+    lap(phases.elements);
     if (status != RunStatus::Normal) break;
     // 1b. Contact (docs/theory/contact.md), only when the deck has interfaces: forces at x^n with v^(n-1/2),
     // the interface step joins the elements'.
@@ -237,6 +246,8 @@ RunSummary run_simulation(const Model& m, const SolverOptions& options, std::ost
         controlling = fmt::format("INTER {} NODE {}", m.type7_interfaces[static_cast<std::size_t>(cs.interface)].user_id,
                                   m.nodes.user_id[static_cast<std::size_t>(cs.node)]);
       }
+      ++phases.contact_passes;
+      lap(phases.contact);
     }
     // 2. External forces; rigid bodies collect their nodes' forces.
     solver::add_external_forces(m, s, s.time);
@@ -270,6 +281,7 @@ RunSummary run_simulation(const Model& m, const SolverOptions& options, std::ost
       break;
     }
     if (s.time + dt_next > rc.end_time) dt_next = std::max(rc.end_time - s.time, 0.0);
+    lap(phases.loads);
     const double dt_average = s.cycle == 0 ? 0.5 * dt_next : 0.5 * (s.dt + dt_next);
     // 4. Central-difference velocity update.
     auto v = velocities(n);
@@ -307,6 +319,7 @@ RunSummary run_simulation(const Model& m, const SolverOptions& options, std::ost
     s.time += dt_next;
     s.dt = dt_next;
     ++s.cycle;
+    lap(phases.update);
 
     const bool finished = s.time >= rc.end_time * (1.0 - 1e-12) || dt_next <= 0.0 ||
                           (options.max_cycles >= 0 && s.cycle >= options.max_cycles);
@@ -343,6 +356,7 @@ RunSummary run_simulation(const Model& m, const SolverOptions& options, std::ost
       if (options.observer) options.observer(s);
       next_history = solver::next_output_time(s.time, 0.0, rc.history_interval);
     }
+    lap(phases.output);
     if (finished) break;
   }
   record(true);
@@ -363,6 +377,16 @@ RunSummary run_simulation(const Model& m, const SolverOptions& options, std::ost
                              r.damping_work, r.friction_work, r.released, r.added_mass));
   }
   listing.line(fmt::format("TOTAL NUMBER OF CYCLES {}   ELAPSED {:.3f} s", s.cycle, wall));
+  {
+    const double cycle_time = phases.elements + phases.contact + phases.loads + phases.update + phases.output;
+    auto share = [&](double t) { return cycle_time > 0.0 ? 100.0 * t / cycle_time : 0.0; };
+    listing.line(fmt::format("TIME PROFILE (s, % of the cycles): elements {:.3f} ({:.1f} %)  contact {:.3f} ({:.1f} %, "
+                             "{} passes)  loads and step {:.3f} ({:.1f} %)  nodal update {:.3f} ({:.1f} %)  "
+                             "output {:.3f} ({:.1f} %)",
+                             phases.elements, share(phases.elements), phases.contact, share(phases.contact),
+                             phases.contact_passes, phases.loads, share(phases.loads), phases.update,
+                             share(phases.update), phases.output, share(phases.output)));
+  }
 
   summary.cycles = s.cycle;
   summary.time = s.time;

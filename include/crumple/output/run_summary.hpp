@@ -19,6 +19,16 @@ struct EnergyBalance {
   double error_percent = 0.0;  // (E_int + E_kin + E_hg + E_contact - E_kin0 - W_ext) / (E_kin0 + W_ext) * 100
 };
 
+// Wall time of the stages of the cycle, summed over the run [s] (the listing's TIME PROFILE).
+struct PhaseTimes {
+  double elements = 0.0;  // element forces and critical steps
+  double contact = 0.0;   // TYPE7 passes (search, forces, interface step); exactly 0 without interfaces
+  double loads = 0.0;     // external forces, rigid bodies' force gathering, time-step choice
+  double update = 0.0;    // velocities, kinematic conditions, energy terms, positions
+  double output = 0.0;    // energy records, listing, histories, frames
+  long long contact_passes = 0;
+};
+
 struct RunSummary {
   std::string name;
   long long cycles = 0;
@@ -29,6 +39,7 @@ struct RunSummary {
   double mass_added = 0.0;  // mass added by time-step control (mass scaling)
   double wall_seconds = 0.0;
   double element_cycles_per_second = 0.0;
+  PhaseTimes phases;
   int ranks = 1;
   std::string precision = "double";
   RunStatus status = RunStatus::Normal;
