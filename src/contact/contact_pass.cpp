@@ -64,129 +64,148 @@ ContactStep contact_forces(const Model& m, ContactState& c, NodalState& nodes, d
     }
     in.touched_list.clear();
 
-    for (std::size_t q = 0; q < in.candidate_node.size(); ++q) {
-      const auto i = static_cast<std::size_t>(in.candidate_node[q]);
-      const auto s = static_cast<std::size_t>(in.candidate_segment[q]);
-      double* friction[3] = {&in.friction_x[q], &in.friction_y[q], &in.friction_z[q]};
-      // Out of contact: the pair forgets its friction force.
-      auto forget = [&] { *friction[0] = *friction[1] = *friction[2] = 0.0; };
-      if (!in.node_active[i] || !in.segment_active[s]) continue;
-      const auto n = static_cast<std::size_t>(in.secondary_nodes[i]);
-      double x[4][3], v[4][3];
-      for (int a = 0; a < 4; ++a) {
-        const auto k = static_cast<std::size_t>(in.segments[s][static_cast<std::size_t>(a)]);
-        x[a][0] = nodes.x[k], x[a][1] = nodes.y[k], x[a][2] = nodes.z[k];
-        v[a][0] = nodes.vx[k], v[a][1] = nodes.vy[k], v[a][2] = nodes.vz[k];
-      }
-      const double p_node[3] = {nodes.x[n], nodes.y[n], nodes.z[n]};
-      const SegmentPoint cp = closest_point_on_segment(p_node, x, in.segment_is_triangle[s]);
-      // Gap of the pair (eq. C-2), less the Inacti 5 / 6 reduction, which shrinks as the node moves out.
-      const double full_gap = in.pair_gap(i, s);
-      // The corrected gap g - r only grows: to the node's distance (less the Inacti 6 clearance) as it moves out.
-      if (in.gap_reduction[i] > 0.0)
-        in.gap_reduction[i] = std::min(in.gap_reduction[i], std::max(0.0, full_gap - cp.distance + in.gap_clearance[i]));
-      const double g = full_gap - in.gap_reduction[i];
-      const double d = cp.distance, p = g - d;
-      if (d < 1e-10 * g) {  // at the mid-surface: released (eq. C-4)
-        forget();
-        continue;
-      }
-      const double normal[3] = {(p_node[0] - cp.point[0]) / d, (p_node[1] - cp.point[1]) / d, (p_node[2] - cp.point[2]) / d};
-      double vr[3];  // velocity of the node relative to the contact point
-      for (int k = 0; k < 3; ++k)
-        vr[k] = (k == 0 ? nodes.vx[n] : k == 1 ? nodes.vy[n] : nodes.vz[n]) -
-                (cp.weight[0] * v[0][k] + cp.weight[1] * v[1][k] + cp.weight[2] * v[2][k] + cp.weight[3] * v[3][k]);
-      const double vn = vr[0] * normal[0] + vr[1] * normal[1] + vr[2] * normal[2];
-      const double penetration_rate = -vn;
-      if (!(d < g)) {
-        // Outside the gap: no force, but a candidate closing in must not cross the mid-surface within a step: the
-        // kinematic step 0.5 (g - p) / (dp/dt) = 0.5 d / (dp/dt) holds for it too (eq. C-11).
-        forget();
-        const double approach = scale * kinematic_step(g, p, penetration_rate);
-        if (approach < res.dt && !(release_step > 0.0 && approach < release_step))
-          res.dt = approach, res.dt_node = static_cast<std::int32_t>(n);
-        // A node near the gap may enter it within a step or two and meet the penalty's initial stiffness K0: the
-        // force then acts over the mean of that step and the one before, so both must already be stable for K0.
-        // Nodes within a gap (plus two steps of their normal motion) of entering keep the contact step.
-        if (d - g < g + 2.0 * std::abs(penetration_rate) * dt_estimate) {
-          if (in.node_touched[i] == 0) in.node_touched[i] = 1, in.touched_list.push_back(static_cast<std::int32_t>(i));
-          in.node_tangent_sum[i] += in.pair_stiffness(i, s);
+    // Pairs in batches: gather the coordinates, the closest points of the whole batch in one vectorised loop
+    // (eq. C-1), then the forces pair by pair (most pairs of a batch are outside their gap and stop early).
+    PairBatch& batch = c.batch;
+    const std::size_t pairs = in.candidate_node.size();
+    for (std::size_t first = 0; first < pairs; first += PairBatch::kSize) {
+      const int count = static_cast<int>(std::min<std::size_t>(PairBatch::kSize, pairs - first));
+      for (int j = 0; j < count; ++j) {
+        const std::size_t q = first + static_cast<std::size_t>(j);
+        const auto n = static_cast<std::size_t>(in.secondary_nodes[static_cast<std::size_t>(in.candidate_node[q])]);
+        const auto& seg = in.segments[static_cast<std::size_t>(in.candidate_segment[q])];
+        batch.node[0][j] = nodes.x[n], batch.node[1][j] = nodes.y[n], batch.node[2][j] = nodes.z[n];
+        for (int a = 0; a < 4; ++a) {
+          const auto k = static_cast<std::size_t>(seg[static_cast<std::size_t>(a)]);
+          batch.corner[a][0][j] = nodes.x[k], batch.corner[a][1][j] = nodes.y[k], batch.corner[a][2][j] = nodes.z[k];
         }
-        continue;
       }
-      const double k0 = in.pair_stiffness(i, s);
-      const double kt = tangent_stiffness(k0, g, p);
-      const double mass = nodes.mass[n];
-      // Interface step of the pair (eq. C-11): /DT/INTER/DEL (or the card's dtmin) releases the pair when it
-      // would fall below the minimum (/DT/INTER/CST acts per node, below).
-      const double pair_step = scale * std::min(kinematic_step(g, p, penetration_rate), stiffness_step(mass, kt, viss));
-      if (release_step > 0.0 && pair_step < release_step) {
-        ++res.released;
-        forget();
-        continue;
-      }
-      // The stiffness step is taken per node below, with the tangent stiffnesses of all its pairs summed (a node
-      // at an edge or corner feels two or three segments at once); here the kinematic part.
-      const double closing = scale * kinematic_step(g, p, penetration_rate);
-      if (closing < res.dt) res.dt = closing, res.dt_node = static_cast<std::int32_t>(n);
-      in.node_tangent_sum[i] += kt;
-      // Normal force: penalty plus the pushing part of the damping (eqs. C-5, C-8).
-      const double elastic = penalty_force(k0, g, p);
-      const double damping = damping_force(viss, kt, mass, penetration_rate);
-      const double fn = elastic + damping;
-      res.elastic_energy += elastic_energy(k0, g, p);
-      res.damping_work += damping * penetration_rate * dt_previous;
-      res.max_penetration_ratio = std::max(res.max_penetration_ratio, p / g);
-      // Friction (eq. C-9): trial force in the tangent plane, capped by the Coulomb cone.
-      double ft[3] = {0.0, 0.0, 0.0};
-      if (in.friction) {
-        const double vt[3] = {vr[0] - vn * normal[0], vr[1] - vn * normal[1], vr[2] - vn * normal[2]};
-        // Coefficient (eq. C-9a..c) for the pressure on the node's share of the surface and the sliding speed,
-        // then filtered in time (eq. C-9d).
-        double mu = in.friction_law.fric;
-        if (in.friction_law.kind > 0)
-          mu = friction_coefficient(in.friction_law, fn / in.node_area[i],
-                                    std::sqrt(vt[0] * vt[0] + vt[1] * vt[1] + vt[2] * vt[2]));
-        if (filtered) {  // once per node and pass (its first active pair), restarted after a pass out of contact
-          double& mu_f = in.friction_mu[i];
-          long long& last = in.friction_mu_pass[i];
-          if (last != in.passes) mu_f = last == in.passes - 1 ? alpha * mu + (1.0 - alpha) * mu_f : mu;
-          last = in.passes;
-          mu = mu_f;
+      closest_points(batch, count);
+      for (int j = 0; j < count; ++j) {
+        const std::size_t q = first + static_cast<std::size_t>(j);
+        const auto i = static_cast<std::size_t>(in.candidate_node[q]);
+        const auto s = static_cast<std::size_t>(in.candidate_segment[q]);
+        double* friction[3] = {&in.friction_x[q], &in.friction_y[q], &in.friction_z[q]};
+        // Out of contact: the pair forgets its friction force.
+        auto forget = [&] { *friction[0] = *friction[1] = *friction[2] = 0.0; };
+        if (!in.node_active[i] || !in.segment_active[s]) continue;
+        const auto n = static_cast<std::size_t>(in.secondary_nodes[i]);
+        double v[4][3];
+        for (int a = 0; a < 4; ++a) {
+          const auto k = static_cast<std::size_t>(in.segments[s][static_cast<std::size_t>(a)]);
+          v[a][0] = nodes.vx[k], v[a][1] = nodes.vy[k], v[a][2] = nodes.vz[k];
         }
-        if (in.friction_form == 2) {
-          // Stiffness form: the old force turned into the new tangent plane plus Kt times the sliding increment.
-          const double along = *friction[0] * normal[0] + *friction[1] * normal[1] + *friction[2] * normal[2];
-          for (int k = 0; k < 3; ++k) ft[k] = *friction[k] - along * normal[k] - kt * vt[k] * dt_previous;
-        } else {
-          // Viscous form: C_t = VisF sqrt(2 Kt M) times the sliding velocity.
-          const double ct = in.friction_damping * std::sqrt(2.0 * kt * mass);
-          for (int k = 0; k < 3; ++k) ft[k] = -ct * vt[k];
+        const double p_node[3] = {batch.node[0][j], batch.node[1][j], batch.node[2][j]};
+        const SegmentPoint cp{{batch.point[0][j], batch.point[1][j], batch.point[2][j]},
+                              {batch.weight[0][j], batch.weight[1][j], batch.weight[2][j], batch.weight[3][j]},
+                              batch.distance[j]};
+        // Gap of the pair (eq. C-2), less the Inacti 5 / 6 reduction, which shrinks as the node moves out.
+        const double full_gap = in.pair_gap(i, s);
+        // The corrected gap g - r only grows: to the node's distance (less the Inacti 6 clearance) as it moves out.
+        if (in.gap_reduction[i] > 0.0)
+          in.gap_reduction[i] = std::min(in.gap_reduction[i], std::max(0.0, full_gap - cp.distance + in.gap_clearance[i]));
+        const double g = full_gap - in.gap_reduction[i];
+        const double d = cp.distance, p = g - d;
+        if (d < 1e-10 * g) {  // at the mid-surface: released (eq. C-4)
+          forget();
+          continue;
         }
-        friction_cone(ft, mu * fn);
-        res.friction_work -= (ft[0] * vt[0] + ft[1] * vt[1] + ft[2] * vt[2]) * dt_previous;
+        const double normal[3] = {(p_node[0] - cp.point[0]) / d, (p_node[1] - cp.point[1]) / d, (p_node[2] - cp.point[2]) / d};
+        double vr[3];  // velocity of the node relative to the contact point
+        for (int k = 0; k < 3; ++k)
+          vr[k] = (k == 0 ? nodes.vx[n] : k == 1 ? nodes.vy[n] : nodes.vz[n]) -
+                  (cp.weight[0] * v[0][k] + cp.weight[1] * v[1][k] + cp.weight[2] * v[2][k] + cp.weight[3] * v[3][k]);
+        const double vn = vr[0] * normal[0] + vr[1] * normal[1] + vr[2] * normal[2];
+        const double penetration_rate = -vn;
+        if (!(d < g)) {
+          // Outside the gap: no force, but a candidate closing in must not cross the mid-surface within a step: the
+          // kinematic step 0.5 (g - p) / (dp/dt) = 0.5 d / (dp/dt) holds for it too (eq. C-11).
+          forget();
+          const double approach = scale * kinematic_step(g, p, penetration_rate);
+          if (approach < res.dt && !(release_step > 0.0 && approach < release_step))
+            res.dt = approach, res.dt_node = static_cast<std::int32_t>(n);
+          // A node near the gap may enter it within a step or two and meet the penalty's initial stiffness K0: the
+          // force then acts over the mean of that step and the one before, so both must already be stable for K0.
+          // Nodes within a gap (plus two steps of their normal motion) of entering keep the contact step.
+          if (d - g < g + 2.0 * std::abs(penetration_rate) * dt_estimate) {
+            if (in.node_touched[i] == 0) in.node_touched[i] = 1, in.touched_list.push_back(static_cast<std::int32_t>(i));
+            in.node_tangent_sum[i] += in.pair_stiffness(i, s);
+          }
+          continue;
+        }
+        const double k0 = in.pair_stiffness(i, s);
+        const double kt = tangent_stiffness(k0, g, p);
+        const double mass = nodes.mass[n];
+        // Interface step of the pair (eq. C-11): /DT/INTER/DEL (or the card's dtmin) releases the pair when it
+        // would fall below the minimum (/DT/INTER/CST acts per node, below).
+        const double pair_step = scale * std::min(kinematic_step(g, p, penetration_rate), stiffness_step(mass, kt, viss));
+        if (release_step > 0.0 && pair_step < release_step) {
+          ++res.released;
+          forget();
+          continue;
+        }
+        // The stiffness step is taken per node below, with the tangent stiffnesses of all its pairs summed (a node
+        // at an edge or corner feels two or three segments at once); here the kinematic part.
+        const double closing = scale * kinematic_step(g, p, penetration_rate);
+        if (closing < res.dt) res.dt = closing, res.dt_node = static_cast<std::int32_t>(n);
+        in.node_tangent_sum[i] += kt;
+        // Normal force: penalty plus the pushing part of the damping (eqs. C-5, C-8).
+        const double elastic = penalty_force(k0, g, p);
+        const double damping = damping_force(viss, kt, mass, penetration_rate);
+        const double fn = elastic + damping;
+        res.elastic_energy += elastic_energy(k0, g, p);
+        res.damping_work += damping * penetration_rate * dt_previous;
+        res.max_penetration_ratio = std::max(res.max_penetration_ratio, p / g);
+        // Friction (eq. C-9): trial force in the tangent plane, capped by the Coulomb cone.
+        double ft[3] = {0.0, 0.0, 0.0};
+        if (in.friction) {
+          const double vt[3] = {vr[0] - vn * normal[0], vr[1] - vn * normal[1], vr[2] - vn * normal[2]};
+          // Coefficient (eq. C-9a..c) for the pressure on the node's share of the surface and the sliding speed,
+          // then filtered in time (eq. C-9d).
+          double mu = in.friction_law.fric;
+          if (in.friction_law.kind > 0)
+            mu = friction_coefficient(in.friction_law, fn / in.node_area[i],
+                                      std::sqrt(vt[0] * vt[0] + vt[1] * vt[1] + vt[2] * vt[2]));
+          if (filtered) {  // once per node and pass (its first active pair), restarted after a pass out of contact
+            double& mu_f = in.friction_mu[i];
+            long long& last = in.friction_mu_pass[i];
+            if (last != in.passes) mu_f = last == in.passes - 1 ? alpha * mu + (1.0 - alpha) * mu_f : mu;
+            last = in.passes;
+            mu = mu_f;
+          }
+          if (in.friction_form == 2) {
+            // Stiffness form: the old force turned into the new tangent plane plus Kt times the sliding increment.
+            const double along = *friction[0] * normal[0] + *friction[1] * normal[1] + *friction[2] * normal[2];
+            for (int k = 0; k < 3; ++k) ft[k] = *friction[k] - along * normal[k] - kt * vt[k] * dt_previous;
+          } else {
+            // Viscous form: C_t = VisF sqrt(2 Kt M) times the sliding velocity.
+            const double ct = in.friction_damping * std::sqrt(2.0 * kt * mass);
+            for (int k = 0; k < 3; ++k) ft[k] = -ct * vt[k];
+          }
+          friction_cone(ft, mu * fn);
+          res.friction_work -= (ft[0] * vt[0] + ft[1] * vt[1] + ft[2] * vt[2]) * dt_previous;
+        }
+        *friction[0] = ft[0], *friction[1] = ft[1], *friction[2] = ft[2];
+        const double force[3] = {fn * normal[0] + ft[0], fn * normal[1] + ft[1], fn * normal[2] + ft[2]};
+        for (int k = 0; k < 3; ++k) res.normal_force[static_cast<std::size_t>(k)] += fn * normal[k];
+        for (int k = 0; k < 3; ++k) res.tangential_force[static_cast<std::size_t>(k)] += ft[k];
+        if (in.node_touched[i] == 0) in.touched_list.push_back(static_cast<std::int32_t>(i));
+        if (in.node_touched[i] != 2) in.node_touched[i] = 2, ++res.active_nodes;
+        if (in.release_bc != 0 && !in.node_impacted[i]) c.bc_releases.emplace_back(static_cast<std::int32_t>(n), in.release_bc);
+        in.node_impacted[i] = 1;
+        // Equal and opposite: the node gets `force`, the segment nodes -weight_a force (momentum conserved).
+        auto apply = [&](std::size_t k, double w) {
+          const double gx = w * force[0], gy = w * force[1], gz = w * force[2];
+          nodes.fx[k] += gx, nodes.fy[k] += gy, nodes.fz[k] += gz;
+          if (c.fx[k] == 0.0 && c.fy[k] == 0.0 && c.fz[k] == 0.0) c.touched.push_back(static_cast<std::int32_t>(k));
+          c.fx[k] += gx, c.fy[k] += gy, c.fz[k] += gz;
+          in.applied_node.push_back(static_cast<std::int32_t>(k));
+          in.applied_x.push_back(gx), in.applied_y.push_back(gy), in.applied_z.push_back(gz);
+        };
+        apply(n, 1.0);
+        for (int a = 0; a < 4; ++a)  // a triangle's repeated third node gets its share twice
+          if (cp.weight[a] != 0.0) apply(static_cast<std::size_t>(in.segments[s][static_cast<std::size_t>(a)]), -cp.weight[a]);
       }
-      *friction[0] = ft[0], *friction[1] = ft[1], *friction[2] = ft[2];
-      const double force[3] = {fn * normal[0] + ft[0], fn * normal[1] + ft[1], fn * normal[2] + ft[2]};
-      for (int k = 0; k < 3; ++k) res.normal_force[static_cast<std::size_t>(k)] += fn * normal[k];
-      for (int k = 0; k < 3; ++k) res.tangential_force[static_cast<std::size_t>(k)] += ft[k];
-      if (in.node_touched[i] == 0) in.touched_list.push_back(static_cast<std::int32_t>(i));
-      if (in.node_touched[i] != 2) in.node_touched[i] = 2, ++res.active_nodes;
-      if (in.release_bc != 0 && !in.node_impacted[i]) c.bc_releases.emplace_back(static_cast<std::int32_t>(n), in.release_bc);
-      in.node_impacted[i] = 1;
-      // Equal and opposite: the node gets `force`, the segment nodes -weight_a force (momentum conserved).
-      auto apply = [&](std::size_t k, double w) {
-        const double gx = w * force[0], gy = w * force[1], gz = w * force[2];
-        nodes.fx[k] += gx, nodes.fy[k] += gy, nodes.fz[k] += gz;
-        if (c.fx[k] == 0.0 && c.fy[k] == 0.0 && c.fz[k] == 0.0) c.touched.push_back(static_cast<std::int32_t>(k));
-        c.fx[k] += gx, c.fy[k] += gy, c.fz[k] += gz;
-        in.applied_node.push_back(static_cast<std::int32_t>(k));
-        in.applied_x.push_back(gx), in.applied_y.push_back(gy), in.applied_z.push_back(gz);
-      };
-      apply(n, 1.0);
-      const int corners = in.segment_is_triangle[s] ? 3 : 4;
-      for (int a = 0; a < corners; ++a)
-        if (cp.weight[a] != 0.0) apply(static_cast<std::size_t>(in.segments[s][static_cast<std::size_t>(a)]), -cp.weight[a]);
     }
     // Stiffness step per node (eq. C-11) on the sum of its pairs' tangent stiffnesses plus the stiffness of its own
     // elements: the node sits between the contact springs and its element, and both act in the same cycle.

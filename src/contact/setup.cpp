@@ -254,7 +254,7 @@ ContactState setup_contact(const Model& m, NodalState& nodes, std::vector<std::s
         x[a][0] = nodes.x[k], x[a][1] = nodes.y[k], x[a][2] = nodes.z[k];
       }
       const double p[3] = {nodes.x[n], nodes.y[n], nodes.z[n]};
-      const SegmentPoint c = closest_point_on_segment(p, x, in.segment_is_triangle[s]);
+      const SegmentPoint c = closest_point_on_segment(p, x);
       const double g = in.pair_gap(i, s);
       if (c.distance < g && g - c.distance > worst[i]) {
         worst[i] = g - c.distance, worst_segment[i] = static_cast<std::int32_t>(s);

@@ -118,27 +118,27 @@ void expect_reproduces(const SegmentPoint& c) {
 TEST(ContactKernels, ClosestPointOnFaceEdgeAndCorner) {
   // Above the face: along the normal.
   const double above[3] = {0.3, 0.6, 0.2};
-  const SegmentPoint f = closest_point_on_segment(above, kSquare, false);
+  const SegmentPoint f = closest_point_on_segment(above, kSquare);
   EXPECT_NEAR(f.distance, 0.2, 1e-15);
   EXPECT_NEAR(f.point[0], 0.3, 1e-15);
   EXPECT_NEAR(f.point[1], 0.6, 1e-15);
   expect_reproduces(f);
   // Beside an edge: radially from the edge, shared by its two nodes.
   const double beside[3] = {1.2, 0.5, 0.1};
-  const SegmentPoint e = closest_point_on_segment(beside, kSquare, false);
+  const SegmentPoint e = closest_point_on_segment(beside, kSquare);
   EXPECT_NEAR(e.distance, std::hypot(0.2, 0.1), 1e-15);
   EXPECT_NEAR(e.weight[1], 0.5, 1e-15);
   EXPECT_NEAR(e.weight[2], 0.5, 1e-15);
   expect_reproduces(e);
   // Beyond a corner: from the corner node alone.
   const double corner[3] = {-0.1, -0.2, 0.3};
-  const SegmentPoint c = closest_point_on_segment(corner, kSquare, false);
+  const SegmentPoint c = closest_point_on_segment(corner, kSquare);
   EXPECT_NEAR(c.distance, std::sqrt(0.01 + 0.04 + 0.09), 1e-15);
   EXPECT_NEAR(c.weight[0], 1.0, 1e-15);
   // Triangle segment (third node repeated).
   const double tri[4][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 1, 0}};
   const double over[3] = {0.7, 0.7, 0.1};  // beyond the hypotenuse: its midpoint
-  const SegmentPoint t = closest_point_on_segment(over, tri, true);
+  const SegmentPoint t = closest_point_on_segment(over, tri);
   EXPECT_NEAR(t.point[0], 0.5, 1e-15);
   EXPECT_NEAR(t.point[1], 0.5, 1e-15);
   EXPECT_NEAR(t.distance, std::sqrt(0.04 + 0.04 + 0.01), 1e-15);
@@ -261,5 +261,82 @@ TEST(ContactSearch, BucketSortMatchesBruteForceOnRandomClouds) {
       }
     EXPECT_EQ(found, expected);
     EXPECT_GT(expected.size(), 10u);
+  }
+}
+
+namespace {
+// Independent reference: the Voronoi-region walk of Ericson ("Real-Time Collision Detection", 5.1.5) over the same
+// four-triangle fan, with branches, one pair at a time.
+void reference_on_triangle(const double p[3], const double a[3], const double b[3], const double c[3], double w[3]) {
+  double ab[3], ac[3], ap[3], bp[3], cp[3];
+  for (int k = 0; k < 3; ++k) ab[k] = b[k] - a[k], ac[k] = c[k] - a[k], ap[k] = p[k] - a[k], bp[k] = p[k] - b[k], cp[k] = p[k] - c[k];
+  auto dot = [](const double* u, const double* v) { return u[0] * v[0] + u[1] * v[1] + u[2] * v[2]; };
+  const double d1 = dot(ab, ap), d2 = dot(ac, ap), d3 = dot(ab, bp), d4 = dot(ac, bp), d5 = dot(ab, cp), d6 = dot(ac, cp);
+  const double vc = d1 * d4 - d3 * d2, vb = d5 * d2 - d1 * d6, va = d3 * d6 - d5 * d4;
+  if (d1 <= 0 && d2 <= 0) w[0] = 1, w[1] = 0, w[2] = 0;
+  else if (d3 >= 0 && d4 <= d3) w[0] = 0, w[1] = 1, w[2] = 0;
+  else if (vc <= 0 && d1 >= 0 && d3 <= 0) w[1] = d1 / (d1 - d3), w[0] = 1 - w[1], w[2] = 0;
+  else if (d6 >= 0 && d5 <= d6) w[0] = 0, w[1] = 0, w[2] = 1;
+  else if (vb <= 0 && d2 >= 0 && d6 <= 0) w[2] = d2 / (d2 - d6), w[0] = 1 - w[2], w[1] = 0;
+  else if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0) w[2] = (d4 - d3) / ((d4 - d3) + (d5 - d6)), w[1] = 1 - w[2], w[0] = 0;
+  else w[1] = vb / (va + vb + vc), w[2] = vc / (va + vb + vc), w[0] = 1 - w[1] - w[2];
+}
+double reference_distance(const double p[3], const double x[4][3]) {
+  double centre[3], best = 1e300;
+  for (int k = 0; k < 3; ++k) centre[k] = 0.25 * (x[0][k] + x[1][k] + x[2][k] + x[3][k]);
+  for (int t = 0; t < 4; ++t) {
+    double w[3], d2 = 0.0;
+    reference_on_triangle(p, x[t], x[(t + 1) % 4], centre, w);
+    for (int k = 0; k < 3; ++k) {
+      const double e = p[k] - (w[0] * x[t][k] + w[1] * x[(t + 1) % 4][k] + w[2] * centre[k]);
+      d2 += e * e;
+    }
+    best = std::min(best, d2);
+  }
+  return std::sqrt(best);
+}
+}  // namespace
+
+TEST(ContactKernels, VectorisedBatchMatchesTheRegionWalk) {
+  // Random warped quadrilaterals and triangles (third node repeated), nodes above, beside and far from them: the
+  // batch's distance equals the reference's, and its point is the weighted corners at that distance.
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  PairBatch batch;
+  double nodes[PairBatch::kSize][3], corners[PairBatch::kSize][4][3];
+  for (int round = 0; round < 50; ++round) {
+    for (int i = 0; i < PairBatch::kSize; ++i) {
+      const double base[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+      for (int a = 0; a < 4; ++a) {
+        corners[i][a][0] = base[a][0] + 0.2 * u(rng), corners[i][a][1] = base[a][1] + 0.2 * u(rng);
+        corners[i][a][2] = 0.3 * u(rng);  // warped
+      }
+      if (i % 4 == 3)
+        for (int k = 0; k < 3; ++k) corners[i][3][k] = corners[i][2][k];  // a triangle
+      const double reach = i % 3 == 0 ? 0.2 : i % 3 == 1 ? 1.0 : 3.0;
+      for (int k = 0; k < 3; ++k) nodes[i][k] = 0.5 + reach * u(rng);
+      for (int k = 0; k < 3; ++k) {
+        batch.node[k][i] = nodes[i][k];
+        for (int a = 0; a < 4; ++a) batch.corner[a][k][i] = corners[i][a][k];
+      }
+    }
+    closest_points(batch, PairBatch::kSize);
+    for (int i = 0; i < PairBatch::kSize; ++i) {
+      const double expected = reference_distance(nodes[i], corners[i]);
+      EXPECT_NEAR(batch.distance[i], expected, 1e-12 * (1.0 + expected)) << round << " " << i;
+      double d2 = 0.0, sum = 0.0;
+      for (int k = 0; k < 3; ++k) {
+        double q = 0.0;
+        for (int a = 0; a < 4; ++a) q += batch.weight[a][i] * corners[i][a][k];
+        EXPECT_NEAR(q, batch.point[k][i], 1e-12);
+        d2 += (nodes[i][k] - q) * (nodes[i][k] - q);
+      }
+      for (int a = 0; a < 4; ++a) {
+        sum += batch.weight[a][i];
+        EXPECT_GE(batch.weight[a][i], -1e-12);
+      }
+      EXPECT_NEAR(std::sqrt(d2), batch.distance[i], 1e-12 * (1.0 + expected));
+      EXPECT_NEAR(sum, 1.0, 1e-12);
+    }
   }
 }

@@ -134,6 +134,7 @@ struct ContactState {
   std::vector<std::int32_t> touched;  // nodes with a contact force this cycle (to clear and to sum work)
   // IBC: (node, dof mask) whose boundary conditions the time loop releases after this cycle's pass.
   std::vector<std::pair<std::int32_t, std::uint8_t>> bc_releases;
+  contact::PairBatch batch;  // scratch of the pass: one batch of gathered pairs (eq. C-1)
 };
 
 }  // namespace crumple

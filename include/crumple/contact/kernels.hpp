@@ -91,14 +91,109 @@ inline double friction_filter_weight(int ifiltr, double xfreq, double dt) {
   return std::clamp(alpha, 0.0, 1.0);
 }
 
-// Closest point of a main segment to a node (eq. C-1): the face, an edge or a corner. A quadrilateral is split
-// into four triangles around its centroid (robust for warped segments); `weight` are the shape-function weights
-// of the closest point on the four nodes (sum 1), used to move the contact force to the segment.
+// Closest point of a main segment to a node (eq. C-1). A quadrilateral is split into four triangles around its
+// centroid (robust for warped segments; a triangle segment, its third node repeated, gives the triangle itself);
+// `weight` are the shape-function weights of the closest point on the four nodes (sum 1), used to move the
+// contact force to the segment.
 struct SegmentPoint {
   double point[3];
   double weight[4];
   double distance;
 };
-SegmentPoint closest_point_on_segment(const double node[3], const double x[4][3], bool triangle);
+
+// Closest point of the segment with corners x0..x3 to the node p, over the four-triangle fan (corners k, k+1 and
+// the centroid c, which carries a quarter to each node). Without branches, so that a loop over pairs vectorises:
+// every candidate is computed and the nearest kept by selects. The candidates are the four faces (their
+// orthogonal projection when it falls inside), the four outer edges and the four spokes c-x_k, each clamped to
+// its ends; everything follows from the corner vectors e_k = x_k - c through the scalars
+//   r_k = (p - c).e_k,  q_k = e_k.e_k,  m_k = e_k.e_(k+1),  |p - c|^2.
+// Values only (small structs by value, selects on comparisons of doubles instead of std::max / std::clamp, which
+// return references), so that the compiler keeps everything in registers and if-converts the selects.
+struct Vec3 {
+  double x, y, z;
+};
+inline Vec3 operator-(Vec3 a, Vec3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+inline double dot(Vec3 a, Vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+struct FanPoint {
+  double w0, w1, w2, w3;  // weights of the closest point on the corners (sum 1)
+  double distance2;       // squared distance [L^2]
+};
+[[gnu::always_inline]] inline FanPoint closest_on_fan(Vec3 p, Vec3 x0, Vec3 x1, Vec3 x2, Vec3 x3) {
+  const Vec3 c{0.25 * (x0.x + x1.x + x2.x + x3.x), 0.25 * (x0.y + x1.y + x2.y + x3.y),
+               0.25 * (x0.z + x1.z + x2.z + x3.z)};
+  const Vec3 cp = p - c;
+  const Vec3 e[4] = {x0 - c, x1 - c, x2 - c, x3 - c};
+  const double pp = dot(cp, cp);
+  double r[4], q[4], m[4];
+#pragma GCC unroll 4
+  for (int k = 0; k < 4; ++k) r[k] = dot(cp, e[k]), q[k] = dot(e[k], e[k]), m[k] = dot(e[k], e[(k + 1) & 3]);
+  auto unit = [](double t) { return t < 0.0 ? 0.0 : (t > 1.0 ? 1.0 : t); };
+  // Squared distance from p to c + a e_k + b e_k+1, from the vectors (not from |cp|^2 - ..., which cancels for a
+  // node close to the segment, exactly where the penetration is measured).
+  auto gap2 = [&](double a, double b, int k) {
+    const Vec3& u = e[k];
+    const Vec3& v = e[(k + 1) & 3];
+    const Vec3 d{cp.x - a * u.x - b * v.x, cp.y - a * u.y - b * v.y, cp.z - a * u.z - b * v.z};
+    return dot(d, d);
+  };
+  FanPoint best{0.25, 0.25, 0.25, 0.25, pp};  // the centroid itself (the spokes' common end)
+  auto keep = [&best](double d2, double w0, double w1, double w2, double w3) {
+    const double b = best.distance2;
+    best.w0 = d2 < b ? w0 : best.w0, best.w1 = d2 < b ? w1 : best.w1, best.w2 = d2 < b ? w2 : best.w2;
+    best.w3 = d2 < b ? w3 : best.w3, best.distance2 = d2 < b ? d2 : b;
+  };
+  // The weight vector with `a` on corner k, `b` on corner k+1 and `rest` on all four added.
+  auto weights = [](int k, double a, double b, double rest, double w[4]) {
+#pragma GCC unroll 4
+    for (int n = 0; n < 4; ++n) w[n] = rest + (n == k ? a : 0.0) + (n == ((k + 1) & 3) ? b : 0.0);
+  };
+#pragma GCC unroll 4  // every index a constant: the loop over pairs around this vectorises
+  for (int k = 0; k < 4; ++k) {
+    const int k1 = (k + 1) & 3;
+    double w[4];
+    // Spoke c -> x_k: c + t e_k.
+    const double ts = unit(q[k] > 0.0 ? r[k] / q[k] : 0.0);
+    weights(k, ts, 0.0, 0.25 * (1.0 - ts), w);
+    keep(gap2(ts, 0.0, k), w[0], w[1], w[2], w[3]);
+    // Outer edge x_k -> x_k+1: x_k + t f, f = e_k+1 - e_k, relative to x_k: (cp - e_k).
+    const double ff = q[k] + q[k1] - 2.0 * m[k], along = (r[k1] - r[k]) - (m[k] - q[k]);
+    const double te = unit(ff > 0.0 ? along / ff : 0.0);
+    weights(k, 1.0 - te, te, 0.0, w);
+    keep(gap2(1.0 - te, te, k), w[0], w[1], w[2], w[3]);
+    // Face (x_k, x_k+1, c): c + s e_k + t e_k+1 from the normal equations, when inside.
+    const double det = q[k] * q[k1] - m[k] * m[k];
+    const double inv = det > 0.0 ? 1.0 / det : 0.0;
+    const double sf = (q[k1] * r[k] - m[k] * r[k1]) * inv, tf = (q[k] * r[k1] - m[k] * r[k]) * inv;
+    const double rest = 1.0 - sf - tf;
+    double lowest = sf < tf ? sf : tf;
+    lowest = lowest < rest ? lowest : rest;
+    lowest = det > 0.0 ? lowest : -1.0;
+    weights(k, sf, tf, 0.25 * rest, w);
+    keep(lowest >= 0.0 ? gap2(sf, tf, k) : std::numeric_limits<double>::infinity(), w[0], w[1], w[2], w[3]);
+  }
+  return best;
+}
+
+// The same for callers with arrays (setup, tests).
+inline SegmentPoint closest_point_on_segment(const double node[3], const double x[4][3]) {
+  auto v = [](const double* a) { return Vec3{a[0], a[1], a[2]}; };
+  const FanPoint f = closest_on_fan(v(node), v(x[0]), v(x[1]), v(x[2]), v(x[3]));
+  SegmentPoint s{{0, 0, 0}, {f.w0, f.w1, f.w2, f.w3}, std::sqrt(f.distance2)};
+  for (int k = 0; k < 3; ++k) s.point[k] = f.w0 * x[0][k] + f.w1 * x[1][k] + f.w2 * x[2][k] + f.w3 * x[3][k];
+  return s;
+}
+
+// A batch of candidate pairs gathered as structures of arrays (eq. C-1 over pairs): node positions and segment
+// corners in, distance, weights and contact point out. closest_points runs the fan over the batch in one loop
+// without branches, which the compiler vectorises.
+struct PairBatch {
+  static constexpr int kSize = 64;
+  double node[3][kSize];
+  double corner[4][3][kSize];
+  double distance[kSize];
+  double weight[4][kSize];
+  double point[3][kSize];
+};
+void closest_points(PairBatch& batch, int count);
 
 }  // namespace crumple::contact
