@@ -47,7 +47,7 @@ struct Scene {
         for (std::int32_t v : seg) table.connectivity.push_back(v);
       }
     const std::size_t segments = in.segments.size(), secondary = in.secondary_nodes.size();
-    in.segment_is_triangle.assign(segments, 0), in.segment_gap.assign(segments, gap);
+    in.segment_gap.assign(segments, gap);
     in.segment_stiffness.assign(segments, 100.0), in.segment_active.assign(segments, 1);
     in.segment_owner.assign(segments, -1), in.segment_owner_kind.assign(segments, 0);
     for (std::size_t k = 0; k < plate_nodes; ++k) in.main_nodes.push_back(static_cast<std::int32_t>(k));

@@ -142,7 +142,6 @@ ContactState setup_contact(const Model& m, NodalState& nodes, std::vector<std::s
     int shell_segments = 0;
     for (const Segment& seg : surface.segments) {
       in.segments.push_back(seg.nodes);
-      in.segment_is_triangle.push_back(seg.nodes[2] == seg.nodes[3]);
       in.segment_owner.push_back(seg.owner.index);
       in.segment_owner_kind.push_back(static_cast<std::uint8_t>(seg.owner.kind));
       const ElementFacts f = seg.owner.index >= 0 ? facts_of(m, seg.owner, segment_area(m, seg.nodes)) : ElementFacts{};

@@ -63,7 +63,6 @@ struct ContactInterface {
   std::vector<std::int32_t> element_of_node;
   std::vector<std::uint8_t> element_kind_of_node;
   std::vector<std::array<std::int32_t, 4>> segments;  // main segment nodes (triangles repeat the third)
-  std::vector<std::uint8_t> segment_is_triangle;
   std::vector<double> segment_gap;                    // gap per segment (Igap 0: the constant gap) [L]
   std::vector<double> segment_stiffness;              // K0 per segment (eq. C-3) [F/L]
   std::vector<std::uint8_t> segment_active;           // 0: Inacti 2 or element deleted (Idel)
