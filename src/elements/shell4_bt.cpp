@@ -206,7 +206,7 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
         const double rate = p.hardening.filtered_rate(increment_rate, state.eps_rate[ip], dt);  // eq. RF
         state.eps_rate[ip] = rate;
         const auto r = materials::plane_stress_update(elastic, p.hardening, ex, ey, g, rate, state.eps_p[ip], sxx,
-                                                      syy, sxy);
+                                                      syy, sxy, &state.static_yield[ip]);
         state.eps_p[ip] += r.plastic_strain_increment;
         if (r.plastic_strain_increment > 0.0 && p.physical_hourglass) {
           // Elastic-plastic tangent of the point, E H' / (E + H'), for the hourglass modes (eq. S-12).

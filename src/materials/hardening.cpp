@@ -70,6 +70,14 @@ double Hardening::yield(double eps_p, double eps_rate) const {
   return std::numeric_limits<double>::infinity();
 }
 
+double Hardening::static_part(double eps_p) const { return jc_static(*johnson_cook, eps_p); }
+
+double Hardening::yield_from_static(double static_part, double eps_rate) const {
+  const auto& p = *johnson_cook;
+  const double factor = jc_rate_factor(p, eps_rate);
+  return capped(p, static_part * factor, factor);  // the expression of yield, from the kept part
+}
+
 double Hardening::slope(double eps_p, double eps_rate) const {
   switch (law) {
     case MaterialLaw::Elastic: return 0.0;

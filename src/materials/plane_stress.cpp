@@ -8,7 +8,7 @@ namespace crumple::materials {
 
 PlaneStressResult plane_stress_update(const PlaneStressElastic& el, const Hardening& hardening, double dexx,
                                       double deyy, double dgxy, double rate, double eps_p, double& sxx, double& syy,
-                                      double& sxy) {
+                                      double& sxy, double* static_yield) {
   const double E = el.young;
   const double nu = el.poisson;
   const double G = E / (2.0 * (1.0 + nu));
@@ -22,7 +22,9 @@ PlaneStressResult plane_stress_update(const PlaneStressElastic& el, const Harden
   PlaneStressResult result{0.0, -nu / E * ((txx + tyy) - old_sum)};
   if (!hardening.plastic()) return result;
 
-  const double yield0 = hardening.yield(eps_p, rate);
+  const bool kept = static_yield != nullptr && hardening.has_static_part();
+  if (kept && std::isnan(*static_yield)) *static_yield = hardening.static_part(eps_p);
+  const double yield0 = kept ? hardening.yield_from_static(*static_yield, rate) : hardening.yield(eps_p, rate);
   const double trial = von_mises_plane_stress(txx, tyy, txy);
   if (trial <= yield0) return result;
 
@@ -69,6 +71,7 @@ PlaneStressResult plane_stress_update(const PlaneStressElastic& el, const Harden
   syy = 0.5 * (new_p + new_q);
   sxy = r * b;
   result.plastic_strain_increment = 2.0 / 3.0 * g * von_mises_plane_stress(sxx, syy, sxy);
+  if (kept) *static_yield = hardening.static_part(eps_p + result.plastic_strain_increment);
   // Through-thickness strain: elastic part from the stress change, plastic part from incompressibility
   // (d eps_p_zz = -(d eps_p_xx + d eps_p_yy) = -g (sxx + syy) / 3).
   result.thickness_strain = -nu / E * ((sxx + syy) - old_sum) - g * (sxx + syy) / 3.0;

@@ -21,6 +21,12 @@ struct Hardening {
   double yield(double eps_p, double eps_rate) const;
   // d sigma_y / d eps_p at fixed rate (for the return mapping's Newton iteration).
   double slope(double eps_p, double eps_rate) const;
+  // Johnson-Cook's rate-independent part a + b eps_p^n changes only with eps_p: a point keeps it with its plastic
+  // strain, and its elastic check, yield_from_static, then costs no power (the same value to the last bit as
+  // yield). Other laws have no such part.
+  bool has_static_part() const { return law == MaterialLaw::JohnsonCook; }
+  double static_part(double eps_p) const;
+  double yield_from_static(double static_part, double eps_rate) const;
   // Both at once (one power evaluation for Johnson-Cook): returns sigma_y, writes the slope.
   double yield_and_slope(double eps_p, double eps_rate, double& slope) const;
   // Strain rate the yield stress sees (docs/theory/materials.md, eq. RF): with Fsmooth on and a cut-off Fcut, the

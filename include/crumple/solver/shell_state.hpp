@@ -3,6 +3,7 @@
 // element histories. Point arrays are element-major within a group: point k of element e of group g is at
 // point_offset[g] + (e - group.begin) * points[g] + k.
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace crumple {
@@ -16,6 +17,7 @@ struct ShellState {
   std::vector<double> sxx, syy, sxy;
   std::vector<double> eps_p;     // equivalent plastic strain
   std::vector<double> eps_rate;  // strain rate the yield stress saw last cycle, filtered (eq. RF) [1/T]
+  std::vector<double> static_yield;  // Johnson-Cook a + b eps_p^n kept with eps_p (NaN until first used) [stress]
 
   // Per element (index in the kind's ElementTable).
   std::vector<double> qx, qy;           // transverse shear resultants (per unit length) [M T^-2]
@@ -37,9 +39,10 @@ struct ShellState {
     hourglass.assign(5 * n, 0.0);
     deleted.assign(n, 0);
   }
-  // Sizes the per-point arrays for `total` through-thickness points, every value zero.
+  // Sizes the per-point arrays for `total` through-thickness points, every value zero (the kept yield part NaN).
   void resize_points(std::size_t total) {
     for (auto* v : {&sxx, &syy, &sxy, &eps_p, &eps_rate}) v->assign(total, 0.0);
+    static_yield.assign(total, std::numeric_limits<double>::quiet_NaN());
   }
 };
 
