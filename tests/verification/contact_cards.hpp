@@ -36,6 +36,21 @@ inline std::string type7_card(long long id, long long group, long long surface, 
   return s;
 }
 
+// A flat grid of nx x ny shells of sides hx, hy with its corner at (x0, y0, z): nodes first_node + i + (nx+1) j
+// appended to `nodes`, shells numbered from first_shell returned.
+inline std::vector<ShellRow> shell_grid(int nx, int ny, double hx, double hy, double x0, double y0, double z,
+                                        long long first_node, long long first_shell, std::vector<NodeRow>& nodes) {
+  auto id = [&](int i, int j) { return first_node + i + (nx + 1LL) * j; };
+  for (int j = 0; j <= ny; ++j)
+    for (int i = 0; i <= nx; ++i) nodes.push_back({id(i, j), x0 + hx * i, y0 + hy * j, z});
+  std::vector<ShellRow> shells;
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i)
+      shells.push_back({first_shell + i + static_cast<long long>(nx) * j, id(i, j), id(i + 1, j), id(i + 1, j + 1),
+                        id(i, j + 1)});
+  return shells;
+}
+
 inline std::string surface_of_part(long long id, long long part) {
   return "/SURF/PART/" + std::to_string(id) + "\nsurface\n" + I(part) + "\n";
 }

@@ -34,11 +34,7 @@ Sliding slide(const Type7Options& o, double end_time) {
   std::vector<NodeRow> nodes;
   std::vector<ShellRow> plate, blocks;
   // Plate: 10 x 2 shells of 0.1 m, nodes 1..33, fixed.
-  for (int j = 0; j <= 2; ++j)
-    for (int i = 0; i <= 10; ++i) nodes.push_back({1 + i + 11 * j, 0.1 * i, 0.1 * j, 0.0});
-  long long id = 1;
-  for (int j = 0; j < 2; ++j)
-    for (int i = 0; i < 10; ++i) plate.push_back({id++, 1 + i + 11 * j, 2 + i + 11 * j, 13 + i + 11 * j, 12 + i + 11 * j});
+  plate = shell_grid(10, 2, 0.1, 0.1, 0.0, 0.0, 0.0, 1, 1, nodes);
   // Block resting at its static penetration: a node's weight m g / 4 = 0.0957 N on K0 = E t / 2 = 2.1e8 N/m is
   // p = 4.6e-10 m (the penalty is linear at p << g); away from the plate's nodes.
   const double weight = 7800.0 * t * block * block / 4.0 * kG, k0 = 0.5 * 2.1e11 * t;

@@ -25,11 +25,8 @@ struct Outcome {
 Outcome start_inside(int inacti, const std::string& ibc = "000", const std::string& block_bcs = "") {
   std::vector<NodeRow> nodes;
   std::vector<ShellRow> plate, block;
-  for (int j = 0; j <= 4; ++j)
-    for (int i = 0; i <= 4; ++i) nodes.push_back({1 + i + 5 * j, 0.025 * i, 0.025 * j, 0.0});
-  long long id = 1;
-  for (int j = 0; j < 4; ++j)
-    for (int i = 0; i < 4; ++i) plate.push_back({id++, 1 + i + 5 * j, 2 + i + 5 * j, 7 + i + 5 * j, 6 + i + 5 * j});
+  plate = shell_grid(4, 4, 0.025, 0.025, 0.0, 0.0, 0.0, 1, 1, nodes);
+  long long id = 17;  // the block's shells follow the plate's 16
   std::vector<long long> block_nodes, plate_nodes;
   for (int j = 0; j <= 2; ++j)
     for (int i = 0; i <= 2; ++i) {
