@@ -3,24 +3,14 @@
 // every brick face on the boundary of the brick mesh (a face that belongs to one brick only).
 #include <algorithm>
 #include <array>
-#include <cmath>
 
 #include "crumple/contact/contact.hpp"
+#include "crumple/model/geometry.hpp"
 
 namespace crumple::contact {
-namespace {
 
-using Point = std::array<double, 3>;
-
-// Area of a quadrilateral, half the norm of the cross product of its diagonals (a triangle when two corners
-// coincide).
-double quad_area(const Point& a, const Point& b, const Point& c, const Point& d) {
-  const Point p{c[0] - a[0], c[1] - a[1], c[2] - a[2]}, q{d[0] - b[0], d[1] - b[1], d[2] - b[2]};
-  const double x = p[1] * q[2] - p[2] * q[1], y = p[2] * q[0] - p[0] * q[2], z = p[0] * q[1] - p[1] * q[0];
-  return 0.5 * std::sqrt(x * x + y * y + z * z);
-}
-
-}  // namespace
+using geometry::Point;
+using geometry::quad_area;
 
 std::vector<double> node_surface_areas(const Model& m) {
   std::vector<double> area(m.nodes.size(), 0.0);
@@ -33,7 +23,8 @@ std::vector<double> node_surface_areas(const Model& m) {
     const int count = nodes_per_element(kind);
     for (std::size_t e = 0; e < table.size(); ++e) {
       const std::int32_t* c = table.nodes_of(e);
-      const double a = quad_area(X(c[0]), X(c[1]), X(c[2]), X(c[count == 4 ? 3 : 2]));
+      const double a = count == 4 ? quad_area(X(c[0]), X(c[1]), X(c[2]), X(c[3]))
+                                  : geometry::triangle_area(X(c[0]), X(c[1]), X(c[2]));
       for (int k = 0; k < count; ++k) area[static_cast<std::size_t>(c[k])] += a / count;
     }
   }

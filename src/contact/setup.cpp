@@ -6,6 +6,7 @@
 
 #include "crumple/contact/contact.hpp"
 #include "crumple/contact/kernels.hpp"
+#include "crumple/model/geometry.hpp"
 
 namespace crumple::contact {
 namespace {
@@ -46,15 +47,9 @@ double brick_volume(const Model& m, std::int32_t e) {
 double segment_area(const Model& m, const std::array<std::int32_t, 4>& s) {
   auto X = [&](int a) {
     const auto k = static_cast<std::size_t>(s[static_cast<std::size_t>(a)]);
-    return std::array<double, 3>{m.nodes.x[k], m.nodes.y[k], m.nodes.z[k]};
+    return geometry::Point{m.nodes.x[k], m.nodes.y[k], m.nodes.z[k]};
   };
-  const auto a = X(0), b = X(1), c = X(2), d = X(3);
-  double u[3], v[3];
-  for (std::size_t k = 0; k < 3; ++k) u[k] = c[k] - a[k], v[k] = d[k] - b[k];
-  if (s[2] == s[3])
-    for (std::size_t k = 0; k < 3; ++k) u[k] = b[k] - a[k], v[k] = c[k] - a[k];
-  const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
-  return 0.5 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  return s[2] == s[3] ? geometry::triangle_area(X(0), X(1), X(2)) : geometry::quad_area(X(0), X(1), X(2), X(3));
 }
 
 double shortest_side(const Model& m, const std::array<std::int32_t, 4>& s) {
