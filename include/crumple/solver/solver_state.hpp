@@ -66,7 +66,6 @@ struct SolverState {
   EnergyBalanceState energy;
   double mass_initial = 0.0;
   double mass_added = 0.0;         // mass added by /DT/NODA/CST [M]
-  long long deleted_by_time_step = 0;  // elements deleted below their type's minimum step
   std::vector<double> nodal_stiffness;  // scratch of the nodal time step: sum of element stiffness estimates
 };
 

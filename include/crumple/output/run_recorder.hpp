@@ -1,0 +1,53 @@
+#pragma once
+// What a run writes while it goes (docs/output-format.md): the listing NAME.out with its energy table and the
+// run's events as text, the field frames and histories of NAME.h5, and the run summary at the end.
+#include <filesystem>
+#include <iosfwd>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "crumple/model/model.hpp"
+#include "crumple/output/listing.hpp"
+#include "crumple/output/results_file.hpp"
+#include "crumple/output/run_summary.hpp"
+#include "crumple/solver/run_events.hpp"
+#include "crumple/solver/solver_state.hpp"
+
+namespace crumple {
+
+// Listing text of what bounds the step: "SHELL 61", "INTER 2 NODE 17", "NODE 5", "LAST STEP", "-".
+std::string describe(const StepControl& control, const Model& model);
+// The message of a stopped run, naming the element, node or limit.
+std::string describe(const StopReason& stop, const Model& model);
+// The status a stop reason gives the run.
+RunStatus status_of(const StopReason& stop);
+
+class RunRecorder {
+ public:
+  // Opens NAME.out and, when `write_results`, NAME.h5 in `directory`. Throws std::runtime_error.
+  RunRecorder(const Model& model, const std::filesystem::path& directory, const std::string& name,
+              bool write_results);
+
+  // Listing header and the start-up notes (also on the console).
+  void start(const std::vector<std::string>& notes, std::ostream& console);
+  // One row of the energy table with the step dt^(n+1/2) of the cycle and what bounds it.
+  void row(const SolverState& state, double dt, const StepControl& control);
+  void frame(const SolverState& state);
+  void history(const SolverState& state, double dt);
+  // The end: the last good state as a frame when the run stopped early, the results file closed, and the
+  // listing's closing lines (termination, deletions, added mass, interfaces, cycles, time profile).
+  void finish(const SolverState& state, const RunEvents& events, const PhaseTimes& phases, double wall_seconds);
+
+ private:
+  const Model& model_;
+  std::string name_;
+  Listing listing_;
+  std::optional<ResultsFile> results_;
+};
+
+// The run summary of a finished run (README, "Run summary").
+RunSummary summarize_run(const Model& model, const std::string& name, const SolverState& state,
+                         const RunEvents& events, const PhaseTimes& phases, double dt, double wall_seconds);
+
+}  // namespace crumple

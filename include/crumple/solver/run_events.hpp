@@ -1,0 +1,76 @@
+#pragma once
+// What happens during a run, as data: what bounds the time step, the events of a cycle (deletions, releases) and
+// why a run stops. The solver records them; output/ turns them into listing text and messages
+// (docs/theory/time-loop.md, "Events").
+#include <cstdint>
+#include <vector>
+
+#include "crumple/model/elements.hpp"
+
+namespace crumple {
+
+// What sets dt^(n+1/2): the listing's ELEMENT column.
+struct StepControl {
+  enum class Source : std::uint8_t { None, Element, Interface, Node, LastStep };
+  Source source = Source::None;
+  ElementKind kind = ElementKind::Shell4;  // Element: its kind
+  std::int32_t index = -1;                 // Element: index in its kind's table; Interface, Node: dense node
+  std::int32_t interface = -1;             // Interface: index into Model::type7_interfaces
+
+  static StepControl element(ElementKind kind, std::int32_t index) { return {Source::Element, kind, index, -1}; }
+  static StepControl node(std::int32_t node) { return {Source::Node, ElementKind::Shell4, node, -1}; }
+  static StepControl contact(std::int32_t interface, std::int32_t node) {
+    return {Source::Interface, ElementKind::Shell4, node, interface};
+  }
+};
+
+// Something the listing reports once, at the cycle it happened.
+struct RunEvent {
+  enum class Kind : std::uint8_t {
+    ElementDeletedBelowMinimumStep,  // /DT/<type>/DEL: element (kind, index), value = its scaled step [T]
+    ElementSwitchedToSmallStrain,    // /DT/<type>/CST: element (kind, index), value = its scaled step [T]
+    ContactBoundaryReleased,         // TYPE7 IBC: node index, value = the released dof mask
+  };
+  Kind kind;
+  long long cycle = 0;
+  double time = 0.0;
+  ElementKind element_kind = ElementKind::Shell4;
+  std::int32_t index = -1;
+  double value = 0.0;
+};
+
+// Why a run ended before its end time. `kind` None while it runs on.
+struct StopReason {
+  enum class Kind : std::uint8_t {
+    None,
+    NonFiniteForces,          // element forces NaN or infinite: element (kind, index)
+    InvertedElement,          // negative volume or area: element (kind, index)
+    ElementStepBelowMinimum,  // /DT/<type>/STOP: element (kind, index), dt, minimum
+    StepBelowMinimum,         // /DT Δt_min: dt, minimum, control
+    NoStableStep,             // nothing bounds the step at the start
+    EnergyNotFinite,          // NaN or Inf in the energy balance
+    AddedMassLimit,           // /STOP Mmax: value = added mass, minimum = the card's ratio
+    EnergyErrorLimit,         // /STOP Emax: value = |error| ratio
+  };
+  Kind kind = Kind::None;
+  long long cycle = 0;
+  double time = 0.0;
+  ElementKind element_kind = ElementKind::Shell4;
+  std::int32_t index = -1;
+  double dt = 0.0, minimum = 0.0, value = 0.0;
+  StepControl control;
+
+  bool stopped() const { return kind != Kind::None; }
+  // /STOP limits end the run as "stopped"; everything else is an error.
+  bool is_limit() const { return kind == Kind::AddedMassLimit || kind == Kind::EnergyErrorLimit; }
+};
+
+// Events of the run: the solver appends, the output drains `pending` at every monitor phase.
+struct RunEvents {
+  std::vector<RunEvent> pending;
+  StopReason stop;
+  long long deleted_below_minimum_step = 0;  // elements deleted by /DT/<type>/DEL over the run
+  long long switched_to_small_strain = 0;    // elements switched by /DT/<type>/CST over the run
+};
+
+}  // namespace crumple

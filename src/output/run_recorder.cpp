@@ -1,0 +1,187 @@
+#include "crumple/output/run_recorder.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ostream.h>
+
+namespace crumple {
+namespace {
+
+std::string element_name(const Model& m, ElementKind kind, std::int32_t index) {
+  return fmt::format("{} {}", element_kind_name(kind),
+                     m.elements[static_cast<int>(kind)].user_id[static_cast<std::size_t>(index)]);
+}
+
+std::int64_t part_id_of(const Model& m, ElementKind kind, std::int32_t index) {
+  const auto part = m.elements[static_cast<int>(kind)].part[static_cast<std::size_t>(index)];
+  return m.parts[static_cast<std::size_t>(part)].user_id;
+}
+
+double total_mass(const SolverState& s) {
+  double total = 0.0;
+  for (double mass : s.nodes.mass) total += mass;
+  return total;
+}
+
+}  // namespace
+
+std::string describe(const StepControl& c, const Model& m) {
+  switch (c.source) {
+    case StepControl::Source::None: return "-";
+    case StepControl::Source::Element: return element_name(m, c.kind, c.index);
+    case StepControl::Source::Interface:
+      return fmt::format("INTER {} NODE {}", m.type7_interfaces[static_cast<std::size_t>(c.interface)].user_id,
+                         m.nodes.user_id[static_cast<std::size_t>(c.index)]);
+    case StepControl::Source::Node: return fmt::format("NODE {}", m.nodes.user_id[static_cast<std::size_t>(c.index)]);
+    case StepControl::Source::LastStep: return "LAST STEP";
+  }
+  return "-";
+}
+
+std::string describe(const StopReason& r, const Model& m) {
+  using K = StopReason::Kind;
+  switch (r.kind) {
+    case K::None: return "normal termination";
+    case K::NonFiniteForces:
+      return fmt::format("{} of part {}: NaN or infinite forces at cycle {} (time {:.6g})",
+                         element_name(m, r.element_kind, r.index), part_id_of(m, r.element_kind, r.index), r.cycle,
+                         r.time);
+    case K::InvertedElement:
+      return fmt::format("{} of part {} inverted ({}) at cycle {}", element_name(m, r.element_kind, r.index),
+                         part_id_of(m, r.element_kind, r.index),
+                         r.element_kind == ElementKind::Brick8 ? "negative volume"
+                                                               : "zero or negative area or corner Jacobian",
+                         r.cycle);
+    case K::ElementStepBelowMinimum:
+      return fmt::format("{} of part {}: time step {:.4e} below the minimum {:.4e} at cycle {}",
+                         element_name(m, r.element_kind, r.index), part_id_of(m, r.element_kind, r.index), r.dt,
+                         r.minimum, r.cycle);
+    case K::StepBelowMinimum:
+      return fmt::format("time step {:.4e} below the minimum {:.4e} ({}) at cycle {}", r.dt, r.minimum,
+                         describe(r.control, m), r.cycle);
+    case K::NoStableStep:
+      return "no element limits the time step: the model has nothing with stiffness to integrate (add the "
+             "elements the rigid bodies or masses are attached to)";
+    case K::EnergyNotFinite:
+      return fmt::format("NaN or Inf in the energy balance at cycle {} (time {:.4e})", r.cycle, r.time);
+    case K::AddedMassLimit:
+      return fmt::format("/STOP: added mass {:.4g} exceeds {:.3g} of the initial mass at cycle {}", r.value,
+                         r.minimum, r.cycle);
+    case K::EnergyErrorLimit:
+      return fmt::format("/STOP: energy error {:.3g} % exceeds the limit at cycle {}", 100.0 * r.value, r.cycle);
+  }
+  return "unknown stop";
+}
+
+RunStatus status_of(const StopReason& stop) {
+  return !stop.stopped() ? RunStatus::Normal : stop.is_limit() ? RunStatus::Stopped : RunStatus::Error;
+}
+
+RunRecorder::RunRecorder(const Model& model, const std::filesystem::path& directory, const std::string& name,
+                         bool write_results)
+    : model_(model), name_(name), listing_(directory / (name + ".out")) {
+  if (write_results) results_.emplace(directory / (name + ".h5"), model);
+}
+
+void RunRecorder::start(const std::vector<std::string>& notes, std::ostream& console) {
+  const Model& m = model_;
+  listing_.line(fmt::format("Crumple explicit run {}  ({})", name_, m.title));
+  listing_.line(fmt::format("nodes {}  4-node shells {}  element groups {}  end time {:g}", m.nodes.size(),
+                            m.elements[0].size(), m.element_groups.size(), m.run.end_time));
+  for (const auto& note : notes) listing_.line("NOTE: " + note);
+  for (const auto& note : notes) fmt::print(console, "note: {}\n", note);
+  listing_.table_header();
+}
+
+void RunRecorder::row(const SolverState& s, double dt, const StepControl& control) {
+  const EnergyBalanceState& e = s.energy;
+  const double mass = total_mass(s);
+  listing_.row({s.cycle, s.time, dt, describe(control, model_), e.error_percent(), e.internal,
+                e.kinetic_translational, e.kinetic_rotational, e.external_work, e.hourglass, e.contact,
+                (mass - s.mass_initial) / s.mass_initial, mass, s.mass_added});
+}
+
+void RunRecorder::frame(const SolverState& s) {
+  if (results_) results_->write_frame(s.time, s.cycle, model_, s);
+}
+
+void RunRecorder::history(const SolverState& s, double dt) {
+  if (!results_) return;
+  const NodalState& n = s.nodes;
+  HistoryRow row;
+  row.time = s.time, row.dt = dt;
+  row.internal = s.energy.internal, row.kinetic_translational = s.energy.kinetic_translational;
+  row.kinetic_rotational = s.energy.kinetic_rotational, row.hourglass = s.energy.hourglass;
+  row.contact = s.energy.contact, row.external_work = s.energy.external_work;
+  row.total = row.internal + row.kinetic_translational + row.kinetic_rotational + row.hourglass + row.contact;
+  for (const auto& w : s.walls) row.rigid_wall_force.insert(row.rigid_wall_force.end(), w.force.begin(), w.force.end());
+  for (const auto& b : s.bodies) {
+    const auto k = static_cast<std::size_t>(b.main_node);
+    for (double v : {n.x[k], n.y[k], n.z[k], n.vx[k], n.vy[k], n.vz[k], b.omega[0], b.omega[1], b.omega[2]})
+      row.rigid_body_values.push_back(v);
+  }
+  for (const InterfaceResult& r : s.contact.results) {
+    row.interface_values.insert(row.interface_values.end(), r.normal_force.begin(), r.normal_force.end());
+    row.interface_values.insert(row.interface_values.end(), r.tangential_force.begin(), r.tangential_force.end());
+    for (double v : {r.elastic_energy, r.friction_work, r.absorbed, static_cast<double>(r.active_nodes)})
+      row.interface_values.push_back(v);
+  }
+  results_->write_history(row);
+}
+
+void RunRecorder::finish(const SolverState& s, const RunEvents& events, const PhaseTimes& phases, double wall) {
+  if (results_) {
+    if (events.stop.stopped()) results_->write_frame(s.time, s.cycle, model_, s);  // the last good state
+    results_->close();
+  }
+  listing_.line(!events.stop.stopped() ? "NORMAL TERMINATION" : "ERROR TERMINATION: " + describe(events.stop, model_));
+  if (events.deleted_below_minimum_step > 0)
+    listing_.line(fmt::format("ELEMENTS DELETED BELOW THEIR MINIMUM TIME STEP: {}", events.deleted_below_minimum_step));
+  if (s.mass_added > 0.0) listing_.line(fmt::format("MASS ADDED BY /DT/NODA/CST OR /DT/INTER/CST: {:.6g}", s.mass_added));
+  for (std::size_t f = 0; f < s.contact.results.size(); ++f) {
+    const InterfaceResult& r = s.contact.results[f];
+    listing_.line(fmt::format("INTER {}: largest p/g {:.4f}, absorbed energy {:.6g} (elastic now {:.6g}, damping "
+                              "{:.6g}, friction {:.6g}), contacts released below dtmin {}, mass added {:.6g}",
+                              model_.type7_interfaces[f].user_id, r.max_penetration_ratio, r.absorbed,
+                              r.elastic_energy, r.damping_work, r.friction_work, r.released, r.added_mass));
+  }
+  listing_.line(fmt::format("TOTAL NUMBER OF CYCLES {}   ELAPSED {:.3f} s", s.cycle, wall));
+  const double cycle_time = phases.elements + phases.contact + phases.loads + phases.update + phases.output;
+  auto share = [&](double t) { return cycle_time > 0.0 ? 100.0 * t / cycle_time : 0.0; };
+  listing_.line(fmt::format("TIME PROFILE (s, % of the cycles): elements {:.3f} ({:.1f} %)  contact {:.3f} ({:.1f} %, "
+                            "{} passes)  loads and step {:.3f} ({:.1f} %)  nodal update {:.3f} ({:.1f} %)  "
+                            "output {:.3f} ({:.1f} %)",
+                            phases.elements, share(phases.elements), phases.contact, share(phases.contact),
+                            phases.contact_passes, phases.loads, share(phases.loads), phases.update,
+                            share(phases.update), phases.output, share(phases.output)));
+}
+
+RunSummary summarize_run(const Model& m, const std::string& name, const SolverState& s, const RunEvents& events,
+                         const PhaseTimes& phases, double dt, double wall) {
+  RunSummary summary;
+  summary.name = name;
+  summary.phases = phases;
+  summary.cycles = s.cycle;
+  summary.time = s.time;
+  summary.dt = dt;
+  const EnergyBalanceState& e = s.energy;
+  summary.energy.internal = e.internal;
+  summary.energy.kinetic_translational = e.kinetic_translational;
+  summary.energy.kinetic_rotational = e.kinetic_rotational;
+  summary.energy.contact = e.contact;
+  summary.energy.hourglass = e.hourglass;
+  summary.energy.external_work = e.external_work;
+  summary.energy.total = e.internal + e.kinetic_translational + e.kinetic_rotational + e.hourglass + e.contact;
+  summary.energy.error_percent = e.error_percent();
+  summary.mass_total = total_mass(s);
+  summary.mass_added = s.mass_added;
+  summary.wall_seconds = wall;
+  std::size_t element_count = 0;
+  for (const auto& table : m.elements) element_count += table.size();
+  summary.element_cycles_per_second =
+      wall > 0.0 ? static_cast<double>(element_count) * static_cast<double>(s.cycle) / wall : 0.0;
+  summary.status = status_of(events.stop);
+  summary.message = describe(events.stop, m);
+  return summary;
+}
+
+}  // namespace crumple

@@ -1,0 +1,285 @@
+// The phases of one cycle (docs/theory/time-loop.md, "One cycle"); time_loop.cpp calls them in this order.
+#include "solver/cycle.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "crumple/contact/contact.hpp"
+#include "solver/internal.hpp"
+
+namespace crumple::solver {
+namespace {
+
+std::array<std::vector<double>*, 6> velocities(NodalState& n) { return {&n.vx, &n.vy, &n.vz, &n.wx, &n.wy, &n.wz}; }
+
+// /DT/SHELL, /DT/SH_3N, /DT/BRICK: the step control of an element kind.
+const TimeStepControl& type_control(const RunControl& rc, ElementKind kind) {
+  return kind == ElementKind::Shell4 ? rc.dt_shell : kind == ElementKind::Shell3 ? rc.dt_sh3n : rc.dt_brick;
+}
+
+GroupStepResult group_forces(const Model& m, SolverState& s, std::size_t g) {
+  const ElementGroup& group = m.element_groups[g];
+  const ElementTable& table = m.elements[static_cast<int>(group.kind)];
+  switch (group.kind) {
+    case ElementKind::Shell4: return shell4_forces(table, group, s.shell_groups[g], s.nodes, s.shells, s.dt);
+    case ElementKind::Shell3: return shell3_forces(table, group, s.shell_groups[g], s.nodes, s.shells3, s.dt);
+    case ElementKind::Brick8: return brick8_forces(table, group, s.brick_groups[g], s.nodes, s.bricks, s.dt);
+  }
+  return {};
+}
+
+StopReason element_stop(StopReason::Kind kind, ElementKind element_kind, std::int32_t element, const SolverState& s) {
+  StopReason stop;
+  stop.kind = kind, stop.cycle = s.cycle, stop.time = s.time;
+  stop.element_kind = element_kind, stop.index = element;
+  return stop;
+}
+
+// /DT/<type>/DEL (the default for shells): the group's elements whose scaled step is below the minimum are
+// deleted; the group's bound is then taken over the others (docs/theory/time-step.md, "Element minimum").
+void delete_below_minimum(const ElementGroup& group, SolverState& s, RunEvents& events, double type_scale,
+                          double minimum, GroupStepResult& r) {
+  const bool brick = group.kind == ElementKind::Brick8;
+  ShellState& shells = group.kind == ElementKind::Shell4 ? s.shells : s.shells3;
+  auto& deleted = brick ? s.bricks.deleted : shells.deleted;
+  const auto& critical_dt = brick ? s.bricks.critical_dt : shells.critical_dt;
+  r.min_dt = std::numeric_limits<double>::infinity();
+  for (std::int32_t e = group.begin; e < group.end; ++e) {
+    const auto ue = static_cast<std::size_t>(e);
+    if (deleted[ue]) continue;
+    if (type_scale * critical_dt[ue] < minimum) {
+      deleted[ue] = 1;
+      ++events.deleted_below_minimum_step;
+    } else if (critical_dt[ue] < r.min_dt) {
+      r.min_dt = critical_dt[ue], r.controlling = e;
+    }
+  }
+}
+
+// Per-type step control of one group's result: stop the run, or delete the elements below the minimum.
+void control_group_step(const Model& m, const ElementGroup& group, SolverState& s, RunEvents& events,
+                        double type_scale, GroupStepResult& r) {
+  const TimeStepControl& type = type_control(m.run, group.kind);
+  if (r.controlling < 0 || !(type.minimum > 0.0) || !(type_scale * r.min_dt < type.minimum) || events.stop.stopped())
+    return;
+  const bool stop = type.action == TimeStepAction::Stop ||
+                    (type.action == TimeStepAction::Default && group.kind == ElementKind::Brick8);
+  if (!stop) return delete_below_minimum(group, s, events, type_scale, type.minimum, r);
+  events.stop = element_stop(StopReason::Kind::ElementStepBelowMinimum, group.kind, r.controlling, s);
+  events.stop.dt = type_scale * r.min_dt, events.stop.minimum = type.minimum;
+}
+
+// Power of the /CLOAD and /GRAV loads on the mid-step velocities, times the step.
+double load_work(const Model& m, const SolverState& s, const VelocityScratch& scratch, double t, double dt_average) {
+  double work = 0.0;
+  const NodalState& n = s.nodes;
+  const std::vector<double>* now[6] = {&n.vx, &n.vy, &n.vz, &n.wx, &n.wy, &n.wz};
+  auto mean_velocity = [&](Dof dof, std::size_t k) {
+    const auto d = static_cast<std::size_t>(dof);
+    return 0.5 * ((*now[d])[k] + scratch.before[d][k]);
+  };
+  for (const ImposedMotion& im : m.imposed) {
+    if (im.kind != ImposedKind::Force || t < im.t_start || t > im.t_stop) continue;
+    const double value = im.scale_y * m.functions[static_cast<std::size_t>(im.function)](t / im.scale_x);
+    for (std::int32_t node : m.node_groups[static_cast<std::size_t>(im.node_group)].nodes)
+      work += value * mean_velocity(im.dof, static_cast<std::size_t>(node)) * dt_average;
+  }
+  for (const Gravity& g : m.gravity) {
+    const double a = g.scale_y * m.functions[static_cast<std::size_t>(g.function)](t / g.scale_x);
+    for (std::int32_t node : m.node_groups[static_cast<std::size_t>(g.node_group)].nodes) {
+      const auto k = static_cast<std::size_t>(node);
+      work += n.mass[k] * a * mean_velocity(g.dof, k) * dt_average;
+    }
+  }
+  return work;
+}
+
+// Work of the kinematic conditions: the impulse that changed the free velocity, on the mid-step velocity.
+double constraint_work(SolverState& s, const VelocityScratch& scratch) {
+  double work = 0.0;
+  NodalState& n = s.nodes;
+  auto v = velocities(n);
+  for (std::size_t k = 0; k < n.size(); ++k) {
+    for (std::size_t d = 0; d < 3; ++d) {
+      const double dv = (*v[d])[k] - scratch.free[d][k];
+      if (dv != 0.0) work += n.mass[k] * dv * 0.5 * ((*v[d])[k] + scratch.before[d][k]);
+    }
+    if (n.inertia[k] > 0.0)
+      for (std::size_t d = 3; d < 6; ++d) {
+        const double dv = (*v[d])[k] - scratch.free[d][k];
+        if (dv != 0.0) work += n.inertia[k] * dv * 0.5 * ((*v[d])[k] + scratch.before[d][k]);
+      }
+  }
+  return work;
+}
+
+}  // namespace
+
+double step_scale(const RunControl& run) { return run.dt.scale > 0.0 ? run.dt.scale : 0.9; }
+
+StepBound compute_element_forces(const Model& m, SolverState& s, RunEvents& events, bool& elements_deleted) {
+  s.nodes.clear_forces();
+  StepBound bound;
+  const double scale = step_scale(m.run);
+  for (std::size_t g = 0; g < m.element_groups.size(); ++g) {
+    const ElementGroup& group = m.element_groups[g];
+    GroupStepResult r = group_forces(m, s, g);  // r.min_dt: the unscaled critical step
+    s.energy.internal += r.internal_energy;
+    elements_deleted = elements_deleted || r.failed > 0;
+    s.energy.hourglass += r.hourglass_energy;
+    if (r.non_finite >= 0 && !events.stop.stopped())
+      events.stop = element_stop(StopReason::Kind::NonFiniteForces, group.kind, r.non_finite, s);
+    if (r.inverted >= 0) events.stop = element_stop(StopReason::Kind::InvertedElement, group.kind, r.inverted, s);
+    const TimeStepControl& type = type_control(m.run, group.kind);
+    const double type_scale = type.given && type.scale > 0.0 ? type.scale : scale;
+    control_group_step(m, group, s, events, type_scale, r);
+    // A group whose elements are all deleted or inverted has no controlling element (controlling = -1).
+    if (r.controlling >= 0 && type_scale * r.min_dt < bound.dt)
+      bound = {type_scale * r.min_dt, StepControl::element(group.kind, r.controlling)};
+  }
+  return bound;
+}
+
+void compute_contact_forces(const Model& m, SolverState& s, RunEvents& events, bool elements_deleted,
+                            StepBound& bound) {
+  if (elements_deleted)
+    contact::remove_deleted_elements(s.contact, {&s.shells.deleted, &s.shells3.deleted, &s.bricks.deleted});
+  const contact::ContactStep step = contact::contact_forces(m, s.contact, s.nodes, s.time, s.dt, bound.dt,
+                                                            step_scale(m.run), s.mass_added);
+  // IBC: boundary conditions of secondary nodes released at their first impact.
+  for (const auto& [node, dofs] : s.contact.bc_releases) {
+    s.fixed[static_cast<std::size_t>(node)] &= static_cast<std::uint8_t>(~dofs);
+    RunEvent released{RunEvent::Kind::ContactBoundaryReleased, s.cycle, s.time};
+    released.index = node, released.value = dofs;
+    events.pending.push_back(released);
+  }
+  s.contact.bc_releases.clear();
+  if (step.dt < bound.dt) bound = {step.dt, StepControl::contact(step.interface, step.node)};
+}
+
+void apply_loads(const Model& m, SolverState& s) {
+  add_external_forces(m, s, s.time);
+  gather_rigid_body_forces(s);
+}
+
+double choose_time_step(const Model& m, SolverState& s, RunEvents& events, StepBound& bound) {
+  const RunControl& rc = m.run;
+  if (rc.dt_nodal_cst.given) {
+    const NodalStep nodal = nodal_time_step(m, s);
+    if (nodal.node >= 0) bound = {nodal.dt, StepControl::node(nodal.node)};
+  }
+  // Nothing bounds the step (docs/theory/time-step.md, "No stable step"): at the start that is a model the
+  // explicit scheme cannot advance (point masses and rigid bodies alone); once every element has been deleted
+  // the run goes on with its last step.
+  if (!std::isfinite(bound.dt)) {
+    if (s.cycle == 0) {
+      events.stop.kind = StopReason::Kind::NoStableStep, events.stop.cycle = 0, events.stop.time = s.time;
+      return bound.dt;
+    }
+    bound.dt = s.dt;
+    bound.control.source = StepControl::Source::LastStep;
+  }
+  if (rc.dt.minimum > 0.0 && bound.dt < rc.dt.minimum) {
+    events.stop.kind = StopReason::Kind::StepBelowMinimum, events.stop.cycle = s.cycle, events.stop.time = s.time;
+    events.stop.dt = bound.dt, events.stop.minimum = rc.dt.minimum, events.stop.control = bound.control;
+    return bound.dt;
+  }
+  return s.time + bound.dt > rc.end_time ? std::max(rc.end_time - s.time, 0.0) : bound.dt;
+}
+
+void integrate(SolverState& s, VelocityScratch& scratch, double dt_average) {
+  NodalState& n = s.nodes;
+  auto v = velocities(n);
+  for (std::size_t d = 0; d < 6; ++d) std::copy(v[d]->begin(), v[d]->end(), scratch.before[d].begin());
+  for (std::size_t k = 0; k < n.size(); ++k) {
+    const double inverse_mass = n.mass[k] > 0.0 ? 1.0 / n.mass[k] : 0.0;
+    n.vx[k] += dt_average * n.fx[k] * inverse_mass;
+    n.vy[k] += dt_average * n.fy[k] * inverse_mass;
+    n.vz[k] += dt_average * n.fz[k] * inverse_mass;
+    if (n.inertia[k] > 0.0) {
+      const double inverse_inertia = 1.0 / n.inertia[k];
+      n.wx[k] += dt_average * n.mx[k] * inverse_inertia;
+      n.wy[k] += dt_average * n.my[k] * inverse_inertia;
+      n.wz[k] += dt_average * n.mz[k] * inverse_inertia;
+    }
+  }
+  for (std::size_t d = 0; d < 6; ++d) std::copy(v[d]->begin(), v[d]->end(), scratch.free[d].begin());
+}
+
+void apply_constraints(const Model& m, SolverState& s, VelocityScratch& scratch, double dt_average, double dt_next) {
+  NodalState& n = s.nodes;
+  update_rigid_bodies(s, dt_average, dt_next);
+  auto v = velocities(n);
+  for (std::size_t d = 0; d < 6; ++d)  // rigid-body motion is internal to the body: not a constraint's work
+    for (const auto& b : s.bodies) {
+      for (std::int32_t node : b.secondary)
+        scratch.free[d][static_cast<std::size_t>(node)] = (*v[d])[static_cast<std::size_t>(node)];
+      scratch.free[d][static_cast<std::size_t>(b.main_node)] = (*v[d])[static_cast<std::size_t>(b.main_node)];
+    }
+  impose_kinematics(m, s, s.time, dt_next);
+  apply_rigid_walls(m, s, dt_average, dt_next);
+  s.energy.external_work += load_work(m, s, scratch, s.time, dt_average) + constraint_work(s, scratch);
+  if (!s.contact.interfaces.empty())
+    s.energy.contact = contact::contact_work(s.contact, n, scratch.before.data(), dt_average);
+}
+
+void advance_positions(SolverState& s, double dt_next) {
+  NodalState& n = s.nodes;
+  for (std::size_t k = 0; k < n.size(); ++k) {
+    n.x[k] += dt_next * n.vx[k];
+    n.y[k] += dt_next * n.vy[k];
+    n.z[k] += dt_next * n.vz[k];
+  }
+  s.time += dt_next;
+  s.dt = dt_next;
+  ++s.cycle;
+}
+
+OutputSchedule::OutputSchedule(const RunControl& rc, long long max)
+    : next_frame(rc.anim_interval > 0.0 ? rc.anim_start : std::numeric_limits<double>::infinity()),
+      next_history(rc.history_interval > 0.0 ? 0.0 : std::numeric_limits<double>::infinity()),
+      print_every(rc.print_every != 0 ? std::llabs(rc.print_every) : 100),
+      max_cycles(max) {}
+
+bool MonitorDue::energies() const { return print || frame || history || cycle % 64 == 0; }
+
+MonitorDue outputs_due(const Model& m, const SolverState& s, const OutputSchedule& schedule, double dt_next) {
+  MonitorDue due{};
+  due.cycle = s.cycle;
+  due.finished = s.time >= m.run.end_time * (1.0 - 1e-12) || dt_next <= 0.0 ||
+                 (schedule.max_cycles >= 0 && s.cycle >= schedule.max_cycles);
+  due.print = s.cycle % schedule.print_every == 0 || due.finished;
+  due.frame = s.time >= schedule.next_frame * (1.0 - 1e-12);
+  due.history = s.time >= schedule.next_history * (1.0 - 1e-12);
+  return due;
+}
+
+void update_kinetic_energy(SolverState& s) {
+  const auto [translational, rotational] = kinetic_energy(s);
+  s.energy.kinetic_translational = translational;
+  s.energy.kinetic_rotational = rotational;
+}
+
+void check_run_limits(const Model& m, const SolverState& s, RunEvents& events) {
+  const RunControl& rc = m.run;
+  StopReason& stop = events.stop;
+  const double total = s.energy.internal + s.energy.kinetic_translational + s.energy.kinetic_rotational;
+  if (!std::isfinite(total)) {
+    stop.kind = StopReason::Kind::EnergyNotFinite, stop.cycle = s.cycle, stop.time = s.time;
+  } else if (rc.stop_mass_error > 0.0 && s.mass_added > rc.stop_mass_error * s.mass_initial) {
+    stop.kind = StopReason::Kind::AddedMassLimit, stop.cycle = s.cycle, stop.time = s.time;
+    stop.value = s.mass_added, stop.minimum = rc.stop_mass_error;
+  } else if (const double ratio = std::abs(s.energy.error_percent()) / 100.0;
+             rc.stop_energy_error > 0.0 && ratio > rc.stop_energy_error) {
+    stop.kind = StopReason::Kind::EnergyErrorLimit, stop.cycle = s.cycle, stop.time = s.time;
+    stop.value = ratio;
+  }
+}
+
+void advance_schedule(const Model& m, const SolverState& s, const MonitorDue& due, OutputSchedule& schedule) {
+  const RunControl& rc = m.run;
+  if (due.frame) schedule.next_frame = next_output_time(s.time, rc.anim_start, rc.anim_interval);
+  if (due.history) schedule.next_history = next_output_time(s.time, 0.0, rc.history_interval);
+}
+
+}  // namespace crumple::solver

@@ -1,0 +1,79 @@
+#pragma once
+// Internal to the solver: the named phases of one cycle of the time loop (docs/theory/time-loop.md, "One cycle").
+// Each is a plain function over the model and the state; time_loop.cpp calls them in order.
+#include <array>
+#include <limits>
+#include <vector>
+
+#include "crumple/model/model.hpp"
+#include "crumple/solver/run_events.hpp"
+#include "crumple/solver/solver_state.hpp"
+
+namespace crumple::solver {
+
+// The smallest step found so far in the cycle, already scaled, and what sets it.
+struct StepBound {
+  double dt = std::numeric_limits<double>::infinity();
+  StepControl control;
+};
+
+// Velocities before the update and after the free update (CD-2), for the work of the kinematic conditions.
+struct VelocityScratch {
+  std::array<std::vector<double>, 6> before, free;  // x y z rx ry rz
+  explicit VelocityScratch(std::size_t nodes) {
+    for (auto& v : before) v.assign(nodes, 0.0);
+    for (auto& v : free) v.assign(nodes, 0.0);
+  }
+};
+
+// The /DT scale (default 0.9).
+double step_scale(const RunControl& run);
+
+// 1. Element internal forces at x^n and the element critical steps; per-type step control (/DT/<type>): elements
+// below their minimum are deleted, switched to small strain, or stop the run. Returns the scaled bound; sets
+// `elements_deleted` when an element failed or was deleted this cycle.
+StepBound compute_element_forces(const Model& model, SolverState& state, RunEvents& events, bool& elements_deleted);
+
+// 1b. Contact at x^n with v^(n-1/2), when the model has interfaces: the interface step joins `bound`.
+void compute_contact_forces(const Model& model, SolverState& state, RunEvents& events, bool elements_deleted,
+                            StepBound& bound);
+
+// 2. External forces at t^n; rigid bodies gather their nodes' forces.
+void apply_loads(const Model& model, SolverState& state);
+
+// 3. dt^(n+1/2): the elements' and contact's bound, or the nodal step with mass scaling; cut to land on the end
+// time. Records a stop in `events` when the step is below the minimum or nothing bounds it.
+double choose_time_step(const Model& model, SolverState& state, RunEvents& events, StepBound& bound);
+
+// 4. Free central-difference velocity update v^(n+1/2) = v^(n-1/2) + dt^n a^n (CD-2).
+void integrate(SolverState& state, VelocityScratch& scratch, double dt_average);
+
+// 5. Kinematic conditions on v^(n+1/2) (rigid bodies, fixed and imposed dofs, rigid walls), and the work of the
+// loads, the kinematic conditions and the contact forces over the step.
+void apply_constraints(const Model& model, SolverState& state, VelocityScratch& scratch, double dt_average,
+                       double dt_next);
+
+// 6. Positions x^(n+1) = x^n + dt^(n+1/2) v^(n+1/2) (CD-3), time and cycle.
+void advance_positions(SolverState& state, double dt_next);
+
+// 7. Monitor: which outputs are due after a cycle, the energies they need, and the /STOP limits.
+struct OutputSchedule {
+  double next_frame, next_history;  // /ANIM/DT and /TFILE times [T] (infinite: none)
+  long long print_every;            // listing row every |/PRINT| cycles (default 100)
+  long long max_cycles;             // stop after this many cycles (-1: no limit)
+  explicit OutputSchedule(const RunControl& run, long long max_cycles);
+};
+struct MonitorDue {
+  bool finished, print, frame, history;
+  bool energies() const;  // the kinetic energy and the stop limits are checked (also every 64 cycles)
+  long long cycle;
+};
+MonitorDue outputs_due(const Model& model, const SolverState& state, const OutputSchedule& schedule, double dt_next);
+// Kinetic energies of v^(n+1/2) into the balance.
+void update_kinetic_energy(SolverState& state);
+// NaN in the balance, /STOP added-mass and energy-error limits: recorded in `events.stop`.
+void check_run_limits(const Model& model, const SolverState& state, RunEvents& events);
+// The next output times once a frame or a history row has been written at the state's time.
+void advance_schedule(const Model& model, const SolverState& state, const MonitorDue& due, OutputSchedule& schedule);
+
+}  // namespace crumple::solver
