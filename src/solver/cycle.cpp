@@ -37,36 +37,42 @@ StopReason element_stop(StopReason::Kind kind, ElementKind element_kind, std::in
 
 // /DT/<type>/DEL (the default for shells): the group's elements whose scaled step is below the minimum are
 // deleted; the group's bound is then taken over the others (docs/theory/time-step.md, "Element minimum").
-void delete_below_minimum(const ElementGroup& group, SolverState& s, RunEvents& events, double type_scale,
+// Returns how many were deleted.
+long long delete_below_minimum(const ElementGroup& group, SolverState& s, RunEvents& events, double type_scale,
                           double minimum, GroupStepResult& r) {
   const bool brick = group.kind == ElementKind::Brick8;
   ShellState& shells = group.kind == ElementKind::Shell4 ? s.shells : s.shells3;
   auto& deleted = brick ? s.bricks.deleted : shells.deleted;
   const auto& critical_dt = brick ? s.bricks.critical_dt : shells.critical_dt;
   r.min_dt = std::numeric_limits<double>::infinity();
+  long long count = 0;
   for (std::int32_t e = group.begin; e < group.end; ++e) {
     const auto ue = static_cast<std::size_t>(e);
     if (deleted[ue]) continue;
     if (type_scale * critical_dt[ue] < minimum) {
       deleted[ue] = 1;
-      ++events.deleted_below_minimum_step;
+      ++count;
     } else if (critical_dt[ue] < r.min_dt) {
       r.min_dt = critical_dt[ue], r.controlling = e;
     }
   }
+  events.deleted_below_minimum_step += count;
+  return count;
 }
 
-// Per-type step control of one group's result: stop the run, or delete the elements below the minimum.
-void control_group_step(const Model& m, const ElementGroup& group, SolverState& s, RunEvents& events,
-                        double type_scale, GroupStepResult& r) {
+// Per-type step control of one group's result: stop the run, or delete the elements below the minimum (their
+// count is returned: deleted elements leave the contact interfaces like failed ones).
+long long control_group_step(const Model& m, const ElementGroup& group, SolverState& s, RunEvents& events,
+                             double type_scale, GroupStepResult& r) {
   const TimeStepControl& type = type_control(m.run, group.kind);
   if (r.controlling < 0 || !(type.minimum > 0.0) || !(type_scale * r.min_dt < type.minimum) || events.stop.stopped())
-    return;
+    return 0;
   const bool stop = type.action == TimeStepAction::Stop ||
                     (type.action == TimeStepAction::Default && group.kind == ElementKind::Brick8);
   if (!stop) return delete_below_minimum(group, s, events, type_scale, type.minimum, r);
   events.stop = element_stop(StopReason::Kind::ElementStepBelowMinimum, group.kind, r.controlling, s);
   events.stop.dt = type_scale * r.min_dt, events.stop.minimum = type.minimum;
+  return 0;
 }
 
 // Power of the /CLOAD and /GRAV loads on the mid-step velocities, times the step.
@@ -132,7 +138,7 @@ StepBound compute_element_forces(const Model& m, SolverState& s, RunEvents& even
     if (r.inverted >= 0) events.stop = element_stop(StopReason::Kind::InvertedElement, group.kind, r.inverted, s);
     const TimeStepControl& type = type_control(m.run, group.kind);
     const double type_scale = type.given && type.scale > 0.0 ? type.scale : scale;
-    control_group_step(m, group, s, events, type_scale, r);
+    if (control_group_step(m, group, s, events, type_scale, r) > 0) elements_deleted = true;
     // A group whose elements are all deleted or inverted has no controlling element (controlling = -1).
     if (r.controlling >= 0 && type_scale * r.min_dt < bound.dt)
       bound = {type_scale * r.min_dt, StepControl::element(group.kind, r.controlling)};

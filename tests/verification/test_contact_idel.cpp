@@ -65,5 +65,31 @@ TEST(ContactIdel, IdelZeroKeepsEverything) {
   EXPECT_EQ(active(s.contact.interfaces.at(0).segment_active), 2u);
 }
 
+// Elements deleted by the /DT/SHELL/DEL criterion leave the interface like failed ones: a plate of small shells
+// (main surface, step ~ 0.9 h / c = 1.4e-6 s) under a block of large ones (secondary, 1.4e-5 s); with a minimum
+// step of 5e-6 s every plate shell is deleted at the first cycle and its segment must leave the main surface.
+TEST(ContactIdel, ElementsDeletedBelowTheirMinimumStepLeaveTheInterface) {
+  std::vector<NodeRow> nodes;
+  const std::vector<ShellRow> plate = shell_grid(10, 10, 0.01, 0.01, 0.0, 0.0, 0.0, 1, 1, nodes);
+  const std::vector<ShellRow> block = shell_grid(1, 1, 0.1, 0.1, 0.0, 0.0, 0.01, 1001, 1001, nodes);
+  Type7Options o;
+  o.gapmin = 1e-3, o.idel = 2;
+  std::vector<long long> secondary;
+  for (long long id = 1001; id <= 1004; ++id) secondary.push_back(id);
+  const std::string starter = node_cards(nodes) + shell_cards(1, block) + shell_cards(2, plate) + part_card(1) +
+                              part_card(2) + shell_property(0.002, 1) + elastic_material(7800.0, 2.1e11, 0.3) +
+                              node_group(1, secondary) + surface_of_part(2, 2) + type7_card(1, 1, 2, o);
+  test::TempDir dir;
+  std::size_t segments_after_first_cycle = 999, deleted = 0;
+  const RunResult r = run_deck(dir, starter, 2e-5, 1e-9, [&](const Model&, const SolverState& s) {
+    if (s.cycle != 1) return;
+    segments_after_first_cycle = active(s.contact.interfaces.at(0).segment_active);
+    deleted = active(s.shells.deleted);
+  }, "/DT/SHELL/DEL\n0.9 5e-6\n");
+  ASSERT_EQ(r.summary.status, RunStatus::Normal) << r.summary.message;
+  EXPECT_EQ(deleted, 100u);
+  EXPECT_EQ(segments_after_first_cycle, 0u);
+}
+
 }  // namespace
 }  // namespace crumple::verification
