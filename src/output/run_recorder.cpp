@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 
+#include <cmath>
+
 namespace crumple {
 namespace {
 
@@ -72,6 +74,33 @@ std::string describe(const StopReason& r, const Model& m) {
   return "unknown stop";
 }
 
+std::string describe(const RunEvent& e, const Model& m) {
+  using K = RunEvent::Kind;
+  const std::string when = fmt::format("CYCLE {} TIME {:.4e}:", e.cycle, e.time);
+  switch (e.kind) {
+    case K::ElementDeletedBelowMinimumStep:
+      return fmt::format("{} {} of part {} DELETED: time step {:.4e} below its minimum (/DT/{}/DEL)", when,
+                         element_name(m, e.element_kind, e.index), part_id_of(m, e.element_kind, e.index), e.value,
+                         e.element_kind == ElementKind::Brick8 ? "BRICK" : e.element_kind == ElementKind::Shell3 ? "SH_3N" : "SHELL");
+    case K::ElementSwitchedToSmallStrain:
+      return fmt::format("{} {} of part {} SWITCHED TO SMALL STRAIN: time step {:.4e} at its minimum (/DT/{}/CST)", when,
+                         element_name(m, e.element_kind, e.index), part_id_of(m, e.element_kind, e.index), e.value,
+                         e.element_kind == ElementKind::Brick8 ? "BRICK" : e.element_kind == ElementKind::Shell3 ? "SH_3N" : "SHELL");
+    case K::ContactBoundaryReleased: {
+      std::string dofs;
+      for (int d = 0; d < 3; ++d)
+        if (static_cast<unsigned>(e.value) & (1u << d)) dofs += "xyz"[d];
+      return fmt::format("{} NODE {}: boundary conditions {} released at its first contact (IBC)", when,
+                         m.nodes.user_id[static_cast<std::size_t>(e.index)], dofs);
+    }
+    case K::HourglassShare:
+      return fmt::format("{} WARNING: hourglass energy is {:.1f} % of the internal energy (above 10 %): the mesh is "
+                         "too coarse for the load or the formulation lets zero-energy modes grow",
+                         when, 100.0 * e.value);
+  }
+  return when;
+}
+
 RunStatus status_of(const StopReason& stop) {
   return !stop.stopped() ? RunStatus::Normal : stop.is_limit() ? RunStatus::Stopped : RunStatus::Error;
 }
@@ -84,6 +113,7 @@ RunRecorder::RunRecorder(const Model& model, const std::filesystem::path& direct
 
 void RunRecorder::start(const std::vector<std::string>& notes, std::ostream& console) {
   const Model& m = model_;
+  console_ = &console;
   listing_.line(fmt::format("Crumple explicit run {}  ({})", name_, m.title));
   listing_.line(fmt::format("nodes {}  4-node shells {}  element groups {}  end time {:g}", m.nodes.size(),
                             m.elements[0].size(), m.element_groups.size(), m.run.end_time));
@@ -98,6 +128,15 @@ void RunRecorder::row(const SolverState& s, double dt, const StepControl& contro
   listing_.row({s.cycle, s.time, dt, describe(control, model_), e.error_percent(), e.internal,
                 e.kinetic_translational, e.kinetic_rotational, e.external_work, e.hourglass, e.contact,
                 (mass - s.mass_initial) / s.mass_initial, mass, s.mass_added});
+}
+
+void RunRecorder::events(RunEvents& events) {
+  for (const RunEvent& e : events.pending) {
+    const std::string text = describe(e, model_);
+    listing_.line(text);
+    if (e.kind == RunEvent::Kind::HourglassShare && console_ != nullptr) fmt::print(*console_, "warning: {}\n", text);
+  }
+  events.pending.clear();
 }
 
 void RunRecorder::frame(const SolverState& s) {
@@ -136,6 +175,10 @@ void RunRecorder::finish(const SolverState& s, const RunEvents& events, const Ph
   listing_.line(!events.stop.stopped() ? "NORMAL TERMINATION" : "ERROR TERMINATION: " + describe(events.stop, model_));
   if (events.deleted_below_minimum_step > 0)
     listing_.line(fmt::format("ELEMENTS DELETED BELOW THEIR MINIMUM TIME STEP: {}", events.deleted_below_minimum_step));
+  if (events.hourglass_warned)
+    listing_.line(fmt::format("HOURGLASS ENERGY AT THE END {:.6g}: {:.1f} % OF THE INTERNAL ENERGY {:.6g}{}", s.energy.hourglass,
+                              s.energy.internal != 0.0 ? 100.0 * s.energy.hourglass / std::abs(s.energy.internal) : 0.0,
+                              s.energy.internal, s.energy.hourglass > 0.1 * std::abs(s.energy.internal) ? " (WARNING: above 10 %)" : ""));
   if (s.mass_added > 0.0) listing_.line(fmt::format("MASS ADDED BY /DT/NODA/CST OR /DT/INTER/CST: {:.6g}", s.mass_added));
   for (std::size_t f = 0; f < s.contact.results.size(); ++f) {
     const InterfaceResult& r = s.contact.results[f];

@@ -52,6 +52,9 @@ long long delete_below_minimum(const ElementGroup& group, SolverState& s, RunEve
     if (type_scale * critical_dt[ue] < minimum) {
       deleted[ue] = 1;
       ++count;
+      RunEvent event{RunEvent::Kind::ElementDeletedBelowMinimumStep, s.cycle, s.time, group.kind, e};
+      event.value = type_scale * critical_dt[ue];
+      events.pending.push_back(event);
     } else if (critical_dt[ue] < r.min_dt) {
       r.min_dt = critical_dt[ue], r.controlling = e;
     }
@@ -117,6 +120,19 @@ double constraint_work(SolverState& s, const VelocityScratch& scratch) {
       }
   }
   return work;
+}
+
+// Hourglass energy above 10 % of the internal energy is a mesh or formulation problem the user must see
+// (docs/theory/energy.md): one event, the first time it happens once the energy counts (above 0.1 % of the
+// balance's scale, so that the first cycles' round-off does not raise it).
+void warn_hourglass_share(const SolverState& s, RunEvents& events) {
+  const EnergyBalanceState& e = s.energy;
+  const double scale = std::abs(e.initial_kinetic) + std::abs(e.external_work);
+  if (events.hourglass_warned || !(e.hourglass > 0.1 * std::abs(e.internal)) || !(e.hourglass > 1e-3 * scale)) return;
+  events.hourglass_warned = true;
+  RunEvent event{RunEvent::Kind::HourglassShare, s.cycle, s.time};
+  event.value = e.internal != 0.0 ? e.hourglass / std::abs(e.internal) : std::numeric_limits<double>::infinity();
+  events.pending.push_back(event);
 }
 
 }  // namespace
@@ -268,6 +284,7 @@ void update_kinetic_energy(SolverState& s) {
 
 void check_run_limits(const Model& m, const SolverState& s, RunEvents& events) {
   const RunControl& rc = m.run;
+  warn_hourglass_share(s, events);
   StopReason& stop = events.stop;
   const double total = s.energy.internal + s.energy.kinetic_translational + s.energy.kinetic_rotational;
   if (!std::isfinite(total)) {

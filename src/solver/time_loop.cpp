@@ -72,6 +72,7 @@ RunSummary run_simulation(const Model& m, const SolverOptions& options, std::ost
       update_kinetic_energy(s);
       if (due.print) recorder.row(s, dt_next, control);
       check_run_limits(m, s, events);
+      if (!events.pending.empty()) recorder.events(events);
       if (events.stop.stopped()) break;
     }
     if (due.frame) recorder.frame(s);
@@ -84,6 +85,7 @@ RunSummary run_simulation(const Model& m, const SolverOptions& options, std::ost
     if (due.finished) break;
   }
   update_kinetic_energy(s);
+  recorder.events(events);
   recorder.row(s, dt_next, control);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   recorder.finish(s, events, phases, wall);

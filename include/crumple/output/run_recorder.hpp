@@ -20,6 +20,8 @@ namespace crumple {
 std::string describe(const StepControl& control, const Model& model);
 // The message of a stopped run, naming the element, node or limit.
 std::string describe(const StopReason& stop, const Model& model);
+// The listing line of an event.
+std::string describe(const RunEvent& event, const Model& model);
 // The status a stop reason gives the run.
 RunStatus status_of(const StopReason& stop);
 
@@ -33,6 +35,8 @@ class RunRecorder {
   void start(const std::vector<std::string>& notes, std::ostream& console);
   // One row of the energy table with the step dt^(n+1/2) of the cycle and what bounds it.
   void row(const SolverState& state, double dt, const StepControl& control);
+  // The events of the last cycles as listing lines (warnings also on the console); empties `events.pending`.
+  void events(RunEvents& events);
   void frame(const SolverState& state);
   void history(const SolverState& state, double dt);
   // The end: the last good state as a frame when the run stopped early, the results file closed, and the
@@ -42,6 +46,7 @@ class RunRecorder {
  private:
   const Model& model_;
   std::string name_;
+  std::ostream* console_ = nullptr;
   Listing listing_;
   std::optional<ResultsFile> results_;
 };

@@ -30,6 +30,7 @@ struct RunEvent {
     ElementDeletedBelowMinimumStep,  // /DT/<type>/DEL: element (kind, index), value = its scaled step [T]
     ElementSwitchedToSmallStrain,    // /DT/<type>/CST: element (kind, index), value = its scaled step [T]
     ContactBoundaryReleased,         // TYPE7 IBC: node index, value = the released dof mask
+    HourglassShare,                  // hourglass energy above 10 % of the internal energy: value = the ratio
   };
   Kind kind;
   long long cycle = 0;
@@ -71,6 +72,7 @@ struct RunEvents {
   StopReason stop;
   long long deleted_below_minimum_step = 0;  // elements deleted by /DT/<type>/DEL over the run
   long long switched_to_small_strain = 0;    // elements switched by /DT/<type>/CST over the run
+  bool hourglass_warned = false;             // the HourglassShare event has been raised
 };
 
 }  // namespace crumple
