@@ -224,6 +224,12 @@ void resolve_rigid_walls(Resolver& r) {
     if (w.node >= 0 && w.node_group1 >= 0 && contains(nodes_of(m, w.node_group1), w.node))
       r.error(w.where, kw, "grnod_ID1", "secondary nodes other than the wall node",
               fmt::format("wall node {} is in node group {}", w.node_id, w.node_group1_id));
+    // A wall node that belongs to a rigid body would have to pass the wall's reaction through the body's
+    // motion, which the rigid-body update (before the walls) does not do.
+    for (const RigidBody& b : m.rigid_bodies)
+      if (w.node >= 0 && (b.main_node == w.node || (b.node_group >= 0 && contains(nodes_of(m, b.node_group), w.node))))
+        r.error(w.where, kw, "node_ID", "a wall node outside rigid bodies (a moving wall carried by a rigid-body node is "
+                "not supported by Crumple)", fmt::format("node {} is in /RBODY/{}", w.node_id, b.user_id));
     place_wall(r, w, kw);
     if (w.search_distance == 0.0 && w.node_group1 < 0)
       r.context.warn(w.where, kw, "no secondary nodes: D_search is 0 and grnod_ID1 is blank");

@@ -1,16 +1,17 @@
 // Rigid walls (/RWALL): kinematic, impenetrable surfaces for their secondary nodes (docs/theory/rigid-walls.md).
+#include <Eigen/Dense>
+
 #include <algorithm>
 #include <cmath>
 
+#include "crumple/model/geometry.hpp"
 #include "solver/internal.hpp"
 
 namespace crumple::solver {
 namespace {
 
-using V3 = std::array<double, 3>;
-V3 sub(const V3& a, const V3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-double dot(const V3& a, const V3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-V3 scaled(const V3& a, double s) { return {a[0] * s, a[1] * s, a[2] * s}; }
+using V3 = geometry::Point;
+using geometry::dot, geometry::scaled, geometry::sub;
 
 // Signed distance of p from the wall and the outward normal there; false when p is beside a finite wall.
 // The model build gives the unit normal or axis (RigidWall::direction).
@@ -48,15 +49,89 @@ bool distance(const RigidWall& w, const V3& origin, const V3& p, double& d, V3& 
   return false;
 }
 
+
+// Translation dofs of node k (bit 0 x, 1 y, 2 z) that neither /BCS nor an imposed velocity or displacement hold.
+std::uint8_t free_translation_dofs(const Model& m, const SolverState& s, std::int32_t k) {
+  std::uint8_t free = static_cast<std::uint8_t>(~s.fixed[static_cast<std::size_t>(k)] & 7u);
+  for (const ImposedMotion& im : m.imposed) {
+    if (im.kind == ImposedKind::Force || is_rotation(im.dof)) continue;
+    const auto& nodes = m.node_groups[static_cast<std::size_t>(im.node_group)].nodes;
+    if (std::find(nodes.begin(), nodes.end(), k) != nodes.end())
+      free = static_cast<std::uint8_t>(free & ~(1u << dof_axis(im.dof)));
+  }
+  return free;
+}
+
+V3 node_velocity(const NodalState& n, std::size_t k) { return {n.vx[k], n.vy[k], n.vz[k]}; }
+
+// Whether the wall moving at `wall_velocity` holds node k over the step (eq. RW-1): it would cross the wall, or
+// it already touches a tied wall. Gives the normal and the normal velocity relative to the wall it ends with.
+bool holds(const RigidWall& w, const RigidWallState& st, std::size_t i, const NodalState& n, const V3& wall_velocity,
+           double dt_next, V3& normal, double& vn_new) {
+  const auto k = static_cast<std::size_t>(st.nodes[i]);
+  double d = 0.0;
+  if (!distance(w, st.origin, {n.x[k], n.y[k], n.z[k]}, d, normal)) return st.tied[i] != 0;
+  const double vn = dot(sub(node_velocity(n, k), wall_velocity), normal);
+  // Impenetrability at the end of the step: d + vn dt >= 0, without pulling a node that starts inside the wall
+  // back out in one step.
+  vn_new = d > 0.0 ? -d / dt_next : std::max(vn, 0.0);
+  return st.tied[i] != 0 || d + vn * dt_next < 0.0;
+}
+
+// Velocity of a moving wall after it takes the reaction of the nodes it holds (eq. RW-2): with M the wall node's
+// mass, (M I + sum m_i n_i n_i^T) V' = M V + sum m_i (v_i . n_i - vn_i') n_i over the held nodes (m_i I and
+// m_i v_i for tied ones), which conserves momentum and leaves every held node on the wall. Dofs in which the
+// wall node is driven keep V. The set of held nodes depends on V': a few passes settle it.
+V3 exchanged_velocity(const RigidWall& w, RigidWallState& st, const NodalState& n, double dt_next) {
+  const double wall_mass = n.mass[static_cast<std::size_t>(w.node)];
+  V3 velocity = st.velocity;
+  std::fill(st.active.begin(), st.active.end(), 0);
+  for (int pass = 0; pass < 4; ++pass) {
+    Eigen::Matrix3d a = wall_mass * Eigen::Matrix3d::Identity();
+    Eigen::Vector3d b = wall_mass * Eigen::Vector3d(st.velocity[0], st.velocity[1], st.velocity[2]);
+    bool changed = false;
+    for (std::size_t i = 0; i < st.nodes.size(); ++i) {
+      V3 normal{};
+      double vn_new = 0.0;
+      const bool held = holds(w, st, i, n, velocity, dt_next, normal, vn_new);
+      changed = changed || held != (st.active[i] != 0);
+      st.active[i] = held;
+      if (!held) continue;
+      const auto k = static_cast<std::size_t>(st.nodes[i]);
+      const Eigen::Vector3d v(n.vx[k], n.vy[k], n.vz[k]), nn(normal[0], normal[1], normal[2]);
+      if (st.tied[i] != 0 || w.slide == WallSliding::Tied) {
+        a += n.mass[k] * Eigen::Matrix3d::Identity(), b += n.mass[k] * v;
+      } else {
+        a += n.mass[k] * nn * nn.transpose(), b += n.mass[k] * (v.dot(nn) - vn_new) * nn;
+      }
+    }
+    for (int d = 0; d < 3; ++d)
+      if (!(st.free_dofs & (1u << d))) a.row(d) = Eigen::RowVector3d::Unit(d), b(d) = st.velocity[static_cast<std::size_t>(d)];
+    const Eigen::Vector3d solved = a.partialPivLu().solve(b);
+    velocity = {solved(0), solved(1), solved(2)};
+    if (!changed && pass > 0) break;
+  }
+  return velocity;
+}
+
 }  // namespace
 
 void setup_rigid_walls(const Model& m, SolverState& s) {
+  NodalState& n = s.nodes;
   for (const RigidWall& w : m.rigid_walls) {
     RigidWallState state;
     state.nodes = w.secondary_nodes;
     state.tied.assign(state.nodes.size(), 0);
+    state.active.assign(state.nodes.size(), 0);
     state.origin = w.point;
     state.velocity = w.velocity0;
+    if (w.node >= 0) {
+      // A moving wall is its node: the wall's initial velocity is the node's (it replaces an /INIVEL there).
+      const auto k = static_cast<std::size_t>(w.node);
+      if (w.velocity0 != Vec3{}) n.vx[k] = w.velocity0[0], n.vy[k] = w.velocity0[1], n.vz[k] = w.velocity0[2];
+      state.velocity = node_velocity(n, k);
+      state.free_dofs = free_translation_dofs(m, s, w.node);
+    }
     s.walls.push_back(std::move(state));
   }
 }
@@ -66,58 +141,51 @@ void apply_rigid_walls(const Model& m, SolverState& s, double dt_average, double
   for (std::size_t iw = 0; iw < m.rigid_walls.size(); ++iw) {
     const RigidWall& w = m.rigid_walls[iw];
     RigidWallState& st = s.walls[iw];
-    if (w.node >= 0) {
-      // A wall driven by its node moves with it (the node's velocity is already final for this step).
+    const bool moving = w.node >= 0;
+    if (moving) {  // the wall moves with its node, whose velocity is the free update's (or its imposed one)
       const auto k = static_cast<std::size_t>(w.node);
-      st.velocity = {n.vx[k], n.vy[k], n.vz[k]};
+      st.velocity = node_velocity(n, k);
       st.origin = {n.x[k], n.y[k], n.z[k]};
     }
+    const bool exchange = moving && st.free_dofs != 0 && n.mass[static_cast<std::size_t>(w.node)] > 0.0;
+    const V3 wall_velocity = exchange ? exchanged_velocity(w, st, n, dt_next) : st.velocity;
     V3 impulse{};
     for (std::size_t i = 0; i < st.nodes.size(); ++i) {
+      V3 normal{};
+      double vn_new = 0.0;
+      if (!holds(w, st, i, n, wall_velocity, dt_next, normal, vn_new)) continue;
       const auto k = static_cast<std::size_t>(st.nodes[i]);
-      V3 v{n.vx[k], n.vy[k], n.vz[k]};
-      const V3 before = v;
-      V3 rel = sub(v, st.velocity);
-      if (st.tied[i]) {
-        v = st.velocity;
-      } else {
-        double d = 0.0;
-        V3 normal{};
-        if (!distance(w, st.origin, {n.x[k], n.y[k], n.z[k]}, d, normal)) continue;
+      const V3 before = node_velocity(n, k);
+      const V3 rel = sub(before, wall_velocity);
+      V3 v = wall_velocity;  // tied
+      if (st.tied[i] == 0) {
         const double vn = dot(rel, normal);
-        // Impenetrability at the end of the step (eq. RW-1): d + vn dt >= 0, without pulling a node that
-        // starts inside the wall back out in one step.
-        if (d + vn * dt_next >= 0.0) continue;
-        const double vn_new = d > 0.0 ? -d / dt_next : std::max(vn, 0.0);
         const double dvn = vn_new - vn;
         V3 tangential = sub(rel, scaled(normal, vn));
         if (w.slide == WallSliding::Tied) {
           st.tied[i] = 1;
           tangential = {0.0, 0.0, 0.0};
         } else if (w.slide == WallSliding::Friction && w.friction > 0.0) {
-          // Coulomb: the tangential impulse is at most mu times the normal impulse.
+          // Coulomb: the tangential impulse is at most mu times the normal one.
           const double vt = std::sqrt(dot(tangential, tangential));
           if (vt > 0.0) tangential = scaled(tangential, std::max(0.0, 1.0 - w.friction * dvn / vt));
         }
-        for (int d3 = 0; d3 < 3; ++d3) {
-          const auto c = static_cast<std::size_t>(d3);
-          v[c] = st.velocity[c] + tangential[c] + normal[c] * vn_new;
-        }
+        for (std::size_t c = 0; c < 3; ++c) v[c] = wall_velocity[c] + tangential[c] + normal[c] * vn_new;
       }
       n.vx[k] = v[0], n.vy[k] = v[1], n.vz[k] = v[2];
-      for (int d3 = 0; d3 < 3; ++d3) {
-        const auto c = static_cast<std::size_t>(d3);
-        impulse[c] += n.mass[k] * (v[c] - before[c]);
-      }
+      for (std::size_t c = 0; c < 3; ++c) impulse[c] += n.mass[k] * (v[c] - before[c]);
     }
-    // A moving wall with a mass takes the opposite impulse (momentum is exchanged, not created).
-    if (w.node >= 0 && w.mass > 0.0) {
+    // A moving wall takes the opposite impulse in its free dofs (momentum is exchanged, not created).
+    if (exchange) {
       const auto k = static_cast<std::size_t>(w.node);
-      n.vx[k] -= impulse[0] / n.mass[k], n.vy[k] -= impulse[1] / n.mass[k], n.vz[k] -= impulse[2] / n.mass[k];
+      const double mass = n.mass[k];
+      std::vector<double>* v[3] = {&n.vx, &n.vy, &n.vz};
+      for (std::size_t c = 0; c < 3; ++c)
+        if (st.free_dofs & (1u << c)) (*v[c])[k] = st.velocity[c] - impulse[c] / mass;
+      st.velocity = node_velocity(n, k);
     }
     // Force of the wall on its nodes during the cycle (the listing reports it; the wall takes the opposite).
-    for (int d3 = 0; d3 < 3; ++d3)
-      st.force[static_cast<std::size_t>(d3)] = dt_average > 0.0 ? impulse[static_cast<std::size_t>(d3)] / dt_average : 0.0;
+    for (std::size_t c = 0; c < 3; ++c) st.force[c] = dt_average > 0.0 ? impulse[c] / dt_average : 0.0;
   }
 }
 

@@ -15,6 +15,8 @@ inline Point cross(const Point& a, const Point& b) {
 }
 inline double dot(const Point& a, const Point& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 inline double norm(const Point& a) { return std::sqrt(dot(a, a)); }
+inline Point scaled(const Point& a, double s) { return {a[0] * s, a[1] * s, a[2] * s}; }
+inline Point add(const Point& a, const Point& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
 
 // Area of a quadrilateral from its diagonals: A = |d13 x d24| / 2 (exact for a flat quad).
 inline double quad_area(const Point& p1, const Point& p2, const Point& p3, const Point& p4) {

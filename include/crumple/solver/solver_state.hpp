@@ -41,9 +41,13 @@ struct RigidBodyState {
 struct RigidWallState {
   std::vector<std::int32_t> nodes;   // candidate secondary nodes
   std::vector<std::uint8_t> tied;    // tied walls: 1 once the node touched
+  std::vector<std::uint8_t> active;  // scratch of the cycle: 1 when the node is held by the wall
   std::array<double, 3> force{};     // force of the wall on the nodes during the last cycle [F]
-  std::array<double, 3> velocity{};  // wall velocity
-  std::array<double, 3> origin{};    // current point M
+  std::array<double, 3> velocity{};  // wall velocity v^(n+1/2) [L/T]
+  std::array<double, 3> origin{};    // current point M [L]
+  // Moving walls: translation dofs (bit 0 x, 1 y, 2 z) in which the wall node is free, i.e. neither fixed nor
+  // imposed; in those the wall takes the nodes' reaction (eq. RW-2), in the others it is driven.
+  std::uint8_t free_dofs = 0;
 };
 
 struct SolverState {
