@@ -167,11 +167,13 @@ void RunRecorder::history(const SolverState& s, double dt) {
   results_->write_history(row);
 }
 
+void RunRecorder::close(const SolverState& s, bool stopped_early) {
+  if (!results_) return;
+  if (stopped_early) results_->write_frame(s.time, s.cycle, model_, s);  // the last good state
+  results_->close();
+}
+
 void RunRecorder::finish(const SolverState& s, const RunEvents& events, const PhaseTimes& phases, double wall) {
-  if (results_) {
-    if (events.stop.stopped()) results_->write_frame(s.time, s.cycle, model_, s);  // the last good state
-    results_->close();
-  }
   listing_.line(!events.stop.stopped() ? "NORMAL TERMINATION" : "ERROR TERMINATION: " + describe(events.stop, model_));
   if (events.deleted_below_minimum_step > 0)
     listing_.line(fmt::format("ELEMENTS DELETED BELOW THEIR MINIMUM TIME STEP: {}", events.deleted_below_minimum_step));

@@ -194,7 +194,7 @@ double choose_time_step(const Model& m, SolverState& s, RunEvents& events, StepB
   // explicit scheme cannot advance (point masses and rigid bodies alone); once every element has been deleted
   // the run goes on with its last step.
   if (!std::isfinite(bound.dt)) {
-    if (s.cycle == 0) {
+    if (s.cycle + s.cycles_done == 0) {
       events.stop.kind = StopReason::Kind::NoStableStep, events.stop.cycle = 0, events.stop.time = s.time;
       return bound.dt;
     }
@@ -257,11 +257,17 @@ void advance_positions(SolverState& s, double dt_next) {
   ++s.cycle;
 }
 
-OutputSchedule::OutputSchedule(const RunControl& rc, long long max)
-    : next_frame(rc.anim_interval > 0.0 ? rc.anim_start : std::numeric_limits<double>::infinity()),
-      next_history(rc.history_interval > 0.0 ? 0.0 : std::numeric_limits<double>::infinity()),
+// A continued run's outputs follow its own /ANIM/DT and /TFILE from where it starts (the one at its first time
+// was written by the run before).
+OutputSchedule::OutputSchedule(const RunControl& rc, double time, long long max)
+    : next_frame(std::numeric_limits<double>::infinity()),
+      next_history(std::numeric_limits<double>::infinity()),
       print_every(rc.print_every != 0 ? std::llabs(rc.print_every) : 100),
-      max_cycles(max) {}
+      max_cycles(max) {
+  if (rc.anim_interval > 0.0)
+    next_frame = time > rc.anim_start ? next_output_time(time, rc.anim_start, rc.anim_interval) : rc.anim_start;
+  if (rc.history_interval > 0.0) next_history = time > 0.0 ? next_output_time(time, 0.0, rc.history_interval) : 0.0;
+}
 
 bool MonitorDue::energies() const { return print || frame || history || cycle % 64 == 0; }
 

@@ -61,7 +61,8 @@ struct OutputSchedule {
   double next_frame, next_history;  // /ANIM/DT and /TFILE times [T] (infinite: none)
   long long print_every;            // listing row every |/PRINT| cycles (default 100)
   long long max_cycles;             // stop after this many cycles (-1: no limit)
-  explicit OutputSchedule(const RunControl& run, long long max_cycles);
+  // The first outputs of a run that starts at `time` (0, or where a continued run takes over).
+  OutputSchedule(const RunControl& run, double time, long long max_cycles);
 };
 struct MonitorDue {
   bool finished, print, frame, history;

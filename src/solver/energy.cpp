@@ -6,9 +6,10 @@
 namespace crumple {
 
 double EnergyBalanceState::error_percent() const {
-  const double reference = initial_kinetic + external_work;
+  const double work = external_work - external_work_at_start;
+  const double reference = initial_kinetic + work;
   const double balance = internal + kinetic_translational + kinetic_rotational + hourglass + contact - initial_kinetic -
-                         external_work;
+                         work;
   if (std::abs(reference) <= 0.0) return 0.0;
   return 100.0 * balance / std::abs(reference);
 }

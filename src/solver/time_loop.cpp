@@ -24,17 +24,13 @@ class PhaseClock {
 
 }  // namespace
 
-RunSummary run_simulation(const Model& m, const SolverOptions& options, std::ostream& console) {
+RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunRecorder& recorder, SolverState& s,
+                           const std::vector<std::string>& notes, std::ostream& console) {
   using namespace solver;
   const auto started = std::chrono::steady_clock::now();
-  std::vector<std::string> notes;
-  SolverState s = make_state(m, notes);
-  const std::string name = options.name.empty() ? m.run_name : options.name;
-  RunRecorder recorder(m, options.output_directory, name, options.write_results);
   recorder.start(notes, console);
-
   RunEvents events;
-  OutputSchedule schedule(m.run, options.max_cycles);
+  OutputSchedule schedule(m.run, s.time, options.max_cycles);
   VelocityScratch scratch(s.nodes.size());
   PhaseTimes phases;
   PhaseClock clock;
@@ -61,7 +57,8 @@ RunSummary run_simulation(const Model& m, const SolverOptions& options, std::ost
     if (events.stop.stopped()) break;
     clock.lap(phases.loads);
 
-    const double dt_average = s.cycle == 0 ? 0.5 * dt_next : 0.5 * (s.dt + dt_next);  // dt^n (CD-2)
+    // dt^n (CD-2); the very first cycle of a run is a half step from the initial velocities.
+    const double dt_average = s.cycle + s.cycles_done == 0 ? 0.5 * dt_next : 0.5 * (s.dt + dt_next);
     integrate(s, scratch, dt_average);
     apply_constraints(m, s, scratch, dt_average, dt_next);
     advance_positions(s, dt_next);
@@ -89,7 +86,25 @@ RunSummary run_simulation(const Model& m, const SolverOptions& options, std::ost
   recorder.row(s, dt_next, control);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   recorder.finish(s, events, phases, wall);
-  return summarize_run(m, name, s, events, phases, dt_next, wall);
+  return summarize_run(m, recorder.name(), s, events, phases, dt_next, wall);
+}
+
+RunSummary run_simulation(const Model& m, const SolverOptions& options, std::ostream& console) {
+  std::vector<std::string> notes;
+  SolverState s = solver::make_state(m, notes);
+  RunRecorder recorder(m, options.output_directory, options.name.empty() ? m.run_name : options.name,
+                       options.write_results);
+  RunSummary summary = run_engine_deck(m, options, recorder, s, notes, console);
+  recorder.close(s, summary.status != RunStatus::Normal);
+  return summary;
+}
+
+void continue_from(SolverState& s) {
+  s.cycles_done += s.cycle;
+  s.cycle = 0;
+  EnergyBalanceState& e = s.energy;
+  e.initial_kinetic = e.internal + e.kinetic_translational + e.kinetic_rotational + e.hourglass + e.contact;
+  e.external_work_at_start = e.external_work;
 }
 
 }  // namespace crumple

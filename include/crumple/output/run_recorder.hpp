@@ -39,9 +39,12 @@ class RunRecorder {
   void events(RunEvents& events);
   void frame(const SolverState& state);
   void history(const SolverState& state, double dt);
-  // The end: the last good state as a frame when the run stopped early, the results file closed, and the
-  // listing's closing lines (termination, deletions, added mass, interfaces, cycles, time profile).
+  // The end of an engine deck: the listing's closing lines (termination, deletions, added mass, interfaces,
+  // cycles, time profile).
   void finish(const SolverState& state, const RunEvents& events, const PhaseTimes& phases, double wall_seconds);
+  // The end of the whole run: the last good state as a frame when it stopped early, the results file closed.
+  void close(const SolverState& state, bool stopped_early);
+  const std::string& name() const { return name_; }
 
  private:
   const Model& model_;

@@ -4,6 +4,7 @@
 #include <functional>
 #include <iosfwd>
 #include <string>
+#include <vector>
 
 #include "crumple/model/model.hpp"
 #include "crumple/output/run_summary.hpp"
@@ -11,6 +12,7 @@
 namespace crumple {
 
 struct SolverState;  // crumple/solver/solver_state.hpp
+class RunRecorder;   // crumple/output/run_recorder.hpp
 
 struct SolverOptions {
   std::string name;                          // run name: output files are NAME.out, NAME.h5, NAME.summary.json
@@ -26,5 +28,15 @@ struct SolverOptions {
 // abnormally (NaN, inverted element, time step below the minimum, /STOP limit) returns status error or stopped
 // with the reason in `message`, after writing the last good state.
 RunSummary run_simulation(const Model& model, const SolverOptions& options, std::ostream& console);
+
+// One engine deck from `state` (a fresh state, or the state a previous engine deck left: the snapshot a
+// continued run carries on) to the end time of `model.run`, written through `recorder`. `state` is left at the
+// end of the run. `notes` are the start-up remarks for the listing.
+RunSummary run_engine_deck(const Model& model, const SolverOptions& options, RunRecorder& recorder,
+                           SolverState& state, const std::vector<std::string>& notes, std::ostream& console);
+
+// Before the next engine deck of a continued run: its cycle count and energy error start again from 0
+// (docs/theory/time-loop.md, "Continued runs").
+void continue_from(SolverState& state);
 
 }  // namespace crumple

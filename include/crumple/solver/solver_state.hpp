@@ -20,8 +20,12 @@ struct EnergyBalanceState {
   double kinetic_rotational = 0.0;
   double external_work = 0.0;     // work of loads and of kinematic conditions (rigid walls, imposed motion)
   double contact = 0.0;
-  double initial_kinetic = 0.0;   // E_kin0
-  // (E_int + E_kin + E_hg + E_contact - E_kin0 - W_ext) / (E_kin0 + W_ext) in percent (docs/theory/energy.md)
+  // E_0: the energy at the start of the engine deck being run: the initial kinetic energy for the first one, the
+  // whole energy (internal, kinetic, hourglass, contact) where a continued run takes over.
+  double initial_kinetic = 0.0;
+  double external_work_at_start = 0.0;  // W_ext when the engine deck started (0 for the first one)
+  // (E_int + E_kin + E_hg + E_contact - E_0 - dW_ext) / (E_0 + dW_ext) in percent with dW_ext the work since the
+  // engine deck started (docs/theory/energy.md)
   double error_percent() const;
 };
 
@@ -66,7 +70,8 @@ struct SolverState {
   std::vector<std::int32_t> rigid_owner;           // per node: rigid body index, -1 when none
   double time = 0.0;
   double dt = 0.0;        // step of the last position update dt^(n-1/2) [T]
-  long long cycle = 0;
+  long long cycle = 0;         // cycles of the engine deck being run (the listing's CYCLE)
+  long long cycles_done = 0;   // cycles of the earlier engine decks of a continued run
   EnergyBalanceState energy;
   double mass_initial = 0.0;
   double mass_added = 0.0;         // mass added by /DT/NODA/CST [M]
