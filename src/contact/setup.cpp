@@ -183,12 +183,13 @@ ContactState setup_contact(const Model& m, NodalState& nodes, std::vector<std::s
     }
     if (!in.variable_gap) {
       double gap = card.gapmin;
-      // Computed default (eq. C-2): the mean shell thickness, but never more than a tenth of the smallest side, so
-      // that the gap of a segment cannot reach the nodes of its neighbours (self contact, coarse meshes of thick
-      // shells); brick surfaces: a tenth of the smallest side.
+      // Computed default (eq. C-2): the mean shell thickness, but never more than half the smallest side of the
+      // main segments (so that the gap of a segment cannot swallow its neighbours' nodes in self contact on coarse
+      // meshes of thick shells; the reference's starter listings show exactly this bound); brick surfaces: a
+      // tenth of the smallest side.
       if (!(gap > 0.0)) {
-        const double tenth = std::isfinite(shortest_side_all) ? 0.1 * shortest_side_all : 0.0;
-        gap = shell_segments > 0 ? std::min(thickness_sum / shell_segments, tenth) : tenth;
+        const double side = std::isfinite(shortest_side_all) ? shortest_side_all : 0.0;
+        gap = shell_segments > 0 ? std::min(thickness_sum / shell_segments, 0.5 * side) : 0.1 * side;
       }
       std::fill(in.segment_gap.begin(), in.segment_gap.end(), gap);
       std::fill(in.node_gap.begin(), in.node_gap.end(), 0.0);
