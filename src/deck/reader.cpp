@@ -72,14 +72,14 @@ bool columns_checked(const KeywordSpec& spec) {
 
 const char* part_name(DeckPart part) { return part == DeckPart::Starter ? "starter" : "engine"; }
 
-// A card that Crumple has no handler for, in this order: a keyword of the other deck part (error); a Radioss
-// output-only or performance card (named warning); another Radioss keyword (not supported by Crumple); a word
-// that is no keyword (unknown, with the nearest known keyword). The last two are errors that --skip-unknown turns
+// A card that Crumple has no handler for, in this order: a Radioss output-only or performance card of this deck
+// part (named warning); another Radioss keyword of this part (not supported by Crumple); a keyword of the other
+// deck part (error); a word that is no keyword (unknown, with the nearest known keyword). The last two are errors that --skip-unknown turns
 // into warnings and skipped options.
 void read_card_without_handler(const Card& card, DeckPart part, const std::string& name, DeckContext& context) {
   const DeckPart other_part = part == DeckPart::Starter ? DeckPart::Engine : DeckPart::Starter;
   const RadiossKeyword* radioss = find_radioss_keyword(card.path, part);
-  if (find_spec(card, other_part) != nullptr || (radioss == nullptr && find_radioss_keyword(card.path, other_part)))
+  if (radioss == nullptr && (find_spec(card, other_part) != nullptr || find_radioss_keyword(card.path, other_part)))
     throw DeckError(card.where, card.keyword, "",
                     card.engine ? "an engine keyword (this one belongs to the starter deck, before /END)"
                                 : "a starter keyword (this one belongs to the engine deck, after /END)",
