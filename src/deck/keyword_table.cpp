@@ -67,7 +67,7 @@ std::int64_t card_id(CardReader& reader, std::size_t index) {
   if (index < card.path.size() && !card.path[index].empty() && !parse_integer(card.path[index])) {
     std::string form;
     for (std::size_t k = 0; k <= index; ++k) form += "/" + card.path[k];
-    reader.fail("id", fmt::format("a numeric id (the {} form is not supported)", form), in_quotes(card.path[index]));
+    reader.fail("id", fmt::format("a numeric id (the {} form is not supported by Crumple)", form), in_quotes(card.path[index]));
   }
   const std::int64_t id = object_id(reader, index);
   require_no_unit_id(reader, index + 1);
@@ -84,7 +84,7 @@ std::int64_t object_id(CardReader& reader, std::size_t index) {
 
 void require_no_unit_id(CardReader& reader, std::size_t index) {
   if (reader.path_id(index, "unit_ID", false) != 0)
-    reader.fail("unit_ID", "0 or nothing after the id (/UNIT systems are not supported)",
+    reader.fail("unit_ID", "0 or nothing after the id (/UNIT systems are not supported by Crumple)",
                 "'" + reader.card().path[index] + "'");
 }
 

@@ -75,13 +75,13 @@ void check_width(const Line& line, std::string_view name) {
 std::int64_t card_id(CardReader& reader, std::size_t index, bool unit_allowed) {
   const Card& card = reader.card();
   if (index < card.path.size() && !card.path[index].empty() && !parse_integer(card.path[index]))
-    reader.fail("id", fmt::format("a numeric id (the /{}/{} form is not supported)", card.path[0], card.path[index]),
+    reader.fail("id", fmt::format("a numeric id (the /{}/{} form is not supported by Crumple)", card.path[0], card.path[index]),
                 in_quotes(card.path[index]));
   const std::int64_t id = object_id(reader, index);
   std::size_t end = index + 1;
   if (unit_allowed) {
     if (reader.path_id(end, "unit_ID", false) != 0)
-      reader.fail("unit_ID", "0 or nothing after the id (/UNIT systems are not supported)", in_quotes(card.path[end]));
+      reader.fail("unit_ID", "0 or nothing after the id (/UNIT systems are not supported by Crumple)", in_quotes(card.path[end]));
     ++end;
   }
   if (card.path.size() > end) reader.fail("keyword", "nothing after the id", in_quotes(card.path[end]));
@@ -172,7 +172,7 @@ void read_object_line(const Line& line, const HistoryKind& kind, TimeHistoryRequ
   if (kind.lines == ObjectLines::IdSkewName) {
     if (line.integer(11, 10, "skew_ID") != 0)
       line.fail(11, 10, "skew_ID",
-                "0 or blank (one object per line; output in skew or frame systems is not supported)");
+                "0 or blank (one object per line; output in skew or frame systems is not supported by Crumple)");
   } else if (!line.text(11, 10).empty()) {
     line.fail(11, 10, "(blank)", "blank columns 11-20 (the name starts at column 21)");
   }
@@ -211,9 +211,9 @@ void read_section_frame(const Line& line, Section& s) {
   s.node_group_id = line.integer(31, 10, "grnod_ID");
   if (s.node_group_id < 0) line.fail(31, 10, "grnod_ID", "a node group id or blank");
   s.isave = static_cast<int>(line.integer(41, 10, "ISAVE"));
-  if (s.isave != 0) line.fail(41, 10, "ISAVE", "0 (saving or imposing cut motions is not supported)");
+  if (s.isave != 0) line.fail(41, 10, "ISAVE", "0 (saving or imposing cut motions is not supported by Crumple)");
   s.frame_id = line.integer(51, 10, "frame_ID");
-  if (s.frame_id != 0) line.fail(51, 10, "frame_ID", "0 or blank (moving frames are not supported)");
+  if (s.frame_id != 0) line.fail(51, 10, "frame_ID", "0 or blank (moving frames are not supported by Crumple)");
   s.dt = line.real(61, 20, "Dt", dim::time);
   s.alpha = line.real(81, 20, "alpha", dim::none);
   if (s.dt < 0.0) line.fail(61, 20, "Dt", "a non-negative sampling interval");
@@ -233,7 +233,7 @@ void read_section_groups(const Line& line, Section& s) {
   }};
   for (const Field& f : unsupported) {
     const std::int64_t id = line.integer(f.column, 10, f.name);
-    if (id != 0) line.fail(f.column, 10, f.name, fmt::format("0 or blank ({} not supported)", f.missing));
+    if (id != 0) line.fail(f.column, 10, f.name, fmt::format("0 or blank ({} not supported by Crumple)", f.missing));
   }
   s.shell_group_id = line.integer(21, 10, "grshel_ID");
   if (s.shell_group_id < 0) line.fail(21, 10, "grshel_ID", "a shell group id or blank");

@@ -9,7 +9,7 @@ namespace {
 std::vector<std::int64_t> positive_ids(CardReader& reader, std::string_view name) {
   std::vector<std::int64_t> ids = read_id_list(reader, name);
   for (std::int64_t id : ids)
-    if (id < 0) reader.fail(name, "positive ids (removing members with negative ids is not supported)",
+    if (id < 0) reader.fail(name, "positive ids (removing members with negative ids is not supported by Crumple)",
                             fmt::format("{}", id));
   return ids;
 }
