@@ -326,7 +326,8 @@ std::optional<DeckError> CardReader::unread_columns_error() const {
       const auto value = parse_fortran_real(word);
       if (!value || *value != 0.0) {
         const int first = static_cast<int>(k) + 1, last = static_cast<int>(end);
-        return DeckError(text_->where(*card_->lines[i]), card_->keyword, fmt::format("(none, columns {}-{})", first, last),
+        return DeckError(text_->where(*card_->lines[i]), card_->keyword,
+                         fmt::format("(none, columns {}-{})", first, last),
                          "blank or 0 in columns that no field of this card layout uses (Crumple reads no option "
                          "there; a shifted field or an option of another layout)",
                          quote_text(word));

@@ -67,7 +67,8 @@ std::int64_t card_id(CardReader& reader, std::size_t index) {
   if (index < card.path.size() && !card.path[index].empty() && !parse_integer(card.path[index])) {
     std::string form;
     for (std::size_t k = 0; k <= index; ++k) form += "/" + card.path[k];
-    reader.fail("id", fmt::format("a numeric id (the {} form is not supported by Crumple)", form), in_quotes(card.path[index]));
+    reader.fail("id", fmt::format("a numeric id (the {} form is not supported by Crumple)", form),
+                in_quotes(card.path[index]));
   }
   const std::int64_t id = object_id(reader, index);
   require_no_unit_id(reader, index + 1);

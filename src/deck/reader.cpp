@@ -74,8 +74,8 @@ const char* part_name(DeckPart part) { return part == DeckPart::Starter ? "start
 
 // A card that Crumple has no handler for, in this order: a Radioss output-only or performance card of this deck
 // part (named warning); another Radioss keyword of this part (not supported by Crumple); a keyword of the other
-// deck part (error); a word that is no keyword (unknown, with the nearest known keyword). The last two are errors that --skip-unknown turns
-// into warnings and skipped options.
+// deck part (error); a word that is no keyword (unknown, with the nearest known keyword). The unsupported and
+// unknown errors are those that --skip-unknown turns into warnings and skipped options.
 void read_card_without_handler(const Card& card, DeckPart part, const std::string& name, DeckContext& context) {
   const DeckPart other_part = part == DeckPart::Starter ? DeckPart::Engine : DeckPart::Starter;
   const RadiossKeyword* radioss = find_radioss_keyword(card.path, part);

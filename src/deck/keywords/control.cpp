@@ -18,7 +18,8 @@ void read_begin(CardReader& reader, DeckContext& context) {
   model.input_version = static_cast<int>(version.integer(1, 10, "Invers"));
   // Crumple reads the card layouts of input version 2017 and later; older versions place fields elsewhere.
   if (model.input_version < 2017)
-    version.fail(1, 10, "Invers", "an input version of 2017 or later (older card layouts are not supported by Crumple)");
+    version.fail(1, 10, "Invers",
+                 "an input version of 2017 or later (older card layouts are not supported by Crumple)");
   // Irun numbers the starter run in Radioss' file names; Crumple names its files after the run name.
   if (version.integer(11, 10, "Irun") != 0)
     context.note(version.where(), reader.card().keyword, "Irun (columns 11-20)",
@@ -92,7 +93,8 @@ void read_analy(CardReader& reader, DeckContext& context) {
   if (const auto line = optional_line(reader, "N2D3D, Iparith, Isubcycle")) {
     const std::int64_t n2d3d = line->integer(1, 10, "N2D3D");
     if (n2d3d < 0 || n2d3d > 2) line->fail(1, 10, "N2D3D", "0 (3-D), 1 (axisymmetric) or 2 (plane strain)");
-    if (n2d3d != 0) context.unsupported(line->error(1, 10, "N2D3D", default_only("2-D analysis (axisymmetric, plane strain) is")));
+    if (n2d3d != 0)
+      context.unsupported(line->error(1, 10, "N2D3D", default_only("2-D analysis (axisymmetric, plane strain) is")));
     if (!line->text(11, 10).empty()) line->fail(11, 10, "(blank)", "blank columns 11-20 (Iparith is in columns 21-30)");
     const std::int64_t iparith = line->integer(21, 10, "Iparith");
     if (iparith < 0 || iparith > 2) line->fail(21, 10, "Iparith", "0 or 1 (parallel arithmetic on) or 2 (off)");
@@ -100,7 +102,8 @@ void read_analy(CardReader& reader, DeckContext& context) {
     if (isub != 0 && isub != 2) line->fail(31, 10, "Isubcycle", "0 (no subcycling) or 2 (memory for /SHSUB)");
     // Iparith and Isubcycle = 2 only choose reproducible sums and reserve memory; /SHSUB (engine) would subcycle.
     if (iparith == 2 || isub == 2)
-      context.note(line->where(), reader.card().keyword, iparith == 2 ? "Iparith (columns 21-30)" : "Isubcycle (columns 31-40)",
+      context.note(line->where(), reader.card().keyword,
+                   iparith == 2 ? "Iparith (columns 21-30)" : "Isubcycle (columns 31-40)",
                    "performance hint: no effect on Crumple's results", SkipKind::PerformanceHint);
   }
 }
@@ -118,7 +121,8 @@ void read_ioflag(CardReader& reader, DeckContext& context) {
     const std::int64_t idrot = line->integer(61, 10, "Idrot");
     if (idrot != 0 && idrot != 1) line->fail(61, 10, "Idrot", "0 or 1");
     if (idrot == 1)
-      context.unsupported(line->error(61, 10, "Idrot", default_only("forcing rotational degrees of freedom (Idrot = 1) is")));
+      context.unsupported(
+          line->error(61, 10, "Idrot", default_only("forcing rotational degrees of freedom (Idrot = 1) is")));
   }
   output_only_card(reader, context, "the starter printout level and the STY model file are Crumple's own");
 }

@@ -112,7 +112,8 @@ void read_run(CardReader& reader, DeckContext& context) {
   const auto number = path_integer(reader, 2, "run_number");
   if (!number) reader.fail("run_number", "/RUN/Runname/1 (the run number)", "none");
   // Runs 2, 3... and the restart letter continue from a restart file, which Crumple does not read.
-  if (*number != 1) reader.fail("run_number", "1 (restart runs are not supported by Crumple)", fmt::format("{}", *number));
+  if (*number != 1)
+    reader.fail("run_number", "1 (restart runs are not supported by Crumple)", fmt::format("{}", *number));
   if (card.path.size() > 3)
     reader.fail("restart letter", "nothing (restart files are not read)", in_quotes(card.path[3]));
   const Line line = required_line(reader, "Tstop");

@@ -225,7 +225,8 @@ void read_added_mass(CardReader& reader, DeckContext& context) {
                 in_quotes(reader.card().keyword));
   if (type > 7) reader.fail("type", "an /ADMAS type: 0 (mass per node) or 1 (total mass)", in_quotes(path[1]));
   if (type > 1)
-    reader.fail("type", "0 (mass per node) or 1 (total mass shared by the nodes); type 2-7 are not supported by Crumple",
+    reader.fail("type",
+                "0 (mass per node) or 1 (total mass shared by the nodes); type 2-7 are not supported by Crumple",
                 in_quotes(path[1]));
   auto a = begin_record<AddedMass>(reader, 2);
   a.type = static_cast<int>(type);

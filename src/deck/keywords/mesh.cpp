@@ -39,7 +39,8 @@ void read_elements(CardReader& reader, DeckContext& context, ElementKind kind) {
       const int after = 11 + 10 * n;  // orthotropy angle (20 columns), then element thickness (20 columns)
       line->real(after, 20, "Phi", dim::none);
       if (line->real(after + 20, 20, "Thick", dim::length) != 0.0)
-        line->fail(after + 20, 20, "Thick", "blank (element thickness overrides are not supported by Crumple; use /PROP)");
+        line->fail(after + 20, 20, "Thick",
+                   "blank (element thickness overrides are not supported by Crumple; use /PROP)");
     }
     raw.user_id.push_back(id);
     raw.part_id.push_back(part_id);

@@ -75,13 +75,16 @@ void check_width(const Line& line, std::string_view name) {
 std::int64_t card_id(CardReader& reader, std::size_t index, bool unit_allowed) {
   const Card& card = reader.card();
   if (index < card.path.size() && !card.path[index].empty() && !parse_integer(card.path[index]))
-    reader.fail("id", fmt::format("a numeric id (the /{}/{} form is not supported by Crumple)", card.path[0], card.path[index]),
+    reader.fail("id",
+                fmt::format("a numeric id (the /{}/{} form is not supported by Crumple)", card.path[0],
+                            card.path[index]),
                 in_quotes(card.path[index]));
   const std::int64_t id = object_id(reader, index);
   std::size_t end = index + 1;
   if (unit_allowed) {
     if (reader.path_id(end, "unit_ID", false) != 0)
-      reader.fail("unit_ID", "0 or nothing after the id (/UNIT systems are not supported by Crumple)", in_quotes(card.path[end]));
+      reader.fail("unit_ID", "0 or nothing after the id (/UNIT systems are not supported by Crumple)",
+                  in_quotes(card.path[end]));
     ++end;
   }
   if (card.path.size() > end) reader.fail("keyword", "nothing after the id", in_quotes(card.path[end]));

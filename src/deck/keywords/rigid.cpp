@@ -205,7 +205,8 @@ void read_body_options(CardReader& reader, RigidBody& b, DeckContext& context) {
                  "performance hint: domain decomposition of the body, no effect on Crumple's results",
                  SkipKind::PerformanceHint);
   b.iexpams = static_cast<int>(line.integer(11, 10, "Iexpams"));
-  if (line.integer(21, 10, "Ifail") != 0) line.fail(21, 10, "Ifail", "0 (rigid body failure is not supported by Crumple)");
+  if (line.integer(21, 10, "Ifail") != 0)
+    line.fail(21, 10, "Ifail", "0 (rigid body failure is not supported by Crumple)");
 }
 
 void read_rigid_body(CardReader& reader, DeckContext& context) {
