@@ -34,12 +34,14 @@ int main(int argc, char** argv) {
   CLI::App* check = cli.add_subcommand("check", "Read and validate a deck and print a model summary");
   check->add_option("DECK", deck_path, "Starter deck (NAME_0000.rad); NAME_0001.rad beside it is read too")
       ->required();
-  check->add_flag("--skip-unknown", skip_unknown, "Warn about unknown keywords instead of failing");
+  const char* const skip_help =
+      "Skip keywords and options Crumple lacks (unknown or not supported) with a warning instead of failing";
+  check->add_flag("--skip-unknown", skip_unknown, skip_help);
 
   CLI::App* run = cli.add_subcommand("run", "Run a deck: writes NAME.h5, NAME.out and NAME.summary.json");
   run->add_option("DECK", deck_path, "Starter deck (NAME_0000.rad) with its engine deck beside it")->required();
   run->add_option("-o,--output", run_options.output_directory, "Output directory (default: current directory)");
-  run->add_flag("--skip-unknown", skip_unknown, "Warn about unknown keywords instead of failing");
+  run->add_flag("--skip-unknown", skip_unknown, skip_help);
 
   try {
     cli.parse(argc, argv);

@@ -23,6 +23,7 @@ struct RawElements {
 struct DeckContext {
   Model& model;
   DeckReport& report;
+  bool skip_unsupported = false;  // --skip-unknown: options Crumple lacks become warnings and skipped options
   std::array<RawElements, kElementKinds> raw_elements;
   std::vector<SourceLocation> node_where;  // location of each /NODE line, parallel to model.nodes
   bool begin_seen = false;
@@ -31,7 +32,21 @@ struct DeckContext {
   void warn(const SourceLocation& where, std::string_view keyword, std::string message) {
     report.warnings.push_back({where, std::string(keyword), std::move(message)});
   }
+
+  // A card or field Crumple reads but does not act on by design (output-only, performance hint): a named warning,
+  // listed among the skipped options.
+  void note(const SourceLocation& where, std::string_view keyword, std::string field, std::string what,
+            SkipKind kind);
+
+  // A non-default value of an option Crumple lacks: throws `error`, or with --skip-unknown records it as a warning
+  // and a skipped option and returns, after which the caller goes on with the option's default. `skipped` says
+  // what was skipped (default: "skipped (--skip-unknown): expected ..., found ...").
+  void unsupported(const DeckError& error, std::string skipped = {});
 };
+
+// The "expected" text of a field whose non-default value asks for an option Crumple lacks:
+// "0 or blank (<feature> not supported by Crumple)", e.g. feature "kinematic hardening (Chard) is".
+std::string default_only(std::string_view feature);
 
 using KeywordHandler = std::function<void(CardReader&, DeckContext&)>;
 

@@ -110,7 +110,16 @@ std::vector<Card> split_cards(const SourceText& text, std::int32_t first_engine_
       const std::string_view keyword = trim(line.text);
       card.keyword = std::string(keyword);
       card.path = split_path(keyword);
+      // A trailing slash ends the keyword line, as in "/BEGIN/" or "/RUN/name/1/" (Radioss reads them so).
+      while (card.path.size() > 1 && card.path.back().empty()) card.path.pop_back();
       for (auto& part : card.path) part = upper(part);
+      // Radioss reads a material law number as a number: /MAT/LAW01 is /MAT/LAW1 (QA deck contact_idel).
+      if (card.path.size() > 1 && card.path[0] == "MAT" && card.path[1].size() > 4 &&
+          card.path[1].compare(0, 4, "LAW0") == 0 &&
+          std::all_of(card.path[1].begin() + 3, card.path[1].end(), [](unsigned char c) { return std::isdigit(c); })) {
+        const auto first = card.path[1].find_first_not_of('0', 3);
+        card.path[1] = "LAW" + (first == std::string::npos ? std::string("0") : card.path[1].substr(first));
+      }
       card.where = text.where(line);
       card.engine = engine_file || after_starter_end;
       if (!card.engine && card.path.size() == 1 && card.path[0] == "END") after_starter_end = true;
@@ -143,6 +152,7 @@ SourceLocation Line::where() const { return reader_->text().where(*source_); }
 bool Line::blank() const { return trim(source_->text).empty(); }
 
 std::string Line::raw(int column, int width) const {
+  reader_->mark_read(index_, column, width);
   const auto& s = source_->text;
   const auto begin = static_cast<std::size_t>(column - 1);
   std::string out = begin < s.size() ? s.substr(begin, static_cast<std::size_t>(width)) : std::string();
@@ -157,9 +167,13 @@ std::string Line::field_label(int column, int width, std::string_view name) cons
   return fmt::format("{} (columns {}-{})", name, column, column + width - 1);
 }
 
-void Line::fail(int column, int width, std::string_view name, std::string_view expected) const {
+DeckError Line::error(int column, int width, std::string_view name, std::string_view expected) const {
   const std::string found = width > 0 ? quote_text(trim(raw(column, width))) : quote_text(trim(source_->text));
-  throw DeckError(where(), reader_->card().keyword, field_label(column, width, name), std::string(expected), found);
+  return DeckError(where(), reader_->card().keyword, field_label(column, width, name), std::string(expected), found);
+}
+
+void Line::fail(int column, int width, std::string_view name, std::string_view expected) const {
+  throw error(column, width, name, expected);
 }
 
 void Line::fail_value(std::string_view name, std::string_view expected, std::string_view found) const {
@@ -251,12 +265,14 @@ Line CardReader::next(std::string_view what) {
     throw DeckError(where, card_->keyword, "", fmt::format("a line with {} (truncated card)", what),
                     "end of card");
   }
-  return Line(*this, *card_->lines[next_++]);
+  const std::size_t index = next_++;
+  return Line(*this, *card_->lines[index], index);
 }
 
 std::optional<Line> CardReader::next_nonblank() {
   while (!at_end()) {
-    Line line(*this, *card_->lines[next_++]);
+    const std::size_t index = next_++;
+    Line line(*this, *card_->lines[index], index);
     if (!line.blank()) return line;
   }
   return std::nullopt;
@@ -281,8 +297,53 @@ std::int64_t CardReader::path_id(std::size_t index, std::string_view name, bool 
                   quote_text(card_->path[index]));
 }
 
+void CardReader::mark_read(std::size_t line, int column, int width) const {
+  if (column < 1 || width <= 0) return;
+  if (read_columns_.size() <= line) read_columns_.resize(line + 1);
+  auto& read = read_columns_[line];
+  const auto end = static_cast<std::size_t>(column - 1 + width);
+  if (read.size() < end) read.resize(end, false);
+  for (auto k = static_cast<std::size_t>(column - 1); k < end; ++k) read[k] = true;
+}
+
+std::optional<DeckError> CardReader::unread_columns_error() const {
+  for (std::size_t i = 0; i < next_ && i < card_->lines.size(); ++i) {
+    const std::string& text = card_->lines[i]->text;
+    const std::vector<bool> none;
+    const std::vector<bool>& read = i < read_columns_.size() ? read_columns_[i] : none;
+    std::size_t k = 0;
+    while (k < text.size()) {
+      const bool unread = k >= read.size() || !read[k];
+      if (!unread || text[k] == ' ' || text[k] == '\t' || text[k] == '\r') {
+        ++k;
+        continue;
+      }
+      std::size_t end = k;  // the unread word starting at column k + 1
+      while (end < text.size() && (end >= read.size() || !read[end]) && text[end] != ' ' && text[end] != '\t' &&
+             text[end] != '\r')
+        ++end;
+      const std::string_view word(text.data() + k, end - k);
+      const auto value = parse_fortran_real(word);
+      if (!value || *value != 0.0) {
+        const int first = static_cast<int>(k) + 1, last = static_cast<int>(end);
+        return DeckError(text_->where(*card_->lines[i]), card_->keyword,
+                         fmt::format("(none, columns {}-{})", first, last),
+                         "blank or 0 in columns that no field of this card layout uses (Crumple reads no option "
+                         "there; a shifted field or an option of another layout)",
+                         quote_text(word));
+      }
+      k = end;
+    }
+  }
+  return std::nullopt;
+}
+
+DeckError CardReader::error(std::string_view field, std::string_view expected, std::string_view found) const {
+  return DeckError(card_->where, card_->keyword, std::string(field), std::string(expected), std::string(found));
+}
+
 void CardReader::fail(std::string_view field, std::string_view expected, std::string_view found) const {
-  throw DeckError(card_->where, card_->keyword, std::string(field), std::string(expected), std::string(found));
+  throw error(field, expected, found);
 }
 
 }  // namespace crumple

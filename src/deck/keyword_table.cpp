@@ -43,12 +43,32 @@ std::vector<std::int64_t> read_id_list(CardReader& reader, std::string_view name
 
 std::string in_quotes(std::string_view text) { return fmt::format("'{}'", text); }
 
+std::string default_only(std::string_view feature) {
+  return fmt::format("0 or blank ({} not supported by Crumple)", feature);
+}
+
+void DeckContext::note(const SourceLocation& where, std::string_view keyword, std::string field, std::string what,
+                       SkipKind kind) {
+  warn(where, keyword, field.empty() ? what : fmt::format("field {}: {}", field, what));
+  report.skipped_options.push_back({where, std::string(keyword), std::move(field), std::move(what), kind});
+}
+
+void DeckContext::unsupported(const DeckError& error, std::string skipped) {
+  if (!skip_unsupported) throw error;
+  if (skipped.empty()) {
+    skipped = fmt::format("skipped (--skip-unknown): expected {}", error.expected());
+    if (!error.found().empty()) skipped += fmt::format(", found {}", error.found());
+  }
+  note(error.where(), error.keyword(), error.field(), std::move(skipped), SkipKind::Unsupported);
+}
+
 std::int64_t card_id(CardReader& reader, std::size_t index) {
   const Card& card = reader.card();
   if (index < card.path.size() && !card.path[index].empty() && !parse_integer(card.path[index])) {
     std::string form;
     for (std::size_t k = 0; k <= index; ++k) form += "/" + card.path[k];
-    reader.fail("id", fmt::format("a numeric id (the {} form is not supported)", form), in_quotes(card.path[index]));
+    reader.fail("id", fmt::format("a numeric id (the {} form is not supported by Crumple)", form),
+                in_quotes(card.path[index]));
   }
   const std::int64_t id = object_id(reader, index);
   require_no_unit_id(reader, index + 1);
@@ -65,7 +85,7 @@ std::int64_t object_id(CardReader& reader, std::size_t index) {
 
 void require_no_unit_id(CardReader& reader, std::size_t index) {
   if (reader.path_id(index, "unit_ID", false) != 0)
-    reader.fail("unit_ID", "0 or nothing after the id (/UNIT systems are not supported)",
+    reader.fail("unit_ID", "0 or nothing after the id (/UNIT systems are not supported by Crumple)",
                 "'" + reader.card().path[index] + "'");
 }
 

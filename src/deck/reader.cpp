@@ -6,6 +6,7 @@
 #include <algorithm>
 
 #include "context.hpp"
+#include "keyword_catalog.hpp"
 #include "resolve.hpp"
 
 namespace crumple {
@@ -61,8 +62,72 @@ bool is_card(const Card& card, std::initializer_list<std::string_view> path) {
   return card.path.size() == path.size() && std::equal(path.begin(), path.end(), card.path.begin());
 }
 
+// Fixed-format cards whose handlers other work owns (the shell and solid properties and defaults, the rigid
+// walls) are left as they read today; every other starter card has each of its columns checked.
+bool columns_checked(const KeywordSpec& spec) {
+  for (std::string_view owned : {"/PROP", "/DEF_SHELL", "/DEF_SOLID", "/RWALL"})
+    if (spec.name.substr(0, owned.size()) == owned) return false;
+  return true;
+}
+
+const char* part_name(DeckPart part) { return part == DeckPart::Starter ? "starter" : "engine"; }
+
+// A card that Crumple has no handler for, in this order: a Radioss output-only or performance card of this deck
+// part (named warning); another Radioss keyword of this part (not supported by Crumple); a keyword of the other
+// deck part (error); a word that is no keyword (unknown, with the nearest known keyword). The unsupported and
+// unknown errors are those that --skip-unknown turns into warnings and skipped options.
+void read_card_without_handler(const Card& card, DeckPart part, const std::string& name, DeckContext& context) {
+  const DeckPart other_part = part == DeckPart::Starter ? DeckPart::Engine : DeckPart::Starter;
+  const RadiossKeyword* radioss = find_radioss_keyword(card.path, part);
+  if (radioss == nullptr && (find_spec(card, other_part) != nullptr || find_radioss_keyword(card.path, other_part)))
+    throw DeckError(card.where, card.keyword, "",
+                    card.engine ? "an engine keyword (this one belongs to the starter deck, before /END)"
+                                : "a starter keyword (this one belongs to the engine deck, after /END)",
+                    "'" + card.keyword + "'");
+  if (radioss != nullptr) {
+    note_once(context.report.keywords_read, name);
+    switch (card_class(card.path, part)) {
+      case CardClass::OutputOnly:
+        note_once(context.report.accepted_without_effect, name);
+        context.note(card.where, card.keyword, "",
+                     fmt::format("output-only card ({}): not written by Crumple", radioss->name), SkipKind::OutputOnly);
+        return;
+      case CardClass::PerformanceHint:
+        note_once(context.report.accepted_without_effect, name);
+        context.note(card.where, card.keyword, "",
+                     fmt::format("performance hint ({}): no effect on Crumple's results", radioss->name),
+                     SkipKind::PerformanceHint);
+        return;
+      case CardClass::Model: break;
+    }
+    context.unsupported(
+        DeckError(card.where, card.keyword, "", "a keyword Crumple supports (or --skip-unknown to skip it)",
+                  fmt::format("the Radioss {} keyword {}, which is not supported by Crumple", part_name(part),
+                              radioss->name)),
+        fmt::format("keyword skipped (--skip-unknown): the Radioss {} keyword {} is not supported by Crumple",
+                    part_name(part), radioss->name));
+    return;
+  }
+  const std::string nearest = nearest_keyword(name);
+  const std::string hint = nearest.empty() ? "" : fmt::format("nearest known keyword: {}", nearest);
+  context.unsupported(
+      DeckError(card.where, card.keyword, "",
+                fmt::format("a Crumple or Radioss keyword{} (or --skip-unknown to skip it)",
+                            hint.empty() ? "" : " (" + hint + ")"),
+                fmt::format("unknown keyword '{}'", card.keyword)),
+      fmt::format("unknown keyword skipped (--skip-unknown{})", hint.empty() ? "" : "; " + hint));
+}
+
 }  // namespace
 }  // namespace deck
+
+std::string SkippedOption::text() const {
+  const char* label = kind == SkipKind::OutputOnly        ? "[output-only]"
+                      : kind == SkipKind::PerformanceHint ? "[performance hint]"
+                                                          : "[skipped]";
+  const DeckWarning w{where, keyword, field.empty() ? what : "field " + field + ": " + what};
+  return std::string(label) + " " + w.text();
+}
 
 std::filesystem::path engine_deck_for(const std::filesystem::path& starter) {
   const std::string stem = starter.stem().string();
@@ -85,7 +150,7 @@ Deck read_deck(const std::filesystem::path& starter, const ReadOptions& options)
 
   Deck deck;
   deck.report.files = text.files;
-  DeckContext context{deck.model, deck.report, {}, {}};
+  DeckContext context{deck.model, deck.report, options.skip_unknown, {}, {}};
   std::vector<DeckError> errors;
   auto record = [&](const DeckError& e) {
     if (errors.size() < kMaxErrors) errors.push_back(e);
@@ -96,7 +161,6 @@ Deck read_deck(const std::filesystem::path& starter, const ReadOptions& options)
   bool begin_first = false;
   bool starter_started = false;
   const Card* first_starter_card = nullptr;
-  std::vector<std::string> unknown_reported;
   for (std::size_t i = 0; i < cards.size(); ++i) {
     const Card& card = cards[i];
     if (!card.engine && is_card(card, {"END"})) {
@@ -115,23 +179,11 @@ Deck read_deck(const std::filesystem::path& starter, const ReadOptions& options)
     const KeywordSpec* spec = find_spec(card, part);
     const std::string name = keyword_name(card);
     if (spec == nullptr) {
-      const KeywordSpec* other = find_spec(card, card.engine ? DeckPart::Starter : DeckPart::Engine);
-      if (other != nullptr) {
-        record(DeckError(card.where, card.keyword, "",
-                         card.engine ? "an engine keyword (this one belongs to the starter deck, before /END)"
-                                     : "a starter keyword (this one belongs to the engine deck, after /END)",
-                         "'" + card.keyword + "'"));
-        continue;
+      try {
+        read_card_without_handler(card, part, name, context);
+      } catch (const DeckError& e) {
+        record(e);
       }
-      if (options.skip_unknown) {
-        if (std::find(unknown_reported.begin(), unknown_reported.end(), name) == unknown_reported.end()) {
-          unknown_reported.push_back(name);
-          context.warn(card.where, card.keyword, "unknown keyword skipped (--skip-unknown)");
-        }
-        continue;
-      }
-      record(DeckError(card.where, card.keyword, "", "a supported keyword (or --skip-unknown to skip it)",
-                       "unknown keyword '" + card.keyword + "'"));
       continue;
     }
     note_once(deck.report.keywords_read, name);
@@ -142,6 +194,8 @@ Deck read_deck(const std::filesystem::path& starter, const ReadOptions& options)
     try {
       CardReader reader(card, text, deck.model.units);
       spec->handler(reader, context);
+      if (!card.engine && columns_checked(*spec))
+        if (const auto unread = reader.unread_columns_error()) context.unsupported(*unread);
     } catch (const DeckError& e) {
       record(e);
     }

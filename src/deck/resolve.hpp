@@ -51,11 +51,19 @@ class Resolver {
     return id == 0 ? -1 : find(map, id, where, keyword, field, what);
   }
 
-  // A field naming a feature Crumple does not implement: a clear error rather than a silent default.
-  void require_zero(std::int64_t value, const SourceLocation& where, const std::string& keyword,
-                    std::string_view field, std::string_view feature) {
-    if (value != 0)
-      error(where, keyword, std::string(field), "0 (" + std::string(feature) + " not supported)", std::to_string(value));
+  // A field naming a feature Crumple does not implement: a clear error rather than a silent default. With
+  // --skip-unknown the value is recorded as a skipped option and set to its default, 0.
+  template <class T>
+  void require_zero(T& value, const SourceLocation& where, const std::string& keyword, std::string_view field,
+                    std::string_view feature) {
+    if (value == 0) return;
+    const DeckError e(where, keyword, std::string(field), default_only(feature), std::to_string(value));
+    if (!context.skip_unsupported) {
+      if (errors.size() < 100) errors.push_back(e);
+      return;
+    }
+    context.unsupported(e);
+    value = 0;
   }
 
   void throw_if_errors();

@@ -106,7 +106,9 @@ FaceKey face_key(std::array<std::int32_t, 4> nodes) {
 // Outer faces of bricks (faces used once within the set) and both-sided shell segments of the listed parts.
 void surface_from_parts(Resolver& r, Surface& s) {
   Model& m = r.model;
-  const std::string keyword = fmt::format("/SURF/PART/{}", s.user_id);
+  const std::string keyword = fmt::format("/SURF/PART/{}{}", s.all_parts ? "ALL/" : "", s.user_id);
+  if (s.all_parts)
+    for (const Part& part : m.parts) s.parts.push_back(part.user_id);
   const auto parts = parts_of(r, s.parts, s.where, keyword);
   constexpr int brick_faces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
   std::map<FaceKey, std::pair<int, Segment>> brick_face_use;

@@ -28,6 +28,15 @@ std::string escaped(const std::string& s) {
   return out;
 }
 
+// ["a", "b"] on one line each, indented under its key; [] when empty.
+std::string string_array(const std::vector<std::string>& items) {
+  if (items.empty()) return "[]";
+  std::string out = "[";
+  for (std::size_t k = 0; k < items.size(); ++k)
+    out += fmt::format("{}\n    \"{}\"", k == 0 ? "" : ",", escaped(items[k]));
+  return out + "\n  ]";
+}
+
 }  // namespace
 
 const char* status_name(RunStatus status) {
@@ -49,12 +58,13 @@ std::string to_json(const RunSummary& s) {
       "  \"wall_seconds\": {},\n  \"element_cycles_per_second\": {},\n"
       "  \"profile\": {{\n    \"elements\": {},\n    \"contact\": {},\n    \"contact_passes\": {},\n"
       "    \"loads\": {},\n    \"update\": {},\n    \"output\": {}\n  }},\n  \"ranks\": {},\n  \"precision\": \"{}\",\n"
-      "  \"status\": \"{}\",\n  \"message\": \"{}\"\n}}\n",
+      "  \"status\": \"{}\",\n  \"message\": \"{}\",\n  \"approximations\": {}\n}}\n",
       escaped(s.name), s.cycles, number(s.time), number(s.dt), number(e.internal), number(e.kinetic_translational),
       number(e.kinetic_rotational), number(e.contact), number(e.hourglass), number(e.external_work), number(e.total),
       number(e.error_percent), number(s.mass_total), number(s.mass_added), number(s.wall_seconds),
       number(s.element_cycles_per_second), number(s.phases.elements), number(s.phases.contact),
-      s.phases.contact_passes, number(s.phases.loads), number(s.phases.update), number(s.phases.output), s.ranks, escaped(s.precision), status_name(s.status), escaped(s.message));
+      s.phases.contact_passes, number(s.phases.loads), number(s.phases.update), number(s.phases.output), s.ranks, escaped(s.precision), status_name(s.status), escaped(s.message),
+      string_array(s.approximations));
 }
 
 void write_summary(const RunSummary& summary, const std::filesystem::path& file) {

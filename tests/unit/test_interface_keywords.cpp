@@ -97,7 +97,7 @@ TEST(InterfaceKeywords, QaStyleCardKeepsZeroDefaults) {
 TEST(InterfaceKeywords, EveryFieldIsRead) {
   test::TempDir dir;
   Type7 t;
-  t.flags = flags(4, 0, 2, 0, 2, 2, 0, 0);
+  t.flags = flags(4, 0, 2, 0, 0, 2, 0, 0);
   t.gap = R(0.8) + R(0.002);
   t.stiffness = R(1e3) + R(1e9) + R(0.0) + R(1e-7) + I(1) + I(3);
   t.contact = R(2.0) + R(0.15) + R(0.001) + R(0.001) + R(0.002);
@@ -107,7 +107,7 @@ TEST(InterfaceKeywords, EveryFieldIsRead) {
   const Type7Interface i = read(dir, t).model.type7_interfaces.at(0);
   EXPECT_EQ(i.istf, 4);
   EXPECT_EQ(i.igap, 2);
-  EXPECT_EQ(i.ibag, 2);
+  EXPECT_EQ(i.ibag, 0);
   EXPECT_EQ(i.idel, 2);
   EXPECT_DOUBLE_EQ(i.fscale_gap, 0.8);
   EXPECT_DOUBLE_EQ(i.gap_max, 0.002);
@@ -238,7 +238,7 @@ TEST(InterfaceKeywords, OptionsWithoutImplementationAreErrorsNamingTheField) {
       {"Itied", [](Type7& t) { t.gap = R(0.0) + R(0.0) + R(0.0) + blank(20) + I(1); }},
       {"%mesh_size", [](Type7& t) { t.stiffness = R(0.0) + R(0.0) + R(0.4); }},
       {"Irem_gap", [](Type7& t) { t.stiffness = R(0.0) + R(0.0) + R(0.0) + R(0.0) + I(2); }},
-      {"Irem_i2", [](Type7& t) { t.stiffness = R(0.0) + R(0.0) + R(0.0) + R(0.0) + I(0) + I(1); }},
+      {"Ibag", [](Type7& t) { t.flags = flags(0, 0, 0, 0, 2, 0, 0, 0); }},
       {"sens_ID", [](Type7& t) { t.friction = I(0) + I(0) + R(0.0) + I(0) + I(5); }},
       {"fct_IDf", [](Type7& t) { t.friction = I(0) + I(0) + R(0.0) + I(0) + I(0) + I(5); }},
       {"AscaleF", [](Type7& t) { t.friction = I(0) + I(0) + R(0.0) + I(0) + I(0) + I(0) + R(2.0); }},

@@ -196,10 +196,12 @@ TEST(LoadKeywords, OtherFormsAndUnitIdsAreErrors) {
   EXPECT_EQ(error_of(dir, imposed("/IMPVEL/4/0", "X", "")), "");
 }
 
-TEST(LoadKeywords, ImpdispFrameColumnIsIgnoredWithAWarning) {
+// Columns 51-60 are blank in the Radioss 2021 /IMPDISP layout; a newer deck's frame there is not dropped silently.
+TEST(LoadKeywords, ImpdispFrameColumnIsAnError) {
   test::TempDir dir;
-  const std::string w = warnings_of(dir, imposed("/IMPDISP/5", "X", "", 1, 7));
-  EXPECT_NE(w.find("columns 51-60 ignored"), std::string::npos) << w;
+  const std::string e = error_of(dir, imposed("/IMPDISP/5", "X", "", 1, 7));
+  EXPECT_NE(e.find("field frame_ID (columns 51-60)"), std::string::npos) << e;
+  EXPECT_NE(e.find("not supported by Crumple"), std::string::npos) << e;
 }
 
 // ---------------------------------------------------------------------------------------------------------------

@@ -324,19 +324,32 @@ TEST(RigidKeywords, RigidBodyDefaults) {
   EXPECT_EQ(m.index.rigid_bodies.at(7), 0);
 }
 
+// The solver computes the inertia from the nodes (Ispher 2) about the centre of all masses (ICoG 1); the other
+// choices are errors naming the field.
+TEST(RigidKeywords, InertiaAndCentreChoicesCrumpleLacksAreErrors) {
+  for (auto [ispher, icog, field] : {std::tuple{1, 0, "field Ispher"}, std::tuple{3, 0, "field Ispher"},
+                                     std::tuple{0, 2, "field ICoG"}, std::tuple{0, 4, "field ICoG"}}) {
+    test::TempDir dir;
+    Body b;
+    b.ispher = ispher;
+    b.icog = icog;
+    const std::string e = error_of(dir, b.card());
+    EXPECT_NE(e.find(field), std::string::npos) << e;
+    EXPECT_NE(e.find("not supported by Crumple"), std::string::npos) << e;
+  }
+}
+
 TEST(RigidKeywords, RigidBodyUnits) {
   test::TempDir dir;
   Body b;
-  b.ispher = 1;
-  b.icog = 3;
   b.ikrem = 1;
   b.mass = R(140.0);
   b.diagonal = vec(1, 2, 3);
   b.products = vec(-4, 5, 6);
   const Model m = read(dir, b.card(), gram_mm_ms_begin());
   const RigidBody& body = m.rigid_bodies[0];
-  EXPECT_EQ(body.ispher, 1);
-  EXPECT_EQ(body.icog, 3);
+  EXPECT_EQ(body.ispher, 2);
+  EXPECT_EQ(body.icog, 1);
   EXPECT_EQ(body.ikrem, 1);
   EXPECT_DOUBLE_EQ(body.mass, 0.14);
   // g mm^2 = 1e-9 kg m^2; the order on the card is Jxy, Jyz, Jxz.

@@ -39,7 +39,8 @@ class CardReader;
 // One data line of a card, with typed field access that reports errors with file, line, keyword and field.
 class Line {
  public:
-  Line(const CardReader& reader, const SourceLine& source) : reader_(&reader), source_(&source) {}
+  Line(const CardReader& reader, const SourceLine& source, std::size_t index)
+      : reader_(&reader), source_(&source), index_(index) {}
 
   // Fixed-width fields; `column` is 1-based.
   std::int64_t integer(int column, int width, std::string_view name, std::int64_t fallback = 0) const;
@@ -59,11 +60,14 @@ class Line {
   // An error about the field at `column`..`column+width-1` (or the whole line when width is 0).
   [[noreturn]] void fail(int column, int width, std::string_view name, std::string_view expected) const;
   [[noreturn]] void fail_value(std::string_view name, std::string_view expected, std::string_view found) const;
+  // The error fail() throws, for callers that may record it instead (DeckContext::unsupported).
+  DeckError error(int column, int width, std::string_view name, std::string_view expected) const;
 
  private:
   std::string field_label(int column, int width, std::string_view name) const;
   const CardReader* reader_;
   const SourceLine* source_;
+  std::size_t index_;  // data line of the card (for the columns read)
 };
 
 // Walks the data lines of one card.
@@ -90,12 +94,21 @@ class CardReader {
   std::int64_t path_id(std::size_t index, std::string_view name, bool required) const;
 
   [[noreturn]] void fail(std::string_view field, std::string_view expected, std::string_view found) const;
+  // The error fail() throws (about the keyword line), for callers that may record it instead.
+  DeckError error(std::string_view field, std::string_view expected, std::string_view found) const;
+
+  // Fixed-format cards: text in columns of the lines read that no field of the card covers. Blank or zero text
+  // there is the default of a field Crumple does not read; anything else would be a value silently dropped, so it
+  // is returned as an error naming its columns (the first one found).
+  std::optional<DeckError> unread_columns_error() const;
+  void mark_read(std::size_t line, int column, int width) const;  // called by the field readers of Line
 
  private:
   const Card* card_;
   const SourceText* text_;
   const UnitSystem* units_;
   std::size_t next_ = 0;
+  mutable std::vector<std::vector<bool>> read_columns_;  // per data line: the columns a field read
 };
 
 }  // namespace crumple

@@ -1,5 +1,6 @@
 #pragma once
 // Entry point of the deck reader: a starter deck (and the engine deck beside it) -> a validated Model.
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -10,8 +11,27 @@
 namespace crumple {
 
 struct ReadOptions {
-  bool skip_unknown = false;  // unknown keywords become warnings (each listed once) instead of errors
+  // Keywords and options Crumple lacks (unknown keywords, Radioss keywords and field values it does not support)
+  // become warnings instead of errors; each is listed in DeckReport::skipped_options.
+  bool skip_unknown = false;
   bool require_engine = false;  // a run needs the engine part (/RUN); `check` does not
+};
+
+// What kind of option a deck asked for that Crumple does not act on.
+enum class SkipKind : std::uint8_t {
+  Unsupported,      // a keyword or field value Crumple lacks, skipped on --skip-unknown (otherwise an error)
+  OutputOnly,       // an output request Crumple does not write
+  PerformanceHint,  // a parallel, memory or speed hint with no effect on Crumple's results
+};
+
+// One option skipped or approximated, for the listing and the run summary ("approximations").
+struct SkippedOption {
+  SourceLocation where;
+  std::string keyword;  // the keyword line as written, e.g. "/MAT/LAW44/3"
+  std::string field;    // the field with its columns, empty for the whole card
+  std::string what;     // what was skipped and why
+  SkipKind kind = SkipKind::Unsupported;
+  std::string text() const;  // "[output-only] file:line: keyword: field F: what"
 };
 
 struct DeckReport {
@@ -19,6 +39,7 @@ struct DeckReport {
   std::vector<std::string> keywords_read;            // distinct keyword names, in order of first use
   std::vector<std::string> accepted_without_effect;  // distinct keyword names read but ignored by design
   std::vector<DeckWarning> warnings;
+  std::vector<SkippedOption> skipped_options;        // every skipped or approximated option, in deck order
 };
 
 struct Deck {

@@ -54,6 +54,7 @@ struct Surface {  // /SURF/PART, /SURF/SEG
   std::string title;
   SetSource source = SetSource::Ids;
   std::vector<std::int64_t> parts;                    // /SURF/PART: part user ids
+  bool all_parts = false;                             // /SURF/PART/ALL: every part of the model
   std::vector<std::array<std::int64_t, 4>> raw_segments;  // /SURF/SEG: node user ids (n4 = 0 for triangles)
   std::vector<SourceLocation> raw_segment_where;
   std::vector<Segment> segments;                      // model build

@@ -3,6 +3,7 @@
 // masses [M], times [T], all in the deck's working units.
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace crumple {
 
@@ -44,6 +45,9 @@ struct RunSummary {
   std::string precision = "double";
   RunStatus status = RunStatus::Normal;
   std::string message;  // why the run ended when status is not normal
+  // Options of the deck that were skipped or approximated (output-only requests not written, performance hints,
+  // options skipped on --skip-unknown), one line each; "approximations" in the JSON. Filled by the app.
+  std::vector<std::string> approximations;
 };
 
 std::string to_json(const RunSummary& summary);

@@ -22,6 +22,9 @@ struct SolverOptions {
   // Optional: called with the whole state at every time-history output time (/TFILE interval), after the
   // energies are updated; for tests and tools that read the state. It must not keep references past the call.
   std::function<void(const SolverState&)> observer;
+  // Every option of the deck that was skipped or approximated (DeckReport::skipped_options, one line each:
+  // "[skipped] file:line: keyword: field F: what"), for the listing header. Filled by the app (app/run.cpp).
+  std::vector<std::string> approximations;
 };
 
 // Runs the model to its end time and writes the listing and results. Returns the summary; a run that ends

@@ -16,7 +16,14 @@ void read_begin(CardReader& reader, DeckContext& context) {
   model.run_name = reader.next("Runname").text(1, 80);
   const Line version = reader.next("Invers, Irun");
   model.input_version = static_cast<int>(version.integer(1, 10, "Invers"));
-  version.integer(11, 10, "Irun");
+  // Crumple reads the card layouts of input version 2017 and later; older versions place fields elsewhere.
+  if (model.input_version < 2017)
+    version.fail(1, 10, "Invers",
+                 "an input version of 2017 or later (older card layouts are not supported by Crumple)");
+  // Irun numbers the starter run in Radioss' file names; Crumple names its files after the run name.
+  if (version.integer(11, 10, "Irun") != 0)
+    context.note(version.where(), reader.card().keyword, "Irun (columns 11-20)",
+                 "output-only: the starter run number names no Crumple file", SkipKind::OutputOnly);
   // Unit lines: mass, length, time in 20-column fields, a code or a real (SI size). A blank working unit is
   // the SI unit; a blank input unit is the working unit.
   const char* names[2][3] = {{"Input_mass_unit", "Input_length_unit", "Input_time_unit"},
@@ -58,6 +65,106 @@ void read_title_card(CardReader& reader, DeckContext& context) {
   context.model.title = read_title(reader);
 }
 
+// ---------------------------------------------------------------------------------------------------------------
+// Control cards with no model data: each field either acts, is a named warning (output, performance) or, when
+// non-default, an option Crumple lacks.
+
+// The card's single optional data line (blank or absent: every field at its default).
+std::optional<Line> optional_line(CardReader& reader, std::string_view what) {
+  if (!reader.has_data()) return std::nullopt;
+  auto line = reader.next_nonblank();
+  if (line) return *line;
+  reader.fail(what, "a data line", "none");
+}
+
+void output_only_card(CardReader& reader, DeckContext& context, std::string_view why) {
+  context.note(reader.card().where, reader.card().keyword, "", fmt::format("output-only card: {}", why),
+               SkipKind::OutputOnly);
+}
+
+void performance_card(CardReader& reader, DeckContext& context) {
+  context.note(reader.card().where, reader.card().keyword, "",
+               "performance hint: no effect on Crumple's results (Crumple chooses its own parallel layout and memory)",
+               SkipKind::PerformanceHint);
+}
+
+// /ANALY: N2D3D (1-10), Iparith (21-30), Isubcycle (31-40).
+void read_analy(CardReader& reader, DeckContext& context) {
+  if (const auto line = optional_line(reader, "N2D3D, Iparith, Isubcycle")) {
+    const std::int64_t n2d3d = line->integer(1, 10, "N2D3D");
+    if (n2d3d < 0 || n2d3d > 2) line->fail(1, 10, "N2D3D", "0 (3-D), 1 (axisymmetric) or 2 (plane strain)");
+    if (n2d3d != 0)
+      context.unsupported(line->error(1, 10, "N2D3D", default_only("2-D analysis (axisymmetric, plane strain) is")));
+    if (!line->text(11, 10).empty()) line->fail(11, 10, "(blank)", "blank columns 11-20 (Iparith is in columns 21-30)");
+    const std::int64_t iparith = line->integer(21, 10, "Iparith");
+    if (iparith < 0 || iparith > 2) line->fail(21, 10, "Iparith", "0 or 1 (parallel arithmetic on) or 2 (off)");
+    const std::int64_t isub = line->integer(31, 10, "Isubcycle");
+    if (isub != 0 && isub != 2) line->fail(31, 10, "Isubcycle", "0 (no subcycling) or 2 (memory for /SHSUB)");
+    // Iparith and Isubcycle = 2 only choose reproducible sums and reserve memory; /SHSUB (engine) would subcycle.
+    if (iparith == 2 || isub == 2)
+      context.note(line->where(), reader.card().keyword,
+                   iparith == 2 ? "Iparith (columns 21-30)" : "Isubcycle (columns 31-40)",
+                   "performance hint: no effect on Crumple's results", SkipKind::PerformanceHint);
+  }
+}
+
+// /IOFLAG: Ipri (1-10), Igtyp (21-30, obsolete), Ioutp (31-40), OutyyFMT (41-50), Irootyy (51-60), Idrot (61-70).
+void read_ioflag(CardReader& reader, DeckContext& context) {
+  if (const auto line = optional_line(reader, "Ipri, Ioutp, OutyyFMT, Irootyy, Idrot")) {
+    line->integer(1, 10, "Ipri");
+    if (!line->text(11, 10).empty()) line->fail(11, 10, "(blank)", "blank columns 11-20");
+    line->integer(21, 10, "Igtyp");
+    line->integer(31, 10, "Ioutp");
+    line->integer(41, 10, "OutyyFMT");
+    line->integer(51, 10, "Irootyy");
+    // Idrot forces rotational degrees of freedom on nodes that have none (solid-only nodes): a model option.
+    const std::int64_t idrot = line->integer(61, 10, "Idrot");
+    if (idrot != 0 && idrot != 1) line->fail(61, 10, "Idrot", "0 or 1");
+    if (idrot == 1)
+      context.unsupported(
+          line->error(61, 10, "Idrot", default_only("forcing rotational degrees of freedom (Idrot = 1) is")));
+  }
+  output_only_card(reader, context, "the starter printout level and the STY model file are Crumple's own");
+}
+
+// /SPMD: Domdec (1-10), Nproc (11-20), Dkword (31-40), Nthread (51-60): domain decomposition and threads.
+void read_spmd(CardReader& reader, DeckContext& context) {
+  if (const auto line = optional_line(reader, "Domdec, Nproc, Dkword, Nthread")) {
+    line->integer(1, 10, "Domdec");
+    line->integer(11, 10, "Nproc");
+    line->integer(31, 10, "Dkword");
+    line->integer(51, 10, "Nthread");
+  }
+  performance_card(reader, context);
+}
+
+// /PROC (starter or engine, /PROC/n/...): processor counts. /MEMORY: memory sizes.
+void read_performance_card(CardReader& reader, DeckContext& context) {
+  // The values only size the run on the machine: read as text, whatever they are.
+  while (auto line = reader.next_nonblank()) line->text(1, static_cast<int>(line->content().size()));
+  performance_card(reader, context);
+}
+
+// /RANDOM: Xalea (1-20), Seed (21-40). A non-zero noise moves every node by a random amount: a model change.
+void read_random(CardReader& reader, DeckContext& context) {
+  if (const auto line = optional_line(reader, "Xalea, Seed")) {
+    if (line->real(1, 20, "Xalea", dim::length) != 0.0)
+      context.unsupported(line->error(1, 20, "Xalea", default_only("random noise on the node coordinates is")));
+    line->real(21, 20, "Seed", dim::none);  // used only with a noise
+  }
+}
+
+// /SHFRA/V4 or /SHFRA/V5: how the shell local frame is built. It orients orthotropic materials (none in Crumple)
+// and the element-frame stress output (Crumple writes its own element frame).
+void read_shfra(CardReader& reader, DeckContext& context) {
+  const auto& path = reader.card().path;
+  if (path.size() != 2 || (path[1] != "V4" && path[1] != "V5"))
+    reader.fail("keyword", "/SHFRA/V4 or /SHFRA/V5", in_quotes(reader.card().keyword));
+  reader.finish();
+  output_only_card(reader, context,
+                   "the shell frame orients only orthotropic materials (none in Crumple) and element-frame output");
+}
+
 void read_def_shell(CardReader& reader, DeckContext& context) {
   ShellDefaults& d = context.model.shell_defaults;
   if (reader.at_end()) return;
@@ -90,9 +197,16 @@ void register_control_keywords(KeywordTable& table) {
   table.push_back({"/TITLE", DeckPart::Starter, read_title_card});
   table.push_back({"/DEF_SHELL", DeckPart::Starter, read_def_shell});
   table.push_back({"/DEF_SOLID", DeckPart::Starter, read_def_solid});
-  // Accepted with no effect on results (deck.md); /RANDOM in particular must not perturb: runs stay deterministic.
-  for (std::string_view name : {"/ANALY", "/IOFLAG", "/SPMD", "/PROC", "/RANDOM", "/SHFRA", "/VERS", "/MEMORY"})
-    table.push_back({name, DeckPart::Starter, {}});
+  table.push_back({"/ANALY", DeckPart::Starter, read_analy});
+  table.push_back({"/IOFLAG", DeckPart::Starter, read_ioflag});
+  table.push_back({"/SPMD", DeckPart::Starter, read_spmd});
+  table.push_back({"/PROC", DeckPart::Starter, read_performance_card});
+  table.push_back({"/PROC", DeckPart::Engine, read_performance_card});
+  table.push_back({"/MEMORY", DeckPart::Starter, read_performance_card});
+  table.push_back({"/RANDOM", DeckPart::Starter, read_random});
+  table.push_back({"/SHFRA", DeckPart::Starter, read_shfra});
+  // A version stamp without data: accepted without effect (listed by `crumple check`).
+  table.push_back({"/VERS", DeckPart::Starter, {}});
 }
 
 }  // namespace crumple::deck

@@ -14,13 +14,12 @@
 namespace crumple::deck {
 namespace {
 
-// Result names Crumple can write as field output. Anything else is an error rather than a missing field.
-constexpr std::array<std::string_view, 16> kElementFields{"EPSP", "VONM", "ENER", "HOURG", "DENS",  "P",
-                                                          "THIC", "DT",   "OFF",  "SIGX",  "SIGY",  "SIGZ",
-                                                          "SIGXY", "SIGYZ", "SIGZX", "EPSD"};
-constexpr std::array<std::string_view, 13> kVectorFields{"VEL",  "DISP", "ACC",  "CONT", "CONT2", "FINT", "FEXT",
-                                                         "FOPT", "PCONT", "VROT", "DROT", "FREAC", "MREAC"};
-constexpr std::array<std::string_view, 3> kNodalFields{"DT", "DMAS", "DINER"};
+// Result names whose values Crumple writes in every field frame of NAME.h5 (results_file.cpp): displacement,
+// velocity, contact force (decks with interfaces) and, for shells, mid-surface stress, plastic strain, thickness
+// and the deleted flag. Any other result is an output request Crumple does not write: a named warning.
+constexpr std::array<std::string_view, 6> kElementFields{"EPSP", "THIC", "OFF", "SIGX", "SIGY", "SIGXY"};
+constexpr std::array<std::string_view, 3> kVectorFields{"VEL", "DISP", "CONT"};
+constexpr std::array<std::string_view, 0> kNodalFields{};
 
 
 // Path part `index` of the keyword line as written (Card::path is upper-cased; a run name keeps its case).
@@ -53,6 +52,10 @@ std::optional<std::int64_t> path_integer(CardReader& reader, std::size_t index, 
   if (index >= card.path.size() || card.path[index].empty()) return std::nullopt;
   if (auto v = parse_integer(card.path[index])) return *v;
   reader.fail(name, "an integer in the keyword line", in_quotes(card.path[index]));
+}
+
+void output_only(CardReader& reader, DeckContext& context, const std::string& what) {
+  context.note(reader.card().where, reader.card().keyword, "", "output-only: " + what, SkipKind::OutputOnly);
 }
 
 void note_without_effect(DeckContext& context, const Card& card) {
@@ -109,7 +112,8 @@ void read_run(CardReader& reader, DeckContext& context) {
   const auto number = path_integer(reader, 2, "run_number");
   if (!number) reader.fail("run_number", "/RUN/Runname/1 (the run number)", "none");
   // Runs 2, 3... and the restart letter continue from a restart file, which Crumple does not read.
-  if (*number != 1) reader.fail("run_number", "1 (restart runs are not supported)", fmt::format("{}", *number));
+  if (*number != 1)
+    reader.fail("run_number", "1 (restart runs are not supported by Crumple)", fmt::format("{}", *number));
   if (card.path.size() > 3)
     reader.fail("restart letter", "nothing (restart files are not read)", in_quotes(card.path[3]));
   const Line line = required_line(reader, "Tstop");
@@ -133,6 +137,10 @@ void read_tfile(CardReader& reader, DeckContext& context) {
   run.history_interval = checked_real(line, 0, "dT_his", std::nullopt, positive, "a positive time-history interval");
   reader.finish();
   run.history_format = format == 0 ? 4 : static_cast<int>(format);  // blank or 0: IEEE binary (manual)
+  if (format != 0)
+    context.note(reader.card().where, reader.card().keyword, "type",
+                 "output-only: the time histories go to NAME.h5 (HDF5) at dT_his, in no Radioss file format",
+                 SkipKind::OutputOnly);
 }
 
 void read_print(CardReader& reader, DeckContext& context) {
@@ -145,6 +153,9 @@ void read_print(CardReader& reader, DeckContext& context) {
   reader.finish();
   run.print_every = *every;
   run.print_header_lines = static_cast<int>(lines);
+  if (lines != 0)
+    context.note(reader.card().where, reader.card().keyword, "Nline",
+                 "output-only: Crumple's listing prints its column header once", SkipKind::OutputOnly);
 }
 
 void read_engine_version(CardReader& reader, DeckContext& context) {
@@ -178,25 +189,34 @@ void read_anim_dt(CardReader& reader, DeckContext& context) {
   reader.finish();
 }
 
-void read_anim_fields(CardReader& reader, std::vector<std::string>& fields, std::span<const std::string_view> known) {
+void read_anim_fields(CardReader& reader, DeckContext& context, std::vector<std::string>& fields,
+                      std::span<const std::string_view> written) {
   const Card& card = reader.card();
   if (card.path.size() < 3 || card.path[2].empty())
     reader.fail("restype", fmt::format("{}/<result name>", path_prefix(card, 2)), "no result name");
   path_at_most(reader, 3);
   const std::string& name = card.path[2];
-  if (std::find(known.begin(), known.end(), name) == known.end()) {
-    const std::string list = fmt::format("{}", fmt::join(known, " "));
-    reader.fail("restype", fmt::format("a result Crumple writes for {}: {}", path_prefix(card, 2), list),
-                in_quotes(name));
-  }
   reader.finish();
   if (std::find(fields.begin(), fields.end(), name) == fields.end()) fields.push_back(name);
+  if (std::find(written.begin(), written.end(), name) == written.end())
+    output_only(reader, context,
+                fmt::format("result {} is not written by Crumple (its frames hold {})", name,
+                            written.empty() ? std::string("no result of this kind")
+                                            : fmt::format("{}", fmt::join(written, " "))));
+}
+
+// Any other /ANIM request (/ANIM/MASS, /ANIM/SHELL/TENS/..., /ANIM/BRICK/...): a named warning.
+void read_anim_other(CardReader& reader, DeckContext& context) {
+  while (reader.next_nonblank()) {
+  }
+  output_only(reader, context, "animation request not written by Crumple");
 }
 
 void read_anim_gzip(CardReader& reader, DeckContext& context) {
   path_at_most(reader, 2);
   reader.finish();
   context.model.run.anim_gzip = true;
+  output_only(reader, context, "Crumple writes its frames to NAME.h5 (HDF5), not gzipped animation files");
 }
 
 void read_anim_version(CardReader& reader, DeckContext& context) {
@@ -206,6 +226,7 @@ void read_anim_version(CardReader& reader, DeckContext& context) {
     reader.fail("n", "/ANIM/VERS/n with n a positive format version", "none");
   reader.finish();
   context.model.run.anim_version = static_cast<int>(*version);
+  output_only(reader, context, "Crumple writes its frames to NAME.h5 (HDF5), in no animation format version");
 }
 
 // ---------------------------------------------------------------------------------------------------------------
@@ -314,6 +335,22 @@ void read_stop(CardReader& reader, DeckContext& context) {
   run.stop_write_animation = zero_or_one(line, 4, "NANIM");
   run.stop_positive_error_only = zero_or_one(line, 5, "NERR_POSIT");
   reader.finish();
+  // The solver stops on Emax (|energy error|) and Mmax (added mass); the other limits are not implemented.
+  if (run.stop_node_mass_error != 0.0) {
+    context.unsupported(DeckError(line.where(), reader.card().keyword, "Nmax (value 3)",
+                                  default_only("a stop on the largest nodal added mass is"),
+                                  fmt::format("{}", run.stop_node_mass_error)));
+    run.stop_node_mass_error = 0.0;
+  }
+  if (run.stop_positive_error_only && run.stop_energy_error > 0.0) {
+    context.unsupported(DeckError(line.where(), reader.card().keyword, "NERR_POSIT (value 6)",
+                                  default_only("counting only a positive energy error is"), "1"));
+    run.stop_positive_error_only = false;
+  }
+  if (run.stop_write_history || run.stop_write_animation)
+    context.note(line.where(), reader.card().keyword, run.stop_write_history ? "NTH (value 4)" : "NANIM (value 5)",
+                 "output-only: Crumple writes no extra time-history or frame when a /STOP limit ends the run",
+                 SkipKind::OutputOnly);
 }
 
 void read_rfile(CardReader& reader, DeckContext& context) {
@@ -338,6 +375,7 @@ void read_rfile(CardReader& reader, DeckContext& context) {
   reader.finish();
   run.restart_every = every;
   run.restart_sets = static_cast<int>(sets);
+  output_only(reader, context, "restart files are not written by Crumple");
 }
 
 void read_rbody_switch(CardReader& reader, std::vector<std::int64_t>& ids, std::vector<SourceLocation>& where) {
@@ -358,8 +396,8 @@ void read_rbody_switch(CardReader& reader, std::vector<std::int64_t>& ids, std::
 }  // namespace
 
 void register_engine_keywords(KeywordTable& table) {
-  auto fields = [](std::vector<std::string> RunControl::*member, std::span<const std::string_view> known) {
-    return [member, known](CardReader& r, DeckContext& c) { read_anim_fields(r, c.model.run.*member, known); };
+  auto fields = [](std::vector<std::string> RunControl::*member, std::span<const std::string_view> written) {
+    return [member, written](CardReader& r, DeckContext& c) { read_anim_fields(r, c, c.model.run.*member, written); };
   };
   const DeckPart E = DeckPart::Engine;
   table.push_back({"/RUN", E, read_run});
@@ -373,9 +411,17 @@ void register_engine_keywords(KeywordTable& table) {
   table.push_back({"/ANIM/NODA", E, fields(&RunControl::anim_nodal_fields, kNodalFields)});
   table.push_back({"/ANIM/GZIP", E, read_anim_gzip});
   table.push_back({"/ANIM/VERS", E, read_anim_version});
+  table.push_back({"/ANIM", E, read_anim_other});
   table.push_back({"/DT", E, read_dt});
-  table.push_back({"/PARITH", E, [](CardReader& r, DeckContext& c) { c.model.run.parith = read_switch(r); }});
-  table.push_back({"/MON", E, [](CardReader& r, DeckContext& c) { c.model.run.monitor = read_switch(r); }});
+  table.push_back({"/PARITH", E, [](CardReader& r, DeckContext& c) {
+                     c.model.run.parith = read_switch(r);
+                     c.note(r.card().where, r.card().keyword, "",
+                            "performance hint: no effect on Crumple's results", SkipKind::PerformanceHint);
+                   }});
+  table.push_back({"/MON", E, [](CardReader& r, DeckContext& c) {
+                     c.model.run.monitor = read_switch(r);
+                     output_only(r, c, "Crumple's listing ends with its own time profile, whatever /MON says");
+                   }});
   table.push_back({"/STOP", E, read_stop});
   table.push_back({"/RFILE", E, read_rfile});
   table.push_back({"/RBODY/ON", E, [](CardReader& r, DeckContext& c) {

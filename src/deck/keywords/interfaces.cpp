@@ -51,17 +51,18 @@ double non_negative(const Line& line, int column, std::string_view name, Dimensi
   return value;
 }
 
-// A field whose option the contact module does not implement: only 0 (blank) is accepted.
-void require_zero(const Line& line, bool non_zero, int column, int width, std::string_view name,
-                  std::string_view feature) {
-  if (non_zero) line.fail(column, width, name, fmt::format("0 or blank ({} not supported)", feature));
+// A field whose option the contact module does not implement: only 0 (blank) is accepted (--skip-unknown: the
+// value is recorded as skipped; the contact then runs without the option).
+void require_zero(DeckContext& context, const Line& line, bool non_zero, int column, int width,
+                  std::string_view name, std::string_view feature) {
+  if (non_zero) context.unsupported(line.error(column, width, name, default_only(feature)));
 }
 
 // `/INTER/TYPE7/id[/unit_ID]`
 std::int64_t interface_id(CardReader& reader) {
   const std::int64_t id = object_id(reader, 2);
   if (reader.path_id(3, "unit_ID", false) != 0)
-    reader.fail("unit_ID", "0 or nothing after the id (/UNIT systems are not supported)",
+    reader.fail("unit_ID", "0 or nothing after the id (/UNIT systems are not supported by Crumple)",
                 fmt::format("'{}'", reader.card().path[3]));
   if (reader.card().path.size() > 4)
     reader.fail("keyword", "nothing after the unit id", fmt::format("'{}'", reader.card().path[4]));
@@ -81,11 +82,11 @@ void read_flags(const Line& line, Type7Interface& i) {
   i.istf = flag(line, 21, "Istf", {0, 1, 2, 3, 4, 5, kDefaultCode}, "0 to 5, or 1000 (default)");
   i.ithe = flag(line, 31, "Ithe", {0, 1}, "0 or 1");
   i.igap = flag(line, 41, "Igap", {0, 1, 2, kDefaultCode},
-                "0, 1, 2 or 1000 (Igap = 3, the mesh-size gap, is not supported)");
+                "0, 1, 2 or 1000 (Igap = 3, the mesh-size gap, is not supported by Crumple)");
   line.integer(51, 10, "Multimp");  // checked for a number here, reported by warn_unused
   i.ibag = flag(line, 61, "Ibag", {0, 1, 2}, "0, 1 or 2");
   i.idel = flag(line, 71, "Idel", {0, 1, 2, kDefaultCode},
-                "0, 1, 2 or 1000 (negative Idel, keeping orphan secondary nodes, is not supported)");
+                "0, 1, 2 or 1000 (negative Idel, keeping orphan secondary nodes, is not supported by Crumple)");
   i.icurv = flag(line, 81, "Icurv", {0, 1, 2, 3}, "0 to 3");
   i.iadm = flag(line, 91, "Iadm", {0, 1, 2}, "0 to 2");
 }
@@ -182,25 +183,35 @@ void read_adaptive_line(const Line& line, Type7Interface& i) {
   i.angladm = line.real(31, 20, "Angladm", dim::none);
 }
 
-void reject_unsupported(const Type7Lines& l, const Type7Interface& i) {
-  require_zero(*l.flags, i.ithe != 0, 31, 10, "Ithe", "thermal contact is");
-  if (i.ibag == 1) l.flags->fail(61, 10, "Ibag", "0 or 2 (airbag vent closure is not supported)");
-  require_zero(*l.flags, i.icurv != 0, 81, 10, "Icurv", "curved gap envelopes are");
-  require_zero(*l.flags, i.iadm != 0, 91, 10, "Iadm", "adaptive meshing is");
-  require_zero(*l.gap, i.fpenmax != 0.0, 41, 20, "Fpenmax", "deactivation by initial penetration depth is");
-  require_zero(*l.gap, i.itied != 0, 81, 10, "Itied", "tied contact is");
-  require_zero(*l.stiffness, i.mesh_size_percent != 0.0, 41, 20, "%mesh_size", "the mesh-size gap (Igap = 3) is");
-  if (i.irem_gap == 2)
-    l.stiffness->fail(81, 10, "Irem_gap",
-                      "0 or 1 (removing nodes whose elements are smaller than the gap is not supported)");
-  if (i.irem_i2 == 1)
-    l.stiffness->fail(91, 10, "Irem_i2", "0 or 3 (removing /INTER/TYPE2 secondary nodes is not supported)");
-  require_zero(*l.friction, i.sensor_id != 0, 51, 10, "sens_ID", "sensors are");
-  require_zero(*l.friction, i.friction_function_id != 0, 61, 10, "fct_IDf", "friction-temperature functions are");
+void reject_unsupported(const Type7Lines& l, Type7Interface& i, DeckContext& context) {
+  auto reject = [&](const Line& line, auto& value, int column, int width, std::string_view name,
+                    std::string_view feature) {
+    require_zero(context, line, value != 0, column, width, name, feature);
+    value = 0;
+  };
+  reject(*l.flags, i.ithe, 31, 10, "Ithe", "thermal contact is");
+  // Ibag closes airbag vents on contact; Crumple has no airbags (/MONVOL), so any value asks for something absent.
+  reject(*l.flags, i.ibag, 61, 10, "Ibag", "airbag vent closure is");
+  reject(*l.flags, i.icurv, 81, 10, "Icurv", "curved gap envelopes are");
+  reject(*l.flags, i.iadm, 91, 10, "Iadm", "adaptive meshing is");
+  reject(*l.gap, i.fpenmax, 41, 20, "Fpenmax", "deactivation by initial penetration depth is");
+  reject(*l.gap, i.itied, 81, 10, "Itied", "tied contact is");
+  reject(*l.stiffness, i.mesh_size_percent, 41, 20, "%mesh_size", "the mesh-size gap (Igap = 3) is");
+  if (i.irem_gap == 2) {
+    require_zero(context, *l.stiffness, true, 81, 10, "Irem_gap",
+                 "removing nodes whose elements are smaller than the gap (Irem_gap = 2) is");
+    i.irem_gap = 0;
+  }
+  // Irem_i2 (1 or 3) says whether /INTER/TYPE2 secondary nodes leave this contact; Crumple has no TYPE2, so both
+  // values leave the same nodes in: the flag acts trivially.
+  reject(*l.friction, i.sensor_id, 51, 10, "sens_ID", "sensors are");
+  reject(*l.friction, i.friction_function_id, 61, 10, "fct_IDf", "friction-temperature functions are");
   // AscaleF only scales fct_IDf; 1 is its default and changes nothing.
-  if (i.ascale_f != 0.0 && i.ascale_f != 1.0)
-    l.friction->fail(71, 20, "AscaleF", "0 or 1 (friction-temperature functions are not supported)");
-  require_zero(*l.friction, i.friction_id != 0, 91, 10, "fric_ID", "/FRICTION definitions are");
+  if (i.ascale_f != 0.0 && i.ascale_f != 1.0) {
+    require_zero(context, *l.friction, true, 71, 20, "AscaleF", "friction-temperature functions (AscaleF) are");
+    i.ascale_f = 0.0;
+  }
+  reject(*l.friction, i.friction_id, 91, 10, "fric_ID", "/FRICTION definitions are");
 }
 
 // Values that Radioss reads but does not use with the other flags given: say so rather than drop them quietly.
@@ -208,7 +219,9 @@ void warn_unused(const Type7Lines& l, const Type7Interface& i, DeckContext& cont
   auto warn = [&](const Line& line, std::string message) { context.warn(line.where(), keyword, std::move(message)); };
   // Columns 51-60 held Multimp, a memory-sizing hint of old decks that Radioss itself no longer reads.
   if (l.flags->integer(51, 10, "Multimp") != 0)
-    warn(*l.flags, "Multimp (columns 51-60) is an obsolete memory hint; ignored");
+    context.note(l.flags->where(), keyword, "Multimp (columns 51-60)",
+                 "performance hint: an obsolete memory-sizing hint, no effect on Crumple's results",
+                 SkipKind::PerformanceHint);
   if (i.fscale_gap != 0.0 && i.igap != 2) warn(*l.gap, "Fscale_gap is used only with Igap = 2; ignored");
   if (i.gap_max != 0.0 && i.igap == 0) warn(*l.gap, "Gap_max is used only with a variable gap (Igap = 1, 2); ignored");
   if ((i.stmin != 0.0 || i.stmax != 0.0) && i.istf == 1)
@@ -239,7 +252,7 @@ void read_type7(CardReader& reader, DeckContext& context) {
   if (i.iadm == 2) read_adaptive_line(reader.next("NRadm, Padm, Angladm (Iadm = 2)"), i);
   // Checked once every line is placed, so that an option with extra lines (Ithe's thermal lines) is reported
   // by its name rather than as a stray data line.
-  reject_unsupported(l, i);
+  reject_unsupported(l, i, context);
   reader.finish();
   warn_unused(l, i, context, reader.card().keyword);
   context.model.type7_interfaces.push_back(std::move(i));

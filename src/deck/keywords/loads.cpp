@@ -39,16 +39,15 @@ std::int64_t optional_id(const Line& line, int column, std::string_view name) {
   return id;
 }
 
-// Columns that Radioss 2019-2021 leave blank but newer versions use: read as Radioss 2021 does (ignored), said
-// in a warning so that a newer deck's setting is not lost silently.
-void warn_if_set(const CardReader& reader, const Line& line, DeckContext& context, int column,
-                 std::string_view newer_field) {
+// Columns that Radioss 2019-2021 leave blank but newer versions use for an option Crumple lacks (a frame, a
+// function type): blank or 0, as Radioss 2021 reads them, or an option not supported by Crumple.
+void require_blank_newer_field(const Line& line, DeckContext& context, int column, std::string_view newer_field) {
   const std::string text = line.text(column, 10);
   if (text.empty() || parse_integer(text) == std::optional<std::int64_t>(0)) return;
-  context.warn(line.where(), reader.card().keyword,
-               fmt::format("columns {}-{} ignored (blank in the Radioss 2021 layout; newer versions read {} there, "
-                           "which Crumple does not support)",
-                           column, column + 9, newer_field));
+  context.unsupported(line.error(column, 10, newer_field,
+                                 fmt::format("blank or 0 (columns {}-{} are blank in the Radioss 2021 layout; newer "
+                                             "versions read {} there, which is not supported by Crumple)",
+                                             column, column + 9, newer_field)));
 }
 
 // A scale factor where blank or 0 means 1 (in input units, hence the conversion factor).
@@ -145,7 +144,7 @@ void read_imposed_motion(CardReader& reader, DeckContext& context, ImposedKind k
     if (im.frame_id != 0 && im.skew_id != 0)
       line.fail(51, 10, "frame_ID", "0 when skew_ID is given (a skew and a frame exclude each other)");
   } else {
-    warn_if_set(reader, line, context, 51, "a frame id");
+    require_blank_newer_field(line, context, 51, "frame_ID");
   }
   im.icoor = static_cast<int>(line.integer(61, 10, "Icoor"));
   if (im.icoor != 0 && im.icoor != 1) line.fail(61, 10, "Icoor", "0 (Cartesian) or 1 (cylindrical)");
@@ -171,7 +170,7 @@ void read_concentrated_load(CardReader& reader, DeckContext& context) {
   load.skew_id = optional_id(line, 21, "skew_ID");
   load.sensor_id = optional_id(line, 31, "sensor_ID");
   load.node_group_id = required_id(line, 41, "grnod_ID", "node group");
-  warn_if_set(reader, line, context, 51, "a function type (Itypfun)");
+  require_blank_newer_field(line, context, 51, "Itypfun");
   load.scale_x = time_scale(reader, line, 61);
   load.scale_y = scale_or_one(reader, line, 81, "Fscale_Y", ordinate_dimension(load.kind, load.dof));
   reader.finish();
@@ -184,7 +183,7 @@ void read_concentrated_load(CardReader& reader, DeckContext& context) {
 void read_initial_velocity(CardReader& reader, DeckContext& context) {
   const auto& path = reader.card().path;
   if (path.size() < 2 || path[1] != "TRA")
-    reader.fail("type", "TRA in /INIVEL/TRA/id (other initial velocity types are not supported)",
+    reader.fail("type", "TRA in /INIVEL/TRA/id (other initial velocity types are not supported by Crumple)",
                 in_quotes(path.size() < 2 ? "" : path[1]));
   auto iv = begin_record<InitialVelocity>(reader, 2);
   const Line line = reader.next("Vx, Vy, Vz, grnod_ID, Skew_ID");
@@ -205,7 +204,7 @@ void read_gravity(CardReader& reader, DeckContext& context) {
   g.skew_id = optional_id(line, 21, "skew_ID");
   g.sensor_id = optional_id(line, 31, "sensor_ID");
   g.node_group_id = optional_id(line, 41, "grnod_ID");  // 0: every node
-  warn_if_set(reader, line, context, 51, "a function type (Itypfun)");
+  require_blank_newer_field(line, context, 51, "Itypfun");
   g.scale_x = time_scale(reader, line, 61);
   g.scale_y = scale_or_one(reader, line, 81, "Fscale_Y", dim::acceleration);
   // Radioss reads a blank scale as 1: an acceleration of 1 in input units, rarely what was meant.
@@ -226,7 +225,8 @@ void read_added_mass(CardReader& reader, DeckContext& context) {
                 in_quotes(reader.card().keyword));
   if (type > 7) reader.fail("type", "an /ADMAS type: 0 (mass per node) or 1 (total mass)", in_quotes(path[1]));
   if (type > 1)
-    reader.fail("type", "0 (mass per node) or 1 (total mass shared by the nodes); type 2-7 are not supported",
+    reader.fail("type",
+                "0 (mass per node) or 1 (total mass shared by the nodes); type 2-7 are not supported by Crumple",
                 in_quotes(path[1]));
   auto a = begin_record<AddedMass>(reader, 2);
   a.type = static_cast<int>(type);

@@ -18,10 +18,20 @@ Material begin_material(CardReader& reader, MaterialLaw law) {
   return m;
 }
 
-void read_density(CardReader& reader, Material& m) {
-  const Line line = reader.next("RHO_I");
+void read_density(CardReader& reader, DeckContext& context, Material& m) {
+  const Line line = reader.next("RHO_I, RHO_0");
   m.density = line.real(1, 20, "RHO_I", dim::density);
   if (m.density <= 0.0) line.fail(1, 20, "RHO_I", "a positive density");
+  // RHO_0, the reference density of an equation of state: blank, 0 or RHO_I mean no initial compression.
+  const double reference = line.real(21, 20, "RHO_0", dim::density);
+  if (reference != 0.0 && reference != m.density)
+    context.unsupported(line.error(21, 20, "RHO_0", default_only("a reference density other than RHO_I is")));
+}
+
+// A field whose non-default value is an option of the law Crumple does not implement.
+void reject_if(DeckContext& context, const Line& line, bool non_default, int column, int width, std::string_view name,
+               std::string_view feature) {
+  if (non_default) context.unsupported(line.error(column, width, name, default_only(feature)));
 }
 
 void check_elastic(const Line& line, const Material& m, int e_column, int nu_column) {
@@ -31,7 +41,7 @@ void check_elastic(const Line& line, const Material& m, int e_column, int nu_col
 
 void read_elastic(CardReader& reader, DeckContext& context) {
   Material m = begin_material(reader, MaterialLaw::Elastic);
-  read_density(reader, m);
+  read_density(reader, context, m);
   const Line line = reader.next("E, Nu");
   m.young = line.real(1, 20, "E", dim::pressure);
   m.poisson = line.real(21, 20, "Nu", dim::none);
@@ -43,7 +53,7 @@ void read_elastic(CardReader& reader, DeckContext& context) {
 void read_johnson_cook(CardReader& reader, DeckContext& context) {
   Material m = begin_material(reader, MaterialLaw::JohnsonCook);
   JohnsonCookParameters& jc = m.johnson_cook;
-  read_density(reader, m);
+  read_density(reader, context, m);
   const Line elastic = reader.next("E, Nu, Iflag");
   m.young = elastic.real(1, 20, "E", dim::pressure);
   m.poisson = elastic.real(21, 20, "Nu", dim::none);
@@ -97,6 +107,8 @@ void read_johnson_cook(CardReader& reader, DeckContext& context) {
     if (jc.c > 0.0 && jc.eps_dot_0 <= 0.0)
       rate.fail(21, 20, "EPS_DOT_0", "a positive reference strain rate when c > 0");
     if (jc.chard < 0.0 || jc.chard > 1.0) rate.fail(81, 20, "Chard", "a hardening mix in [0, 1]");
+    reject_if(context, rate, jc.chard != 0.0, 81, 20, "Chard", "kinematic hardening (Chard > 0) is");
+    if (jc.chard != 0.0) jc.chard = 0.0;  // --skip-unknown: isotropic hardening
   }
   if (!reader.at_end()) {
     const Line thermal = reader.next("m, T_melt, rhoC_p, T_r");
@@ -104,7 +116,9 @@ void read_johnson_cook(CardReader& reader, DeckContext& context) {
     jc.t_melt = thermal.real(21, 20, "T_melt", dim::none);
     jc.rho_cp = thermal.real(41, 20, "rhoC_p", dim::none);
     jc.t_r = thermal.real(61, 20, "T_r", dim::none);
-    if (jc.m != 0.0) thermal.fail(1, 20, "m", "0 (thermal softening is not supported)");
+    // With m = 0 the temperature does not enter the yield stress: T_melt, rhoC_p and T_r then change nothing.
+    reject_if(context, thermal, jc.m != 0.0, 1, 20, "m", "thermal softening (m > 0) is");
+    jc.m = 0.0;
   }
   reader.finish();
   context.model.materials.push_back(std::move(m));
@@ -114,7 +128,7 @@ void read_johnson_cook(CardReader& reader, DeckContext& context) {
 void read_tabulated_plasticity(CardReader& reader, DeckContext& context) {
   Material m = begin_material(reader, MaterialLaw::Tabulated);
   TabulatedHardening& tab = m.tabulated;
-  read_density(reader, m);
+  read_density(reader, context, m);
   const Line elastic = reader.next("E, Nu, EPS_p_max, EPS_t, EPS_m");
   m.young = elastic.real(1, 20, "E", dim::pressure);
   m.poisson = elastic.real(21, 20, "Nu", dim::none);
@@ -124,6 +138,13 @@ void read_tabulated_plasticity(CardReader& reader, DeckContext& context) {
   tab.eps_t1 = elastic.real(61, 20, "EPS_t", dim::none);
   tab.eps_t2 = elastic.real(81, 20, "EPS_m", dim::none);
   if (tab.eps_p_max < 0.0) elastic.fail(41, 20, "EPS_p_max", "a non-negative failure plastic strain");
+  // Tensile failure (stress reduced from EPS_t, zero at EPS_m): blank, 0 or the manual's 1E20 defaults mean none.
+  constexpr double kNoTensileFailure = 1e20;
+  reject_if(context, elastic, tab.eps_t1 != 0.0 && tab.eps_t1 < kNoTensileFailure, 61, 20, "EPS_t",
+            "tensile failure softening is");
+  reject_if(context, elastic, tab.eps_t2 != 0.0 && tab.eps_t2 < 2.0 * kNoTensileFailure, 81, 20, "EPS_m",
+            "tensile failure softening is");
+  tab.eps_t1 = tab.eps_t2 = 0.0;
 
   const Line control = reader.next("N_funct, Fsmooth, Chard, Fcut, Eps_f, VP");
   const std::int64_t n_funct = control.integer(1, 10, "N_funct");
@@ -131,18 +152,25 @@ void read_tabulated_plasticity(CardReader& reader, DeckContext& context) {
   tab.fsmooth = static_cast<int>(control.integer(11, 10, "Fsmooth"));
   tab.chard = control.real(21, 20, "Chard", dim::none);
   tab.f_cut = control.real(41, 20, "Fcut", dim::rate);
-  control.real(61, 20, "Eps_f", dim::none);
-  control.integer(81, 10, "VP");
   if (tab.chard < 0.0 || tab.chard > 1.0) control.fail(21, 20, "Chard", "a hardening mix in [0, 1]");
+  reject_if(context, control, tab.chard != 0.0, 21, 20, "Chard", "kinematic hardening (Chard > 0) is");
+  tab.chard = 0.0;
+  reject_if(context, control, control.real(61, 20, "Eps_f", dim::none) != 0.0, 61, 20, "Eps_f",
+            "the failure strain Eps_f is");
+  // VP chooses the strain rate of the curves: 0, the total strain rate, is what Crumple uses.
+  reject_if(context, control, control.integer(81, 10, "VP") != 0, 81, 10, "VP",
+            "a strain rate other than the total one (VP > 0) is");
 
   const Line pressure = reader.next("fct_IDp, Fscale, fct_IDE, Einf, CE");
-  if (pressure.integer(1, 10, "fct_IDp") != 0)
-    pressure.fail(1, 10, "fct_IDp", "0 (pressure-dependent yield is not supported)");
-  if (pressure.integer(31, 10, "fct_IDE") != 0)
-    pressure.fail(31, 10, "fct_IDE", "0 (Young's modulus evolution is not supported)");
-  pressure.real(11, 20, "Fscale", dim::none);
-  pressure.real(41, 20, "Einf", dim::pressure);
-  pressure.real(61, 20, "CE", dim::none);
+  reject_if(context, pressure, pressure.integer(1, 10, "fct_IDp") != 0, 1, 10, "fct_IDp",
+            "pressure-dependent yield is");
+  reject_if(context, pressure, pressure.integer(31, 10, "fct_IDE") != 0, 31, 10, "fct_IDE",
+            "Young's modulus evolution is");
+  pressure.real(11, 20, "Fscale", dim::none);  // scales fct_IDp only
+  pressure.real(41, 20, "Einf", dim::pressure);  // used only with CE
+  // E(eps_p) = E - (E - Einf)(1 - exp(-CE eps_p)) when CE > 0: a modulus evolution too.
+  reject_if(context, pressure, pressure.real(61, 20, "CE", dim::none) != 0.0, 61, 20, "CE",
+            "Young's modulus evolution is");
 
   const auto n = static_cast<std::size_t>(n_funct);
   const std::size_t lines = (n + 4) / 5;

@@ -39,7 +39,8 @@ void read_elements(CardReader& reader, DeckContext& context, ElementKind kind) {
       const int after = 11 + 10 * n;  // orthotropy angle (20 columns), then element thickness (20 columns)
       line->real(after, 20, "Phi", dim::none);
       if (line->real(after + 20, 20, "Thick", dim::length) != 0.0)
-        line->fail(after + 20, 20, "Thick", "blank (element thickness overrides are not supported; use /PROP)");
+        line->fail(after + 20, 20, "Thick",
+                   "blank (element thickness overrides are not supported by Crumple; use /PROP)");
     }
     raw.user_id.push_back(id);
     raw.part_id.push_back(part_id);
@@ -59,6 +60,9 @@ void read_part(CardReader& reader, DeckContext& context) {
   part.subset_id = line.integer(21, 10, "subset_ID");
   if (part.property_id <= 0) line.fail(1, 10, "prop_ID", "a positive property id");
   if (part.material_id <= 0) line.fail(11, 10, "mat_ID", "a positive material id");
+  // Thick (columns 31-50) overrides the property's thickness for the part's shells.
+  if (line.real(31, 20, "Thick", dim::length) != 0.0)
+    context.unsupported(line.error(31, 20, "Thick", default_only("a part thickness overriding the property's is")));
   reader.finish();
   context.model.parts.push_back(std::move(part));
 }

@@ -23,7 +23,8 @@ enum class ObjectLines : std::uint8_t {
 struct HistoryKind {
   HistoryObject object;
   ObjectLines lines;
-  std::span<const std::string_view> variables;  // accepted names, group names (DEF...) included
+  std::span<const std::string_view> variables;  // the manual's names for what Crumple computes (DEF... included)
+  std::span<const std::string_view> written;    // the names whose values NAME.h5 records
 };
 
 // Variable names Crumple can record, per object kind: the manual's variables for the quantities Crumple computes
@@ -48,6 +49,9 @@ constexpr std::array<std::string_view, 21> kInterfaceVariables{
 constexpr std::array<std::string_view, 7> kWallVariables{"DEF", "FNX", "FNY", "FNZ", "FTX", "FTY", "FTZ"};
 constexpr std::array<std::string_view, 13> kRigidBodyVariables{"DEF", "F",  "M",  "R",  "FX", "FY", "FZ",
                                                                "MX",  "MY", "MZ", "RX", "RY", "RZ"};
+// Interface values NAME.h5 records by these names (history/interface_values).
+constexpr std::array<std::string_view, 8> kInterfaceWritten{"FNX", "FNY", "FNZ", "FTX", "FTY", "FTZ", "CE_ELAST",
+                                                            "CE_FRIC"};
 constexpr std::array<std::string_view, 19> kSectionVariables{
     "DEF", "FN", "FT", "M",  "CENTER", "FNX", "FNY", "FNZ", "FTX",  "FTY",
     "FTZ", "M1", "M2", "M3", "CX",     "CY",  "CZ",  "WORK", "WORKR"};
@@ -71,13 +75,16 @@ void check_width(const Line& line, std::string_view name) {
 std::int64_t card_id(CardReader& reader, std::size_t index, bool unit_allowed) {
   const Card& card = reader.card();
   if (index < card.path.size() && !card.path[index].empty() && !parse_integer(card.path[index]))
-    reader.fail("id", fmt::format("a numeric id (the /{}/{} form is not supported)", card.path[0], card.path[index]),
+    reader.fail("id",
+                fmt::format("a numeric id (the /{}/{} form is not supported by Crumple)", card.path[0],
+                            card.path[index]),
                 in_quotes(card.path[index]));
   const std::int64_t id = object_id(reader, index);
   std::size_t end = index + 1;
   if (unit_allowed) {
     if (reader.path_id(end, "unit_ID", false) != 0)
-      reader.fail("unit_ID", "0 or nothing after the id (/UNIT systems are not supported)", in_quotes(card.path[end]));
+      reader.fail("unit_ID", "0 or nothing after the id (/UNIT systems are not supported by Crumple)",
+                  in_quotes(card.path[end]));
     ++end;
   }
   if (card.path.size() > end) reader.fail("keyword", "nothing after the id", in_quotes(card.path[end]));
@@ -93,18 +100,51 @@ bool is_variable_line(const Line& line) {
   return false;
 }
 
-std::string accepted_names(const HistoryKind& kind) { return fmt::format("{}", fmt::join(kind.variables, " ")); }
 
-void read_variables(const Line& line, const HistoryKind& kind, TimeHistoryRequest& th) {
+void read_variables(const Line& line, TimeHistoryRequest& th) {
   check_width(line, "var_ID");
   for (int column = 1; column <= 91; column += 10) {
     const std::string name = upper(line.text(column, 10));
     if (name.empty()) continue;
-    const std::string field = fmt::format("var_ID{}", th.variables.size() + 1);
-    if (std::find(kind.variables.begin(), kind.variables.end(), name) == kind.variables.end())
-      line.fail(column, 10, field, fmt::format("a variable of {}: {}", th.keyword, accepted_names(kind)));
     if (std::find(th.variables.begin(), th.variables.end(), name) == th.variables.end()) th.variables.push_back(name);
   }
+}
+
+// What NAME.h5 records for each kind of /TH card (results_file.cpp, docs/output-format.md): the energies always,
+// and the rigid walls, rigid bodies and interfaces whatever the cards ask. A request for anything else is
+// output Crumple does not write: a named warning, never an error (it changes no result).
+void note_what_is_written(const TimeHistoryRequest& th, const HistoryKind& kind, DeckContext& context) {
+  std::vector<std::string> missing;
+  for (const std::string& v : th.variables)
+    if (std::find(kind.written.begin(), kind.written.end(), v) == kind.written.end()) missing.push_back(v);
+  if (missing.empty()) return;
+  const std::string variables = fmt::format("{}", fmt::join(missing, " "));
+  std::string what;
+  switch (th.object) {
+    case HistoryObject::RigidWall:
+      what = fmt::format("variables {} not written by name: NAME.h5 holds the total force of every rigid wall "
+                         "(history/rigid_wall_force)", variables);
+      break;
+    case HistoryObject::RigidBody:
+      what = fmt::format("variables {} not written: NAME.h5 holds the position, velocity and angular velocity of "
+                         "every rigid body (history/rigid_body_values)", variables);
+      break;
+    case HistoryObject::Interface:
+      what = fmt::format("variables {} not written: NAME.h5 holds the normal and friction forces, elastic energy, "
+                         "friction work and absorbed energy of every interface (history/interface_values)",
+                         variables);
+      break;
+    default:
+      what = "time history not written by Crumple (NAME.h5 holds the energies, rigid walls, rigid bodies and "
+             "interfaces only)";
+  }
+  std::vector<std::string> unknown;
+  for (const std::string& v : missing)
+    if (std::find(kind.variables.begin(), kind.variables.end(), v) == kind.variables.end()) unknown.push_back(v);
+  if (!unknown.empty())
+    what += fmt::format(" ({} not among the variables of {} in the manual that Crumple computes)",
+                        fmt::join(unknown, " "), th.keyword);
+  context.note(th.where, th.keyword, "", "output-only: " + what, SkipKind::OutputOnly);
 }
 
 // Adds one object (with its name for the one-per-line kinds); an object listed twice would record the same curve
@@ -135,7 +175,7 @@ void read_object_line(const Line& line, const HistoryKind& kind, TimeHistoryRequ
   if (kind.lines == ObjectLines::IdSkewName) {
     if (line.integer(11, 10, "skew_ID") != 0)
       line.fail(11, 10, "skew_ID",
-                "0 or blank (one object per line; output in skew or frame systems is not supported)");
+                "0 or blank (one object per line; output in skew or frame systems is not supported by Crumple)");
   } else if (!line.text(11, 10).empty()) {
     line.fail(11, 10, "(blank)", "blank columns 11-20 (the name starts at column 21)");
   }
@@ -151,13 +191,14 @@ void read_history(CardReader& reader, DeckContext& context, const HistoryKind& k
   th.title = read_title(reader);
   // Blank lines carry nothing here (no names, no ids), so they are skipped like comments.
   std::optional<Line> line = reader.next_nonblank();
-  for (; line && is_variable_line(*line); line = reader.next_nonblank()) read_variables(*line, kind, th);
+  for (; line && is_variable_line(*line); line = reader.next_nonblank()) read_variables(*line, th);
   if (th.variables.empty()) {
     if (line) line->fail(1, 10, "var_ID1", "at least one variable line before the objects (e.g. DEF)");
     reader.fail("var_ID1", "a line of variable names (e.g. DEF) after the title", "end of card");
   }
   for (; line; line = reader.next_nonblank()) read_object_line(*line, kind, th, context);
   if (th.object_ids.empty()) context.warn(th.where, th.keyword, "no objects listed: the group records nothing");
+  note_what_is_written(th, kind, context);
   context.model.histories.push_back(std::move(th));
 }
 
@@ -173,9 +214,9 @@ void read_section_frame(const Line& line, Section& s) {
   s.node_group_id = line.integer(31, 10, "grnod_ID");
   if (s.node_group_id < 0) line.fail(31, 10, "grnod_ID", "a node group id or blank");
   s.isave = static_cast<int>(line.integer(41, 10, "ISAVE"));
-  if (s.isave != 0) line.fail(41, 10, "ISAVE", "0 (saving or imposing cut motions is not supported)");
+  if (s.isave != 0) line.fail(41, 10, "ISAVE", "0 (saving or imposing cut motions is not supported by Crumple)");
   s.frame_id = line.integer(51, 10, "frame_ID");
-  if (s.frame_id != 0) line.fail(51, 10, "frame_ID", "0 or blank (moving frames are not supported)");
+  if (s.frame_id != 0) line.fail(51, 10, "frame_ID", "0 or blank (moving frames are not supported by Crumple)");
   s.dt = line.real(61, 20, "Dt", dim::time);
   s.alpha = line.real(81, 20, "alpha", dim::none);
   if (s.dt < 0.0) line.fail(61, 20, "Dt", "a non-negative sampling interval");
@@ -195,7 +236,7 @@ void read_section_groups(const Line& line, Section& s) {
   }};
   for (const Field& f : unsupported) {
     const std::int64_t id = line.integer(f.column, 10, f.name);
-    if (id != 0) line.fail(f.column, 10, f.name, fmt::format("0 or blank ({} not supported)", f.missing));
+    if (id != 0) line.fail(f.column, 10, f.name, fmt::format("0 or blank ({} not supported by Crumple)", f.missing));
   }
   s.shell_group_id = line.integer(21, 10, "grshel_ID");
   if (s.shell_group_id < 0) line.fail(21, 10, "grshel_ID", "a shell group id or blank");
@@ -236,14 +277,18 @@ void read_section(CardReader& reader, DeckContext& context) {
   if (s.node_group_id == 0) context.warn(s.where, kw, "no node group (grnod_ID): the cut has no nodes");
   if (s.shell_group_id == 0 && s.ninter == 0)
     context.warn(s.where, kw, "no element group and no interface: the section records nothing");
+  context.note(s.where, kw, "", "output-only: cut-section forces are not written by Crumple", SkipKind::OutputOnly);
   context.model.sections.push_back(std::move(s));
 }
 
 }  // namespace
 
 void register_output_keywords(KeywordTable& table) {
-  auto history = [](HistoryObject object, ObjectLines lines, std::span<const std::string_view> variables) {
-    return [kind = HistoryKind{object, lines, variables}](CardReader& r, DeckContext& c) { read_history(r, c, kind); };
+  auto history = [](HistoryObject object, ObjectLines lines, std::span<const std::string_view> variables,
+                    std::span<const std::string_view> written = {}) {
+    return [kind = HistoryKind{object, lines, variables, written}](CardReader& r, DeckContext& c) {
+      read_history(r, c, kind);
+    };
   };
   using H = HistoryObject;
   using L = ObjectLines;
@@ -251,7 +296,8 @@ void register_output_keywords(KeywordTable& table) {
   table.push_back({"/TH/PART", DeckPart::Starter, history(H::Part, L::Ids, kPartVariables)});
   table.push_back({"/TH/SUBS", DeckPart::Starter, history(H::Subset, L::Ids, kPartVariables)});
   table.push_back({"/TH/RWALL", DeckPart::Starter, history(H::RigidWall, L::Ids, kWallVariables)});
-  table.push_back({"/TH/INTER", DeckPart::Starter, history(H::Interface, L::Ids, kInterfaceVariables)});
+  table.push_back(
+      {"/TH/INTER", DeckPart::Starter, history(H::Interface, L::Ids, kInterfaceVariables, kInterfaceWritten)});
   // /TH/SHELL is not in the manual but HyperCrash writes it (QA box_crush) and Radioss reads it as /TH/SHEL.
   table.push_back({"/TH/SHEL", DeckPart::Starter, history(H::Shell, L::IdSkewName, kShellVariables)});
   table.push_back({"/TH/SHELL", DeckPart::Starter, history(H::Shell, L::IdSkewName, kShellVariables)});

@@ -162,6 +162,21 @@ void read_body_definition(const Line& line, RigidBody& b) {
   b.surface_id = optional_id(line, 91, "surf_ID");
 }
 
+// The solver (solver/rigid_bodies.cpp) computes the inertia from the nodes plus the added inertia (Ispher 2) about
+// the centre of all masses, where it moves the main node (ICoG 1): the other choices are options it lacks.
+void reject_body_options(const Line& line, RigidBody& b, DeckContext& context) {
+  if (b.ispher != 2) {
+    context.unsupported(line.error(31, 10, "Ispher", "0 or 2 (spherical inertia, Ispher = 1, and inertia from the "
+                                                     "card only, Ispher = 3, are not supported by Crumple)"));
+    b.ispher = 2;
+  }
+  if (b.icog != 1) {
+    context.unsupported(line.error(81, 10, "ICoG", "0 or 1 (the other centre-of-gravity choices, ICoG = 2 to 4, "
+                                                   "are not supported by Crumple)"));
+    b.icog = 1;
+  }
+}
+
 void read_added_inertia(CardReader& reader, RigidBody& b) {
   const Line diagonal = reader.next("Jxx, Jyy, Jzz");
   constexpr const char* kDiagonal[3] = {"Jxx", "Jyy", "Jzz"};
@@ -185,8 +200,13 @@ void read_body_options(CardReader& reader, RigidBody& b, DeckContext& context) {
   }
   const Line line = reader.next("Ioptoff, Iexpams, Ifail");
   b.ioptoff = static_cast<int>(line.integer(1, 10, "Ioptoff"));
+  if (b.ioptoff != 0)
+    context.note(line.where(), reader.card().keyword, "Ioptoff (columns 1-10)",
+                 "performance hint: domain decomposition of the body, no effect on Crumple's results",
+                 SkipKind::PerformanceHint);
   b.iexpams = static_cast<int>(line.integer(11, 10, "Iexpams"));
-  if (line.integer(21, 10, "Ifail") != 0) line.fail(21, 10, "Ifail", "0 (rigid body failure is not supported)");
+  if (line.integer(21, 10, "Ifail") != 0)
+    line.fail(21, 10, "Ifail", "0 (rigid body failure is not supported by Crumple)");
 }
 
 void read_rigid_body(CardReader& reader, DeckContext& context) {
@@ -194,7 +214,9 @@ void read_rigid_body(CardReader& reader, DeckContext& context) {
   b.where = reader.card().where;
   b.user_id = card_id(reader, 1);
   b.title = read_title(reader);
-  read_body_definition(reader.next("RBID, sensor_ID, skew_ID, Ispher, Mass, grnod_ID, Ikrem, ICoG, surf_ID"), b);
+  const Line definition = reader.next("RBID, sensor_ID, skew_ID, Ispher, Mass, grnod_ID, Ikrem, ICoG, surf_ID");
+  read_body_definition(definition, b);
+  reject_body_options(definition, b, context);
   read_added_inertia(reader, b);
   read_body_options(reader, b, context);
   reader.finish();

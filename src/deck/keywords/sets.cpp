@@ -9,7 +9,7 @@ namespace {
 std::vector<std::int64_t> positive_ids(CardReader& reader, std::string_view name) {
   std::vector<std::int64_t> ids = read_id_list(reader, name);
   for (std::int64_t id : ids)
-    if (id < 0) reader.fail(name, "positive ids (removing members with negative ids is not supported)",
+    if (id < 0) reader.fail(name, "positive ids (removing members with negative ids is not supported by Crumple)",
                             fmt::format("{}", id));
   return ids;
 }
@@ -37,9 +37,23 @@ void read_shell_group(CardReader& reader, DeckContext& context, SetSource source
   context.model.shell_groups.push_back(std::move(g));
 }
 
+// /SURF/PART/surf_ID with a list of parts, or /SURF/PART/ALL/surf_ID (every part of the model, no list).
+// /SURF/PART/EXT (external faces of solids only) is another Radioss keyword, which Crumple does not read.
 void read_surface_parts(CardReader& reader, DeckContext& context) {
-  auto s = begin_group<Surface>(reader, SetSource::Parts);
-  s.parts = positive_ids(reader, "part_ID");
+  const auto& path = reader.card().path;
+  const bool all = path.size() > 2 && path[2] == "ALL";
+  if (path.size() > 2 && !all && !path[2].empty() && !parse_integer(path[2]))
+    return context.unsupported(reader.error("keyword", "/SURF/PART/surf_ID or /SURF/PART/ALL/surf_ID",
+                                            fmt::format("/SURF/PART/{}, which is not supported by Crumple", path[2])));
+  Surface s;
+  s.where = reader.card().where;
+  s.user_id = object_id(reader, all ? 3 : 2);
+  require_no_unit_id(reader, all ? 4 : 3);
+  s.source = SetSource::Parts;
+  s.title = read_title(reader);
+  s.all_parts = all;
+  if (!all) s.parts = positive_ids(reader, "part_ID");
+  reader.finish();
   context.model.surfaces.push_back(std::move(s));
 }
 

@@ -1,0 +1,86 @@
+// Spellings real Radioss decks use that Crumple must read as Radioss does: a trailing slash on the keyword line,
+// law numbers with a leading zero, /PROC in the engine deck, /SURF/PART/ALL, output requests Crumple does not write.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "deck_files.hpp"
+
+using namespace crumple;
+using test::I;
+using test::R;
+
+namespace {
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+Deck read_files(const std::string& starter, const std::string& engine) {
+  test::TempDir dir;
+  dir.write("TEST_0001.rad", engine);
+  return read_deck(dir.write("TEST_0000.rad", starter));
+}
+
+bool noted(const Deck& d, const std::string& keyword, SkipKind kind) {
+  return std::any_of(d.report.skipped_options.begin(), d.report.skipped_options.end(),
+                     [&](const SkippedOption& o) { return o.keyword == keyword && o.kind == kind; });
+}
+
+}  // namespace
+
+// "/BEGIN/" and "/RUN/name/1/": the trailing slash ends the keyword line.
+TEST(DeckAliases, TrailingSlashOnTheKeywordLine) {
+  std::string begin = test::begin_card();
+  begin.replace(0, 6, "/BEGIN/");
+  const Deck d = read_files(begin + test::plate_cards() + "/END\n", "/RUN/TEST/1/\n2e-3\n");
+  EXPECT_EQ(d.model.run_name, "TEST");
+  EXPECT_EQ(d.model.run.run_name, "TEST");
+  EXPECT_EQ(d.model.run.run_number, 1);
+  EXPECT_DOUBLE_EQ(d.model.run.end_time, 2e-3);
+}
+
+// /MAT/LAW01 is /MAT/LAW1 (QA deck contact_idel), /MAT/LAW02 is /MAT/LAW2, /MAT/LAW036 is /MAT/LAW36.
+TEST(DeckAliases, LawNumbersWithLeadingZeros) {
+  std::string plate = test::plate_cards();
+  plate.replace(plate.find("/MAT/ELAST/1"), 12, "/MAT/LAW01/1");
+  const Deck d = read_files(test::begin_card() + plate + "/END\n", test::engine_cards());
+  ASSERT_EQ(d.model.materials.size(), 1u);
+  EXPECT_EQ(d.model.materials[0].law, MaterialLaw::Elastic);
+  EXPECT_DOUBLE_EQ(d.model.materials[0].young, 2.1e11);
+  const std::string jc = "/MAT/LAW02/2\njc\n" + R(7800.0) + "\n" + R(2.1e11) + R(0.3) + "\n" + R(2e8) + R(4e8) +
+                         R(0.5) + "\n";
+  const Deck d2 = read_files(test::begin_card() + test::plate_cards() + jc + "/END\n", test::engine_cards());
+  ASSERT_EQ(d2.model.materials.size(), 2u);
+  EXPECT_EQ(d2.model.materials[1].law, MaterialLaw::JohnsonCook);
+  EXPECT_DOUBLE_EQ(d2.model.materials[1].johnson_cook.b, 4e8);
+}
+
+// /PROC in the engine deck (QA deck twisted_beam: /PROC/1/0) is a performance hint.
+TEST(DeckAliases, ProcInTheEngineDeck) {
+  const Deck d = read_files(test::begin_card() + test::plate_cards() + "/END\n", test::engine_cards() + "/PROC/1/0\n");
+  EXPECT_TRUE(noted(d, "/PROC/1/0", SkipKind::PerformanceHint));
+}
+
+// /SURF/PART/ALL/id: every part of the model, whatever order the cards come in; /SURF/PART/EXT is not read.
+TEST(DeckAliases, SurfacePartAll) {
+  const std::string surface = "/SURF/PART/ALL/9\neverything\n";
+  const Deck d = read_files(test::begin_card() + surface + test::plate_cards() + "/END\n", test::engine_cards());
+  ASSERT_EQ(d.model.surfaces.size(), 1u);
+  EXPECT_EQ(d.model.surfaces[0].user_id, 9);
+  EXPECT_EQ(d.model.surfaces[0].parts, (std::vector<std::int64_t>{1}));
+  EXPECT_EQ(d.model.surfaces[0].segments.size(), 2u);  // both shells of the plate
+  test::TempDir dir;
+  const std::string ext = test::first_error(test::write_deck(dir, "/SURF/PART/EXT/9\nouter\n" + I(1) + "\n"));
+  EXPECT_TRUE(contains(ext, "/SURF/PART/EXT, which is not supported by Crumple")) << ext;
+}
+
+// Output requests of real decks that Crumple does not write: accepted with a warning naming each card.
+TEST(DeckAliases, OutputRequestsCrumpleDoesNotWrite) {
+  const std::string engine = test::engine_cards() + "/ANIM/TENS/STRESS/MEMB\n/ANIM/MASS\n/ANIM/VECT/ACCEL\n"
+                                                    "/ANIM/VECT/VEL\n";
+  const Deck d = read_files(test::begin_card() + test::plate_cards() + "/ANIM/VERS/44\n/END\n", engine);
+  EXPECT_TRUE(noted(d, "/ANIM/TENS/STRESS/MEMB", SkipKind::OutputOnly));
+  EXPECT_TRUE(noted(d, "/ANIM/MASS", SkipKind::OutputOnly));
+  EXPECT_TRUE(noted(d, "/ANIM/VECT/ACCEL", SkipKind::OutputOnly));
+  EXPECT_TRUE(noted(d, "/ANIM/VERS/44", SkipKind::OutputOnly));  // the starter's /ANIM/VERS
+  EXPECT_FALSE(noted(d, "/ANIM/VECT/VEL", SkipKind::OutputOnly));  // velocities are in every frame
+}
