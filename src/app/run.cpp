@@ -25,8 +25,7 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
   solver.name = deck.model.run.run_name.empty() ? deck.model.run_name : deck.model.run.run_name;
   solver.output_directory = options.output_directory;
   for (const SkippedOption& o : deck.report.skipped_options) solver.approximations.push_back(o.text());
-  RunSummary summary = run_simulation(deck.model, solver, out);
-  summary.approximations = solver.approximations;
+  const RunSummary summary = run_simulation(deck.model, solver, out);
   write_summary(summary, options.output_directory / (solver.name + ".summary.json"));
   fmt::print(out, "crumple run {}: {} after {} cycles, time {:.6g}, energy error {:.3g} %, {:.2f} s\n", solver.name,
              status_name(summary.status), summary.cycles, summary.time, summary.energy.error_percent,

@@ -111,7 +111,8 @@ RunRecorder::RunRecorder(const Model& model, const std::filesystem::path& direct
   if (write_results) results_.emplace(directory / (name + ".h5"), model);
 }
 
-void RunRecorder::start(const std::vector<std::string>& notes, std::ostream& console) {
+void RunRecorder::start(const std::vector<std::string>& notes, const std::vector<std::string>& approximations,
+                        std::ostream& console) {
   const Model& m = model_;
   console_ = &console;
   listing_.line(fmt::format("Crumple explicit run {}  ({})", name_, m.title));
@@ -119,6 +120,8 @@ void RunRecorder::start(const std::vector<std::string>& notes, std::ostream& con
                             m.elements[0].size(), m.element_groups.size(), m.run.end_time));
   for (const auto& note : notes) listing_.line("NOTE: " + note);
   for (const auto& note : notes) fmt::print(console, "note: {}\n", note);
+  if (!approximations.empty()) listing_.line("OPTIONS SKIPPED OR APPROXIMATED:");
+  for (const auto& option : approximations) listing_.line("  " + option);
   listing_.table_header();
 }
 

@@ -28,7 +28,7 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunReco
                            const std::vector<std::string>& notes, std::ostream& console) {
   using namespace solver;
   const auto started = std::chrono::steady_clock::now();
-  recorder.start(notes, console);
+  recorder.start(notes, options.approximations, console);
   RunEvents events;
   OutputSchedule schedule(m.run, s.time, options.max_cycles);
   VelocityScratch scratch(s.nodes.size());
@@ -86,7 +86,9 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunReco
   recorder.row(s, dt_next, control);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   recorder.finish(s, events, phases, wall);
-  return summarize_run(m, recorder.name(), s, events, phases, dt_next, wall);
+  RunSummary summary = summarize_run(m, recorder.name(), s, events, phases, dt_next, wall);
+  summary.approximations = options.approximations;
+  return summary;
 }
 
 RunSummary run_simulation(const Model& m, const SolverOptions& options, std::ostream& console) {

@@ -101,7 +101,7 @@ int crumple_run(const fs::path& starter, const fs::path& dir, const std::string&
   return status != -1 && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
-TEST(CliBadDecks, SkipUnknownListsTheSkippedOptionsInTheRunSummary) {
+TEST(CliBadDecks, SkipUnknownListsTheSkippedOptionsInTheSummaryAndTheListing) {
   TempDir dir;
   dir.write("TEST_0001.rad", "/RUN/TEST/1\n2e-6\n/TFILE\n1e-6\n");
   const std::string skipped = "/MAT/LAW44/3\ncowper\n" + R(7800.0) + "\n";
@@ -124,6 +124,12 @@ TEST(CliBadDecks, SkipUnknownListsTheSkippedOptionsInTheRunSummary) {
       << list;
   EXPECT_NE(list.find("[output-only] "), std::string::npos) << list;
   EXPECT_NE(list.find("/ACCEL/1: output-only card (/ACCEL): not written by Crumple"), std::string::npos) << list;
+  // The listing carries the same list in its header.
+  const std::string listing = read_text(dir.path() / "out" / "TEST.out");
+  const auto header = listing.find("OPTIONS SKIPPED OR APPROXIMATED:");
+  ASSERT_NE(header, std::string::npos) << listing;
+  EXPECT_NE(listing.find("/MAT/LAW44/3: keyword skipped (--skip-unknown)", header), std::string::npos) << listing;
+  EXPECT_NE(listing.find("/ACCEL/1: output-only card", header), std::string::npos) << listing;
 }
 
 }  // namespace

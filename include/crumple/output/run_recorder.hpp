@@ -31,8 +31,10 @@ class RunRecorder {
   RunRecorder(const Model& model, const std::filesystem::path& directory, const std::string& name,
               bool write_results);
 
-  // Listing header and the start-up notes (also on the console).
-  void start(const std::vector<std::string>& notes, std::ostream& console);
+  // Listing header, the start-up notes (also on the console) and the options the deck reader skipped or
+  // approximated (--skip-unknown, output-only and performance-hint cards).
+  void start(const std::vector<std::string>& notes, const std::vector<std::string>& approximations,
+             std::ostream& console);
   // One row of the energy table with the step dt^(n+1/2) of the cycle and what bounds it.
   void row(const SolverState& state, double dt, const StepControl& control);
   // The events of the last cycles as listing lines (warnings also on the console); empties `events.pending`.
