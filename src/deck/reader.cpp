@@ -118,6 +118,59 @@ void read_card_without_handler(const Card& card, DeckPart part, const std::strin
       fmt::format("unknown keyword skipped (--skip-unknown{})", hint.empty() ? "" : "; " + hint));
 }
 
+// One card to its handler (or to read_card_without_handler); its errors go to `record`.
+template <class Record>
+void dispatch(const Card& card, const SourceText& text, DeckContext& context, Record& record) {
+  const DeckPart part = card.engine ? DeckPart::Engine : DeckPart::Starter;
+  const KeywordSpec* spec = find_spec(card, part);
+  const std::string name = keyword_name(card);
+  if (spec == nullptr) {
+    try {
+      read_card_without_handler(card, part, name, context);
+    } catch (const DeckError& e) {
+      record(e);
+    }
+    return;
+  }
+  note_once(context.report.keywords_read, name);
+  if (!spec->handler) {
+    note_once(context.report.accepted_without_effect, name);
+    return;
+  }
+  try {
+    CardReader reader(card, text, context.model.units);
+    spec->handler(reader, context);
+    if (!card.engine && columns_checked(*spec))
+      if (const auto unread = reader.unread_columns_error()) context.unsupported(*unread);
+  } catch (const DeckError& e) {
+    record(e);
+  }
+}
+
+// The engine decks of a continued run, NAME_0002.rad, NAME_0003.rad, ... as long as they follow each other: each
+// one's cards read into its own run control (the model's is kept for NAME_0001.rad).
+template <class Record>
+void read_continued_runs(const std::filesystem::path& starter, Deck& deck, DeckContext& context, Record& record) {
+  const RunControl first = deck.model.run;
+  for (int k = 2;; ++k) {
+    const std::filesystem::path engine = engine_deck_for(starter, k);
+    if (engine.empty()) break;
+    const SourceText text = read_source(engine);
+    deck.report.files.insert(deck.report.files.end(), text.files.begin(), text.files.end());
+    deck.model.run = RunControl{};
+    context.run_seen = false;
+    for (const Card& card : split_cards(text, 0)) {
+      if (is_card(card, {"END", "ENGINE"})) continue;
+      dispatch(card, text, context, record);
+    }
+    if (!context.run_seen)
+      record(DeckError(SourceLocation{text.files.front(), 0}, "/RUN", "", "a /RUN card in the engine deck",
+                       "an engine deck without /RUN"));
+    deck.continued_runs.push_back(std::move(deck.model.run));
+  }
+  deck.model.run = first;
+}
+
 }  // namespace
 }  // namespace deck
 
@@ -129,11 +182,12 @@ std::string SkippedOption::text() const {
   return std::string(label) + " " + w.text();
 }
 
-std::filesystem::path engine_deck_for(const std::filesystem::path& starter) {
+std::filesystem::path engine_deck_for(const std::filesystem::path& starter, int number) {
   const std::string stem = starter.stem().string();
-  if (stem.size() < 5 || stem.substr(stem.size() - 5) != "_0000") return {};
+  if (stem.size() < 5 || stem.substr(stem.size() - 5) != "_0000" || number < 1 || number > 9999) return {};
   auto engine = starter;
-  engine.replace_filename(stem.substr(0, stem.size() - 5) + "_0001" + starter.extension().string());
+  engine.replace_filename(fmt::format("{}_{:04d}{}", stem.substr(0, stem.size() - 5), number,
+                                      starter.extension().string()));
   std::error_code ec;
   return std::filesystem::is_regular_file(engine, ec) ? engine : std::filesystem::path{};
 }
@@ -175,30 +229,7 @@ Deck read_deck(const std::filesystem::path& starter, const ReadOptions& options)
       first_starter_card = &card;
     }
 
-    const DeckPart part = card.engine ? DeckPart::Engine : DeckPart::Starter;
-    const KeywordSpec* spec = find_spec(card, part);
-    const std::string name = keyword_name(card);
-    if (spec == nullptr) {
-      try {
-        read_card_without_handler(card, part, name, context);
-      } catch (const DeckError& e) {
-        record(e);
-      }
-      continue;
-    }
-    note_once(deck.report.keywords_read, name);
-    if (!spec->handler) {
-      note_once(deck.report.accepted_without_effect, name);
-      continue;
-    }
-    try {
-      CardReader reader(card, text, deck.model.units);
-      spec->handler(reader, context);
-      if (!card.engine && columns_checked(*spec))
-        if (const auto unread = reader.unread_columns_error()) context.unsupported(*unread);
-    } catch (const DeckError& e) {
-      record(e);
-    }
+    dispatch(card, text, context, record);
   }
 
   const SourceLocation starter_file{text.files.front(), 0};
@@ -224,8 +255,10 @@ Deck read_deck(const std::filesystem::path& starter, const ReadOptions& options)
     record(DeckError(starter_file, "/RUN", "",
                      "an engine deck (NAME_0001.rad beside NAME_0000.rad, or engine cards after /END)", "none"));
   if (!errors.empty()) throw DeckErrors(std::move(errors));
+  read_continued_runs(starter, deck, context, record);
+  if (!errors.empty()) throw DeckErrors(std::move(errors));
 
-  resolve_model(context);
+  resolve_model(context, deck.continued_runs);
   return deck;
 }
 

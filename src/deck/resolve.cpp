@@ -44,7 +44,7 @@ void Resolver::throw_if_errors() {
   if (!errors.empty()) throw DeckErrors(std::move(errors));
 }
 
-void resolve_model(DeckContext& context) {
+void resolve_model(DeckContext& context, std::vector<RunControl>& continued_runs) {
   Resolver r(context);
   resolve_definitions(r);
   r.throw_if_errors();  // later stages need valid nodes, parts, materials and properties
@@ -52,7 +52,7 @@ void resolve_model(DeckContext& context) {
   r.throw_if_errors();
   resolve_sets(r);
   resolve_load_references(r);
-  resolve_output_references(r);
+  resolve_output_references(r, continued_runs);
   r.throw_if_errors();
   compute_mass(context.model);
   check_mass(r);

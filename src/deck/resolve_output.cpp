@@ -1,6 +1,8 @@
 // References held by contact interfaces, output requests and run control; run-control times to working units.
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "resolve.hpp"
 
 namespace crumple::deck {
@@ -17,6 +19,8 @@ void convert_run_times(RunControl& run, const UnitSystem& units) {
   for (TimeStepControl* c : {&run.dt, &run.dt_nodal_cst, &run.dt_shell, &run.dt_brick, &run.dt_sh3n,
                              &run.dt_inter_del, &run.dt_inter_cst})
     c->minimum *= t;
+  run.dt_initial *= t;
+  run.dt_max *= t;
 }
 
 const IdMap* history_map(const Model::Index& ix, HistoryObject object, std::string_view& what) {
@@ -35,14 +39,28 @@ const IdMap* history_map(const Model::Index& ix, HistoryObject object, std::stri
   return nullptr;
 }
 
-void resolve_run_control(Resolver& r) {
+// /RBODY/ON, /RBODY/OFF name rigid bodies by their main node (the engine manual's node_ID list).
+void resolve_rigid_body_switches(Resolver& r, const std::vector<std::int64_t>& ids,
+                                 const std::vector<SourceLocation>& where, const char* keyword,
+                                 std::vector<std::int32_t>& bodies) {
+  const Model& m = r.model;
+  bodies.clear();
+  for (std::size_t k = 0; k < ids.size(); ++k) {
+    const auto body = std::find_if(m.rigid_bodies.begin(), m.rigid_bodies.end(),
+                                   [&](const RigidBody& b) { return b.main_node_id == ids[k]; });
+    if (body == m.rigid_bodies.end())
+      r.error(where[k], keyword, "node_ID", "the main node of a rigid body",
+              fmt::format("node {}, which is the main node of no /RBODY", ids[k]));
+    else
+      bodies.push_back(static_cast<std::int32_t>(body - m.rigid_bodies.begin()));
+  }
+}
+
+void resolve_run_control(Resolver& r, RunControl& run) {
   Model& m = r.model;
-  RunControl& run = m.run;
   convert_run_times(run, m.units);
-  for (std::size_t k = 0; k < run.rbody_on.size(); ++k)
-    r.find(m.index.rigid_bodies, run.rbody_on[k], run.rbody_on_where[k], "/RBODY/ON", "RBID", "rigid body");
-  for (std::size_t k = 0; k < run.rbody_off.size(); ++k)
-    r.find(m.index.rigid_bodies, run.rbody_off[k], run.rbody_off_where[k], "/RBODY/OFF", "RBID", "rigid body");
+  resolve_rigid_body_switches(r, run.rbody_on, run.rbody_on_where, "/RBODY/ON", run.bodies_on);
+  resolve_rigid_body_switches(r, run.rbody_off, run.rbody_off_where, "/RBODY/OFF", run.bodies_off);
   // Radioss pairs the engine deck with the starter by run name; a different name usually means a stray file.
   if (run.present && !m.run_name.empty() && run.run_name != m.run_name)
     r.context.warn(run.where, "/RUN",
@@ -51,7 +69,7 @@ void resolve_run_control(Resolver& r) {
 
 }  // namespace
 
-void resolve_output_references(Resolver& r) {
+void resolve_output_references(Resolver& r, std::vector<RunControl>& continued_runs) {
   Model& m = r.model;
   r.index(m.type7_interfaces, m.index.interfaces, "/INTER");
   r.index(m.sections, m.index.sections, "/SECT");
@@ -79,7 +97,8 @@ void resolve_output_references(Resolver& r) {
     th.objects.clear();
     for (std::int64_t id : th.object_ids) th.objects.push_back(r.find(*map, id, th.where, th.keyword, "Obj_ID", what));
   }
-  resolve_run_control(r);
+  resolve_run_control(r, m.run);
+  for (RunControl& run : continued_runs) resolve_run_control(r, run);
 }
 
 }  // namespace crumple::deck

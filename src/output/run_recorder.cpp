@@ -35,6 +35,8 @@ std::string describe(const StepControl& c, const Model& m) {
                          m.nodes.user_id[static_cast<std::size_t>(c.index)]);
     case StepControl::Source::Node: return fmt::format("NODE {}", m.nodes.user_id[static_cast<std::size_t>(c.index)]);
     case StepControl::Source::LastStep: return "LAST STEP";
+    case StepControl::Source::MaximumStep: return "DTIX DTMAX";
+    case StepControl::Source::InitialStep: return "DTIX DTINI";
   }
   return "-";
 }
@@ -209,6 +211,7 @@ RunSummary summarize_run(const Model& m, const std::string& name, const SolverSt
   summary.name = name;
   summary.phases = phases;
   summary.cycles = s.cycle;
+  summary.cycles_total = s.cycles_done + s.cycle;
   summary.time = s.time;
   summary.dt = dt;
   const EnergyBalanceState& e = s.energy;

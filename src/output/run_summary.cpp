@@ -51,7 +51,7 @@ const char* status_name(RunStatus status) {
 std::string to_json(const RunSummary& s) {
   const EnergyBalance& e = s.energy;
   return fmt::format(
-      "{{\n  \"name\": \"{}\",\n  \"cycles\": {},\n  \"time\": {},\n  \"dt\": {},\n  \"energy\": {{\n"
+      "{{\n  \"name\": \"{}\",\n  \"cycles\": {},\n  \"cycles_total\": {},\n  \"engine_decks\": {},\n  \"time\": {},\n  \"dt\": {},\n  \"energy\": {{\n"
       "    \"internal\": {},\n    \"kinetic_translational\": {},\n    \"kinetic_rotational\": {},\n"
       "    \"contact\": {},\n    \"hourglass\": {},\n    \"external_work\": {},\n    \"total\": {},\n"
       "    \"error_percent\": {}\n  }},\n  \"mass\": {{\n    \"total\": {},\n    \"added\": {}\n  }},\n"
@@ -59,7 +59,7 @@ std::string to_json(const RunSummary& s) {
       "  \"profile\": {{\n    \"elements\": {},\n    \"contact\": {},\n    \"contact_passes\": {},\n"
       "    \"loads\": {},\n    \"update\": {},\n    \"output\": {}\n  }},\n  \"ranks\": {},\n  \"precision\": \"{}\",\n"
       "  \"status\": \"{}\",\n  \"message\": \"{}\",\n  \"approximations\": {}\n}}\n",
-      escaped(s.name), s.cycles, number(s.time), number(s.dt), number(e.internal), number(e.kinetic_translational),
+      escaped(s.name), s.cycles, s.cycles_total, s.engine_decks, number(s.time), number(s.dt), number(e.internal), number(e.kinetic_translational),
       number(e.kinetic_rotational), number(e.contact), number(e.hourglass), number(e.external_work), number(e.total),
       number(e.error_percent), number(s.mass_total), number(s.mass_added), number(s.wall_seconds),
       number(s.element_cycles_per_second), number(s.phases.elements), number(s.phases.contact),

@@ -190,6 +190,10 @@ double choose_time_step(const Model& m, SolverState& s, RunEvents& events, StepB
     const NodalStep nodal = nodal_time_step(m, s);
     if (nodal.node >= 0) bound = {nodal.dt, StepControl::node(nodal.node)};
   }
+  // /DTIX: never above DTmax; the first cycle of the engine deck at most DTini.
+  if (rc.dt_max > 0.0 && !(bound.dt <= rc.dt_max)) bound = {rc.dt_max, {StepControl::Source::MaximumStep}};
+  if (rc.dt_initial > 0.0 && s.cycle == 0 && rc.dt_initial < bound.dt)
+    bound = {rc.dt_initial, {StepControl::Source::InitialStep}};
   // Nothing bounds the step (docs/theory/time-step.md, "No stable step"): at the start that is a model the
   // explicit scheme cannot advance (point masses and rigid bodies alone); once every element has been deleted
   // the run goes on with its last step.
@@ -230,7 +234,7 @@ void integrate(SolverState& s, VelocityScratch& scratch, double dt_average) {
 
 void apply_constraints(const Model& m, SolverState& s, VelocityScratch& scratch, double dt_average, double dt_next) {
   NodalState& n = s.nodes;
-  update_rigid_bodies(s, dt_average, dt_next);
+  const double body_work = update_rigid_bodies(m, s, dt_average, dt_next);
   auto v = velocities(n);
   for (std::size_t d = 0; d < 6; ++d)  // rigid-body motion is internal to the body: not a constraint's work
     for (const auto& b : s.bodies) {
@@ -240,7 +244,7 @@ void apply_constraints(const Model& m, SolverState& s, VelocityScratch& scratch,
     }
   impose_kinematics(m, s, s.time, dt_next);
   apply_rigid_walls(m, s, dt_average, dt_next);
-  s.energy.external_work += load_work(m, s, scratch, s.time, dt_average) + constraint_work(s, scratch);
+  s.energy.external_work += load_work(m, s, scratch, s.time, dt_average) + constraint_work(s, scratch) + body_work;
   if (!s.contact.interfaces.empty())
     s.energy.contact = contact::contact_work(s.contact, n, scratch.before.data(), dt_average);
 }

@@ -1,5 +1,6 @@
 #pragma once
 // Internal to the solver: the steps of one cycle, each a plain function over the solver state.
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -36,8 +37,17 @@ void add_external_forces(const Model& model, SolverState& state, double time);
 
 // Moves the secondary nodes' forces and moments to their rigid body's centre (after the element forces).
 void gather_rigid_body_forces(SolverState& state);
-// Rigid bodies after the free velocity update: new momentum, rotation and the secondary nodes' velocities.
-void update_rigid_bodies(SolverState& state, double dt_average, double dt_next);
+// Rigid bodies after the free velocity update: new momentum, rotation and the secondary nodes' velocities. Fixed
+// and imposed dofs of a main node drive its body; returns the work of those conditions over the step.
+double update_rigid_bodies(const Model& model, SolverState& state, double dt_average, double dt_next);
+// /RBODY/ON, /RBODY/OFF of the engine deck about to run: bodies switched off release their nodes, bodies switched
+// on are formed again from the nodes' current positions and velocities (docs/theory/rigid-bodies.md).
+void switch_rigid_bodies(const Model& model, SolverState& state);
+
+// The velocity that /IMPVEL or /IMPDISP card `im` imposes on node k over the step from t to t + dt_next, or nullopt
+// when the card does not act then (its time window).
+std::optional<double> imposed_velocity(const Model& model, const SolverState& state, const ImposedMotion& im,
+                                       std::size_t k, double t, double dt_next);
 
 // Kinematic conditions on the half-step velocities v^(n+1/2): fixed dofs, imposed velocity and displacement at
 // time t_next = t^(n+1) (the position the step reaches), then rigid walls.

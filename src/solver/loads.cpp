@@ -87,4 +87,20 @@ void impose_kinematics(const Model& m, SolverState& s, double t, double dt_next)
   }
 }
 
+std::optional<double> imposed_velocity(const Model& m, const SolverState& s, const ImposedMotion& im, std::size_t k,
+                                       double t, double dt_next) {
+  if (im.kind == ImposedKind::Velocity) {
+    const double t_half = t + 0.5 * dt_next;
+    if (t_half < im.t_start || t_half > im.t_stop) return std::nullopt;
+    return curve(m, im.function, im.scale_x, im.scale_y, t_half);
+  }
+  if (im.kind != ImposedKind::Displacement || is_rotation(im.dof)) return std::nullopt;
+  if (t + dt_next < im.t_start || t > im.t_stop || dt_next <= 0.0) return std::nullopt;
+  const double target = curve(m, im.function, im.scale_x, im.scale_y, t + dt_next);
+  const NodalState& n = s.nodes;
+  const std::vector<double>* x = im.dof == Dof::X ? &n.x : im.dof == Dof::Y ? &n.y : &n.z;
+  const std::vector<double>* x0 = im.dof == Dof::X ? &s.x0 : im.dof == Dof::Y ? &s.y0 : &s.z0;
+  return (target - ((*x)[k] - (*x0)[k])) / dt_next;
+}
+
 }  // namespace crumple::solver

@@ -1,5 +1,6 @@
 // Rigid bodies (/RBODY): mass and inertia from the nodes, 6-dof motion driven by the gathered nodal forces,
 // exact rigid placement of the secondary nodes every cycle (docs/theory/rigid-bodies.md).
+#include <algorithm>
 #include <cmath>
 
 #include "solver/internal.hpp"
@@ -54,70 +55,160 @@ V3 position(const NodalState& n, std::int32_t i) {
   return {n.x[k], n.y[k], n.z[k]};
 }
 
+
+// Largest eigenvalue of a symmetric 3x3 matrix (trigonometric form of the characteristic cubic).
+double largest_eigenvalue(const Mat3& a) {
+  const double p1 = a[1] * a[1] + a[2] * a[2] + a[5] * a[5];
+  const double q = (a[0] + a[4] + a[8]) / 3.0;
+  if (p1 == 0.0) return std::max({a[0], a[4], a[8]});
+  const double p2 = (a[0] - q) * (a[0] - q) + (a[4] - q) * (a[4] - q) + (a[8] - q) * (a[8] - q) + 2.0 * p1;
+  const double p = std::sqrt(p2 / 6.0);
+  const Mat3 b{(a[0] - q) / p, a[1] / p, a[2] / p, a[3] / p, (a[4] - q) / p, a[5] / p, a[6] / p, a[7] / p, (a[8] - q) / p};
+  const double det = b[0] * (b[4] * b[8] - b[5] * b[7]) - b[1] * (b[3] * b[8] - b[5] * b[6]) + b[2] * (b[3] * b[7] - b[4] * b[6]);
+  const double phi = std::acos(std::clamp(det / 2.0, -1.0, 1.0)) / 3.0;
+  return q + 2.0 * p * std::cos(phi);
+}
+
+// Mass, centre of mass, inertia and velocity field of a body from its nodes' current positions, masses and
+// velocities (eqs. RB-0a to RB-0c); the main node moves to the centre of mass (ICoG 1).
+void form_body(const RigidBody& rb, const Model& m, SolverState& s, std::int32_t index, RigidBodyState& b) {
+  NodalState& n = s.nodes;
+  b.main_node = rb.main_node;
+  b.secondary.clear(), b.rx.clear(), b.ry.clear(), b.rz.clear();
+  for (std::int32_t node : m.node_groups[static_cast<std::size_t>(rb.node_group)].nodes)
+    if (node != rb.main_node) b.secondary.push_back(node);
+  const auto main = static_cast<std::size_t>(rb.main_node);
+  double mass = n.mass[main];
+  V3 cog = position(n, rb.main_node), momentum{};
+  for (int d = 0; d < 3; ++d) cog[static_cast<std::size_t>(d)] *= mass;
+  momentum = {mass * n.vx[main], mass * n.vy[main], mass * n.vz[main]};
+  for (std::int32_t node : b.secondary) {
+    const auto k = static_cast<std::size_t>(node);
+    const V3 p = position(n, node);
+    for (int d = 0; d < 3; ++d) cog[static_cast<std::size_t>(d)] += n.mass[k] * p[static_cast<std::size_t>(d)];
+    momentum[0] += n.mass[k] * n.vx[k], momentum[1] += n.mass[k] * n.vy[k], momentum[2] += n.mass[k] * n.vz[k];
+    mass += n.mass[k];
+    s.rigid_owner[k] = index;
+  }
+  b.mass = mass;
+  // A body without mass (inertia from the card only) keeps its main node where it is and the velocity it has.
+  if (mass > 0.0) {
+    for (auto& c : cog) c /= mass;
+  } else {
+    cog = position(n, rb.main_node), momentum = {n.vx[main], n.vy[main], n.vz[main]};
+  }
+  n.x[main] = cog[0], n.y[main] = cog[1], n.z[main] = cog[2];
+  // Inertia about the centre of mass: the nodes' point masses plus the card's added inertia.
+  Mat3 I{rb.inertia[0], rb.inertia[3], rb.inertia[5], rb.inertia[3], rb.inertia[1], rb.inertia[4],
+         rb.inertia[5], rb.inertia[4], rb.inertia[2]};
+  b.inertia_added = I;
+  V3 angular{};
+  for (std::int32_t node : b.secondary) {
+    const auto k = static_cast<std::size_t>(node);
+    const V3 p = position(n, node);
+    const V3 r{p[0] - cog[0], p[1] - cog[1], p[2] - cog[2]};
+    b.rx.push_back(r[0]), b.ry.push_back(r[1]), b.rz.push_back(r[2]);
+    const double mk = n.mass[k], rr = r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        I[static_cast<std::size_t>(3 * i + j)] += mk * ((i == j ? rr : 0.0) - r[static_cast<std::size_t>(i)] * r[static_cast<std::size_t>(j)]);
+    const V3 h = cross(r, {n.vx[k], n.vy[k], n.vz[k]});
+    for (int d = 0; d < 3; ++d) angular[static_cast<std::size_t>(d)] += mk * h[static_cast<std::size_t>(d)];
+  }
+  // Ispher 1: the inertia made spherical, its largest principal moment about every axis (RB-0d); the part of
+  // it the nodes do not carry counts as added inertia, so that the kinetic energy stays that of the body.
+  if (rb.ispher == 1) {
+    const double spherical = largest_eigenvalue(I);
+    for (std::size_t c = 0; c < 9; ++c) {
+      const double target = c % 4 == 0 ? spherical : 0.0;
+      b.inertia_added[c] += target - I[c];
+      I[c] = target;
+    }
+  }
+  b.inertia_body = I;
+  b.rotation = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+  b.momentum_angular = angular;
+  b.omega = solve(I, angular);
+  // The body starts with one velocity field: the mean translation plus the rotation.
+  const V3 velocity{momentum[0] / (mass > 0.0 ? mass : 1.0), momentum[1] / (mass > 0.0 ? mass : 1.0),
+                    momentum[2] / (mass > 0.0 ? mass : 1.0)};
+  b.velocity = velocity;
+  n.vx[main] = velocity[0], n.vy[main] = velocity[1], n.vz[main] = velocity[2];
+  n.wx[main] = b.omega[0], n.wy[main] = b.omega[1], n.wz[main] = b.omega[2];
+  for (std::size_t i = 0; i < b.secondary.size(); ++i) {
+    const auto k = static_cast<std::size_t>(b.secondary[i]);
+    const V3 spin = cross(b.omega, {b.rx[i], b.ry[i], b.rz[i]});
+    n.vx[k] = velocity[0] + spin[0], n.vy[k] = velocity[1] + spin[1], n.vz[k] = velocity[2] + spin[2];
+  }
+  b.active = true;
+}
+
+// Fixed dofs (/BCS) and /IMPVEL, /IMPDISP cards of the main node act on the whole body (eq. RB-4): they replace
+// the free velocity or angular velocity in those dofs (the angular momentum follows, L = I w). Returns their
+// work, the change of momentum times the mid-step velocity, like any other kinematic condition (energy.md).
+double drive_body(const Model& m, const SolverState& s, RigidBodyState& b, const V3& velocity_before,
+                  const V3& omega_before, const Mat3& inertia, double dt_next) {
+  const auto main = static_cast<std::size_t>(b.main_node);
+  std::uint8_t driven = s.fixed[main];
+  std::array<double, 6> v{b.velocity[0], b.velocity[1], b.velocity[2], b.omega[0], b.omega[1], b.omega[2]};
+  for (int d = 0; d < 6; ++d)
+    if (driven & (1u << d)) v[static_cast<std::size_t>(d)] = 0.0;
+  for (std::int32_t c : b.main_node_conditions) {
+    const ImposedMotion& im = m.imposed[static_cast<std::size_t>(c)];
+    if (const auto value = imposed_velocity(m, s, im, main, s.time, dt_next)) {
+      v[static_cast<std::size_t>(im.dof)] = *value;
+      driven = static_cast<std::uint8_t>(driven | (1u << static_cast<int>(im.dof)));
+    }
+  }
+  if (driven == 0) return 0.0;
+  const V3 momentum_free = b.momentum_angular;
+  double work = 0.0;
+  for (std::size_t d = 0; d < 3; ++d) {
+    work += b.mass * (v[d] - b.velocity[d]) * 0.5 * (v[d] + velocity_before[d]);
+    b.velocity[d] = v[d], b.omega[d] = v[d + 3];
+  }
+  b.momentum_angular = mul(inertia, b.omega);
+  for (std::size_t d = 0; d < 3; ++d)
+    work += (b.momentum_angular[d] - momentum_free[d]) * 0.5 * (b.omega[d] + omega_before[d]);
+  return work;
+}
+
 }  // namespace
 
 void setup_rigid_bodies(const Model& m, SolverState& s) {
-  NodalState& n = s.nodes;
-  for (const RigidBody& rb : m.rigid_bodies) {
+  for (std::size_t index = 0; index < m.rigid_bodies.size(); ++index) {
+    const RigidBody& rb = m.rigid_bodies[index];
     RigidBodyState b;
-    b.main_node = rb.main_node;
-    for (std::int32_t node : m.node_groups[static_cast<std::size_t>(rb.node_group)].nodes)
-      if (node != rb.main_node) b.secondary.push_back(node);
-    // Centre of mass of the secondary nodes and the main node; the main node moves there (ICOG 1).
+    form_body(rb, m, s, static_cast<std::int32_t>(index), b);
     const auto main = static_cast<std::size_t>(rb.main_node);
-    double mass = n.mass[main];
-    V3 cog = position(n, rb.main_node), momentum{};
-    for (int d = 0; d < 3; ++d) cog[static_cast<std::size_t>(d)] *= mass;
-    momentum = {mass * n.vx[main], mass * n.vy[main], mass * n.vz[main]};
-    for (std::int32_t node : b.secondary) {
-      const auto k = static_cast<std::size_t>(node);
-      const V3 p = position(n, node);
-      for (int d = 0; d < 3; ++d) cog[static_cast<std::size_t>(d)] += n.mass[k] * p[static_cast<std::size_t>(d)];
-      momentum[0] += n.mass[k] * n.vx[k], momentum[1] += n.mass[k] * n.vy[k], momentum[2] += n.mass[k] * n.vz[k];
-      mass += n.mass[k];
-      s.rigid_owner[k] = static_cast<std::int32_t>(s.bodies.size());
-    }
-    b.mass = mass;
-    for (auto& c : cog) c /= mass;
-    n.x[main] = cog[0], n.y[main] = cog[1], n.z[main] = cog[2];
-    s.x0[main] = cog[0], s.y0[main] = cog[1], s.z0[main] = cog[2];
-    // Inertia about the centre of mass: the nodes' point masses plus the card's added inertia.
-    Mat3 I{rb.inertia[0], rb.inertia[3], rb.inertia[5], rb.inertia[3], rb.inertia[1], rb.inertia[4],
-           rb.inertia[5], rb.inertia[4], rb.inertia[2]};
-    b.inertia_added = I;
-    V3 angular{};
-    for (std::int32_t node : b.secondary) {
-      const auto k = static_cast<std::size_t>(node);
-      const V3 p = position(n, node);
-      const V3 r{p[0] - cog[0], p[1] - cog[1], p[2] - cog[2]};
-      b.rx.push_back(r[0]), b.ry.push_back(r[1]), b.rz.push_back(r[2]);
-      const double mk = n.mass[k], rr = r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j)
-          I[static_cast<std::size_t>(3 * i + j)] += mk * ((i == j ? rr : 0.0) - r[static_cast<std::size_t>(i)] * r[static_cast<std::size_t>(j)]);
-      const V3 h = cross(r, {n.vx[k], n.vy[k], n.vz[k]});
-      for (int d = 0; d < 3; ++d) angular[static_cast<std::size_t>(d)] += mk * h[static_cast<std::size_t>(d)];
-    }
-    b.inertia_body = I;
-    b.momentum_angular = angular;
-    b.omega = solve(I, angular);
-    // The body starts with one velocity field: the mean translation plus the rotation.
-    const V3 velocity{momentum[0] / mass, momentum[1] / mass, momentum[2] / mass};
-    b.velocity = velocity;
-    n.vx[main] = velocity[0], n.vy[main] = velocity[1], n.vz[main] = velocity[2];
-    n.wx[main] = b.omega[0], n.wy[main] = b.omega[1], n.wz[main] = b.omega[2];
-    for (std::size_t i = 0; i < b.secondary.size(); ++i) {
-      const auto k = static_cast<std::size_t>(b.secondary[i]);
-      const V3 spin = cross(b.omega, {b.rx[i], b.ry[i], b.rz[i]});
-      n.vx[k] = velocity[0] + spin[0], n.vy[k] = velocity[1] + spin[1], n.vz[k] = velocity[2] + spin[2];
+    s.x0[main] = s.nodes.x[main], s.y0[main] = s.nodes.y[main], s.z0[main] = s.nodes.z[main];
+    for (std::size_t c = 0; c < m.imposed.size(); ++c) {
+      const ImposedMotion& im = m.imposed[c];
+      if (im.kind == ImposedKind::Force) continue;
+      const auto& nodes = m.node_groups[static_cast<std::size_t>(im.node_group)].nodes;
+      if (std::find(nodes.begin(), nodes.end(), rb.main_node) != nodes.end())
+        b.main_node_conditions.push_back(static_cast<std::int32_t>(c));
     }
     s.bodies.push_back(std::move(b));
+  }
+}
+
+void switch_rigid_bodies(const Model& m, SolverState& s) {
+  for (std::int32_t body : m.run.bodies_off) {
+    RigidBodyState& b = s.bodies[static_cast<std::size_t>(body)];
+    b.active = false;
+    for (std::int32_t node : b.secondary) s.rigid_owner[static_cast<std::size_t>(node)] = -1;
+  }
+  for (std::int32_t body : m.run.bodies_on) {
+    RigidBodyState& b = s.bodies[static_cast<std::size_t>(body)];
+    if (!b.active) form_body(m.rigid_bodies[static_cast<std::size_t>(body)], m, s, body, b);
   }
 }
 
 void gather_rigid_body_forces(SolverState& s) {
   NodalState& n = s.nodes;
   for (RigidBodyState& b : s.bodies) {
+    if (!b.active) continue;
     const auto main = static_cast<std::size_t>(b.main_node);
     const V3 cog = position(n, b.main_node);
     for (std::int32_t node : b.secondary) {
@@ -132,27 +223,31 @@ void gather_rigid_body_forces(SolverState& s) {
   }
 }
 
-void update_rigid_bodies(SolverState& s, double dt_average, double dt_next) {
+double update_rigid_bodies(const Model& m, SolverState& s, double dt_average, double dt_next) {
   NodalState& n = s.nodes;
+  double work = 0.0;
   for (RigidBodyState& b : s.bodies) {
+    if (!b.active) continue;
     const auto main = static_cast<std::size_t>(b.main_node);
+    const V3 velocity_before = b.velocity, omega_before = b.omega;
     // Newton for the whole body (eq. RB-1): the gathered force over the total mass.
-    for (int d = 0; d < 3; ++d)
-      b.velocity[static_cast<std::size_t>(d)] +=
-          dt_average * (d == 0 ? n.fx[main] : d == 1 ? n.fy[main] : n.fz[main]) / b.mass;
-    const V3 velocity = b.velocity;
+    if (b.mass > 0.0)
+      for (int d = 0; d < 3; ++d)
+        b.velocity[static_cast<std::size_t>(d)] +=
+            dt_average * (d == 0 ? n.fx[main] : d == 1 ? n.fy[main] : n.fz[main]) / b.mass;
     // Angular momentum about the centre of mass: dL/dt = torque (eq. RB-2); omega = I(t)^-1 L.
     for (int d = 0; d < 3; ++d)
       b.momentum_angular[static_cast<std::size_t>(d)] += dt_average * (d == 0 ? n.mx[main] : d == 1 ? n.my[main] : n.mz[main]);
     // omega belongs to the half step (eq. RB-2b): take it from the inertia at the mid-step attitude, predicted
     // with the attitude-of-t^n omega. The explicit Lie-Euler step (omega at t^n) lets the kinetic energy of a
     // tumbling body drift at first order in dt; the mid-step attitude makes the update second order.
-    auto omega_at = [&](const Mat3& attitude) {
-      return solve(mul(mul(attitude, b.inertia_body), transpose(attitude)), b.momentum_angular);
-    };
-    const V3 omega_start = omega_at(b.rotation);
+    auto inertia_at = [&](const Mat3& attitude) { return mul(mul(attitude, b.inertia_body), transpose(attitude)); };
+    const V3 omega_start = solve(inertia_at(b.rotation), b.momentum_angular);
     const double half = 0.5 * dt_next;
-    b.omega = omega_at(mul(rotation_of({omega_start[0] * half, omega_start[1] * half, omega_start[2] * half}), b.rotation));
+    const Mat3 inertia_mid = inertia_at(mul(rotation_of({omega_start[0] * half, omega_start[1] * half, omega_start[2] * half}), b.rotation));
+    b.omega = solve(inertia_mid, b.momentum_angular);
+    work += drive_body(m, s, b, velocity_before, omega_before, inertia_mid, dt_next);
+    const V3 velocity = b.velocity;
     n.vx[main] = velocity[0], n.vy[main] = velocity[1], n.vz[main] = velocity[2];
     n.wx[main] = b.omega[0], n.wy[main] = b.omega[1], n.wz[main] = b.omega[2];
     // Secondary nodes: velocities that land them exactly on the rigid placement at t^(n+1) (eq. RB-3).
@@ -171,6 +266,7 @@ void update_rigid_bodies(SolverState& s, double dt_average, double dt_next) {
     }
     b.rotation = next;
   }
+  return work;
 }
 
 }  // namespace crumple::solver

@@ -28,6 +28,7 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunReco
                            const std::vector<std::string>& notes, std::ostream& console) {
   using namespace solver;
   const auto started = std::chrono::steady_clock::now();
+  switch_rigid_bodies(m, s);
   recorder.start(notes, options.approximations, console);
   RunEvents events;
   OutputSchedule schedule(m.run, s.time, options.max_cycles);
@@ -100,6 +101,8 @@ RunSummary run_simulation(const Model& m, const SolverOptions& options, std::ost
   recorder.close(s, summary.status != RunStatus::Normal);
   return summary;
 }
+
+SolverState initial_state(const Model& m, std::vector<std::string>& notes) { return solver::make_state(m, notes); }
 
 void continue_from(SolverState& s) {
   s.cycles_done += s.cycle;

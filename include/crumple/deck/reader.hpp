@@ -43,12 +43,16 @@ struct DeckReport {
 };
 
 struct Deck {
-  Model model;
+  Model model;  // model.run: the run control of the first engine deck, NAME_0001.rad
+  // A continued run: the run controls of NAME_0002.rad, NAME_0003.rad, ... in order. Each carries on the time and
+  // the whole state of the one before (docs/theory/time-loop.md, "Continued runs").
+  std::vector<RunControl> continued_runs;
   DeckReport report;
 };
 
-// The engine deck that belongs to a starter deck: NAME_0001.rad beside NAME_0000.rad (empty when none).
-std::filesystem::path engine_deck_for(const std::filesystem::path& starter);
+// Engine deck `number` of a starter deck: NAME_0001.rad (the first), NAME_0002.rad... beside NAME_0000.rad (empty
+// when there is none).
+std::filesystem::path engine_deck_for(const std::filesystem::path& starter, int number = 1);
 
 // Reads and validates. Throws DeckErrors (every error found, in deck order) or DeckError; nothing is computed
 // from an invalid deck.

@@ -50,8 +50,14 @@ struct RunControl {
   std::int64_t restart_every = 0;  // /RFILE Ncycle (0: no restart files)
   int restart_sets = 0;            // /RFILE/n: rotating restart sets (0: one)
   int engine_version = 0;          // /VERS/n of the engine deck (no effect)
-  std::vector<std::int64_t> rbody_on, rbody_off;     // /RBODY/ON, /RBODY/OFF rigid body ids
+  // /RBODY/ON, /RBODY/OFF: rigid bodies named by their main node id, activated or deactivated from the start of
+  // this engine deck (model build: dense indices into Model::rigid_bodies).
+  std::vector<std::int64_t> rbody_on, rbody_off;
   std::vector<SourceLocation> rbody_on_where, rbody_off_where;  // the line of each id, parallel
+  std::vector<std::int32_t> bodies_on, bodies_off;
+  // /DTIX: the step of this engine deck's first cycle is at most dt_initial, every step at most dt_max [T]
+  // (0: no bound).
+  double dt_initial = 0.0, dt_max = 0.0;
 };
 
 }  // namespace crumple

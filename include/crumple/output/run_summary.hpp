@@ -32,7 +32,9 @@ struct PhaseTimes {
 
 struct RunSummary {
   std::string name;
-  long long cycles = 0;
+  long long cycles = 0;        // cycles of the last engine deck (a continued run counts each deck from 0)
+  long long cycles_total = 0;  // cycles of every engine deck of the run
+  int engine_decks = 1;        // NAME_0001.rad, NAME_0002.rad, ... run in order
   double time = 0.0;
   double dt = 0.0;
   EnergyBalance energy;

@@ -11,7 +11,7 @@ namespace crumple {
 
 // What sets dt^(n+1/2): the listing's ELEMENT column.
 struct StepControl {
-  enum class Source : std::uint8_t { None, Element, Interface, Node, LastStep };
+  enum class Source : std::uint8_t { None, Element, Interface, Node, LastStep, MaximumStep, InitialStep };
   Source source = Source::None;
   ElementKind kind = ElementKind::Shell4;  // Element: its kind
   std::int32_t index = -1;                 // Element: index in its kind's table; Interface, Node: dense node

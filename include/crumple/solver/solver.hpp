@@ -32,6 +32,9 @@ struct SolverOptions {
 // with the reason in `message`, after writing the last good state.
 RunSummary run_simulation(const Model& model, const SolverOptions& options, std::ostream& console);
 
+// The state of a model before its first cycle; `notes` receives the start-up remarks for the listing.
+SolverState initial_state(const Model& model, std::vector<std::string>& notes);
+
 // One engine deck from `state` (a fresh state, or the state a previous engine deck left: the snapshot a
 // continued run carries on) to the end time of `model.run`, written through `recorder`. `state` is left at the
 // end of the run. `notes` are the start-up remarks for the listing.

@@ -40,6 +40,9 @@ struct RigidBodyState {
   std::array<double, 3> velocity{};          // velocity of the centre of mass at t^(n-1/2)
   std::array<double, 3> momentum_angular{};  // angular momentum about the centre of mass (global) at t^(n-1/2)
   std::array<double, 3> omega{};             // angular velocity (global) at t^(n-1/2)
+  bool active = true;                        // /RBODY/OFF sets it off: the secondary nodes move on their own
+  // /IMPVEL and /IMPDISP cards (indices into Model::imposed) acting on the main node: they drive the body.
+  std::vector<std::int32_t> main_node_conditions;
 };
 
 struct RigidWallState {

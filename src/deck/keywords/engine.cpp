@@ -280,7 +280,7 @@ void read_dt(CardReader& reader, DeckContext& context) {
   const std::string keyword3 = card.path.size() > 2 ? card.path[2] : std::string();
   if (type == "SHELL") return read_dt_element(reader, run.dt_shell, true);
   if (type == "BRICK") return read_dt_element(reader, run.dt_brick, true);
-  if (type == "SH_3N" || type == "SH3N") return read_dt_element(reader, run.dt_sh3n, false);
+  if (type == "SH_3N" || type == "SH3N") return read_dt_element(reader, run.dt_sh3n, true);
   if (type == "NODA") {
     // CST is Radioss' name for CST2 (mass added to keep DTmin); CST1, SET and STOP are other methods.
     if (keyword3 != "CST" && keyword3 != "CST2")
@@ -380,17 +380,32 @@ void read_rfile(CardReader& reader, DeckContext& context) {
 
 void read_rbody_switch(CardReader& reader, std::vector<std::int64_t>& ids, std::vector<SourceLocation>& where) {
   path_at_most(reader, 2);
-  const std::size_t before = ids.size();
+  bool any = false;
   while (auto line = next_line(reader)) {
     for (std::size_t k = 0; k < line->token_count(); ++k) {
-      const std::int64_t id = line->token_integer(k, "RBID", std::nullopt);
-      if (id <= 0)
-        line->fail_value(fmt::format("RBID (value {})", k + 1), "a positive rigid body id", fmt::format("{}", id));
+      // The main node ids of the bodies (the engine manual's node_ID list); 0 names none, as a blank field would.
+      const std::int64_t id = line->token_integer(k, "node_ID", std::nullopt);
+      if (id < 0)
+        line->fail_value(fmt::format("node_ID (value {})", k + 1), "a rigid body's main node id (0: none)",
+                         fmt::format("{}", id));
+      if (id == 0) continue;
       ids.push_back(id);
       where.push_back(line->where());
     }
+    any = true;
   }
-  if (ids.size() == before) reader.fail("RBID", "at least one rigid body id", "none");
+  if (!any) reader.fail("node_ID", "a line of rigid body main node ids", "none");
+}
+
+// /DTIX: DTini DTmax. The first step of this engine deck is at most DTini, every step at most DTmax.
+void read_dtix(CardReader& reader, DeckContext& context) {
+  RunControl& run = context.model.run;
+  path_at_most(reader, 1);
+  const Line line = required_line(reader, "DTini, DTmax");
+  at_most(line, 2, "DTini, DTmax");
+  run.dt_initial = checked_real(line, 0, "DTini", 0.0, not_negative, "a non-negative time step (0: none)");
+  run.dt_max = checked_real(line, 1, "DTmax", 0.0, not_negative, "a non-negative time step (0: none)");
+  reader.finish();
 }
 
 }  // namespace
@@ -413,6 +428,7 @@ void register_engine_keywords(KeywordTable& table) {
   table.push_back({"/ANIM/VERS", E, read_anim_version});
   table.push_back({"/ANIM", E, read_anim_other});
   table.push_back({"/DT", E, read_dt});
+  table.push_back({"/DTIX", E, read_dtix});
   table.push_back({"/PARITH", E, [](CardReader& r, DeckContext& c) {
                      c.model.run.parith = read_switch(r);
                      c.note(r.card().where, r.card().keyword, "",

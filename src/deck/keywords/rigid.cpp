@@ -162,12 +162,13 @@ void read_body_definition(const Line& line, RigidBody& b) {
   b.surface_id = optional_id(line, 91, "surf_ID");
 }
 
-// The solver (solver/rigid_bodies.cpp) computes the inertia from the nodes plus the added inertia (Ispher 2) about
-// the centre of all masses, where it moves the main node (ICoG 1): the other choices are options it lacks.
+// The solver (solver/rigid_bodies.cpp) computes the inertia from the nodes plus the added inertia (Ispher 2), made
+// spherical for Ispher 1, about the centre of all masses, where it moves the main node (ICoG 1): the other
+// choices are options it lacks.
 void reject_body_options(const Line& line, RigidBody& b, DeckContext& context) {
-  if (b.ispher != 2) {
-    context.unsupported(line.error(31, 10, "Ispher", "0 or 2 (spherical inertia, Ispher = 1, and inertia from the "
-                                                     "card only, Ispher = 3, are not supported by Crumple)"));
+  if (b.ispher == 3) {
+    context.unsupported(line.error(31, 10, "Ispher", "0, 1 or 2 (inertia from the card only, Ispher = 3, is not "
+                                                     "supported by Crumple)"));
     b.ispher = 2;
   }
   if (b.icog != 1) {
