@@ -1,6 +1,8 @@
 // Nodes, functions, materials, properties and parts: indices, duplicates, cross-references, formulations.
 #include <fmt/format.h>
 
+#include <vector>
+
 #include "resolve.hpp"
 
 namespace crumple::deck {
@@ -29,12 +31,10 @@ ResolvedFormulation formulation_of(Resolver& r, const Property& p) {
     f.ish3n = pick(p.shell.ish3n, ds.ish3n, 2);
     f.ismstr = pick(p.shell.ismstr, ds.ismstr, 0);
     f.n_points = p.shell.n_points;
-    if (!one_of(f.ishell, {1, 24}))
-      r.error(p.where, keyword_of(p), "Ishell", "a supported 4-node shell formulation: 1 (Belytschko-Tsay) or 24 (QEPH)",
+    if (!one_of(f.ishell, {1, 12, 24}))
+      r.error(p.where, keyword_of(p), "Ishell",
+              "a supported 4-node shell formulation: 1 (Belytschko-Tsay), 12 (QBAT) or 24 (QEPH)",
               std::to_string(f.ishell));
-    if (!one_of(f.ish3n, {1, 2}))
-      r.error(p.where, keyword_of(p), "Ish3n", "a supported 3-node shell formulation: 1 or 2 (C0 triangle)",
-              std::to_string(f.ish3n));
   } else {
     f.isolid = pick(p.solid.isolid, dv.isolid, 1);
     f.ismstr = pick(p.solid.ismstr, dv.ismstr, 0);
@@ -44,6 +44,45 @@ ResolvedFormulation formulation_of(Resolver& r, const Property& p) {
               std::to_string(f.isolid));
   }
   return f;
+}
+
+// Which properties 4-node and 3-node shells use: a formulation flag acts only on the elements it is meant for,
+// so a property without triangles may carry an Ish3n Crumple lacks (it has nothing to act on).
+struct PropertyUse {
+  bool quads = false, triangles = false;
+};
+std::vector<PropertyUse> property_use(const Resolver& r) {
+  const Model& m = r.model;
+  std::vector<PropertyUse> use(m.properties.size());
+  for (const ElementKind kind : {ElementKind::Shell4, ElementKind::Shell3})
+    for (const std::int64_t part_id : r.context.raw_elements[static_cast<int>(kind)].part_id) {
+      const auto it = m.index.parts.find(part_id);
+      if (it == m.index.parts.end()) continue;
+      const std::int32_t property = m.parts[static_cast<std::size_t>(it->second)].property;
+      if (property < 0) continue;
+      (kind == ElementKind::Shell4 ? use[static_cast<std::size_t>(property)].quads
+                                   : use[static_cast<std::size_t>(property)].triangles) = true;
+    }
+  return use;
+}
+
+// Ish3n of a property its triangles use: its own field, else /DEF_SHELL's (the line that gave the value).
+void check_triangle_formulation(Resolver& r, const Property& p, const ResolvedFormulation& f) {
+  if (one_of(f.ish3n, {1, 2})) return;
+  const bool own = p.shell.ish3n != 0;
+  r.error(own ? p.shell.flags_where : r.model.shell_defaults.where, own ? keyword_of(p) : "/DEF_SHELL",
+          own ? "Ish3n (columns 21-30)" : "I_SH3N (columns 71-80)",
+          "a 3-node shell formulation supported by Crumple for the triangles of this property: 1 or 2 (C0 "
+          "triangle); 30 (DKT18), 31 (DKT_S3) and other values are not supported by Crumple",
+          fmt::format("'{}'", f.ish3n));
+}
+
+void check_shell_formulations(Resolver& r) {
+  const std::vector<PropertyUse> use = property_use(r);
+  for (std::size_t i = 0; i < r.model.properties.size(); ++i) {
+    const Property& p = r.model.properties[i];
+    if (p.kind == PropertyKind::Shell && use[i].triangles) check_triangle_formulation(r, p, r.model.formulations[i]);
+  }
 }
 
 }  // namespace
@@ -73,6 +112,7 @@ void resolve_definitions(Resolver& r) {
     part.property = r.find(m.index.properties, part.property_id, part.where, keyword, "prop_ID", "property");
     part.material = r.find(m.index.materials, part.material_id, part.where, keyword, "mat_ID", "material");
   }
+  check_shell_formulations(r);
   for (Material& mat : m.materials) {
     if (mat.law != MaterialLaw::Tabulated) continue;
     const std::string keyword = fmt::format("/MAT/PLAS_TAB/{}", mat.user_id);

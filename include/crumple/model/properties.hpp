@@ -21,6 +21,9 @@ struct ShellSection {  // /PROP/TYPE1 (= /PROP/SHELL)
   double ashear = 0.0;     // shear factor (0 -> 5/6)
   int ithick = 0;          // thickness change flag
   int iplas = 0;           // plane-stress plasticity algorithm flag
+  SourceLocation flags_where;    // the card's lines (Ishell ... line, hm ... line, N ... line), for errors
+  SourceLocation damping_where;  // found when resolving the flags against the elements that use the property
+  SourceLocation section_where;
 };
 
 struct SolidSection {  // /PROP/TYPE14 (= /PROP/SOLID)
@@ -47,6 +50,7 @@ struct Property {
 
 struct ShellDefaults {  // /DEF_SHELL
   int ishell = 0, ismstr = 0, ithick = 0, iplas = 0, istrain = 0, ish3n = 0, idrill = 0;
+  SourceLocation where;  // its data line (none: where.line == 0)
 };
 struct SolidDefaults {  // /DEF_SOLID
   int isolid = 0, ismstr = 0, istrain = 0, iframe = 0;

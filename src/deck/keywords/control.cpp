@@ -62,6 +62,7 @@ void read_def_shell(CardReader& reader, DeckContext& context) {
   ShellDefaults& d = context.model.shell_defaults;
   if (reader.at_end()) return;
   const Line line = reader.next("Ishell, Ismstr, Ithick, Iplas, Istrain, Ish3n, Idrill");
+  d.where = line.where();
   d.ishell = static_cast<int>(line.integer(1, 10, "Ishell"));
   d.ismstr = static_cast<int>(line.integer(11, 10, "Ismstr"));
   d.ithick = static_cast<int>(line.integer(21, 10, "Ithick"));

@@ -18,12 +18,14 @@ void read_shell_property(CardReader& reader, DeckContext& context) {
   Property p = begin_property(reader, PropertyKind::Shell);
   ShellSection& s = p.shell;
   const Line flags = reader.next("Ishell, Ismstr, Ish3n, Idrill");
+  s.flags_where = flags.where();
   s.ishell = static_cast<int>(flags.integer(1, 10, "Ishell"));
   s.ismstr = static_cast<int>(flags.integer(11, 10, "Ismstr"));
   s.ish3n = static_cast<int>(flags.integer(21, 10, "Ish3n"));
   s.idrill = static_cast<int>(flags.integer(31, 10, "Idrill"));
   flags.real(61, 20, "P_thick_fail", dim::none);
   const Line hourglass = reader.next("hm, hf, hr, dm, dn");
+  s.damping_where = hourglass.where();
   s.hm = hourglass.real(1, 20, "hm", dim::none);
   s.hf = hourglass.real(21, 20, "hf", dim::none);
   s.hr = hourglass.real(41, 20, "hr", dim::none);
@@ -34,6 +36,7 @@ void read_shell_property(CardReader& reader, DeckContext& context) {
                                      std::tuple{s.dn, 81, "dn"}})
     if (value < 0.0) hourglass.fail(column, 20, name, "a non-negative coefficient");
   const Line section = reader.next("N, Istrain, Thick, Ashear, Ithick, Iplas");
+  s.section_where = section.where();
   s.n_points = static_cast<int>(section.integer(1, 10, "N"));
   s.istrain = static_cast<int>(section.integer(11, 10, "Istrain"));
   s.thickness = section.real(21, 20, "Thick", dim::length);
