@@ -31,9 +31,15 @@ ResolvedFormulation formulation_of(Resolver& r, const Property& p) {
     f.ish3n = pick(p.shell.ish3n, ds.ish3n, 2);
     f.ismstr = pick(p.shell.ismstr, ds.ismstr, 0);
     f.n_points = p.shell.n_points;
-    if (!one_of(f.ishell, {1, 12, 24}))
+    // Ishell 2 needs bending points: with N = 1 the reference solver runs Ishell 1 and says so.
+    if (f.ishell == 2 && f.n_points == 1) {
+      r.context.warn(p.where, keyword_of(p), "Ishell 2 with N = 1 runs as Ishell 1 (the reference solver does the same)");
+      f.ishell = 1;
+    }
+    if (!one_of(f.ishell, {1, 2, 3, 12, 24}))
       r.error(p.where, keyword_of(p), "Ishell",
-              "a supported 4-node shell formulation: 1 (Belytschko-Tsay), 12 (QBAT) or 24 (QEPH)",
+              "a supported 4-node shell formulation: 1 (Belytschko-Tsay), 2 (without orthogonality), 3 "
+              "(elasto-plastic hourglass), 12 (QBAT) or 24 (QEPH)",
               std::to_string(f.ishell));
   } else {
     f.isolid = pick(p.solid.isolid, dv.isolid, 1);

@@ -40,6 +40,17 @@ void through_thickness_rule(int n, double* zeta, double* membrane_weight, double
 
 namespace {
 
+// Yield stress of the section for the elasto-plastic hourglass of Ishell 3 (eq. S-18): the law at the points' mean
+// plastic strain and the first point's strain rate; 0 (no limit) for an elastic law.
+double hourglass_yield_stress(const ShellGroupParameters& p, const ShellState& state, std::size_t first) {
+  if (!p.hardening.plastic()) return 0.0;
+  double eps_p = 0.0;
+  if (p.resultant_plasticity) eps_p = state.eps_p[first];
+  else
+    for (int k = 0; k < p.points; ++k) eps_p += p.membrane_weight[k] * state.eps_p[first + static_cast<std::size_t>(k)];
+  return p.hardening.yield(eps_p, state.eps_rate[first]);
+}
+
 // One kernel for the 4-node Belytschko-Tsay shell and the 3-node C0 triangle (docs/theory/shell4.md,
 // shell3 section): they differ in the element frame, the gradient operator and the hourglass modes only.
 template <int NN>
@@ -175,7 +186,8 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
       double hx = 0, hy = 0, bb = 0.0;
       for (int a = 0; a < 4; ++a) hx += h[a] * lx[a], hy += h[a] * ly[a];
       for (int a = 0; a < 4; ++a) {
-        gamma[a] = 0.25 * (h[a] - hx * b1[a] - hy * b2[a]);
+        // Ishell 2 (eq. S-17): the plain hourglass vector, not orthogonalised against the linear fields.
+        gamma[a] = p.orthogonal_hourglass ? 0.25 * (h[a] - hx * b1[a] - hy * b2[a]) : 0.25 * h[a];
         bb += b1[a] * b1[a] + b2[a] * b2[a];
       }
       double rates[5] = {0, 0, 0, 0, 0};
@@ -222,9 +234,15 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
         const double bending = p.hf * plate * area * bb * bb;
         const double rotation = p.hr * plate * area * bb;
         const double stiffness[5] = {membrane, membrane, bending, rotation, rotation};
+        // Ishell 3 (eq. S-18): the membrane and transverse modes carry at most what the section's yield stress
+        // allows.
+        const double limit = p.elastoplastic_hourglass ? hourglass_yield_stress(p, state, first) : 0.0;
+        const double cap[5] = {2.0 * p.hm * limit * t * std::sqrt(area), 2.0 * p.hm * limit * t * std::sqrt(area),
+                               p.hf * limit * t * t, 0.0, 0.0};
         for (int m = 0; m < 5; ++m) {
           const double old = hq[m];
           hq[m] += stiffness[m] * rates[m] * dt;
+          if (cap[m] > 0.0) hq[m] = std::clamp(hq[m], -cap[m], cap[m]);
           hourglass_work += 0.5 * (old + hq[m]) * rates[m] * dt;
         }
       }

@@ -14,6 +14,7 @@ namespace {
 
 constexpr double kDefaultHourglass = 0.01;    // Radioss default hm, hf, hr for 4-node shells
 constexpr double kDefaultQbatDamping = 0.001; // Radioss default dn of Ishell 12 (QBAT)
+constexpr double kDefaultElastoplasticHourglass = 0.1;  // Radioss default hm, hr of Ishell 3
 
 void setup_nodes(const Model& m, SolverState& s) {
   const std::size_t n = m.nodes.size();
@@ -60,9 +61,13 @@ void setup_shells(const Model& m, SolverState& s, ElementKind kind) {
     p.hardening = materials::Hardening::of(mat, m.functions);
     p.young = mat.young, p.poisson = mat.poisson, p.density = mat.density;
     p.shear_factor = prop.shell.ashear > 0.0 ? prop.shell.ashear : 5.0 / 6.0;
-    p.hm = prop.shell.hm > 0.0 ? prop.shell.hm : kDefaultHourglass;
+    // Ishell 3: hm and hr default to 0.1 (hf to 0.01), the other formulations to 0.01.
+    const double membrane_rotation_default = f.ishell == 3 ? kDefaultElastoplasticHourglass : kDefaultHourglass;
+    p.hm = prop.shell.hm > 0.0 ? prop.shell.hm : membrane_rotation_default;
     p.hf = prop.shell.hf > 0.0 ? prop.shell.hf : kDefaultHourglass;
-    p.hr = prop.shell.hr > 0.0 ? prop.shell.hr : kDefaultHourglass;
+    p.hr = prop.shell.hr > 0.0 ? prop.shell.hr : membrane_rotation_default;
+    p.orthogonal_hourglass = f.ishell != 2;
+    p.elastoplastic_hourglass = f.ishell == 3;
     // N = 0: stress-resultant (global) plasticity, one membrane point plus the element's bending stress.
     const int np = f.n_points == 0 ? 1 : f.n_points;
     p.resultant_plasticity = f.n_points == 0;

@@ -104,11 +104,13 @@ std::array<double, 2> boundary_weight(long long corner) {
   return {0.0, 0.0};
 }
 
-// Every patch test runs for the three 4-node formulations: Belytschko-Tsay (Ishell 1) and the physically stabilised
-// element (Ishell 24), whose hourglass modes must stay at rest under the linear fields of a patch, and the fully
-// integrated Batoz shell (Ishell 12), which must reproduce the constant state at each of its four Gauss points.
+// Every patch test runs for the 4-node formulations that pass it: Belytschko-Tsay (Ishell 1), its elasto-plastic
+// hourglass variant (Ishell 3) and the physically stabilised element (Ishell 24), whose hourglass modes must stay
+// at rest under the linear fields of a patch, and the fully integrated Batoz shell (Ishell 12), which must
+// reproduce the constant state at each of its four Gauss points. Ishell 2 does not orthogonalise its hourglass
+// vector and fails on this distorted mesh by design (unit.Shell4Hourglass.Ishell2IsNotOrthogonalToLinearFields).
 class PatchTest : public ::testing::TestWithParam<int> {};
-INSTANTIATE_TEST_SUITE_P(Ishell, PatchTest, ::testing::Values(1, 12, 24));
+INSTANTIATE_TEST_SUITE_P(Ishell, PatchTest, ::testing::Values(1, 3, 12, 24));
 
 // In-plane integration points (sections) of an element: four Gauss points for Ishell 12, one otherwise.
 std::size_t sections(int ishell) { return ishell == 12 ? 4 : 1; }

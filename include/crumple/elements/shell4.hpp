@@ -20,6 +20,8 @@ struct ShellGroupParameters {
   bool small_strain_switchable = false;    // Ismstr 2: /DT/SHELL/CST, /DT/SH_3N/CST may switch an element (S-16)
   bool fully_integrated = false;           // Ishell 12 (QBAT): four Gauss points, assumed shear (eqs.)
   bool physical_hourglass = false;         // Ishell 24 (QEPH): stiffness from the material, eqs. S-10 to S-14
+  bool orthogonal_hourglass = true;        // false for Ishell 2: hourglass vector not orthogonalised (eq. S-17)
+  bool elastoplastic_hourglass = false;    // Ishell 3: hourglass stresses limited by the yield stress (eq. S-18)
   double numerical_damping = 0.015;        // dn: viscous fraction on the physical hourglass modes (eq. S-14), or
                                            // on the membrane and bending resultants of Ishell 12 (eq. Q-8)
   int points = 1;                          // through-thickness integration points (1 when resultant_plasticity)

@@ -23,6 +23,8 @@ void read_shell_property(CardReader& reader, DeckContext& context) {
   s.ismstr = static_cast<int>(flags.integer(11, 10, "Ismstr"));
   s.ish3n = static_cast<int>(flags.integer(21, 10, "Ish3n"));
   s.idrill = static_cast<int>(flags.integer(31, 10, "Idrill"));
+  if (s.ish3n != 0 && s.ish3n != 1 && s.ish3n != 2 && s.ish3n != 30 && s.ish3n != 31)
+    flags.fail(21, 10, "Ish3n", "a 3-node shell formulation: 0 (/DEF_SHELL), 1, 2, 30 or 31");
   flags.real(61, 20, "P_thick_fail", dim::none);
   const Line hourglass = reader.next("hm, hf, hr, dm, dn");
   s.damping_where = hourglass.where();
