@@ -60,7 +60,8 @@ void setup_shells(const Model& m, SolverState& s, ElementKind kind) {
     ShellGroupParameters& p = s.shell_groups[g];
     p.hardening = materials::Hardening::of(mat, m.functions);
     p.young = mat.young, p.poisson = mat.poisson, p.density = mat.density;
-    p.shear_factor = prop.shell.ashear > 0.0 ? prop.shell.ashear : 5.0 / 6.0;
+    // Ashear (default 5/6); a membrane (N = 1) has no transverse shear, as in the reference solver.
+    p.shear_factor = f.n_points == 1 ? 0.0 : prop.shell.ashear > 0.0 ? prop.shell.ashear : 5.0 / 6.0;
     // Ishell 3: hm and hr default to 0.1 (hf to 0.01), the other formulations to 0.01.
     const double membrane_rotation_default = f.ishell == 3 ? kDefaultElastoplasticHourglass : kDefaultHourglass;
     p.hm = prop.shell.hm > 0.0 ? prop.shell.hm : membrane_rotation_default;
@@ -74,7 +75,7 @@ void setup_shells(const Model& m, SolverState& s, ElementKind kind) {
     if (p.resultant_plasticity && st.bending_stress.empty()) st.bending_stress.assign(3 * table.size(), 0.0);
     p.physical_hourglass = kind == ElementKind::Shell4 && f.ishell == 24;
     p.fully_integrated = kind == ElementKind::Shell4 && f.ishell == 12;
-    p.small_strain = f.ismstr == 1 || f.ismstr == 3;
+    p.small_strain = f.ismstr == 1;  // Ismstr 3 was resolved to 2 (or refused) by the reader
     p.small_strain_switchable = f.ismstr == 2;  // eq. S-16; Ismstr 4 never switches
     if ((p.small_strain || p.small_strain_switchable) && st.initial_shape.empty())
       st.initial_shape.assign(2 * static_cast<std::size_t>(nodes_per) * n, 0.0);
