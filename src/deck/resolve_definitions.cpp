@@ -1,6 +1,8 @@
 // Nodes, functions, materials, properties and parts: indices, duplicates, cross-references, formulations.
 #include <fmt/format.h>
 
+#include <vector>
+
 #include "resolve.hpp"
 
 namespace crumple::deck {
@@ -16,25 +18,44 @@ std::string keyword_of(const Property& p) {
   return fmt::format("/PROP/{}/{}", p.kind == PropertyKind::Shell ? "SHELL" : "SOLID", p.user_id);
 }
 
+// Shell flags: the property's, else /DEF_SHELL's, else the defaults (docs/theory/shell4.md, "Formulation flags";
+// the values Crumple lacks were refused at their fields while reading).
+void shell_formulation(Resolver& r, const Property& p, ResolvedFormulation& f) {
+  const ShellDefaults& ds = r.model.shell_defaults;
+  const auto pick = [](int property_value, int global_value, int builtin) {
+    return property_value != 0 ? property_value : global_value != 0 ? global_value : builtin;
+  };
+  f.ishell = pick(p.shell.ishell, ds.ishell, 24);
+  f.ish3n = pick(p.shell.ish3n, ds.ish3n, 2);
+  f.ismstr = pick(p.shell.ismstr, ds.ismstr, 2);
+  f.n_points = p.shell.n_points;
+  // Ishell 2 needs bending points: with N = 1 the reference solver runs Ishell 1 and says so.
+  if (f.ishell == 2 && f.n_points == 1) {
+    r.context.warn(p.where, keyword_of(p), "Ishell 2 with N = 1 runs as Ishell 1 (the reference solver does the same)");
+    f.ishell = 1;
+  }
+  // Ismstr 3, the old small-strain formulation, exists for Ishell 2 only; the reference runs the others with
+  // Ismstr 2 (and says so).
+  if (f.ismstr == 3) {
+    const bool own = p.shell.ismstr != 0;
+    if (f.ishell == 2)
+      r.error(own ? p.shell.flags_where : ds.where, own ? keyword_of(p) : "/DEF_SHELL", "Ismstr (columns 11-20)",
+              "1, 2 or 4 with Ishell 2: the old small-strain formulation (Ismstr 3) is not supported by Crumple", "'3'");
+    else
+      r.context.warn(p.where, keyword_of(p), "Ismstr 3 is for Ishell 2 only: runs with Ismstr 2, as the reference");
+    f.ismstr = 2;
+  }
+}
+
 // Property flag, else /DEF_SHELL or /DEF_SOLID, else the built-in default (Radioss defaults).
 ResolvedFormulation formulation_of(Resolver& r, const Property& p) {
-  const ShellDefaults& ds = r.model.shell_defaults;
   const SolidDefaults& dv = r.model.solid_defaults;
   auto pick = [](int property_value, int global_value, int builtin) {
     return property_value != 0 ? property_value : global_value != 0 ? global_value : builtin;
   };
   ResolvedFormulation f;
   if (p.kind == PropertyKind::Shell) {
-    f.ishell = pick(p.shell.ishell, ds.ishell, 24);
-    f.ish3n = pick(p.shell.ish3n, ds.ish3n, 2);
-    f.ismstr = pick(p.shell.ismstr, ds.ismstr, 0);
-    f.n_points = p.shell.n_points;
-    if (!one_of(f.ishell, {1, 24}))
-      r.error(p.where, keyword_of(p), "Ishell", "a supported 4-node shell formulation: 1 (Belytschko-Tsay) or 24 (QEPH)",
-              std::to_string(f.ishell));
-    if (!one_of(f.ish3n, {1, 2}))
-      r.error(p.where, keyword_of(p), "Ish3n", "a supported 3-node shell formulation: 1 or 2 (C0 triangle)",
-              std::to_string(f.ish3n));
+    shell_formulation(r, p, f);
   } else {
     f.isolid = pick(p.solid.isolid, dv.isolid, 1);
     f.ismstr = pick(p.solid.ismstr, dv.ismstr, 0);
@@ -44,6 +65,111 @@ ResolvedFormulation formulation_of(Resolver& r, const Property& p) {
               std::to_string(f.isolid));
   }
   return f;
+}
+
+// Which properties 4-node and 3-node shells use: a formulation flag acts only on the elements it is meant for,
+// so a property without triangles may carry an Ish3n Crumple lacks (it has nothing to act on).
+struct PropertyUse {
+  bool quads = false, triangles = false;
+};
+std::vector<PropertyUse> property_use(const Resolver& r) {
+  const Model& m = r.model;
+  std::vector<PropertyUse> use(m.properties.size());
+  for (const ElementKind kind : {ElementKind::Shell4, ElementKind::Shell3})
+    for (const std::int64_t part_id : r.context.raw_elements[static_cast<int>(kind)].part_id) {
+      const auto it = m.index.parts.find(part_id);
+      if (it == m.index.parts.end()) continue;
+      const std::int32_t property = m.parts[static_cast<std::size_t>(it->second)].property;
+      if (property < 0) continue;
+      (kind == ElementKind::Shell4 ? use[static_cast<std::size_t>(property)].quads
+                                   : use[static_cast<std::size_t>(property)].triangles) = true;
+    }
+  return use;
+}
+
+// Ish3n of a property its triangles use: its own field, else /DEF_SHELL's (the line that gave the value).
+void check_triangle_formulation(Resolver& r, const Property& p, const ResolvedFormulation& f) {
+  if (one_of(f.ish3n, {1, 2})) return;
+  const bool own = p.shell.ish3n != 0;
+  r.error(own ? p.shell.flags_where : r.model.shell_defaults.where, own ? keyword_of(p) : "/DEF_SHELL",
+          own ? "Ish3n (columns 21-30)" : "I_SH3N (columns 71-80)",
+          fmt::format("a 3-node shell formulation supported by Crumple for the triangles of {}: 1 or 2 (C0 triangle); "
+                      "30 (DKT18), 31 (DKT_S3) and other values are not supported by Crumple",
+                      keyword_of(p)),
+          fmt::format("'{}'", f.ish3n));
+}
+
+// Iplas of a plastic section. With points through the thickness Crumple's return is the iterative projection of
+// Iplas 1 run to convergence (materials.md, PS-3); with N = 0 it is the radial return on the resultants (RP-1 to
+// RP-3), the counterpart of Iplas 2. The default (0, the reference's radial return) runs either, with a warning
+// for the points.
+void check_plasticity_algorithm(Resolver& r, const Property& p, const ResolvedFormulation& f) {
+  const ShellDefaults& ds = r.model.shell_defaults;
+  const bool own = p.shell.iplas != 0;
+  const int iplas = own ? p.shell.iplas : ds.iplas;
+  const bool points = f.n_points >= 1;
+  if (iplas == 0 && points)
+    r.context.warn(p.shell.section_where, keyword_of(p),
+                   "Iplas 0: the reference's default plane-stress return is a radial return; Crumple runs the "
+                   "converged iterative projection of Iplas 1");
+  if (iplas == 0 || iplas == (points ? 1 : 2)) return;
+  r.error(own ? p.shell.section_where : ds.where, own ? keyword_of(p) : "/DEF_SHELL",
+          own ? "Iplas (columns 81-90)" : "Iplas (columns 31-40)",
+          points ? fmt::format("0 or 1 for the plastic points of {} (N = {}): the radial return, 2, is not supported "
+                               "by Crumple",
+                               keyword_of(p), f.n_points)
+                 : fmt::format("0 or 2 for the plastic resultants of {} (N = 0): the iterative return, 1, is not "
+                               "supported by Crumple",
+                               keyword_of(p)),
+          fmt::format("'{}'", iplas));
+}
+
+// Flags whose effect depends on the material of a part that uses the property (docs/theory/shell4.md,
+// "Formulation flags"): membrane damping dm, the default P_thick_fail and the default Iplas.
+void check_shell_material(Resolver& r, const Property& p, const ResolvedFormulation& f, const Material& mat) {
+  const ShellSection& s = p.shell;
+  const bool tabulated = mat.law == MaterialLaw::Tabulated, plastic = mat.law != MaterialLaw::Elastic;
+  const bool qeph_or_qbat = f.ishell == 12 || f.ishell == 24;
+  // dm acts with law 36 and, with any law, in Ishell 12 and 24: Crumple has no membrane damping.
+  if (s.dm != 0.0 && (tabulated || qeph_or_qbat))
+    r.error(s.damping_where, keyword_of(p), "dm (columns 61-80)",
+            "0: membrane damping (active for Ishell 12, 24 and /MAT/PLAS_TAB) is not supported by Crumple",
+            fmt::format("'{}'", s.dm));
+  if (s.dm == 0.0 && tabulated && f.ishell == 24)
+    r.context.warn(s.damping_where, keyword_of(p),
+                   "dm 0: the reference's default membrane damping for Ishell 24 with /MAT/PLAS_TAB is 1.5 %; Crumple "
+                   "applies none");
+  // P_thick_fail 0: the reference deletes an element when all its points failed, Crumple at the first one; the
+  // same with one point (N = 0, 1), not with several.
+  const double failure = mat.law == MaterialLaw::JohnsonCook ? mat.johnson_cook.eps_p_max
+                         : tabulated                         ? mat.tabulated.eps_p_max
+                                                             : 0.0;
+  if (f.n_points >= 2 && failure > 0.0 && failure < 1e20)
+    r.error(s.flags_where, keyword_of(p), "P_thick_fail (columns 61-80)",
+            fmt::format("N = 0 or 1 with the failure strain of material {}: with N = {} the reference deletes an "
+                        "element when all its points failed, Crumple at the first (not supported by Crumple)",
+                        mat.user_id, f.n_points),
+            "'0'");
+  if (plastic) check_plasticity_algorithm(r, p, f);
+}
+
+void check_shell_formulations(Resolver& r) {
+  const Model& m = r.model;
+  const std::vector<PropertyUse> use = property_use(r);
+  for (std::size_t i = 0; i < m.properties.size(); ++i) {
+    const Property& p = m.properties[i];
+    if (p.kind == PropertyKind::Shell && use[i].triangles) check_triangle_formulation(r, p, m.formulations[i]);
+  }
+  std::vector<std::uint8_t> checked(m.properties.size() * m.materials.size(), 0);
+  for (const Part& part : m.parts) {
+    if (part.property < 0 || part.material < 0) continue;
+    const auto ip = static_cast<std::size_t>(part.property), im = static_cast<std::size_t>(part.material);
+    const Property& p = m.properties[ip];
+    if (p.kind != PropertyKind::Shell || !(use[ip].quads || use[ip].triangles) || checked[ip * m.materials.size() + im])
+      continue;
+    checked[ip * m.materials.size() + im] = 1;
+    check_shell_material(r, p, m.formulations[ip], m.materials[im]);
+  }
 }
 
 }  // namespace
@@ -73,6 +199,7 @@ void resolve_definitions(Resolver& r) {
     part.property = r.find(m.index.properties, part.property_id, part.where, keyword, "prop_ID", "property");
     part.material = r.find(m.index.materials, part.material_id, part.where, keyword, "mat_ID", "material");
   }
+  check_shell_formulations(r);
   for (Material& mat : m.materials) {
     if (mat.law != MaterialLaw::Tabulated) continue;
     const std::string keyword = fmt::format("/MAT/PLAS_TAB/{}", mat.user_id);

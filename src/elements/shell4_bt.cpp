@@ -5,22 +5,17 @@
 #include <cmath>
 
 #include "crumple/elements/shell4.hpp"
-#include "crumple/materials/plane_stress.hpp"
-#include "crumple/materials/resultant_plasticity.hpp"
 #include "shell4_hourglass.hpp"
+#include "shell4_section.hpp"
 
 namespace crumple {
 namespace {
 
-struct Vec {
-  double x, y, z;
-};
-inline Vec operator-(Vec a, Vec b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-inline Vec operator+(Vec a, Vec b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-inline double dot(Vec a, Vec b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-inline Vec cross(Vec a, Vec b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
-inline Vec scaled(Vec a, double s) { return {a.x * s, a.y * s, a.z * s}; }
-inline Vec unit(Vec a) { return scaled(a, 1.0 / std::sqrt(dot(a, a))); }
+using shell_section::cross;
+using shell_section::dot;
+using shell_section::scaled;
+using shell_section::unit;
+using shell_section::Vec;
 
 }  // namespace
 
@@ -45,6 +40,17 @@ void through_thickness_rule(int n, double* zeta, double* membrane_weight, double
 
 namespace {
 
+// Yield stress of the section for the elasto-plastic hourglass of Ishell 3 (eq. S-18): the law at the points' mean
+// plastic strain and the first point's strain rate; 0 (no limit) for an elastic law.
+double hourglass_yield_stress(const ShellGroupParameters& p, const ShellState& state, std::size_t first) {
+  if (!p.hardening.plastic()) return 0.0;
+  double eps_p = 0.0;
+  if (p.resultant_plasticity) eps_p = state.eps_p[first];
+  else
+    for (int k = 0; k < p.points; ++k) eps_p += p.membrane_weight[k] * state.eps_p[first + static_cast<std::size_t>(k)];
+  return p.hardening.yield(eps_p, state.eps_rate[first]);
+}
+
 // One kernel for the 4-node Belytschko-Tsay shell and the 3-node C0 triangle (docs/theory/shell4.md,
 // shell3 section): they differ in the element frame, the gradient operator and the hourglass modes only.
 template <int NN>
@@ -68,26 +74,13 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
       v[a] = {nodes.vx[k], nodes.vy[k], nodes.vz[k]};
       w[a] = {nodes.wx[k], nodes.wy[k], nodes.wz[k]};
     }
-    // Co-rotational frame (eq. S-1). Quadrilateral: normal from the diagonals, e1 along the mean of the sides
-    // 1-2 and 4-3. Triangle: normal from two sides, e1 along the side 1-2.
-    Vec normal, side;
-    if constexpr (NN == 4) {
-      normal = cross(x[2] - x[0], x[3] - x[1]);
-      side = (x[1] - x[0]) + (x[2] - x[3]);
-    } else {
-      normal = cross(x[1] - x[0], x[2] - x[0]);
-      side = x[1] - x[0];
-    }
-    const double normal_length = std::sqrt(dot(normal, normal));
-    if (!(normal_length > 0.0)) {
+    // Co-rotational frame (eq. S-1).
+    shell_section::Frame frame;
+    if (!shell_section::corotational_frame<NN>(x, frame)) {
       result.inverted = e;
       continue;
     }
-    const Vec e3 = scaled(normal, 1.0 / normal_length);
-    const Vec e1 = unit(side - scaled(e3, dot(side, e3)));
-    const Vec e2 = cross(e3, e1);
-    Vec centre{0.0, 0.0, 0.0};
-    for (int a = 0; a < NN; ++a) centre = centre + scaled(x[a], mean);
+    const Vec e1 = frame.e1, e2 = frame.e2, e3 = frame.e3, centre = frame.centre;
     double lx[NN], ly[NN], vx[NN], vy[NN], vz[NN], tx[NN], ty[NN];
     for (int a = 0; a < NN; ++a) {
       const Vec r = x[a] - centre;
@@ -100,20 +93,18 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
       ty[a] = dot(w[a], e2);
     }
     // Gradient operator at the centre (eq. S-2; triangle: eq. S-9).
-    if (p.small_strain) {
+    const bool small_strain = p.small_strain || state.small_strain[ue] != 0;
+    if (small_strain) {
       // Ismstr 1, 3 (eq. S-15): strains and forces on the initial shape, carried by the current frame; the
-      // element keeps its first step and cannot invert in this formulation.
+      // element keeps its first step and cannot invert in this formulation. Ismstr 2 after the switch
+      // (shell_switch_to_small_strain, eq. S-16): the same on the shape frozen at the switch.
       double* shape = &state.initial_shape[2 * NN * ue];
       if (state.initial_length[ue] == 0.0)
         for (int a = 0; a < NN; ++a) shape[a] = lx[a], shape[NN + a] = ly[a];
       for (int a = 0; a < NN; ++a) lx[a] = shape[a], ly[a] = shape[NN + a];
     }
-    double area, b1[NN], b2[NN];
-    if constexpr (NN == 4) {
-      area = 0.5 * ((lx[2] - lx[0]) * (ly[3] - ly[1]) - (lx[3] - lx[1]) * (ly[2] - ly[0]));
-    } else {
-      area = 0.5 * ((lx[1] - lx[0]) * (ly[2] - ly[0]) - (lx[2] - lx[0]) * (ly[1] - ly[0]));
-    }
+    const double area = shell_section::local_area<NN>(lx, ly);
+    double b1[NN], b2[NN];
     if (!(area > 0.0)) {
       result.inverted = e;
       continue;
@@ -154,75 +145,18 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
     }
     const double t = state.thickness[ue];
 
-    // Stress update at the through-thickness points, resultants per unit length (eq. S-4).
-    double nxx = 0, nyy = 0, nxy = 0, mxx = 0, myy = 0, mxy = 0;
-    double old_n[3] = {0, 0, 0}, old_m[3] = {0, 0, 0};
-    double work = 0.0, thickness_strain = 0.0;
-    double tangent_ratio = 1.0;  // through-thickness mean of the points' tangent over E (eq. S-12)
-    bool failed = false;
+    // Stress update at the through-thickness points, resultants per unit length (eq. S-4), and the internal energy:
+    // mid-step resultants times the generalized strain increments (eq. S-6).
     const std::size_t first = p.first_point + static_cast<std::size_t>(e - group.begin) * static_cast<std::size_t>(np);
-    if (p.resultant_plasticity) {
-      // N = 0: one set of resultants, carried as the membrane stress N / t at the point and the outer-fibre
-      // bending stress 6 M / t^2 per element (docs/theory/materials.md, RP-1 to RP-3).
-      double* sm[3] = {&state.sxx[first], &state.syy[first], &state.sxy[first]};
-      double* sb = &state.bending_stress[3 * ue];
-      double membrane[3] = {*sm[0], *sm[1], *sm[2]};
-      const double bending_lever = t * t / 6.0;
-      for (int c = 0; c < 3; ++c) old_n[c] = t * membrane[c], old_m[c] = bending_lever * sb[c];
-      if (dt > 0.0) {
-        const double h = 0.5 * t;
-        const materials::ResultantIncrement d{{dxx * dt, dyy * dt, gxy * dt}, {h * kxx * dt, h * kyy * dt, h * kxy * dt}};
-        // Strain rate of the more strained surface fibre.
-        auto fibre_rate = [&](double s) {
-          const double ex = d.membrane[0] + s * d.bending[0], ey = d.membrane[1] + s * d.bending[1];
-          const double g = d.membrane[2] + s * d.bending[2];
-          return std::sqrt(2.0 / 3.0 * (ex * ex + ey * ey + (ex + ey) * (ex + ey) + 0.5 * g * g)) / dt;
-        };
-        const double rate = p.hardening.filtered_rate(std::max(fibre_rate(1.0), fibre_rate(-1.0)), state.eps_rate[first], dt);
-        state.eps_rate[first] = rate;
-        const auto r = materials::resultant_update(elastic, p.hardening, d, rate, state.eps_p[first], membrane, sb);
-        state.eps_p[first] += r.plastic_strain_increment;
-        if (r.plastic_strain_increment > 0.0 && p.physical_hourglass) {
-          const double slope = std::max(p.hardening.slope(state.eps_p[first], rate), 0.0);
-          tangent_ratio = slope / (E + slope);  // eq. S-12
-        }
-        thickness_strain = r.thickness_strain;
-        if (p.failure_strain > 0.0 && state.eps_p[first] >= p.failure_strain) failed = true;
-        for (int c = 0; c < 3; ++c) *sm[c] = membrane[c];
-      }
-      nxx = t * membrane[0], nyy = t * membrane[1], nxy = t * membrane[2];
-      mxx = bending_lever * sb[0], myy = bending_lever * sb[1], mxy = bending_lever * sb[2];
-    }
-    for (int k = 0; k < np && !p.resultant_plasticity; ++k) {
-      const std::size_t ip = first + static_cast<std::size_t>(k);
-      const double z = p.zeta[k] * t;
-      const double wn = p.membrane_weight[k] * t, wm = p.bending_weight[k] * t * t;
-      double sxx = state.sxx[ip], syy = state.syy[ip], sxy = state.sxy[ip];
-      old_n[0] += wn * sxx, old_n[1] += wn * syy, old_n[2] += wn * sxy;
-      old_m[0] += wm * sxx, old_m[1] += wm * syy, old_m[2] += wm * sxy;
-      if (dt > 0.0) {
-        const double ex = (dxx + z * kxx) * dt, ey = (dyy + z * kyy) * dt, g = (gxy + z * kxy) * dt;
-        const double increment_rate = std::sqrt(2.0 / 3.0 * (ex * ex + ey * ey + (ex + ey) * (ex + ey) + 0.5 * g * g)) / dt;
-        const double rate = p.hardening.filtered_rate(increment_rate, state.eps_rate[ip], dt);  // eq. RF
-        state.eps_rate[ip] = rate;
-        const auto r = materials::plane_stress_update(elastic, p.hardening, ex, ey, g, rate, state.eps_p[ip], sxx,
-                                                      syy, sxy, &state.static_yield[ip]);
-        state.eps_p[ip] += r.plastic_strain_increment;
-        if (r.plastic_strain_increment > 0.0 && p.physical_hourglass) {
-          // Elastic-plastic tangent of the point, E H' / (E + H'), for the hourglass modes (eq. S-12).
-          const double slope = std::max(p.hardening.slope(state.eps_p[ip], rate), 0.0);
-          tangent_ratio -= p.membrane_weight[k] * E / (E + slope);
-        }
-        thickness_strain += p.membrane_weight[k] * r.thickness_strain;
-        if (p.failure_strain > 0.0 && state.eps_p[ip] >= p.failure_strain) failed = true;
-        state.sxx[ip] = sxx, state.syy[ip] = syy, state.sxy[ip] = sxy;
-      }
-      nxx += wn * sxx, nyy += wn * syy, nxy += wn * sxy;
-      mxx += wm * sxx, myy += wm * syy, mxy += wm * sxy;
-    }
-    // Internal energy: mid-step resultants times the generalized strain increments (eq. S-6).
-    work += 0.5 * dt * ((old_n[0] + nxx) * dxx + (old_n[1] + nyy) * dyy + (old_n[2] + nxy) * gxy +
-                        (old_m[0] + mxx) * kxx + (old_m[1] + myy) * kyy + (old_m[2] + mxy) * kxy);
+    const shell_section::StrainRates section_rates{dxx, dyy, gxy, kxx, kyy, kxy};
+    double* bending_stress = p.resultant_plasticity ? &state.bending_stress[3 * ue] : nullptr;
+    const shell_section::Update section = shell_section::update(p, elastic, state, first, bending_stress, t, section_rates, dt);
+    const double nxx = section.n[0], nyy = section.n[1], nxy = section.n[2];
+    const double mxx = section.m[0], myy = section.m[1], mxy = section.m[2];
+    const double thickness_strain = section.thickness_strain, tangent_ratio = section.tangent_ratio;
+    const bool failed = section.failed;
+    double work = 0.0;
+    work += shell_section::work(section, section_rates, dt);
     // Transverse shear: elastic, constant through the thickness with the shear correction factor.
     const double shear_stiffness = p.shear_factor * G * t;
     const double old_qx = state.qx[ue], old_qy = state.qy[ue];
@@ -233,13 +167,8 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
     if (p.thickness_update && dt > 0.0) state.thickness[ue] = t * std::exp(thickness_strain);
 
     // Critical step (eq. T-1): quadrilateral area over the longest side, triangle twice the area over it.
-    double longest = 0.0;
-    for (int a = 0; a < NN; ++a) {
-      const double sx = lx[(a + 1) % NN] - lx[a], sy = ly[(a + 1) % NN] - ly[a];
-      longest = std::max(longest, sx * sx + sy * sy);
-    }
-    double length = (NN == 4 ? area : 2.0 * area) / std::sqrt(longest);
-    if (p.small_strain) {  // eq. S-15: the step of the initial geometry
+    double length = shell_section::characteristic_length<NN>(lx, ly, area);
+    if (small_strain) {  // eq. S-15: the step of the initial geometry
       if (state.initial_length[ue] == 0.0) state.initial_length[ue] = length;
       length = state.initial_length[ue];
     }
@@ -257,7 +186,8 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
       double hx = 0, hy = 0, bb = 0.0;
       for (int a = 0; a < 4; ++a) hx += h[a] * lx[a], hy += h[a] * ly[a];
       for (int a = 0; a < 4; ++a) {
-        gamma[a] = 0.25 * (h[a] - hx * b1[a] - hy * b2[a]);
+        // Ishell 2 (eq. S-17): the plain hourglass vector, not orthogonalised against the linear fields.
+        gamma[a] = p.orthogonal_hourglass ? 0.25 * (h[a] - hx * b1[a] - hy * b2[a]) : 0.25 * h[a];
         bb += b1[a] * b1[a] + b2[a] * b2[a];
       }
       double rates[5] = {0, 0, 0, 0, 0};
@@ -304,9 +234,15 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
         const double bending = p.hf * plate * area * bb * bb;
         const double rotation = p.hr * plate * area * bb;
         const double stiffness[5] = {membrane, membrane, bending, rotation, rotation};
+        // Ishell 3 (eq. S-18): the membrane and transverse modes carry at most what the section's yield stress
+        // allows.
+        const double limit = p.elastoplastic_hourglass ? hourglass_yield_stress(p, state, first) : 0.0;
+        const double cap[5] = {2.0 * p.hm * limit * t * std::sqrt(area), 2.0 * p.hm * limit * t * std::sqrt(area),
+                               p.hf * limit * t * t, 0.0, 0.0};
         for (int m = 0; m < 5; ++m) {
           const double old = hq[m];
           hq[m] += stiffness[m] * rates[m] * dt;
+          if (cap[m] > 0.0) hq[m] = std::clamp(hq[m], -cap[m], cap[m]);
           hourglass_work += 0.5 * (old + hq[m]) * rates[m] * dt;
         }
       }
@@ -355,6 +291,7 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
 
 GroupStepResult shell4_forces(const ElementTable& table, const ElementGroup& group, const ShellGroupParameters& p,
                               NodalState& nodes, ShellState& state, double dt) {
+  if (p.fully_integrated) return shell4_qbat_forces(table, group, p, nodes, state, dt);
   return shell_forces<4>(table, group, p, nodes, state, dt);
 }
 

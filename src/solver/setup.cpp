@@ -12,8 +12,9 @@
 namespace crumple::solver {
 namespace {
 
-constexpr double kDefaultHourglass = 0.01;  // Radioss default hm, hf, hr for 4-node shells
-
+constexpr double kDefaultHourglass = 0.01;    // Radioss default hm, hf, hr for 4-node shells
+constexpr double kDefaultQbatDamping = 0.001; // Radioss default dn of Ishell 12 (QBAT)
+constexpr double kDefaultElastoplasticHourglass = 0.1;  // Radioss default hm, hr of Ishell 3
 
 void setup_nodes(const Model& m, SolverState& s) {
   const std::size_t n = m.nodes.size();
@@ -59,18 +60,31 @@ void setup_shells(const Model& m, SolverState& s, ElementKind kind) {
     ShellGroupParameters& p = s.shell_groups[g];
     p.hardening = materials::Hardening::of(mat, m.functions);
     p.young = mat.young, p.poisson = mat.poisson, p.density = mat.density;
-    p.shear_factor = prop.shell.ashear > 0.0 ? prop.shell.ashear : 5.0 / 6.0;
-    p.hm = prop.shell.hm > 0.0 ? prop.shell.hm : kDefaultHourglass;
+    // Ashear (default 5/6); a membrane (N = 1) has no transverse shear, as in the reference solver.
+    p.shear_factor = f.n_points == 1 ? 0.0 : prop.shell.ashear > 0.0 ? prop.shell.ashear : 5.0 / 6.0;
+    // Ishell 3: hm and hr default to 0.1 (hf to 0.01), the other formulations to 0.01.
+    const double membrane_rotation_default = f.ishell == 3 ? kDefaultElastoplasticHourglass : kDefaultHourglass;
+    p.hm = prop.shell.hm > 0.0 ? prop.shell.hm : membrane_rotation_default;
     p.hf = prop.shell.hf > 0.0 ? prop.shell.hf : kDefaultHourglass;
-    p.hr = prop.shell.hr > 0.0 ? prop.shell.hr : kDefaultHourglass;
+    p.hr = prop.shell.hr > 0.0 ? prop.shell.hr : membrane_rotation_default;
+    p.orthogonal_hourglass = f.ishell != 2;
+    p.elastoplastic_hourglass = f.ishell == 3;
     // N = 0: stress-resultant (global) plasticity, one membrane point plus the element's bending stress.
     const int np = f.n_points == 0 ? 1 : f.n_points;
     p.resultant_plasticity = f.n_points == 0;
     if (p.resultant_plasticity && st.bending_stress.empty()) st.bending_stress.assign(3 * table.size(), 0.0);
     p.physical_hourglass = kind == ElementKind::Shell4 && f.ishell == 24;
-    p.small_strain = f.ismstr == 1 || f.ismstr == 3;
-    if (p.small_strain && st.initial_shape.empty()) st.initial_shape.assign(2 * static_cast<std::size_t>(nodes_per) * n, 0.0);
+    p.fully_integrated = kind == ElementKind::Shell4 && f.ishell == 12;
+    p.small_strain = f.ismstr == 1;  // Ismstr 3 was resolved to 2 (or refused) by the reader
+    p.small_strain_switchable = f.ismstr == 2;  // eq. S-16; Ismstr 4 never switches
+    if ((p.small_strain || p.small_strain_switchable) && st.initial_shape.empty())
+      st.initial_shape.assign(2 * static_cast<std::size_t>(nodes_per) * n, 0.0);
     if (prop.shell.dn > 0.0) p.numerical_damping = prop.shell.dn;
+    else if (p.fully_integrated) p.numerical_damping = kDefaultQbatDamping;
+    // Ishell 12 keeps a section per Gauss point (docs/theory/shell4.md, eq. Q-2).
+    const int sections = p.fully_integrated ? 4 : 1;
+    if (p.fully_integrated && st.gauss_shear.empty()) st.gauss_shear.assign(8 * n, 0.0);
+    if (p.fully_integrated && p.resultant_plasticity && st.gauss_bending.empty()) st.gauss_bending.assign(12 * n, 0.0);
     p.points = np;
     const auto at = static_cast<std::size_t>(np) * 11;
     p.zeta = &s.shell_zeta[at];
@@ -81,8 +95,8 @@ void setup_shells(const Model& m, SolverState& s, ElementKind kind) {
     p.failure_strain = p.hardening.failure_strain() >= 1e20 ? 0.0 : p.hardening.failure_strain();
     p.first_point = total_points;
     st.point_offset[g] = total_points;
-    st.points[g] = np;
-    total_points += static_cast<std::size_t>(group.end - group.begin) * static_cast<std::size_t>(np);
+    st.points[g] = sections * np;
+    total_points += static_cast<std::size_t>(group.end - group.begin) * static_cast<std::size_t>(sections * np);
     for (std::int32_t e = group.begin; e < group.end; ++e) {
       st.thickness[static_cast<std::size_t>(e)] = prop.shell.thickness;
       // Lumped rotational inertia of the shell's nodes: (m/n) (t^2 + A)/12 (docs/theory/shell4.md, eq. S-8),

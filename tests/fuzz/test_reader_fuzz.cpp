@@ -657,8 +657,10 @@ std::optional<std::string> check_model(const Model& m) {
       return "accepted property " + std::to_string(prop.user_id) + " with non-finite coefficients";
   }
   for (const ResolvedFormulation& f : m.formulations) {
-    if (f.ishell != 1 && f.ishell != 24) return "accepted Ishell " + std::to_string(f.ishell);
-    if (f.ish3n != 1 && f.ish3n != 2) return "accepted Ish3n " + std::to_string(f.ish3n);
+    if (f.ishell != 1 && f.ishell != 2 && f.ishell != 3 && f.ishell != 12 && f.ishell != 24)
+      return "accepted Ishell " + std::to_string(f.ishell);
+    // 30 and 31 are refused only for properties that triangles use (resolve_definitions.cpp).
+    if (f.ish3n != 1 && f.ish3n != 2 && f.ish3n != 30 && f.ish3n != 31) return "accepted Ish3n " + std::to_string(f.ish3n);
     if (f.isolid != 1 && f.isolid != 14 && f.isolid != 24) return "accepted Isolid " + std::to_string(f.isolid);
     if (f.n_points < 0 || f.n_points > 10) return "accepted N " + std::to_string(f.n_points);
   }

@@ -210,8 +210,10 @@ TEST(EngineKeywords, RigidBodiesSwitchedOnAndOff) {
   EXPECT_EQ(run.rbody_off, (std::vector<std::int64_t>{7}));
   EXPECT_EQ(run.rbody_on, (std::vector<std::int64_t>{7, 7}));
   EXPECT_EQ(run.rbody_on_where.size(), 2u);
+  // The engine names bodies by their main node; 0 names none (the QA deck rbody_rotation has "/RBODY/ON 0").
+  EXPECT_TRUE(run_of(kRun + "/RBODY/ON\n0\n", rigid_body()).rbody_on.empty());
   const std::string e = error_of(kRun + "/RBODY/ON\n7\n99\n", rigid_body());
-  EXPECT_TRUE(contains(e, "rigid body 99 not defined")) << e;
+  EXPECT_TRUE(contains(e, "node 99, which is the main node of no /RBODY")) << e;
   EXPECT_TRUE(contains(e, "TEST_0001.rad:5")) << e;  // the line that holds the id
 }
 
@@ -246,7 +248,7 @@ TEST(EngineKeywords, MalformedCardsAreErrorsNamingTheField) {
       {kRun + "/DT/QUAD\n0.5\n", "field Eltyp"},
       {kRun + "/DT/NODA/SET\n0.5 1e-6\n", "field Keyword3"},
       {kRun + "/DT/NODA/CST/1\n0.5 1e-6\n", "field Iflag"},
-      {kRun + "/DT/SH_3N/CST\n0.5\n", "field Keyword3"},
+      {kRun + "/DT/SH_3N/FOO\n0.5\n", "field Keyword3"},
       {kRun + "/DT/BRICK/CST/1\n0.5\n", "field Iflag"},
       {kRun + "/TFILE\n0\n", "field dT_his"},
       {kRun + "/TFILE/7\n1e-4\n", "field type"},
@@ -267,8 +269,8 @@ TEST(EngineKeywords, MalformedCardsAreErrorsNamingTheField) {
       {kRun + "/MON\n", "/MON/ON or /MON/OFF"},
       {kRun + "/RFILE/30\n", "field n"},
       {kRun + "/RFILE\n-5\n", "field Ncycle"},
-      {kRun + "/RBODY/ON\n", "field RBID"},
-      {kRun + "/RBODY/OFF\n0\n", "field RBID"},
+      {kRun + "/RBODY/ON\n", "field node_ID"},
+      {kRun + "/RBODY/OFF\n-3\n", "field node_ID"},
       {kRun + "/VERS\n", "field version"},
       {kRun + "/NODE\n", "belongs to the starter"},
   };

@@ -30,9 +30,12 @@ std::vector<NodeRow> patch_nodes() {
 std::vector<ShellRow> patch_shells() {
   return {{1, 1, 2, 6, 5}, {2, 2, 3, 7, 6}, {3, 3, 4, 8, 7}, {4, 4, 1, 5, 8}, {5, 5, 6, 7, 8}};
 }
+// Ishell 12 runs with its numerical damping dn (eq. Q-8) practically off: the damping stress is proportional to each
+// element's size, so on a distorted mesh it is not a constant state and the patch cannot balance it (with the
+// default dn = 0.001 the interior forces are 3e-6 of the boundary ones). The patch tests measure the stiffness.
 std::string patch_starter(int points, int ishell) {
   return node_cards(patch_nodes()) + shell_cards(1, patch_shells()) + part_card() +
-         shell_property(kThickness, points, 0.0, ishell) + elastic_material(kRho, kYoung, kNu);
+         shell_property(kThickness, points, 0.0, ishell, ishell == 12 ? 1e-30 : 0.0) + elastic_material(kRho, kYoung, kNu);
 }
 
 // Plane-stress elasticity on engineering strains (exx, eyy, gxy).
@@ -101,10 +104,16 @@ std::array<double, 2> boundary_weight(long long corner) {
   return {0.0, 0.0};
 }
 
-// Every patch test runs for both 4-node formulations: Belytschko-Tsay (Ishell 1) and the physically stabilised
-// element (Ishell 24), whose hourglass modes must stay at rest under the linear fields of a patch.
+// Every patch test runs for the 4-node formulations that pass it: Belytschko-Tsay (Ishell 1), its elasto-plastic
+// hourglass variant (Ishell 3) and the physically stabilised element (Ishell 24), whose hourglass modes must stay
+// at rest under the linear fields of a patch, and the fully integrated Batoz shell (Ishell 12), which must
+// reproduce the constant state at each of its four Gauss points. Ishell 2 does not orthogonalise its hourglass
+// vector and fails on this distorted mesh by design (unit.Shell4Hourglass.Ishell2IsNotOrthogonalToLinearFields).
 class PatchTest : public ::testing::TestWithParam<int> {};
-INSTANTIATE_TEST_SUITE_P(Ishell, PatchTest, ::testing::Values(1, 24));
+INSTANTIATE_TEST_SUITE_P(Ishell, PatchTest, ::testing::Values(1, 3, 12, 24));
+
+// In-plane integration points (sections) of an element: four Gauss points for Ishell 12, one otherwise.
+std::size_t sections(int ishell) { return ishell == 12 ? 4 : 1; }
 
 TEST_P(PatchTest, MembraneConstantStrainOnDistortedMesh) {
   Patch patch(1, GetParam());
@@ -127,8 +136,11 @@ TEST_P(PatchTest, MembraneConstantStrainOnDistortedMesh) {
   for (long long id = 1; id <= 5; ++id) {
     const std::size_t e = shell_index(patch.model, id);
     const auto [c, s] = element_axis(patch.nodes, patch.model.elements[0].nodes_of(e));
-    const std::array<double, 3> global = to_global({patch.state.sxx[e], patch.state.syy[e], patch.state.sxy[e]}, c, s);
-    for (int i = 0; i < 3; ++i) worst_stress = std::max(worst_stress, std::abs(global[i] - sigma[i]) / scale);
+    for (std::size_t g = 0; g < sections(GetParam()); ++g) {
+      const std::size_t ip = sections(GetParam()) * e + g;
+      const std::array<double, 3> global = to_global({patch.state.sxx[ip], patch.state.syy[ip], patch.state.sxy[ip]}, c, s);
+      for (int i = 0; i < 3; ++i) worst_stress = std::max(worst_stress, std::abs(global[i] - sigma[i]) / scale);
+    }
     for (int m = 0; m < 5; ++m)
       worst_hourglass = std::max(worst_hourglass, std::abs(patch.state.hourglass[5 * e + m]) / force_scale);
   }
@@ -192,11 +204,9 @@ TEST_P(PatchTest, BendingConstantCurvatureOnDistortedMesh) {
   for (long long id = 1; id <= 5; ++id) {
     const std::size_t e = shell_index(patch.model, id);
     const auto [c, s] = element_axis(patch.nodes, patch.model.elements[0].nodes_of(e));
-    const std::size_t first = e * 5;
-    for (std::size_t k = 0; k < 5; ++k) {
-      const double z = patch.zeta[k] * kThickness;
-      const std::array<double, 3> global =
-          to_global({patch.state.sxx[first + k], patch.state.syy[first + k], patch.state.sxy[first + k]}, c, s);
+    for (std::size_t ip = sections(GetParam()) * e * 5; ip < sections(GetParam()) * (e + 1) * 5; ++ip) {
+      const double z = patch.zeta[ip % 5] * kThickness;
+      const std::array<double, 3> global = to_global({patch.state.sxx[ip], patch.state.syy[ip], patch.state.sxy[ip]}, c, s);
       for (int i = 0; i < 3; ++i) worst_stress = std::max(worst_stress, std::abs(global[i] - z * unit_stress[i]) / scale);
     }
   }

@@ -1,6 +1,6 @@
 #pragma once
-// 4-node shell, one-point Belytschko-Tsay formulation with hourglass stiffness, and the 3-node C0 triangle
-// (docs/theory/shell4.md).
+// 4-node shells: the one-point Belytschko-Tsay formulation with hourglass stiffness (Ishell 1, 24) and the fully
+// integrated Batoz shell (Ishell 12); the 3-node C0 triangle (docs/theory/shell4.md).
 #include <cstdint>
 
 #include "crumple/materials/hardening.hpp"
@@ -17,8 +17,13 @@ struct ShellGroupParameters {
   double shear_factor = 5.0 / 6.0;  // transverse shear correction
   double hm = 0.01, hf = 0.01, hr = 0.01;  // hourglass stiffness coefficients (membrane, out-of-plane, rotation)
   bool small_strain = false;               // Ismstr 1 or 3: strains and step on the initial shape (eq. S-15)
+  bool small_strain_switchable = false;    // Ismstr 2: /DT/SHELL/CST, /DT/SH_3N/CST may switch an element (S-16)
+  bool fully_integrated = false;           // Ishell 12 (QBAT): four Gauss points, assumed shear (eqs.)
   bool physical_hourglass = false;         // Ishell 24 (QEPH): stiffness from the material, eqs. S-10 to S-14
-  double numerical_damping = 0.015;        // dn: viscous fraction on the physical hourglass modes (eq. S-14)
+  bool orthogonal_hourglass = true;        // false for Ishell 2: hourglass vector not orthogonalised (eq. S-17)
+  bool elastoplastic_hourglass = false;    // Ishell 3: hourglass stresses limited by the yield stress (eq. S-18)
+  double numerical_damping = 0.015;        // dn: viscous fraction on the physical hourglass modes (eq. S-14), or
+                                           // on the membrane and bending resultants of Ishell 12 (eq. Q-8)
   int points = 1;                          // through-thickness integration points (1 when resultant_plasticity)
   bool resultant_plasticity = false;       // N = 0: plasticity on the stress resultants (RP-1 to RP-3)
   std::size_t first_point = 0;             // ShellState index of the group's first element's first point
@@ -41,12 +46,25 @@ struct GroupStepResult {
 
 // Updates the stresses of the group's elements over the step dt (the velocities of `nodes` act over dt), then
 // adds their internal forces and moments (with a minus sign) to the nodal force and moment accumulators.
+// Runs the fully integrated kernel when p.fully_integrated (Ishell 12), the one-point kernel otherwise.
 GroupStepResult shell4_forces(const ElementTable& table, const ElementGroup& group, const ShellGroupParameters& p,
                               NodalState& nodes, ShellState& state, double dt);
+// The fully integrated Batoz shell, Ishell 12 (docs/theory/shell4.md, "QBAT", eqs. ).
+GroupStepResult shell4_qbat_forces(const ElementTable& table, const ElementGroup& group, const ShellGroupParameters& p,
+                                   NodalState& nodes, ShellState& state, double dt);
 // The same for 3-node shells (C0 triangle, docs/theory/shell4.md "Triangles"): constant membrane strain and
 // curvature, no hourglass mode.
 GroupStepResult shell3_forces(const ElementTable& table, const ElementGroup& group, const ShellGroupParameters& p,
                               NodalState& nodes, ShellState& state, double dt);
+
+// Small-strain switch of Ismstr 2 (docs/theory/shell4.md, eq. S-16), for /DT/SHELL/CST (4-node) and
+// /DT/SH_3N/CST (3-node): freezes the element's current shape, seen in its current co-rotational frame, as the
+// reference shape on which its strains, forces and constant critical step are computed from the next cycle on.
+// `table` is the element's kind table (Shell4 or Shell3) and `state` the matching ShellState. Returns true when
+// the element switched; false when its group cannot switch (Ismstr 1, 3: already small strain from t = 0;
+// Ismstr 4: the switch has no effect), when it already switched or was deleted, or when its shape has no frame.
+bool shell_switch_to_small_strain(const ElementTable& table, const ShellGroupParameters& p, const NodalState& nodes,
+                                  ShellState& state, std::int32_t element);
 
 // Through-thickness rule for n = 1..10 points (docs/theory/shell4.md, eq. S-4): n equally spaced points from the
 // lower to the upper surface; the stress between points is taken linear, so the membrane weights are the

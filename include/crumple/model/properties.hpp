@@ -8,19 +8,22 @@
 
 namespace crumple {
 
-struct ShellSection {  // /PROP/TYPE1 (= /PROP/SHELL)
-  int ishell = 0;          // 4-node formulation: 1 Belytschko-Tsay with hourglass control, 24 QEPH (default)
-  int ismstr = 0;          // small-strain flag
-  int ish3n = 0;           // 3-node formulation: 1 or 2 (default 2)
-  int idrill = 0;          // drilling dof flag
+struct ShellSection {  // /PROP/TYPE1 (= /PROP/SHELL); flags and checks: docs/theory/shell4.md, "Formulation flags"
+  int ishell = 0;          // 4-node formulation: 1, 2, 3 (Q4 hourglass variants), 12 QBAT, 24 QEPH (default)
+  int ismstr = 0;          // small-strain flag: 1 from t = 0, 2 switchable (default), 4 never; 3 as 2
+  int ish3n = 0;           // 3-node formulation: 1 or 2 (default 2); 30, 31 only without triangles
+  int idrill = 0;          // drilling dof flag: 0 or 2 (none)
   double hm = 0.0, hf = 0.0, hr = 0.0;  // membrane, flexural, rotational hourglass coefficients
   double dm = 0.0, dn = 0.0;            // membrane and numerical damping
   int n_points = 0;        // integration points through the thickness (0 -> default)
-  int istrain = 0;
+  int istrain = 0;         // strain output flag (output only)
   double thickness = 0.0;  // [L], > 0
   double ashear = 0.0;     // shear factor (0 -> 5/6)
   int ithick = 0;          // thickness change flag
   int iplas = 0;           // plane-stress plasticity algorithm flag
+  SourceLocation flags_where;    // the card's lines (Ishell ... line, hm ... line, N ... line), for errors
+  SourceLocation damping_where;  // found when resolving the flags against the elements that use the property
+  SourceLocation section_where;
 };
 
 struct SolidSection {  // /PROP/TYPE14 (= /PROP/SOLID)
@@ -47,6 +50,7 @@ struct Property {
 
 struct ShellDefaults {  // /DEF_SHELL
   int ishell = 0, ismstr = 0, ithick = 0, iplas = 0, istrain = 0, ish3n = 0, idrill = 0;
+  SourceLocation where;  // its data line (none: where.line == 0)
 };
 struct SolidDefaults {  // /DEF_SOLID
   int isolid = 0, ismstr = 0, istrain = 0, iframe = 0;
@@ -57,7 +61,7 @@ struct ResolvedFormulation {
   int ishell = 24;  // 4-node shells: 1 or 24
   int ish3n = 2;    // 3-node shells: 1 or 2
   int isolid = 1;   // bricks: 1, 14 or 24
-  int ismstr = 0;   // small-strain flag after /DEF_SHELL or /DEF_SOLID
+  int ismstr = 0;   // small-strain flag after /DEF_SHELL or /DEF_SOLID (shells: 1, 2 or 4)
   int n_points = 0; // shells: through-thickness points; 0 = global (stress-resultant) plasticity
 };
 

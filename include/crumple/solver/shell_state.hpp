@@ -1,7 +1,8 @@
 #pragma once
 // State owned by the 4-node and 3-node shell kernels: stresses at the through-thickness points and the
 // element histories. Point arrays are element-major within a group: point k of element e of group g is at
-// point_offset[g] + (e - group.begin) * points[g] + k.
+// point_offset[g] + (e - group.begin) * points[g] + k. For the fully integrated Ishell 12 an element has
+// 4 N points, Gauss point by Gauss point (point j of Gauss point i is k = i N + j).
 #include <cstdint>
 #include <limits>
 #include <vector>
@@ -27,7 +28,10 @@ struct ShellState {
   std::vector<double> internal_energy;  // [M L^2 T^-2]
   std::vector<double> critical_dt;      // critical step of the last cycle [T] (nodal time step, mass scaling)
   std::vector<double> initial_length;   // characteristic length of the first cycle (Ismstr 1, 3) [L]
-  std::vector<double> initial_shape;    // local x then y of the nodes at the first cycle, Ismstr 1, 3 only [L]
+  std::vector<double> initial_shape;    // local x then y of the nodes of the reference shape (small strain) [L]
+  std::vector<std::uint8_t> small_strain;  // 1 once an Ismstr 2 element runs on its frozen shape (eq. S-16)
+  std::vector<double> gauss_shear;      // Ishell 12: Qx, Qy at each of the 4 Gauss points; empty if none [M T^-2]
+  std::vector<double> gauss_bending;    // Ishell 12, N = 0: 6 M / t^2 (xx, yy, xy) at each Gauss point [stress]
   std::vector<double> mass;             // element mass [M] (nodal stiffness estimate of the nodal time step)
   std::vector<double> hourglass_energy; // [M L^2 T^-2]
   std::vector<std::uint8_t> deleted;    // 1 once the element has failed
@@ -38,6 +42,7 @@ struct ShellState {
     thickness.assign(n, initial_thickness);
     hourglass.assign(5 * n, 0.0);
     deleted.assign(n, 0);
+    small_strain.assign(n, 0);
   }
   // Sizes the per-point arrays for `total` through-thickness points, every value zero (the kept yield part NaN).
   void resize_points(std::size_t total) {

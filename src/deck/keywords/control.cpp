@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "../context.hpp"
+#include "shell_flags.hpp"
 
 namespace crumple::deck {
 namespace {
@@ -165,17 +166,37 @@ void read_shfra(CardReader& reader, DeckContext& context) {
                    "the shell frame orients only orthotropic materials (none in Crumple) and element-frame output");
 }
 
+// /DEF_SHELL (docs/cards/starter-model.md §3): only the first card counts, as in the reference solver.
 void read_def_shell(CardReader& reader, DeckContext& context) {
   ShellDefaults& d = context.model.shell_defaults;
   if (reader.at_end()) return;
   const Line line = reader.next("Ishell, Ismstr, Ithick, Iplas, Istrain, Ish3n, Idrill");
+  if (d.where.line != 0) {
+    context.warn(line.where(), "/DEF_SHELL",
+                 fmt::format("ignored: only the first /DEF_SHELL counts ({}:{})", d.where.file, d.where.line));
+    while (reader.has_data()) reader.next("ignored /DEF_SHELL line");
+    return;
+  }
+  using namespace shell_flags;
+  d.where = line.where();
   d.ishell = static_cast<int>(line.integer(1, 10, "Ishell"));
   d.ismstr = static_cast<int>(line.integer(11, 10, "Ismstr"));
   d.ithick = static_cast<int>(line.integer(21, 10, "Ithick"));
   d.iplas = static_cast<int>(line.integer(31, 10, "Iplas"));
   d.istrain = static_cast<int>(line.integer(41, 10, "Istrain"));
-  d.ish3n = static_cast<int>(line.integer(71, 10, "Ish3n"));
+  d.ish3n = static_cast<int>(line.integer(71, 10, "I_SH3N"));
   d.idrill = static_cast<int>(line.integer(81, 10, "Idrill"));
+  check_ishell(line, 1, d.ishell);
+  check_ismstr(line, 11, d.ismstr);
+  check_ithick(line, 21, d.ithick);
+  check_iplas(line, 31, d.iplas);
+  check_istrain(line, 41, d.istrain);
+  require_blank_or_zero(line, 51, "Ioffset", "a shell offset");
+  if (!one_of(d.ish3n, {0, 1, 2, 30, 31})) line.fail(71, 10, "I_SH3N", "a 3-node shell formulation: 0, 1, 2, 30 or 31");
+  check_idrill(line, 81, d.idrill);
+  require_blank_or_zero(line, 91, "Islice", "drape thinning");
+  if (d.istrain == 1)
+    context.warn(line.where(), "/DEF_SHELL", "Istrain 1 (strain output) has no effect: Crumple writes no strain output");
   reader.finish();
 }
 

@@ -1,8 +1,13 @@
 // /PROP/TYPE1 (SHELL) and /PROP/TYPE14 (SOLID). Layouts: docs/cards/starter-model.md.
+#include <tuple>
+
 #include "../context.hpp"
+#include "shell_flags.hpp"
 
 namespace crumple::deck {
 namespace {
+
+using namespace shell_flags;
 
 Property begin_property(CardReader& reader, PropertyKind kind) {
   Property p;
@@ -14,16 +19,48 @@ Property begin_property(CardReader& reader, PropertyKind kind) {
   return p;
 }
 
-void read_shell_property(CardReader& reader, DeckContext& context) {
-  Property p = begin_property(reader, PropertyKind::Shell);
-  ShellSection& s = p.shell;
-  const Line flags = reader.next("Ishell, Ismstr, Ish3n, Idrill");
+void read_shell_flags(const Line& flags, ShellSection& s) {
   s.ishell = static_cast<int>(flags.integer(1, 10, "Ishell"));
   s.ismstr = static_cast<int>(flags.integer(11, 10, "Ismstr"));
   s.ish3n = static_cast<int>(flags.integer(21, 10, "Ish3n"));
   s.idrill = static_cast<int>(flags.integer(31, 10, "Idrill"));
-  flags.real(61, 20, "P_thick_fail", dim::none);
+  check_ishell(flags, 1, s.ishell);
+  check_ismstr(flags, 11, s.ismstr);
+  if (!one_of(s.ish3n, {0, 1, 2, 30, 31}))
+    flags.fail(21, 10, "Ish3n", "a 3-node shell formulation: 0 (/DEF_SHELL), 1, 2, 30 or 31");
+  check_idrill(flags, 31, s.idrill);
+  require_blank_or_zero(flags, 41, "Ipinch", "the pinching degree of freedom");
+  // P_thick_fail 0 means "every point": an element goes when all its points failed (resolve_definitions.cpp
+  // refuses the cases where Crumple, which deletes at the first failed point, would differ).
+  if (flags.real(61, 20, "P_thick_fail", dim::none) != 0.0)
+    flags.fail(61, 20, "P_thick_fail", "0 (an element is deleted when its points fail; another fraction of failed "
+                                       "points is not supported by Crumple)");
+}
+
+void read_shell_section(const Line& section, ShellSection& s) {
+  s.n_points = static_cast<int>(section.integer(1, 10, "N"));
+  s.istrain = static_cast<int>(section.integer(11, 10, "Istrain"));  // strain output only
+  check_istrain(section, 11, s.istrain);
+  s.thickness = section.real(21, 20, "Thick", dim::length);
+  s.ashear = section.real(41, 20, "Ashear", dim::none);
+  s.ithick = static_cast<int>(section.integer(71, 10, "Ithick"));
+  s.iplas = static_cast<int>(section.integer(81, 10, "Iplas"));
+  if (s.n_points < 0 || s.n_points > 10) section.fail(1, 10, "N", "0 (default) to 10 integration points");
+  if (s.thickness <= 0.0) section.fail(21, 20, "Thick", "a positive shell thickness");
+  if (s.ashear < 0.0) section.fail(41, 20, "Ashear", "a non-negative shear factor");
+  check_ithick(section, 71, s.ithick);
+  check_iplas(section, 81, s.iplas);
+  require_blank_or_zero(section, 91, "Ipos", "a shell offset");
+}
+
+void read_shell_property(CardReader& reader, DeckContext& context) {
+  Property p = begin_property(reader, PropertyKind::Shell);
+  ShellSection& s = p.shell;
+  const Line flags = reader.next("Ishell, Ismstr, Ish3n, Idrill, P_thick_fail");
+  s.flags_where = flags.where();
+  read_shell_flags(flags, s);
   const Line hourglass = reader.next("hm, hf, hr, dm, dn");
+  s.damping_where = hourglass.where();
   s.hm = hourglass.real(1, 20, "hm", dim::none);
   s.hf = hourglass.real(21, 20, "hf", dim::none);
   s.hr = hourglass.real(41, 20, "hr", dim::none);
@@ -34,15 +71,11 @@ void read_shell_property(CardReader& reader, DeckContext& context) {
                                      std::tuple{s.dn, 81, "dn"}})
     if (value < 0.0) hourglass.fail(column, 20, name, "a non-negative coefficient");
   const Line section = reader.next("N, Istrain, Thick, Ashear, Ithick, Iplas");
-  s.n_points = static_cast<int>(section.integer(1, 10, "N"));
-  s.istrain = static_cast<int>(section.integer(11, 10, "Istrain"));
-  s.thickness = section.real(21, 20, "Thick", dim::length);
-  s.ashear = section.real(41, 20, "Ashear", dim::none);
-  s.ithick = static_cast<int>(section.integer(61, 10, "Ithick"));
-  s.iplas = static_cast<int>(section.integer(71, 10, "Iplas"));
-  if (s.n_points < 0 || s.n_points > 10) section.fail(1, 10, "N", "0 (default) to 10 integration points");
-  if (s.thickness <= 0.0) section.fail(21, 20, "Thick", "a positive shell thickness");
-  if (s.ashear < 0.0) section.fail(41, 20, "Ashear", "a non-negative shear factor");
+  s.section_where = section.where();
+  read_shell_section(section, s);
+  if (s.istrain == 1)
+    context.warn(section.where(), reader.card().keyword,
+                 "Istrain 1 (strain output) has no effect: Crumple writes no strain output");
   reader.finish();
   context.model.properties.push_back(std::move(p));
 }

@@ -1,0 +1,162 @@
+#pragma once
+// Pieces shared by the shell kernels (docs/theory/shell4.md): the small 3-vector of the element frames and the
+// stress update of one section (the through-thickness points of one in-plane integration point, eq. S-4, or the
+// stress resultants of N = 0, eqs. RP-1 to RP-3). Plain inline functions, used inside the element loops.
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+
+#include "crumple/elements/shell4.hpp"
+#include "crumple/materials/plane_stress.hpp"
+#include "crumple/materials/resultant_plasticity.hpp"
+
+namespace crumple::shell_section {
+
+struct Vec {
+  double x, y, z;
+};
+inline Vec operator-(Vec a, Vec b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+inline Vec operator+(Vec a, Vec b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+inline double dot(Vec a, Vec b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+inline Vec cross(Vec a, Vec b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
+inline Vec scaled(Vec a, double s) { return {a.x * s, a.y * s, a.z * s}; }
+inline Vec unit(Vec a) { return scaled(a, 1.0 / std::sqrt(dot(a, a))); }
+
+// Co-rotational frame of an element (eq. S-1) from its current node positions. Quadrilateral: normal from the
+// diagonals, e1 along the mean of the sides 1-2 and 4-3. Triangle: normal from two sides, e1 along the side 1-2.
+// Returns false (frame unset) when the normal vanishes.
+struct Frame {
+  Vec e1, e2, e3, centre;
+};
+template <int NN>
+inline bool corotational_frame(const Vec (&x)[NN], Frame& f) {
+  Vec normal, side;
+  if constexpr (NN == 4) {
+    normal = cross(x[2] - x[0], x[3] - x[1]);
+    side = (x[1] - x[0]) + (x[2] - x[3]);
+  } else {
+    normal = cross(x[1] - x[0], x[2] - x[0]);
+    side = x[1] - x[0];
+  }
+  const double normal_length = std::sqrt(dot(normal, normal));
+  if (!(normal_length > 0.0)) return false;
+  f.e3 = scaled(normal, 1.0 / normal_length);
+  f.e1 = unit(side - scaled(f.e3, dot(side, f.e3)));
+  f.e2 = cross(f.e3, f.e1);
+  constexpr double mean = 1.0 / NN;
+  f.centre = Vec{0.0, 0.0, 0.0};
+  for (int a = 0; a < NN; ++a) f.centre = f.centre + scaled(x[a], mean);
+  return true;
+}
+
+// Area of the element's projection on its frame plane from the local coordinates (eqs. S-2, S-9).
+template <int NN>
+inline double local_area(const double (&lx)[NN], const double (&ly)[NN]) {
+  if constexpr (NN == 4) return 0.5 * ((lx[2] - lx[0]) * (ly[3] - ly[1]) - (lx[3] - lx[1]) * (ly[2] - ly[0]));
+  return 0.5 * ((lx[1] - lx[0]) * (ly[2] - ly[0]) - (lx[2] - lx[0]) * (ly[1] - ly[0]));
+}
+
+// Characteristic length of the critical step (eq. T-1): quadrilateral area over the longest side, triangle twice
+// the area over it [L].
+template <int NN>
+inline double characteristic_length(const double (&lx)[NN], const double (&ly)[NN], double area) {
+  double longest = 0.0;
+  for (int a = 0; a < NN; ++a) {
+    const double sx = lx[(a + 1) % NN] - lx[a], sy = ly[(a + 1) % NN] - ly[a];
+    longest = std::max(longest, sx * sx + sy * sy);
+  }
+  return (NN == 4 ? area : 2.0 * area) / std::sqrt(longest);
+}
+
+// Generalised strain rates of a section in its frame: membrane (dxx, dyy, gxy = 2 dxy) [1/T] and curvature
+// (kxx, kyy, kxy = 2 kxy) [1/(L T)] (eq. S-3).
+struct StrainRates {
+  double dxx, dyy, gxy, kxx, kyy, kxy;
+};
+
+// Resultants per unit length before and after the update: N [M T^-2], M [M L T^-2] (xx, yy, xy).
+struct Update {
+  double n[3] = {0.0, 0.0, 0.0}, m[3] = {0.0, 0.0, 0.0};
+  double old_n[3] = {0.0, 0.0, 0.0}, old_m[3] = {0.0, 0.0, 0.0};
+  double thickness_strain = 0.0;  // membrane-weighted through-thickness strain increment
+  double tangent_ratio = 1.0;     // through-thickness mean of the points' tangent over E (eq. S-12)
+  bool failed = false;            // a point reached the failure strain
+};
+
+// Updates the section's stresses over dt (dt = 0: no update) and returns its resultants. `first` is the ShellState
+// index of its first point; `bending` its three outer-fibre bending stresses 6 M / t^2 when N = 0 (else unused).
+inline Update update(const ShellGroupParameters& p, const materials::PlaneStressElastic& elastic, ShellState& state,
+                     std::size_t first, double* bending, double t, const StrainRates& s, double dt) {
+  Update u;
+  const double E = p.young;
+  if (p.resultant_plasticity) {
+    // N = 0: one set of resultants, carried as the membrane stress N / t at the point and the outer-fibre
+    // bending stress 6 M / t^2 (docs/theory/materials.md, RP-1 to RP-3).
+    double* sm[3] = {&state.sxx[first], &state.syy[first], &state.sxy[first]};
+    double* sb = bending;
+    double membrane[3] = {*sm[0], *sm[1], *sm[2]};
+    const double bending_lever = t * t / 6.0;
+    for (int c = 0; c < 3; ++c) u.old_n[c] = t * membrane[c], u.old_m[c] = bending_lever * sb[c];
+    if (dt > 0.0) {
+      const double h = 0.5 * t;
+      const materials::ResultantIncrement d{{s.dxx * dt, s.dyy * dt, s.gxy * dt},
+                                            {h * s.kxx * dt, h * s.kyy * dt, h * s.kxy * dt}};
+      // Strain rate of the more strained surface fibre.
+      auto fibre_rate = [&](double sign) {
+        const double ex = d.membrane[0] + sign * d.bending[0], ey = d.membrane[1] + sign * d.bending[1];
+        const double g = d.membrane[2] + sign * d.bending[2];
+        return std::sqrt(2.0 / 3.0 * (ex * ex + ey * ey + (ex + ey) * (ex + ey) + 0.5 * g * g)) / dt;
+      };
+      const double rate = p.hardening.filtered_rate(std::max(fibre_rate(1.0), fibre_rate(-1.0)), state.eps_rate[first], dt);
+      state.eps_rate[first] = rate;
+      const auto r = materials::resultant_update(elastic, p.hardening, d, rate, state.eps_p[first], membrane, sb);
+      state.eps_p[first] += r.plastic_strain_increment;
+      if (r.plastic_strain_increment > 0.0 && p.physical_hourglass) {
+        const double slope = std::max(p.hardening.slope(state.eps_p[first], rate), 0.0);
+        u.tangent_ratio = slope / (E + slope);  // eq. S-12
+      }
+      u.thickness_strain = r.thickness_strain;
+      if (p.failure_strain > 0.0 && state.eps_p[first] >= p.failure_strain) u.failed = true;
+      for (int c = 0; c < 3; ++c) *sm[c] = membrane[c];
+    }
+    u.n[0] = t * membrane[0], u.n[1] = t * membrane[1], u.n[2] = t * membrane[2];
+    u.m[0] = bending_lever * sb[0], u.m[1] = bending_lever * sb[1], u.m[2] = bending_lever * sb[2];
+    return u;
+  }
+  for (int k = 0; k < p.points; ++k) {
+    const std::size_t ip = first + static_cast<std::size_t>(k);
+    const double z = p.zeta[k] * t;
+    const double wn = p.membrane_weight[k] * t, wm = p.bending_weight[k] * t * t;
+    double sxx = state.sxx[ip], syy = state.syy[ip], sxy = state.sxy[ip];
+    u.old_n[0] += wn * sxx, u.old_n[1] += wn * syy, u.old_n[2] += wn * sxy;
+    u.old_m[0] += wm * sxx, u.old_m[1] += wm * syy, u.old_m[2] += wm * sxy;
+    if (dt > 0.0) {
+      const double ex = (s.dxx + z * s.kxx) * dt, ey = (s.dyy + z * s.kyy) * dt, g = (s.gxy + z * s.kxy) * dt;
+      const double increment_rate = std::sqrt(2.0 / 3.0 * (ex * ex + ey * ey + (ex + ey) * (ex + ey) + 0.5 * g * g)) / dt;
+      const double rate = p.hardening.filtered_rate(increment_rate, state.eps_rate[ip], dt);  // eq. RF
+      state.eps_rate[ip] = rate;
+      const auto r = materials::plane_stress_update(elastic, p.hardening, ex, ey, g, rate, state.eps_p[ip], sxx, syy,
+                                                    sxy, &state.static_yield[ip]);
+      state.eps_p[ip] += r.plastic_strain_increment;
+      if (r.plastic_strain_increment > 0.0 && p.physical_hourglass) {
+        // Elastic-plastic tangent of the point, E H' / (E + H'), for the hourglass modes (eq. S-12).
+        const double slope = std::max(p.hardening.slope(state.eps_p[ip], rate), 0.0);
+        u.tangent_ratio -= p.membrane_weight[k] * E / (E + slope);
+      }
+      u.thickness_strain += p.membrane_weight[k] * r.thickness_strain;
+      if (p.failure_strain > 0.0 && state.eps_p[ip] >= p.failure_strain) u.failed = true;
+      state.sxx[ip] = sxx, state.syy[ip] = syy, state.sxy[ip] = sxy;
+    }
+    u.n[0] += wn * sxx, u.n[1] += wn * syy, u.n[2] += wn * sxy;
+    u.m[0] += wm * sxx, u.m[1] += wm * syy, u.m[2] += wm * sxy;
+  }
+  return u;
+}
+
+// Work of the section over the step, trapezoidal in the resultants (eq. S-6), per unit area [M T^-2].
+inline double work(const Update& u, const StrainRates& s, double dt) {
+  return 0.5 * dt * ((u.old_n[0] + u.n[0]) * s.dxx + (u.old_n[1] + u.n[1]) * s.dyy + (u.old_n[2] + u.n[2]) * s.gxy +
+                     (u.old_m[0] + u.m[0]) * s.kxx + (u.old_m[1] + u.m[1]) * s.kyy + (u.old_m[2] + u.m[2]) * s.kxy);
+}
+
+}  // namespace crumple::shell_section
