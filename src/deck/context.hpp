@@ -28,6 +28,7 @@ struct DeckContext {
   std::vector<SourceLocation> node_where;  // location of each /NODE line, parallel to model.nodes
   bool begin_seen = false;
   bool run_seen = false;
+  int engine_deck = 1;  // the engine deck being read: 1 for NAME_0001.rad, k for NAME_000k.rad
 
   void warn(const SourceLocation& where, std::string_view keyword, std::string message) {
     report.warnings.push_back({where, std::string(keyword), std::move(message)});

@@ -159,6 +159,7 @@ void read_continued_runs(const std::filesystem::path& starter, Deck& deck, DeckC
     deck.report.files.insert(deck.report.files.end(), text.files.begin(), text.files.end());
     deck.model.run = RunControl{};
     context.run_seen = false;
+    context.engine_deck = k;
     for (const Card& card : split_cards(text, 0)) {
       if (is_card(card, {"END", "ENGINE"})) continue;
       dispatch(card, text, context, record);
@@ -169,6 +170,7 @@ void read_continued_runs(const std::filesystem::path& starter, Deck& deck, DeckC
     deck.continued_runs.push_back(std::move(deck.model.run));
   }
   deck.model.run = first;
+  context.engine_deck = 1;
 }
 
 }  // namespace

@@ -111,16 +111,19 @@ void read_run(CardReader& reader, DeckContext& context) {
     reader.fail("Runname", "/RUN/Runname/run_number with a run name", in_quotes(card.keyword));
   const auto number = path_integer(reader, 2, "run_number");
   if (!number) reader.fail("run_number", "/RUN/Runname/1 (the run number)", "none");
-  // Runs 2, 3... and the restart letter continue from a restart file, which Crumple does not read.
-  if (*number != 1)
-    reader.fail("run_number", "1 (restart runs are not supported by Crumple)", fmt::format("{}", *number));
+  // Run k is the engine deck NAME_000k.rad: a continued run carries on from the run before (the restart letter
+  // would start from a restart file, which Crumple does not read).
+  if (*number != context.engine_deck)
+    reader.fail("run_number", fmt::format("{} (the number of this engine deck, NAME_{:04d}.rad)", context.engine_deck,
+                                          context.engine_deck),
+                fmt::format("{}", *number));
   if (card.path.size() > 3)
     reader.fail("restart letter", "nothing (restart files are not read)", in_quotes(card.path[3]));
   const Line line = required_line(reader, "Tstop");
   at_most(line, 1, "Tstop");
   run.end_time = checked_real(line, 0, "Tstop", std::nullopt, positive, "a positive end time");
   reader.finish();
-  run.run_number = 1;
+  run.run_number = context.engine_deck;
   run.present = true;
   run.where = card.where;
 }
