@@ -25,7 +25,7 @@ void shell_formulation(Resolver& r, const Property& p, ResolvedFormulation& f) {
   const auto pick = [](int property_value, int global_value, int builtin) {
     return property_value != 0 ? property_value : global_value != 0 ? global_value : builtin;
   };
-  f.ishell = pick(p.shell.ishell, ds.ishell, 24);
+  f.ishell = pick(p.shell.ishell, ds.ishell, 1);  // the manual: 1 without /IMPLICIT (the QA listings print 1)
   f.ish3n = pick(p.shell.ish3n, ds.ish3n, 2);
   f.ismstr = pick(p.shell.ismstr, ds.ismstr, 2);
   f.n_points = p.shell.n_points;
