@@ -63,13 +63,38 @@ long long delete_below_minimum(const ElementGroup& group, SolverState& s, RunEve
   return count;
 }
 
-// Per-type step control of one group's result: stop the run, or delete the elements below the minimum (their
-// count is returned: deleted elements leave the contact interfaces like failed ones).
-long long control_group_step(const Model& m, const ElementGroup& group, SolverState& s, RunEvents& events,
-                             double type_scale, GroupStepResult& r) {
+// /DT/<type>/CST: the group's elements whose scaled step is below the minimum switch to the small-strain
+// formulation (Ismstr 2), which freezes their shape and with it their step (docs/theory/time-step.md, "Element
+// minimum"); elements that cannot switch (Ismstr 1, 3, 4) go on as they are.
+void switch_below_minimum(const Model& m, std::size_t g, SolverState& s, RunEvents& events, double type_scale,
+                          double minimum) {
+  const ElementGroup& group = m.element_groups[g];
+  const ElementTable& table = m.elements[static_cast<int>(group.kind)];
+  ShellState& shells = group.kind == ElementKind::Shell4 ? s.shells : s.shells3;
+  for (std::int32_t e = group.begin; e < group.end; ++e) {
+    const auto ue = static_cast<std::size_t>(e);
+    if (shells.deleted[ue] || !(type_scale * shells.critical_dt[ue] < minimum)) continue;
+    if (!shell_switch_to_small_strain(table, s.shell_groups[g], s.nodes, shells, e)) continue;
+    ++events.switched_to_small_strain;
+    RunEvent event{RunEvent::Kind::ElementSwitchedToSmallStrain, s.cycle, s.time, group.kind, e};
+    event.value = type_scale * shells.critical_dt[ue];
+    events.pending.push_back(event);
+  }
+}
+
+// Per-type step control of one group's result: stop the run, switch the elements below the minimum to small
+// strain, or delete them (their count is returned: deleted elements leave the contact interfaces like failed
+// ones).
+long long control_group_step(const Model& m, std::size_t g, SolverState& s, RunEvents& events, double type_scale,
+                             GroupStepResult& r) {
+  const ElementGroup& group = m.element_groups[g];
   const TimeStepControl& type = type_control(m.run, group.kind);
   if (r.controlling < 0 || !(type.minimum > 0.0) || !(type_scale * r.min_dt < type.minimum) || events.stop.stopped())
     return 0;
+  if (type.action == TimeStepAction::SmallStrain && group.kind != ElementKind::Brick8) {
+    switch_below_minimum(m, g, s, events, type_scale, type.minimum);
+    return 0;
+  }
   const bool stop = type.action == TimeStepAction::Stop ||
                     (type.action == TimeStepAction::Default && group.kind == ElementKind::Brick8);
   if (!stop) return delete_below_minimum(group, s, events, type_scale, type.minimum, r);
@@ -154,7 +179,7 @@ StepBound compute_element_forces(const Model& m, SolverState& s, RunEvents& even
     if (r.inverted >= 0) events.stop = element_stop(StopReason::Kind::InvertedElement, group.kind, r.inverted, s);
     const TimeStepControl& type = type_control(m.run, group.kind);
     const double type_scale = type.given && type.scale > 0.0 ? type.scale : scale;
-    if (control_group_step(m, group, s, events, type_scale, r) > 0) elements_deleted = true;
+    if (control_group_step(m, g, s, events, type_scale, r) > 0) elements_deleted = true;
     // A group whose elements are all deleted or inverted has no controlling element (controlling = -1).
     if (r.controlling >= 0 && type_scale * r.min_dt < bound.dt)
       bound = {type_scale * r.min_dt, StepControl::element(group.kind, r.controlling)};
