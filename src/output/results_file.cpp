@@ -1,6 +1,7 @@
 // NAME.h5 and NAME.xdmf: mesh, field frames and time histories (layout: docs/output-format.md).
 // Written with the HDF5 C API through a serial file driver: only the process that owns the file calls it.
 #include "crumple/output/results_file.hpp"
+#include "crumple/solver/element_status.hpp"
 
 #include <fmt/format.h>
 #include <hdf5.h>
@@ -477,7 +478,10 @@ struct ResultsFile::Impl {
     dataset(g.get(), "stress", stress.data(), {n, 3});
     dataset(g.get(), "plastic_strain", eps.data(), {n});
     dataset(g.get(), "thickness", s.thickness.data(), {n});
-    dataset(g.get(), "deleted", s.deleted.data(), {n});
+    // 1 for a deleted element; an element carried by a rigid body is there (it only is not computed).
+    std::vector<std::uint8_t> deleted(n);
+    for (std::size_t e = 0; e < n; ++e) deleted[e] = s.deleted[e] == kElementDeleted;
+    dataset(g.get(), "deleted", deleted.data(), {n});
   }
 
   void write_frame(double time, long long cycle, const Model& model, const SolverState& state) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "crumple/solver/element_status.hpp"
 #include "solver/internal.hpp"
 
 namespace crumple::solver {
@@ -91,6 +92,7 @@ void form_body(const RigidBody& rb, const Model& m, SolverState& s, std::int32_t
     s.rigid_owner[k] = index;
   }
   b.mass = mass;
+  s.rigid_owner[main] = index;
   // A body without mass (inertia from the card only) keeps its main node where it is and the velocity it has.
   if (mass > 0.0) {
     for (auto& c : cog) c /= mass;
@@ -173,6 +175,26 @@ double drive_body(const Model& m, const SolverState& s, RigidBodyState& b, const
   return work;
 }
 
+// Elements whose every node belongs to one active rigid body are carried by it and not computed (the reference
+// manual: "all the elements belonging to the rigid body are deactivated"); the others are computed again, e.g.
+// after /RBODY/OFF. Deleted elements stay deleted.
+void mark_elements_in_rigid_bodies(const Model& m, SolverState& s) {
+  for (const ElementTable& table : m.elements) {
+    std::vector<std::uint8_t>& status = table.kind == ElementKind::Brick8   ? s.bricks.deleted
+                                        : table.kind == ElementKind::Shell4 ? s.shells.deleted
+                                                                            : s.shells3.deleted;
+    const int n = nodes_per_element(table.kind);
+    for (std::size_t e = 0; e < table.size(); ++e) {
+      if (status[e] == kElementDeleted) continue;
+      const std::int32_t* nodes = table.nodes_of(e);
+      const std::int32_t owner = s.rigid_owner[static_cast<std::size_t>(nodes[0])];
+      bool inside = owner >= 0 && s.bodies[static_cast<std::size_t>(owner)].active;
+      for (int a = 1; a < n && inside; ++a) inside = s.rigid_owner[static_cast<std::size_t>(nodes[a])] == owner;
+      status[e] = inside ? kElementInRigidBody : kElementActive;
+    }
+  }
+}
+
 }  // namespace
 
 void setup_rigid_bodies(const Model& m, SolverState& s) {
@@ -191,6 +213,7 @@ void setup_rigid_bodies(const Model& m, SolverState& s) {
     }
     s.bodies.push_back(std::move(b));
   }
+  if (!s.bodies.empty()) mark_elements_in_rigid_bodies(m, s);
 }
 
 void switch_rigid_bodies(const Model& m, SolverState& s) {
@@ -198,11 +221,13 @@ void switch_rigid_bodies(const Model& m, SolverState& s) {
     RigidBodyState& b = s.bodies[static_cast<std::size_t>(body)];
     b.active = false;
     for (std::int32_t node : b.secondary) s.rigid_owner[static_cast<std::size_t>(node)] = -1;
+    s.rigid_owner[static_cast<std::size_t>(b.main_node)] = -1;
   }
   for (std::int32_t body : m.run.bodies_on) {
     RigidBodyState& b = s.bodies[static_cast<std::size_t>(body)];
     if (!b.active) form_body(m.rigid_bodies[static_cast<std::size_t>(body)], m, s, body, b);
   }
+  if (!m.run.bodies_on.empty() || !m.run.bodies_off.empty()) mark_elements_in_rigid_bodies(m, s);
 }
 
 void gather_rigid_body_forces(SolverState& s) {
