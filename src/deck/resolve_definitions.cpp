@@ -16,6 +16,20 @@ std::string keyword_of(const Property& p) {
   return fmt::format("/PROP/{}/{}", p.kind == PropertyKind::Shell ? "SHELL" : "SOLID", p.user_id);
 }
 
+// Icpre of a brick property (docs/theory/brick8.md, "Constant pressure"): 1 constant pressure, 3 none. Blank or
+// 0 takes the formulation's default (3 for Isolid 14 and 24); the one-point viscous formulations have no pressure
+// option and Radioss sets it to 0 there.
+int solid_icpre(Resolver& r, const Property& p, int isolid, int icpre) {
+  if (isolid == 1) {
+    if (icpre != 0)
+      r.context.warn(p.where, keyword_of(p),
+                     fmt::format("Icpre {} is used only with Isolid 14, 17, 18 and 24; ignored for Isolid {}", icpre,
+                                 isolid));
+    return 0;
+  }
+  return icpre == 0 ? 3 : icpre;  // the readers accept 0, 1 and 3 only
+}
+
 // Property flag, else /DEF_SHELL or /DEF_SOLID, else the built-in default (Radioss defaults).
 ResolvedFormulation formulation_of(Resolver& r, const Property& p) {
   const ShellDefaults& ds = r.model.shell_defaults;
@@ -42,6 +56,7 @@ ResolvedFormulation formulation_of(Resolver& r, const Property& p) {
       r.error(p.where, keyword_of(p), "Isolid",
               "a supported brick formulation: 1 (one point), 14 (fully integrated) or 24 (physically stabilised)",
               std::to_string(f.isolid));
+    f.icpre = solid_icpre(r, p, f.isolid, pick(p.solid.icpre, dv.icpre, 0));
   }
   return f;
 }

@@ -192,10 +192,12 @@ Viscosity bulk_viscosity(const BrickGroupParameters& p, double rho, double c, do
 // Assumed-strain stabilisation of Isolid 24 (eq. B-9): increments dQ of the 12 generalized hourglass stresses
 // (local frame, [direction][mode]) for the increments dq of the hourglass rates times dt, in a parallelepiped of
 // half-widths a[3] and volume V. Modes 0, 1, 2 are the products s t, r t, r s (mode k lacks coordinate k); mode 3
-// is r s t.
-void stabilisation_increment(const double a[3], double volume, double young, double poisson, double shear,
-                             const double dq[3][4], double dQ[3][4]) {
-  const double plate = young / (1.0 - poisson * poisson);
+// is r s t. `bulk` is the modulus that the hourglass strains' volume change meets: the material's K, or 0 with a
+// constant pressure (Icpre 1, eq. B-9a).
+void stabilisation_increment(const double a[3], double volume, double bulk, double shear, const double dq[3][4],
+                             double dQ[3][4]) {
+  const double normal = bulk + 4.0 / 3.0 * shear;  // d sigma_nn / d e_nn with the other normal strains held
+  const double cross = bulk - 2.0 / 3.0 * shear;   // d sigma_nn / d e_pp
   for (int i = 0; i < 3; ++i)
     for (int k = 0; k < 4; ++k) dQ[i][k] = 0.0;
   for (int m = 0; m < 3; ++m) {
@@ -203,21 +205,21 @@ void stabilisation_increment(const double a[3], double volume, double young, dou
     // Strain field linear in the natural coordinate of axis m: mode q (= coordinates n, m) along n stretches n,
     // mode n (= coordinates q, m) along q stretches q, and the two cross terms shear the n-q plane. The shears
     // of the m direction (d v_m / d x_n ... linear in that same coordinate) are left out: they are the parasitic
-    // shears of bending. Plane stress normal to m keeps the bending stiffness free of volumetric locking.
+    // shears of bending. The stretch along m is zero: that field has no d/dx_m.
     const double hn = 1.0 / (8.0 * a[n]), hq = 1.0 / (8.0 * a[q]);
     const double enn = dq[n][q] * hn, eqq = dq[q][n] * hq;
     const double gnq = dq[n][n] * hq + dq[q][q] * hn;
     const double w = volume / 3.0;  // integral of the coordinate squared
-    const double snn = plate * (enn + poisson * eqq), sqq = plate * (eqq + poisson * enn), tnq = shear * gnq;
+    const double snn = normal * enn + cross * eqq, sqq = cross * enn + normal * eqq, tnq = shear * gnq;
     dQ[n][q] += w * snn * hn;
     dQ[q][n] += w * sqq * hq;
     dQ[n][n] += w * tnq * hq;
     dQ[q][q] += w * tnq * hn;
-    // Mode 3 (r s t): gradient along axis m times the product of the two other coordinates; uniaxial stress for
-    // the stretch, shear modulus for the two shears.
+    // Mode 3 (r s t): gradient along axis m times the product of the two other coordinates, one stretch and two
+    // shears.
     const double hm = 1.0 / (8.0 * a[m]);
     const double w3 = volume / 9.0;
-    dQ[m][3] += w3 * young * dq[m][3] * hm * hm;
+    dQ[m][3] += w3 * normal * dq[m][3] * hm * hm;
     dQ[n][3] += w3 * shear * dq[n][3] * hm * hm;
     dQ[q][3] += w3 * shear * dq[q][3] * hm * hm;
   }
@@ -376,7 +378,7 @@ GroupStepResult brick8_one_point_forces(const ElementTable& table, const Element
       double dq[3][4], dQ[3][4];
       for (int i = 0; i < 3; ++i)
         for (int m = 0; m < 4; ++m) dq[i][m] = (rot[0][i] * q[0][m] + rot[1][i] * q[1][m] + rot[2][i] * q[2][m]) * dt;
-      stabilisation_increment(half, volume, p.young, p.poisson, G, dq, dQ);  // eq. B-9
+      stabilisation_increment(half, volume, p.constant_pressure ? 0.0 : K, G, dq, dQ);  // eq. B-9, B-9a
       double* hq = &state.hourglass[ue * 12];
       for (int i = 0; i < 3; ++i)
         for (int m = 0; m < 4; ++m) {
@@ -404,10 +406,14 @@ GroupStepResult brick8_one_point_forces(const ElementTable& table, const Element
       check += fx[a] + fy[a] + fz[a];
     }
     if (!std::isfinite(check)) result.non_finite = e;  // a NaN or an infinity stops the run at once
-    state.internal_energy[ue] += internal;
-    state.hourglass_energy[ue] += hourglass_work;
-    result.internal_energy += internal;
-    result.hourglass_energy += hourglass_work;
+    // Isolid 24's stabilisation stores the strain energy of the assumed-strain field: internal energy (eq. B-11).
+    // Isolid 1's viscous forces dissipate: hourglass energy.
+    const double strain_work = physical ? internal + hourglass_work : internal;
+    const double viscous_work = physical ? 0.0 : hourglass_work;
+    state.internal_energy[ue] += strain_work;
+    state.hourglass_energy[ue] += viscous_work;
+    result.internal_energy += strain_work;
+    result.hourglass_energy += viscous_work;
 
     // Critical step L / (Q + sqrt(Q^2 + c^2)) (eq. B-12), where Q carries the bulk viscosity, and the hourglass
     // damper's own bound 2 m / lambda_max (eq. B-13): hourglass modes carry no stiffness in Isolid 1.
@@ -485,14 +491,17 @@ GroupStepResult brick8_full_forces(const ElementTable& table, const ElementGroup
           for (int j = 0; j < 3; ++j) l[i][j] += v[i] * b[j];
       }
       Rates r = rates_of(l);
-      const double correction = (dv_mean - (r.d[0] + r.d[1] + r.d[2])) / 3.0;
-      for (int k = 0; k < 3; ++k) r.d[k] += correction;
+      if (p.constant_pressure) {  // Icpre 1: the element's mean dilatation replaces the point's own
+        const double correction = (dv_mean - (r.d[0] + r.d[1] + r.d[2])) / 3.0;
+        for (int k = 0; k < 3; ++k) r.d[k] += correction;
+      }
       double s[6];
       const PointUpdate u = update_point(p, elastic, state, first + static_cast<std::size_t>(g), r, dt, s);
       failed = failed || u.failed;
       internal += det_mid * u.power * dt;  // Gauss weights are 1
-      // Deviatoric forces at the point on the current geometry; the pressure goes through the mean gradient.
-      const double pressure = (s[0] + s[1] + s[2]) / 3.0;
+      // With a constant pressure, deviatoric forces at the point on the current geometry and the pressure through
+      // the mean gradient; otherwise the whole stress at the point.
+      const double pressure = p.constant_pressure ? (s[0] + s[1] + s[2]) / 3.0 : 0.0;
       pressure_volume += det_now * pressure;
       const double dxx = s[0] - pressure, dyy = s[1] - pressure, dzz = s[2] - pressure;
       for (int a = 0; a < 8; ++a) {

@@ -75,9 +75,14 @@ void read_def_shell(CardReader& reader, DeckContext& context) {
 void read_def_solid(CardReader& reader, DeckContext& context) {
   SolidDefaults& d = context.model.solid_defaults;
   if (reader.at_end()) return;
-  const Line line = reader.next("Isolid, Ismstr, Istrain, Iframe");
+  const Line line = reader.next("Isolid, Ismstr, Icpre, Istrain, Iframe");
   d.isolid = static_cast<int>(line.integer(1, 10, "Isolid"));
   d.ismstr = static_cast<int>(line.integer(11, 10, "Ismstr"));
+  d.icpre = static_cast<int>(line.integer(21, 10, "Icpre"));  // blank in the 2019 layout
+  if (d.icpre != 0 && d.icpre != 1 && d.icpre != 3)
+    line.fail(21, 10, "Icpre",
+              "0 (default), 1 (constant pressure) or 3 (none); 2 (plasticity-dependent pressure) and the automatic "
+              "-1, -2 are not supported by Crumple");
   d.istrain = static_cast<int>(line.integer(31, 10, "Istrain"));
   d.iframe = static_cast<int>(line.integer(71, 10, "Iframe"));
   reader.finish();

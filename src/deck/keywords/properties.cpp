@@ -47,6 +47,10 @@ void read_shell_property(CardReader& reader, DeckContext& context) {
   context.model.properties.push_back(std::move(p));
 }
 
+constexpr const char* kIcpreChoices =
+    "0 (default), 1 (constant pressure) or 3 (none); 2 (plasticity-dependent pressure) and the automatic -1, -2 are "
+    "not supported by Crumple";
+
 void read_solid_property(CardReader& reader, DeckContext& context) {
   Property p = begin_property(reader, PropertyKind::Solid);
   SolidSection& s = p.solid;
@@ -55,6 +59,8 @@ void read_solid_property(CardReader& reader, DeckContext& context) {
     s.isolid = static_cast<int>(flags.integer(1, 10, "Isolid"));
     s.ismstr = static_cast<int>(flags.integer(11, 10, "Ismstr"));
     s.icpre = static_cast<int>(flags.integer(31, 10, "Icpre"));
+    if (s.icpre != 0 && s.icpre != 1 && s.icpre != 3)
+      flags.fail(31, 10, "Icpre", kIcpreChoices);
     s.iframe = static_cast<int>(flags.integer(71, 10, "Iframe"));
   }
   if (!reader.at_end()) {
