@@ -225,6 +225,118 @@ void stabilisation_increment(const double a[3], double volume, double bulk, doub
   }
 }
 
+// Kinematics of Gauss point g (eq. B-10): the velocity gradient on the mid-step geometry, the cofactor matrix of
+// the current Jacobian (det J B_I = C grad_rst N_I) and both determinants. False when a determinant is not
+// positive.
+struct PointKinematics {
+  double l[3][3] = {};  // L = dv/dx at x^(n-1/2)
+  double cn[3][3];      // cofactors of J at x^n
+  double det_mid = 0.0, det_now = 0.0;
+};
+bool point_kinematics(const Element& el, int g, PointKinematics& pk) {
+  const auto& dn = kGauss.d[g];
+  double jm[3][3] = {}, jn[3][3] = {};
+  for (int a = 0; a < 8; ++a)
+    for (int k = 0; k < 3; ++k) {
+      jm[0][k] += el.mx[a] * dn[k][a], jm[1][k] += el.my[a] * dn[k][a], jm[2][k] += el.mz[a] * dn[k][a];
+      jn[0][k] += el.x[a] * dn[k][a], jn[1][k] += el.y[a] * dn[k][a], jn[2][k] += el.z[a] * dn[k][a];
+    }
+  double cm[3][3];
+  pk.det_mid = cofactor(jm, cm);
+  pk.det_now = cofactor(jn, pk.cn);
+  if (!(pk.det_mid > 0.0) || !(pk.det_now > 0.0)) return false;
+  for (int a = 0; a < 8; ++a) {
+    double b[3];  // dN_a/dx = J^-T dN_a/dxi = C dN_a/dxi / det
+    for (int i = 0; i < 3; ++i) b[i] = (cm[i][0] * dn[0][a] + cm[i][1] * dn[1][a] + cm[i][2] * dn[2][a]) / pk.det_mid;
+    const double v[3] = {el.vx[a], el.vy[a], el.vz[a]};
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) pk.l[i][j] += v[i] * b[j];
+  }
+  return true;
+}
+
+// Adds the forces of the 8 point stresses to f and returns sum det J p for the mean-gradient pressure forces
+// (eq. B-10): with a constant pressure the points carry their deviatoric stress, otherwise the whole stress.
+double point_forces(const PointKinematics* pk, const double (*sigma)[6], bool constant_pressure, double* fx,
+                    double* fy, double* fz) {
+  double pressure_volume = 0.0;
+  for (int g = 0; g < 8; ++g) {
+    const auto& dn = kGauss.d[g];
+    const double* s = sigma[g];
+    const double pressure = constant_pressure ? (s[0] + s[1] + s[2]) / 3.0 : 0.0;
+    pressure_volume += pk[g].det_now * pressure;
+    const double dxx = s[0] - pressure, dyy = s[1] - pressure, dzz = s[2] - pressure;
+    const auto& cn = pk[g].cn;
+    for (int a = 0; a < 8; ++a) {
+      double b[3];  // det J B = C dN/dxi: the weight det J cancels the division
+      for (int i = 0; i < 3; ++i) b[i] = cn[i][0] * dn[0][a] + cn[i][1] * dn[1][a] + cn[i][2] * dn[2][a];
+      fx[a] += b[0] * dxx + b[1] * s[3] + b[2] * s[5];
+      fy[a] += b[0] * s[3] + b[1] * dyy + b[2] * s[4];
+      fz[a] += b[0] * s[5] + b[1] * s[4] + b[2] * dzz;
+    }
+  }
+  return pressure_volume;
+}
+
+// Centre Jacobian J0 = [g_r g_s g_t], g_k = sum_I k_I x_I / 8 (eq. B-8).
+void centre_jacobian(const double* x, const double* y, const double* z, double j0[3][3]) {
+  for (int i = 0; i < 3; ++i)
+    for (int k = 0; k < 3; ++k) j0[i][k] = 0.0;
+  for (int a = 0; a < 8; ++a) {
+    const double xa[3] = {x[a], y[a], z[a]}, sa[3] = {kS1[a], kS2[a], kS3[a]};
+    for (int i = 0; i < 3; ++i)
+      for (int k = 0; k < 3; ++k) j0[i][k] += 0.125 * sa[k] * xa[i];
+  }
+}
+
+// Assumed shears of Isolid 14 (eq. B-10a): in the element frame R of eq. B-8 (polar decomposition of the centre
+// Jacobian of x, y, z), the shear of the plane of natural axes i, j at each point becomes the w-weighted mean over
+// the four points on the same side of the third axis. t holds 8 symmetric tensors (xx yy zz xy yz zx), with
+// engineering shears when `engineering`.
+void average_local_shears(const double* x, const double* y, const double* z, const double* w, bool engineering,
+                          double (*t)[6]) {
+  double j0[3][3], rot[3][3];
+  centre_jacobian(x, y, z, j0);
+  polar_rotation(j0, rot);
+  const double f = engineering ? 0.5 : 1.0;  // tensor shear = f * stored shear
+  double local[8][3][3];
+  for (int g = 0; g < 8; ++g) {
+    const double a[3][3] = {{t[g][0], f * t[g][3], f * t[g][5]},
+                            {f * t[g][3], t[g][1], f * t[g][4]},
+                            {f * t[g][5], f * t[g][4], t[g][2]}};
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        double v = 0.0;  // (R^T a R)_ij
+        for (int k = 0; k < 3; ++k)
+          for (int l = 0; l < 3; ++l) v += rot[k][i] * a[k][l] * rot[l][j];
+        local[g][i][j] = v;
+      }
+  }
+  const double* side[3] = {kS1, kS2, kS3};
+  for (int third = 0; third < 3; ++third) {
+    const int i = (third + 1) % 3, j = (third + 2) % 3;
+    for (double sign : {-1.0, 1.0}) {
+      double sum = 0.0, weight = 0.0;
+      for (int g = 0; g < 8; ++g)
+        if (side[third][g] == sign) sum += w[g] * local[g][i][j], weight += w[g];
+      for (int g = 0; g < 8; ++g)
+        if (side[third][g] == sign) local[g][i][j] = local[g][j][i] = sum / weight;
+    }
+  }
+  for (int g = 0; g < 8; ++g) {
+    double a[3][3];
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        double v = 0.0;  // (R local R^T)_ij
+        for (int k = 0; k < 3; ++k)
+          for (int l = 0; l < 3; ++l) v += rot[i][k] * local[g][k][l] * rot[j][l];
+        a[i][j] = v;
+      }
+    t[g][0] = a[0][0], t[g][1] = a[1][1], t[g][2] = a[2][2];
+    t[g][3] = a[0][1] / f, t[g][4] = a[1][2] / f, t[g][5] = a[2][0] / f;
+  }
+}
+
 }  // namespace
 
 double brick8_volume_gradient(const double* x, const double* y, const double* z, double* dv_dx, double* dv_dy,
@@ -359,12 +471,8 @@ GroupStepResult brick8_one_point_forces(const ElementTable& table, const Element
     } else {
       // Co-rotational frame and half-widths (eq. B-8): J0 columns g_k = sum s_k,I x_I / 8, R from J0 = R U,
       // a_k = 1 / |row k of J0^-1|.
-      double j0[3][3] = {};
-      for (int a = 0; a < 8; ++a) {
-        const double xa[3] = {el.x[a], el.y[a], el.z[a]}, sa[3] = {kS1[a], kS2[a], kS3[a]};
-        for (int i = 0; i < 3; ++i)
-          for (int k = 0; k < 3; ++k) j0[i][k] += 0.125 * sa[k] * xa[i];
-      }
+      double j0[3][3];
+      centre_jacobian(el.x, el.y, el.z, j0);
       double cof[3][3], rot[3][3];
       const double det = cofactor(j0, cof);
       if (!(det > 0.0)) {  // the one-point Jacobian of a badly distorted element: no frame
@@ -435,8 +543,7 @@ GroupStepResult brick8_full_forces(const ElementTable& table, const ElementGroup
                                    const BrickGroupParameters& p, NodalState& nodes, BrickState& state, double dt) {
   GroupStepResult result;
   const materials::SolidElastic elastic{p.young, p.poisson};
-  const double G = elastic.shear(), K = elastic.bulk();
-  const double wave_modulus = K + 4.0 / 3.0 * G;
+  const double wave_modulus = elastic.bulk() + 4.0 / 3.0 * elastic.shear();
 
   for (std::int32_t e = group.begin; e < group.end; ++e) {
     const auto ue = static_cast<std::size_t>(e);
@@ -447,7 +554,10 @@ GroupStepResult brick8_full_forces(const ElementTable& table, const ElementGroup
     double bx[8], by[8], bz[8], mbx[8], mby[8], mbz[8];
     const double volume = brick8_volume_gradient(el.x, el.y, el.z, bx, by, bz);
     const double volume_mid = brick8_volume_gradient(el.mx, el.my, el.mz, mbx, mby, mbz);
-    if (!(volume > 0.0) || !(volume_mid > 0.0)) {
+    PointKinematics pk[8];
+    bool inverted = !(volume > 0.0) || !(volume_mid > 0.0);
+    for (int g = 0; g < 8 && !inverted; ++g) inverted = !point_kinematics(el, g, pk[g]);
+    if (inverted) {  // a point with det J <= 0 counts as an inverted element
       result.inverted = e;
       continue;
     }
@@ -461,65 +571,42 @@ GroupStepResult brick8_full_forces(const ElementTable& table, const ElementGroup
     const double length = volume / largest_face_area(el.x, el.y, el.z);
     const Viscosity visc = bulk_viscosity(p, rho, c, length, dv_mean);
 
-    double fx[8] = {}, fy[8] = {}, fz[8] = {};
-    double pressure_volume = 0.0;  // sum over the points of det J p
+    // Rates of the points (eq. B-10), with the assumed shears of eq. B-10a and the mean dilatation (Icpre 1).
+    Rates r[8];
+    double weight[8];
+    for (int g = 0; g < 8; ++g) r[g] = rates_of(pk[g].l), weight[g] = pk[g].det_mid;
+    if (p.assumed_shear) {
+      double d[8][6];
+      for (int g = 0; g < 8; ++g) std::copy(r[g].d, r[g].d + 6, d[g]);
+      average_local_shears(el.mx, el.my, el.mz, weight, true, d);
+      for (int g = 0; g < 8; ++g) std::copy(d[g], d[g] + 6, r[g].d);
+    }
+    if (p.constant_pressure)
+      for (auto& rg : r) {
+        const double correction = (dv_mean - (rg.d[0] + rg.d[1] + rg.d[2])) / 3.0;
+        for (int k = 0; k < 3; ++k) rg.d[k] += correction;
+      }
+
+    double sigma[8][6];
     double internal = 0.0;
-    bool failed = false, inverted = false;
+    bool failed = false;
     const std::size_t first = p.first_point + static_cast<std::size_t>(e - group.begin) * 8;
     for (int g = 0; g < 8; ++g) {
-      const auto& dn = kGauss.d[g];
-      // Mid-step Jacobian, gradient, rates with the mean dilatation in place of the point's own (eq. B-10).
-      double jm[3][3] = {}, jn[3][3] = {};
-      for (int a = 0; a < 8; ++a)
-        for (int k = 0; k < 3; ++k) {
-          jm[0][k] += el.mx[a] * dn[k][a], jm[1][k] += el.my[a] * dn[k][a], jm[2][k] += el.mz[a] * dn[k][a];
-          jn[0][k] += el.x[a] * dn[k][a], jn[1][k] += el.y[a] * dn[k][a], jn[2][k] += el.z[a] * dn[k][a];
-        }
-      double cm[3][3], cn[3][3];
-      const double det_mid = cofactor(jm, cm);
-      const double det_now = cofactor(jn, cn);
-      if (!(det_mid > 0.0) || !(det_now > 0.0)) {
-        inverted = true;
-        break;
-      }
-      double l[3][3] = {};
-      for (int a = 0; a < 8; ++a) {
-        double b[3];  // dN_a/dx = J^-T dN_a/dxi = C dN_a/dxi / det
-        for (int i = 0; i < 3; ++i) b[i] = (cm[i][0] * dn[0][a] + cm[i][1] * dn[1][a] + cm[i][2] * dn[2][a]) / det_mid;
-        const double v[3] = {el.vx[a], el.vy[a], el.vz[a]};
-        for (int i = 0; i < 3; ++i)
-          for (int j = 0; j < 3; ++j) l[i][j] += v[i] * b[j];
-      }
-      Rates r = rates_of(l);
-      if (p.constant_pressure) {  // Icpre 1: the element's mean dilatation replaces the point's own
-        const double correction = (dv_mean - (r.d[0] + r.d[1] + r.d[2])) / 3.0;
-        for (int k = 0; k < 3; ++k) r.d[k] += correction;
-      }
-      double s[6];
-      const PointUpdate u = update_point(p, elastic, state, first + static_cast<std::size_t>(g), r, dt, s);
+      const PointUpdate u = update_point(p, elastic, state, first + static_cast<std::size_t>(g), r[g], dt, sigma[g]);
       failed = failed || u.failed;
-      internal += det_mid * u.power * dt;  // Gauss weights are 1
-      // With a constant pressure, deviatoric forces at the point on the current geometry and the pressure through
-      // the mean gradient; otherwise the whole stress at the point.
-      const double pressure = p.constant_pressure ? (s[0] + s[1] + s[2]) / 3.0 : 0.0;
-      pressure_volume += det_now * pressure;
-      const double dxx = s[0] - pressure, dyy = s[1] - pressure, dzz = s[2] - pressure;
-      for (int a = 0; a < 8; ++a) {
-        double b[3];
-        for (int i = 0; i < 3; ++i) b[i] = cn[i][0] * dn[0][a] + cn[i][1] * dn[1][a] + cn[i][2] * dn[2][a];
-        // det J B = C dN/dxi: the weight det J cancels the division.
-        fx[a] += b[0] * dxx + b[1] * s[3] + b[2] * s[5];
-        fy[a] += b[0] * s[3] + b[1] * dyy + b[2] * s[4];
-        fz[a] += b[0] * s[5] + b[1] * s[4] + b[2] * dzz;
-      }
-    }
-    if (inverted) {
-      result.inverted = e;
-      continue;
+      internal += pk[g].det_mid * u.power * dt;  // Gauss weights are 1
     }
     internal -= visc.q * dv_mean * volume_mid * dt;
+    // The forces are the transpose of the rates' operator: with assumed shears each point carries the weighted
+    // mean shear stress of its group (eq. B-10a).
+    if (p.assumed_shear) {
+      for (int g = 0; g < 8; ++g) weight[g] = pk[g].det_now;
+      average_local_shears(el.x, el.y, el.z, weight, false, sigma);
+    }
+    double fx[8] = {}, fy[8] = {}, fz[8] = {};
+    const double mean_stress = point_forces(pk, sigma, p.constant_pressure, fx, fy, fz) / volume - visc.q;
+
     // Pressure forces (sum det J p) B_bar - q V B_bar with B_bar = dV/dx / V (eq. B-10).
-    const double mean_stress = pressure_volume / volume - visc.q;
     double check = internal + mean_stress;
     for (int a = 0; a < 8; ++a) {
       const auto k = static_cast<std::size_t>(n[a]);

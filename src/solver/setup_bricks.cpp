@@ -41,6 +41,7 @@ void setup_bricks(const Model& m, SolverState& s) {
     p.young = mat.young, p.poisson = mat.poisson, p.density = mat.density;
     p.isolid = f.isolid;
     p.constant_pressure = f.icpre == 1;
+    p.assumed_shear = f.isolid == 14;  // HA8: shear-locking free (eq. B-10a)
     p.qa = prop.solid.qa > 0.0 ? prop.solid.qa : kDefaultQa;
     p.qb = prop.solid.qb > 0.0 ? prop.solid.qb : kDefaultQb;
     p.hourglass = prop.solid.h > 0.0 ? prop.solid.h : kDefaultHourglass;

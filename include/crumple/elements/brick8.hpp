@@ -20,6 +20,7 @@ struct BrickGroupParameters {
   double qa = 1.1, qb = 0.05;      // quadratic and linear bulk viscosity coefficients (eq. B-7)
   double hourglass = 0.1;          // viscous hourglass coefficient h (Isolid 1, eq. B-6)
   bool constant_pressure = false;  // Icpre 1: the pressure is constant over the element (eq. B-9a, B-10)
+  bool assumed_shear = false;      // 2x2x2 points: shears of the element frame averaged (eq. B-10a), Isolid 14
   int points = 1;                  // integration points per element: 1, or 8 for Isolid 14
   std::size_t first_point = 0;     // BrickState index of the group's first element's first point
   double failure_strain = 0.0;     // plastic strain that deletes the element (0: none)
