@@ -17,17 +17,23 @@ std::string keyword_of(const Property& p) {
 }
 
 // Icpre of a brick property (docs/theory/brick8.md, "Constant pressure"): 1 constant pressure, 3 none. Blank or
-// 0 takes the formulation's default (3 for Isolid 14 and 24); the one-point viscous formulations have no pressure
-// option and Radioss sets it to 0 there.
+// 0 takes the formulation's default: 3 for Isolid 14 and 24, 1 for 17; Radioss takes Isolid 18's from the material
+// law, which Crumple does not guess. Isolid 1, 2 (one pressure per element anyway) and 12 (bulk always at one
+// point) have no such option: Radioss sets it to 0 there and Crumple warns that the value is ignored.
 int solid_icpre(Resolver& r, const Property& p, int isolid, int icpre) {
-  if (isolid == 1) {
+  if (one_of(isolid, {1, 2, 12})) {
     if (icpre != 0)
       r.context.warn(p.where, keyword_of(p),
                      fmt::format("Icpre {} is used only with Isolid 14, 17, 18 and 24; ignored for Isolid {}", icpre,
                                  isolid));
     return 0;
   }
-  return icpre == 0 ? 3 : icpre;  // the readers accept 0, 1 and 3 only
+  if (icpre != 0) return icpre;  // the readers accept 0, 1 and 3 only
+  if (isolid == 18)
+    r.error(p.where, keyword_of(p), "Icpre",
+            "1 or 3 for Isolid 18 (its default depends on the material law in Radioss; Crumple needs it given)",
+            "0");
+  return isolid == 17 ? 1 : 3;
 }
 
 // Property flag, else /DEF_SHELL or /DEF_SOLID, else the built-in default (Radioss defaults).
@@ -52,10 +58,15 @@ ResolvedFormulation formulation_of(Resolver& r, const Property& p) {
   } else {
     f.isolid = pick(p.solid.isolid, dv.isolid, 1);
     f.ismstr = pick(p.solid.ismstr, dv.ismstr, 0);
-    if (!one_of(f.isolid, {1, 14, 24}))
+    if (!one_of(f.isolid, {1, 2, 12, 14, 17, 18, 24}))
       r.error(p.where, keyword_of(p), "Isolid",
-              "a supported brick formulation: 1 (one point), 14 (fully integrated) or 24 (physically stabilised)",
+              "a brick formulation supported by Crumple: 1, 2 (one point, viscous hourglass), 24 (one point, "
+              "physically stabilised), 12, 14, 17, 18 (2x2x2 points)",
               std::to_string(f.isolid));
+    if (p.solid.inpts != 0 && !(f.isolid == 14 && p.solid.inpts == 222))
+      r.error(p.where, keyword_of(p), "Inpts",
+              "0 or, for Isolid 14, 222 (other numbers of integration points are not supported by Crumple)",
+              std::to_string(p.solid.inpts));
     f.icpre = solid_icpre(r, p, f.isolid, pick(p.solid.icpre, dv.icpre, 0));
   }
   return f;

@@ -367,10 +367,18 @@ double brick8_volume(const double* x, const double* y, const double* z) {
   return brick8_volume_gradient(x, y, z, bx, by, bz);
 }
 
+void brick8_configure(int isolid, int icpre, BrickGroupParameters& p) {
+  p.isolid = isolid;
+  p.plain_hourglass = isolid == 2;  // Hallquist's viscous form (eq. B-6a)
+  p.points = isolid == 1 || isolid == 2 || isolid == 24 ? 1 : 8;
+  p.assumed_shear = isolid == 14 || isolid == 18;      // shear-locking free 2x2x2 (eq. B-10a)
+  p.constant_pressure = icpre == 1 || isolid == 12;  // Isolid 12: bulk always at one point (eq. B-10)
+}
+
 GroupStepResult brick8_forces(const ElementTable& table, const ElementGroup& group, const BrickGroupParameters& p,
                               NodalState& nodes, BrickState& state, double dt) {
-  return p.isolid == 14 ? brick8_full_forces(table, group, p, nodes, state, dt)
-                        : brick8_one_point_forces(table, group, p, nodes, state, dt);
+  return p.points == 8 ? brick8_full_forces(table, group, p, nodes, state, dt)
+                       : brick8_one_point_forces(table, group, p, nodes, state, dt);
 }
 
 GroupStepResult brick8_one_point_forces(const ElementTable& table, const ElementGroup& group,
@@ -429,11 +437,13 @@ GroupStepResult brick8_one_point_forces(const ElementTable& table, const Element
       fz[a] = bx[a] * s[5] + by[a] * s[4] + bz[a] * szz;
     }
 
-    // Orthogonalised hourglass vectors gamma and hourglass rates q_i,alpha (eq. B-5).
+    // Orthogonalised hourglass vectors gamma and hourglass rates q_i,alpha (eq. B-5); Isolid 2 takes the base
+    // vectors h themselves (eq. B-6a).
     double gamma[4][8], q[3][4];
     for (int m = 0; m < 4; ++m) {
       double hx = 0.0, hy = 0.0, hz = 0.0;
-      for (int a = 0; a < 8; ++a) hx += kH[m][a] * el.x[a], hy += kH[m][a] * el.y[a], hz += kH[m][a] * el.z[a];
+      if (!p.plain_hourglass)
+        for (int a = 0; a < 8; ++a) hx += kH[m][a] * el.x[a], hy += kH[m][a] * el.y[a], hz += kH[m][a] * el.z[a];
       hx /= volume, hy /= volume, hz /= volume;
       double qx = 0.0, qy = 0.0, qz = 0.0;
       for (int a = 0; a < 8; ++a) {

@@ -39,13 +39,10 @@ void setup_bricks(const Model& m, SolverState& s) {
     BrickGroupParameters& p = s.brick_groups[g];
     p.hardening = materials::Hardening::of(mat, m.functions);
     p.young = mat.young, p.poisson = mat.poisson, p.density = mat.density;
-    p.isolid = f.isolid;
-    p.constant_pressure = f.icpre == 1;
-    p.assumed_shear = f.isolid == 14;  // HA8: shear-locking free (eq. B-10a)
+    brick8_configure(f.isolid, f.icpre, p);
     p.qa = prop.solid.qa > 0.0 ? prop.solid.qa : kDefaultQa;
     p.qb = prop.solid.qb > 0.0 ? prop.solid.qb : kDefaultQb;
     p.hourglass = prop.solid.h > 0.0 ? prop.solid.h : kDefaultHourglass;
-    p.points = f.isolid == 14 ? 8 : 1;
     p.failure_strain = p.hardening.failure_strain() >= 1e20 ? 0.0 : p.hardening.failure_strain();
     p.first_point = total_points;
     st.point_offset[g] = total_points;

@@ -29,7 +29,8 @@ using Matrix = std::array<std::array<double, 3>, 3>;
 using Connectivity = std::array<int, 8>;
 
 constexpr double kE = 210e9, kNu = 0.3, kRho = 7800.0;
-constexpr int kIsolids[3] = {1, 14, 24};
+// The formulations that pass the patch test on distorted elements (Isolid 2 does on parallelepipeds only).
+constexpr int kIsolids[] = {1, 12, 14, 17, 18, 24};
 
 Material elastic_material(double young = kE, double nu = kNu) {
   Material m;
@@ -63,9 +64,7 @@ class Bricks {
     group = {ElementKind::Brick8, 0, 0, 0, 0, static_cast<std::int32_t>(n)};
     p.hardening = materials::Hardening::of(material_, functions_);
     p.young = material_.young, p.poisson = material_.poisson, p.density = material_.density;
-    p.isolid = isolid;
-    p.points = isolid == 14 ? 8 : 1;
-    p.assumed_shear = isolid == 14;
+    brick8_configure(isolid, isolid == 17 ? 1 : 3, p);  // the default Icpre
     const std::size_t points = n * static_cast<std::size_t>(p.points);
     state.resize_points(points);
     state.volume0.assign(n, 0.0), state.hourglass.assign(12 * n, 0.0), state.internal_energy.assign(n, 0.0);
@@ -458,13 +457,52 @@ TEST(Brick8, ViscousHourglassOfIsolid1) {
     }
 }
 
-TEST(Brick8, HourglassModesAreResistedByIsolid24And14) {
+TEST(Brick8, PlainViscousHourglassOfIsolid2) {
+  // Isolid 2 (Hallquist): the hourglass rates are h . v with the base vectors themselves (eq. B-6a). On a
+  // parallelepiped h is orthogonal to every linear field, as gamma is, and Isolid 2 gives Isolid 1's forces; on a
+  // distorted brick a linear velocity field (here a rigid rotation rate) has h . v != 0 and meets viscous forces
+  // that Isolid 1's orthogonalised gamma does not produce.
+  const double dt = 1e-4, reference_force = kE * 1e-3 * 1.0;  // as in RigidTranslationAndRotationGiveNoForce
+  const Matrix rot = rotation({1.0, 2.0, -0.5}, 0.01);            // 100 rad/s
+  for (bool distorted : {false, true}) {
+    double largest[2] = {};
+    for (int which = 0; which < 2; ++which) {
+      Bricks b(distorted ? distorted_brick() : box(1.0, 2.0, 0.5), {{0, 1, 2, 3, 4, 5, 6, 7}}, which == 0 ? 1 : 2,
+               elastic_material());
+      for (std::size_t k = 0; k < 8; ++k) {
+        const Point x = b.position(k), y = mul(rot, x);
+        b.set_velocity(k, {(y[0] - x[0]) / dt, (y[1] - x[1]) / dt, (y[2] - x[2]) / dt});
+      }
+      b.advance(dt);
+      for (std::size_t k = 0; k < 8; ++k) largest[which] = std::max(largest[which], norm(b.force(k)));
+    }
+    EXPECT_LT(largest[0], 1e-12 * reference_force);
+    if (distorted)
+      EXPECT_GT(largest[1], 1e-3 * reference_force);
+    else
+      EXPECT_LT(largest[1], 1e-12 * reference_force);
+  }
+  // Pure hourglass velocity on a cube: gamma = h there, so Isolid 2's force equals Isolid 1's.
+  for (int mode = 0; mode < 4; ++mode) {
+    Point f[2];
+    for (int which = 0; which < 2; ++which) {
+      Bricks b(box(0.01, 0.01, 0.01), {{0, 1, 2, 3, 4, 5, 6, 7}}, which == 0 ? 1 : 2, elastic_material());
+      for (std::size_t k = 0; k < 8; ++k) b.set_velocity(k, {kHourglass[mode][k], 0.0, 0.0});
+      b.forces(1e-9);
+      f[which] = b.force(0);
+    }
+    EXPECT_NEAR(f[1][0], f[0][0], 1e-12 * std::abs(f[0][0])) << "mode " << mode;
+    EXPECT_LT(f[0][0] * kHourglass[mode][0], 0.0);
+  }
+}
+
+TEST(Brick8, HourglassModesAreResistedByTheStiffFormulations) {
   // An hourglass displacement of amplitude d: the nodal forces oppose it (f . u < 0) and the element stores
   // energy. For Isolid 24 and a cube of half-width a the twisting-type mode (mode k along axis k) stores
   // (V/3) G d^2 / a^2 (eq. B-9).
   const double side = 0.01, a = 0.5 * side, dt = 1e-6, d = 1e-7;
   const double G = kE / (2 * (1 + kNu)), V = side * side * side;
-  for (int isolid : {24, 14})
+  for (int isolid : {24, 12, 14, 17, 18})
     for (int mode = 0; mode < 4; ++mode)
       for (std::size_t dir = 0; dir < 3; ++dir) {
         Bricks b(box(side, side, side), {{0, 1, 2, 3, 4, 5, 6, 7}}, isolid, elastic_material());
@@ -541,7 +579,7 @@ TEST(Brick8, ConstantPressureRemovesVolumetricLocking) {
   // stabilisation for Isolid 24, eq. B-9a; mean dilatation for Isolid 14, eq. B-10) the bending energy changes by
   // less than a factor 2. With Icpre 3 the hourglass strains (24) or the Gauss-point dilatations (14) meet the
   // bulk modulus and the energy grows by more than 100.
-  for (int isolid : {24, 14}) {
+  for (int isolid : {24, 14, 17, 18}) {
     const double free_0 = cube_bending_energy(isolid, true, 0.3), free_1 = cube_bending_energy(isolid, true, 0.4999);
     EXPECT_GT(free_0, 0.0);
     EXPECT_LT(free_1, 2.0 * free_0) << "Isolid " << isolid;
@@ -814,7 +852,8 @@ std::string bar_starter(int n, double h, int isolid, double young, double nu, co
     s += I(i + 1) + I(id(i, 0, 0)) + I(id(i, 1, 0)) + I(id(i, 1, 1)) + I(id(i, 0, 1)) + I(id(i + 1, 0, 0)) +
          I(id(i + 1, 1, 0)) + I(id(i + 1, 1, 1)) + I(id(i + 1, 0, 1)) + "\n";
   s += "/PART/1\nbar\n" + I(1) + I(1) + "\n";
-  s += "/PROP/SOLID/1\nsolid\n" + I(isolid) + "\n" + R(0.0) + R(0.0) + R(0.0) + "\n";
+  s += "/PROP/SOLID/1\nsolid\n" + I(isolid) + I(0) + I(0) + I(isolid == 18 ? 3 : 0) + "\n" + R(0.0) + R(0.0) + R(0.0) +
+       "\n";  // Isolid 18 needs its Icpre given
   s += "/MAT/ELAST/1\nsteel\n" + R(kRho) + "\n" + R(young) + R(nu) + "\n";
   s += "/GRNOD/NODE/10\nleft\n" + I(id(0, 0, 0)) + I(id(0, 1, 0)) + I(id(0, 0, 1)) + I(id(0, 1, 1)) + "\n";
   s += "/GRNOD/NODE/20\nright\n" + I(id(n, 0, 0)) + I(id(n, 1, 0)) + I(id(n, 0, 1)) + I(id(n, 1, 1)) + "\n";

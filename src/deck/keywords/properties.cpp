@@ -61,6 +61,7 @@ void read_solid_property(CardReader& reader, DeckContext& context) {
     s.icpre = static_cast<int>(flags.integer(31, 10, "Icpre"));
     if (s.icpre != 0 && s.icpre != 1 && s.icpre != 3)
       flags.fail(31, 10, "Icpre", kIcpreChoices);
+    s.inpts = static_cast<int>(flags.integer(51, 10, "Inpts"));
     s.iframe = static_cast<int>(flags.integer(71, 10, "Iframe"));
   }
   if (!reader.at_end()) {
