@@ -14,6 +14,7 @@
 #include "crumple/deck/reader.hpp"
 #include "crumple/elements/brick8.hpp"
 #include "crumple/materials/solid_update.hpp"
+#include "crumple/model/geometry.hpp"
 #include "crumple/solver/solver.hpp"
 #include "crumple/solver/solver_state.hpp"
 #include "deck_files.hpp"
@@ -44,6 +45,11 @@ Material johnson_cook_material(double a, double b, double n) {
   m.law = MaterialLaw::JohnsonCook;
   m.johnson_cook.a = a, m.johnson_cook.b = b, m.johnson_cook.n = n;
   return m;
+}
+
+double volume_of(const double* x, const double* y, const double* z) {
+  double bx[8], by[8], bz[8];
+  return geometry::brick_volume_gradient(x, y, z, bx, by, bz);
 }
 
 // A group of bricks with its own nodes and state, driven directly through brick8_forces.
@@ -78,7 +84,7 @@ class Bricks {
   double volume(std::size_t e) const {
     double x[8], y[8], z[8];
     coordinates_of(e, x, y, z);
-    return brick8_volume(x, y, z);
+    return volume_of(x, y, z);
   }
   void coordinates_of(std::size_t e, double* x, double* y, double* z) const {
     const std::int32_t* c = table.nodes_of(e);
@@ -156,7 +162,7 @@ Patch macneal_harder_patch() {
       const Point& q = p.nodes[static_cast<std::size_t>(c[static_cast<std::size_t>(a)])];
       x[a] = q[0], y[a] = q[1], z[a] = q[2];
     }
-    if (brick8_volume(x, y, z) < 0.0) c = {f[0] + 8, f[1] + 8, f[2] + 8, f[3] + 8, f[0], f[1], f[2], f[3]};
+    if (volume_of(x, y, z) < 0.0) c = {f[0] + 8, f[1] + 8, f[2] + 8, f[3] + 8, f[0], f[1], f[2], f[3]};
     p.elements.push_back(c);
   }
   for (std::size_t k = 8; k < 16; ++k) p.interior.push_back(k);
@@ -223,7 +229,7 @@ TEST(Brick8, VolumeAndItsGradientAreExact) {
     for (std::size_t a = 0; a < 8; ++a) x[a] = p[a][0], y[a] = p[a][1], z[a] = p[a][2];
   };
   fill(box(2.0, 3.0, 0.5));
-  EXPECT_NEAR(brick8_volume(x, y, z), 3.0, 1e-14);
+  EXPECT_NEAR(volume_of(x, y, z), 3.0, 1e-14);
   fill(distorted_brick());
   double gauss = 0.0;
   const double g = 1.0 / std::sqrt(3.0);
@@ -240,7 +246,7 @@ TEST(Brick8, VolumeAndItsGradientAreExact) {
              j[0][2] * (j[1][0] * j[2][1] - j[1][1] * j[2][0]);
   }
   double bx[8], by[8], bz[8];
-  const double volume = brick8_volume_gradient(x, y, z, bx, by, bz);
+  const double volume = geometry::brick_volume_gradient(x, y, z, bx, by, bz);
   EXPECT_NEAR(volume, gauss, 1e-14);
   // V is linear in each coordinate of each node: a central difference is exact up to round-off.
   for (std::size_t a = 0; a < 8; ++a) {
@@ -250,9 +256,9 @@ TEST(Brick8, VolumeAndItsGradientAreExact) {
     for (int k = 0; k < 3; ++k) {
       const double keep = *coordinate[k];
       *coordinate[k] = keep + h;
-      const double plus = brick8_volume(x, y, z);
+      const double plus = volume_of(x, y, z);
       *coordinate[k] = keep - h;
-      const double minus = brick8_volume(x, y, z);
+      const double minus = volume_of(x, y, z);
       *coordinate[k] = keep;
       EXPECT_NEAR((plus - minus) / (2 * h), gradient[k], 1e-11) << "node " << a << " direction " << k;
     }
@@ -339,6 +345,88 @@ TEST(Brick8, PatchTestMacNealHarderSevenElements) {
 TEST(Brick8, PatchTestPerturbedBlock) {
   const Patch patch = perturbed_block();
   for (int isolid : kIsolids) check_patch(patch, isolid);
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// Degenerate bricks: prisms 1 2 3 3 5 6 7 7 and tetrahedra 1 2 3 3 4 4 4 4 written with repeated nodes
+
+Connectivity tetrahedron(const std::vector<Point>& nodes, int a, int b, int c, int d) {
+  Connectivity t{a, b, c, c, d, d, d, d};
+  double x[8], y[8], z[8];
+  for (std::size_t k = 0; k < 8; ++k) {
+    const Point& q = nodes[static_cast<std::size_t>(t[k])];
+    x[k] = q[0], y[k] = q[1], z[k] = q[2];
+  }
+  if (volume_of(x, y, z) < 0.0) t = {b, a, c, c, d, d, d, d};
+  return t;
+}
+
+// The perturbed block with every brick split into two prisms (through its 1-3 / 5-7 diagonal plane) or six
+// tetrahedra around its 1-7 diagonal (the same diagonal direction everywhere: a conforming mesh).
+Patch degenerate_block(bool tetrahedra) {
+  const Patch block = perturbed_block();
+  Patch p;
+  p.nodes = block.nodes, p.interior = block.interior;
+  for (const Connectivity& h : block.elements) {
+    if (!tetrahedra) {
+      p.elements.push_back({h[0], h[1], h[2], h[2], h[4], h[5], h[6], h[6]});
+      p.elements.push_back({h[0], h[2], h[3], h[3], h[4], h[6], h[7], h[7]});
+      continue;
+    }
+    constexpr int ring[7] = {1, 2, 3, 7, 4, 5, 1};
+    for (int k = 0; k < 6; ++k) p.elements.push_back(tetrahedron(p.nodes, h[0], h[ring[k]], h[ring[k + 1]], h[6]));
+  }
+  return p;
+}
+
+TEST(Brick8, DegenerateVolumesAreExact) {
+  // Tetrahedron: |det(b - a, c - a, d - a)| / 6. Oblique prism with a triangular base: base area times height.
+  const std::vector<Point> tet = {{0.1, 0.2, -0.1}, {1.3, 0.1, 0.2}, {0.2, 0.9, 0.1}, {0.3, 0.4, 1.2}};
+  double x[8], y[8], z[8];
+  const Connectivity t = tetrahedron(tet, 0, 1, 2, 3);
+  for (std::size_t k = 0; k < 8; ++k) {
+    const Point& q = tet[static_cast<std::size_t>(t[k])];
+    x[k] = q[0], y[k] = q[1], z[k] = q[2];
+  }
+  Point e[3];
+  for (std::size_t i = 0; i < 3; ++i)
+    for (std::size_t j = 0; j < 3; ++j) e[i][j] = tet[i + 1][j] - tet[0][j];
+  const double det = e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) - e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
+                     e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0]);
+  EXPECT_NEAR(volume_of(x, y, z), std::abs(det) / 6.0, 1e-14);
+  const Point base[3] = {{0.0, 0.0, 0.0}, {2.0, 0.0, 0.0}, {0.5, 1.5, 0.0}}, shift{0.3, -0.2, 0.7};
+  const int prism[8] = {0, 1, 2, 2, 3, 4, 5, 5};
+  for (std::size_t k = 0; k < 8; ++k) {
+    const int n = prism[k];
+    const Point& q = base[n % 3];
+    const double top = n >= 3 ? 1.0 : 0.0;
+    x[k] = q[0] + top * shift[0], y[k] = q[1] + top * shift[1], z[k] = q[2] + top * shift[2];
+  }
+  EXPECT_NEAR(volume_of(x, y, z), 0.5 * 2.0 * 1.5 * 0.7, 1e-14);
+}
+
+TEST(Brick8, PatchTestDegeneratePrismsAndTetrahedra) {
+  for (bool tetrahedra : {false, true}) {
+    const Patch patch = degenerate_block(tetrahedra);
+    for (int isolid : kIsolids) check_patch(patch, isolid);
+  }
+}
+
+TEST(Brick8, DegenerateTetrahedronHasNoHourglassForce) {
+  // A tetrahedron is a linear element: every nodal velocity field is linear, so the orthogonalised hourglass rates
+  // vanish and Isolid 1's viscous forces and Isolid 24's stabilisation stay zero for any motion.
+  const std::vector<Point> tet = {{0.1, 0.2, -0.1}, {1.3, 0.1, 0.2}, {0.2, 0.9, 0.1}, {0.3, 0.4, 1.2}};
+  for (int isolid : {1, 24}) {
+    Bricks b(tet, {tetrahedron(tet, 0, 1, 2, 3)}, isolid, elastic_material());
+    const Point v[4] = {{1.0, -2.0, 0.5}, {-0.3, 0.8, 1.1}, {0.2, 0.1, -0.9}, {0.7, -0.4, 0.3}};
+    for (std::size_t k = 0; k < 4; ++k) b.set_velocity(k, v[k]);
+    const GroupStepResult r = b.advance(1e-7);
+    ASSERT_GT(r.internal_energy, 0.0);
+    double stored = 0.0;  // Isolid 24's generalized hourglass stresses [F]
+    for (int k = 0; k < 12; ++k) stored = std::max(stored, std::abs(b.state.hourglass[static_cast<std::size_t>(k)]));
+    EXPECT_LT(std::abs(r.hourglass_energy), 1e-12 * r.internal_energy) << isolid;
+    EXPECT_LT(stored, 1e-12 * kE * 1e-6) << isolid;  // a strain of 1e-6 on a unit area
+  }
 }
 
 // ---------------------------------------------------------------------------------------------------------------
@@ -664,7 +752,7 @@ TEST(Brick8, CriticalStepIsLengthOverDilatationalSpeed) {
     r = b.advance(dt);
     double x[8], y[8], z[8];
     b.coordinates_of(0, x, y, z);
-    const double volume = brick8_volume(x, y, z);
+    const double volume = volume_of(x, y, z);
     const double rho = kRho * lx * ly * lz / volume;
     const double c_now = std::sqrt(kE * (1 - kNu) / ((1 + kNu) * (1 - 2 * kNu)) / rho);
     const double length = volume / (x[1] - x[0]) / (y[3] - y[0]);
@@ -858,6 +946,32 @@ std::string bar_starter(int n, double h, int isolid, double young, double nu, co
   s += "/GRNOD/NODE/10\nleft\n" + I(id(0, 0, 0)) + I(id(0, 1, 0)) + I(id(0, 0, 1)) + I(id(0, 1, 1)) + "\n";
   s += "/GRNOD/NODE/20\nright\n" + I(id(n, 0, 0)) + I(id(n, 1, 0)) + I(id(n, 0, 1)) + I(id(n, 1, 1)) + "\n";
   return s + extra + "/END\n";
+}
+
+TEST(Brick8, DegenerateBricksReadWithTheirExactMass) {
+  // A unit cube of 7800 kg/m^3 written as one prism 1 2 3 3 5 6 7 7 (corners 1 2 3 | 5 6 7, half the cube) and
+  // three tetrahedra 1 2 3 3 4 4 4 4 filling the other half (1 3 4 | 5 7 8): (1 3 4 5), (3 4 5 7), (4 8 5 7). The
+  // reader accepts them and the mass is rho times the exact volume.
+  std::string s = test::begin_card("DEGEN") + "/NODE\n";
+  for (int k = 0; k < 8; ++k) s += I(k + 1) + R(kCorners[k][0]) + R(kCorners[k][1]) + R(kCorners[k][2]) + "\n";
+  s += "/BRICK/1\n" + I(1) + I(1) + I(2) + I(3) + I(3) + I(5) + I(6) + I(7) + I(7) + "\n";
+  s += I(2) + I(1) + I(3) + I(4) + I(4) + I(5) + I(5) + I(5) + I(5) + "\n";
+  s += I(3) + I(3) + I(4) + I(5) + I(5) + I(7) + I(7) + I(7) + I(7) + "\n";
+  s += I(4) + I(4) + I(8) + I(5) + I(5) + I(7) + I(7) + I(7) + I(7) + "\n";
+  s += "/PART/1\ncube\n" + I(1) + I(1) + "\n/PROP/SOLID/1\nsolid\n" + I(1) + "\n" + R(0.0) + R(0.0) + R(0.0) + "\n";
+  s += "/MAT/ELAST/1\nsteel\n" + R(kRho) + "\n" + R(kE) + R(kNu) + "\n/END\n";
+  test::TempDir dir;
+  const Model m = read_deck(dir.write("DEGEN_0000.rad", s)).model;
+  ASSERT_EQ(m.elements[static_cast<int>(ElementKind::Brick8)].size(), 4u);
+  EXPECT_NEAR(m.element_mass, kRho * 1.0, 1e-12 * kRho);
+  double nodal = 0.0;
+  for (double v : m.nodal_mass) nodal += v;
+  EXPECT_NEAR(nodal, kRho, 1e-12 * kRho);
+  // Each connectivity slot carries 1/8 of its element's mass (as the reference lumps degenerate bricks): node 5
+  // holds 4/8 of each tetrahedron having it four times.
+  EXPECT_NEAR(m.nodal_mass[static_cast<std::size_t>(m.index.nodes.at(5))],
+              kRho * (0.5 / 8.0 + (1.0 / 6.0) * (4.0 / 8.0) + (1.0 / 6.0) * (2.0 / 8.0) + (1.0 / 6.0) * (2.0 / 8.0)),
+              1e-12 * kRho);
 }
 
 std::string bar_engine(double end_time, double history) {

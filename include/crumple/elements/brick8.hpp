@@ -45,10 +45,4 @@ GroupStepResult brick8_one_point_forces(const ElementTable& table, const Element
 GroupStepResult brick8_full_forces(const ElementTable& table, const ElementGroup& group,
                                    const BrickGroupParameters& p, NodalState& nodes, BrickState& state, double dt);
 
-// Exact volume of the trilinear brick and its derivatives with respect to the nodal coordinates (eq. B-2):
-// dv_dx[I] = dV/dx_I, ... The uniform (mean) gradient of Flanagan and Belytschko is dV/dx_I / V. Returns V.
-double brick8_volume_gradient(const double* x, const double* y, const double* z, double* dv_dx, double* dv_dy,
-                              double* dv_dz);
-double brick8_volume(const double* x, const double* y, const double* z);
-
 }  // namespace crumple
