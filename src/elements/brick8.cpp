@@ -120,6 +120,68 @@ void gather(const NodalState& nodes, const std::int32_t* n, double dt, Element& 
   }
 }
 
+// Centre Jacobian J0 = [g_r g_s g_t], g_k = sum_I k_I x_I / 8 (eq. B-8).
+void centre_jacobian(const double* x, const double* y, const double* z, double j0[3][3]) {
+  for (int i = 0; i < 3; ++i)
+    for (int k = 0; k < 3; ++k) j0[i][k] = 0.0;
+  for (int a = 0; a < 8; ++a) {
+    const double xa[3] = {x[a], y[a], z[a]}, sa[3] = {kS1[a], kS2[a], kS3[a]};
+    for (int i = 0; i < 3; ++i)
+      for (int k = 0; k < 3; ++k) j0[i][k] += 0.125 * sa[k] * xa[i];
+  }
+}
+
+// Turn of the element frame over the step (Iframe 2, eq. B-3a): the frames R0, R1 of eq. B-8 at x^(n-1) and x^n
+// give dR = R1 R0^T.
+void frame_turn(const Element& el, double dr[3][3]) {
+  double x0[8], y0[8], z0[8];
+  for (int a = 0; a < 8; ++a) x0[a] = 2.0 * el.mx[a] - el.x[a], y0[a] = 2.0 * el.my[a] - el.y[a], z0[a] = 2.0 * el.mz[a] - el.z[a];
+  double j[3][3], r0[3][3], r1[3][3];
+  centre_jacobian(x0, y0, z0, j);
+  polar_rotation(j, r0);
+  centre_jacobian(el.x, el.y, el.z, j);
+  polar_rotation(j, r1);
+  for (int i = 0; i < 3; ++i)
+    for (int k = 0; k < 3; ++k) dr[i][k] = r1[i][0] * r0[k][0] + r1[i][1] * r0[k][1] + r1[i][2] * r0[k][2];
+}
+
+// The spin whose Cayley transform (eq. SU-2) is dR exactly: w dt = 4 axial(dR) / (1 + tr dR). Per unit time.
+void spin_of_turn(const double dr[3][3], double dt, double w[3]) {
+  w[0] = w[1] = w[2] = 0.0;
+  if (!(dt > 0.0)) return;
+  const double f = 2.0 / ((1.0 + dr[0][0] + dr[1][1] + dr[2][2]) * dt);  // 4 / (1 + tr) times the half difference
+  w[0] = f * (dr[2][1] - dr[1][2]), w[1] = f * (dr[0][2] - dr[2][0]), w[2] = f * (dr[1][0] - dr[0][1]);
+}
+
+// Small strain (eq. B-14): the element's current and mid-step geometries become its frozen reference shape, turned
+// by the rotation of the element frame since the freeze (Ismstr 1, 2) or kept as frozen (Ismstr 3).
+void use_reference_shape(const BrickGroupParameters& p, const BrickState& state, std::size_t e, double dt,
+                         const double dr[3][3], Element& el) {
+  const double* shape = &state.reference_shape[24 * e];
+  if (p.ismstr != 3 && dt > 0.0)  // objective: the velocities lose the frame's rigid turn, (I - dR^T) x / dt
+    for (int a = 0; a < 8; ++a) {
+      const double x[3] = {el.x[a], el.y[a], el.z[a]};
+      double* v[3] = {&el.vx[a], &el.vy[a], &el.vz[a]};
+      for (int i = 0; i < 3; ++i) *v[i] -= (x[i] - dr[0][i] * x[0] - dr[1][i] * x[1] - dr[2][i] * x[2]) / dt;
+    }
+  double turn[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};  // R_now R_freeze^T
+  if (p.ismstr != 3) {
+    double j0[3][3], now[3][3];
+    centre_jacobian(el.x, el.y, el.z, j0);
+    polar_rotation(j0, now);
+    const double* frozen = &state.reference_frame[9 * e];
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) turn[i][j] = now[i][0] * frozen[3 * j] + now[i][1] * frozen[3 * j + 1] +
+                                               now[i][2] * frozen[3 * j + 2];
+  }
+  for (int a = 0; a < 8; ++a) {
+    const double* x = shape + 3 * a;
+    el.x[a] = el.mx[a] = turn[0][0] * x[0] + turn[0][1] * x[1] + turn[0][2] * x[2];
+    el.y[a] = el.my[a] = turn[1][0] * x[0] + turn[1][1] * x[1] + turn[1][2] * x[2];
+    el.z[a] = el.mz[a] = turn[2][0] * x[0] + turn[2][1] * x[1] + turn[2][2] * x[2];
+  }
+}
+
 // Rate of deformation (engineering shears) and spin axial vector from the velocity gradient L_ij = dv_i/dx_j
 // (eq. B-3).
 struct Rates {
@@ -263,17 +325,6 @@ double point_forces(const PointKinematics* pk, const double (*sigma)[6], bool co
   return pressure_volume;
 }
 
-// Centre Jacobian J0 = [g_r g_s g_t], g_k = sum_I k_I x_I / 8 (eq. B-8).
-void centre_jacobian(const double* x, const double* y, const double* z, double j0[3][3]) {
-  for (int i = 0; i < 3; ++i)
-    for (int k = 0; k < 3; ++k) j0[i][k] = 0.0;
-  for (int a = 0; a < 8; ++a) {
-    const double xa[3] = {x[a], y[a], z[a]}, sa[3] = {kS1[a], kS2[a], kS3[a]};
-    for (int i = 0; i < 3; ++i)
-      for (int k = 0; k < 3; ++k) j0[i][k] += 0.125 * sa[k] * xa[i];
-  }
-}
-
 // Assumed shears of Isolid 14 (eq. B-10a): in the element frame R of eq. B-8 (polar decomposition of the centre
 // Jacobian of x, y, z), the shear of the plane of natural axes i, j at each point becomes the w-weighted mean over
 // the four points on the same side of the third axis. t holds 8 symmetric tensors (xx yy zz xy yz zx), with
@@ -324,6 +375,23 @@ void average_local_shears(const double* x, const double* y, const double* z, con
 
 }  // namespace
 
+void brick8_switch_to_small_strain(const ElementTable& table, std::int32_t element, const NodalState& nodes,
+                                   BrickState& state) {
+  const auto e = static_cast<std::size_t>(element);
+  Element el;
+  gather(nodes, table.nodes_of(e), 0.0, el);
+  double j0[3][3], frame[3][3];
+  centre_jacobian(el.x, el.y, el.z, j0);
+  polar_rotation(j0, frame);
+  for (int a = 0; a < 8; ++a) {
+    double* x = &state.reference_shape[24 * e + 3 * static_cast<std::size_t>(a)];
+    x[0] = el.x[a], x[1] = el.y[a], x[2] = el.z[a];
+  }
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) state.reference_frame[9 * e + 3 * static_cast<std::size_t>(i) + static_cast<std::size_t>(j)] = frame[i][j];
+  state.small_strain[e] = 1;
+}
+
 void brick8_configure(int isolid, int icpre, BrickGroupParameters& p) {
   p.isolid = isolid;
   p.plain_hourglass = isolid == 2;  // Hallquist's viscous form (eq. B-6a)
@@ -353,6 +421,12 @@ GroupStepResult brick8_one_point_forces(const ElementTable& table, const Element
     const std::int32_t* n = table.nodes_of(ue);
     Element el;
     gather(nodes, n, dt, el);
+    // Iframe 2, or an objective small-strain element: the stresses turn with the element frame (eq. B-3a).
+    const bool small_strain = state.small_strain[ue] != 0;
+    const bool frame_turns = p.corotational || (small_strain && p.ismstr != 3);
+    double spin[3], turn[3][3];
+    if (frame_turns) frame_turn(el, turn), spin_of_turn(turn, dt, spin);
+    if (small_strain) use_reference_shape(p, state, ue, dt, turn, el);
 
     // Uniform gradients at x^n (forces) and at the mid-step geometry (rates), eq. B-2, B-3.
     double bx[8], by[8], bz[8], mbx[8], mby[8], mbz[8];
@@ -370,7 +444,8 @@ GroupStepResult brick8_one_point_forces(const ElementTable& table, const Element
     }
     for (auto& row : l)
       for (double& v : row) v /= volume_mid;
-    const Rates r = rates_of(l);
+    Rates r = rates_of(l);
+    if (frame_turns) std::copy(spin, spin + 3, r.w);
 
     // Stress update at the single point (eq. SU-1 to SU-4), stress power (eq. B-11).
     const std::size_t ip = p.first_point + static_cast<std::size_t>(e - group.begin);
@@ -410,7 +485,7 @@ GroupStepResult brick8_one_point_forces(const ElementTable& table, const Element
       }
       q[0][m] = qx, q[1][m] = qy, q[2][m] = qz;
     }
-    double hourglass_work = 0.0;
+    double hourglass_work = 0.0, stabilisation_work = 0.0, damping_work = 0.0;  // viscous, elastic, dn
     double global_q[3][4];  // generalized hourglass forces in the global frame
     double damper_rate = 0.0;  // bound of the hourglass damper's largest eigenvalue (C = m lambda) [M/T]
     if (!physical) {
@@ -454,17 +529,24 @@ GroupStepResult brick8_one_point_forces(const ElementTable& table, const Element
       for (int i = 0; i < 3; ++i)
         for (int m = 0; m < 4; ++m) dq[i][m] = (rot[0][i] * q[0][m] + rot[1][i] * q[1][m] + rot[2][i] * q[2][m]) * dt;
       stabilisation_increment(half, volume, p.constant_pressure ? 0.0 : K, G, dq, dQ);  // eq. B-9, B-9a
+      // Numerical damping dn (eq. B-9b): a viscous force dn (dt_e / dt) dQ, the elastic increment over the
+      // element's own transit time, not stored; its work is dissipated (hourglass energy).
+      const double transit = length / (visc.speed + std::sqrt(visc.speed * visc.speed + c * c));
+      const double viscous = dt > 0.0 ? p.numerical_damping * transit / dt : 0.0;
       double* hq = &state.hourglass[ue * 12];
+      double local[3][4];
       for (int i = 0; i < 3; ++i)
         for (int m = 0; m < 4; ++m) {
           double& stored = hq[m * 3 + i];
           const double old = stored;
           stored += dQ[i][m];
-          hourglass_work += 0.5 * (old + stored) * dq[i][m];
+          stabilisation_work += 0.5 * (old + stored) * dq[i][m];
+          damping_work += viscous * dQ[i][m] * dq[i][m];
+          local[i][m] = stored + viscous * dQ[i][m];
         }
       for (int j = 0; j < 3; ++j)
         for (int m = 0; m < 4; ++m)
-          global_q[j][m] = rot[j][0] * hq[m * 3] + rot[j][1] * hq[m * 3 + 1] + rot[j][2] * hq[m * 3 + 2];
+          global_q[j][m] = rot[j][0] * local[0][m] + rot[j][1] * local[1][m] + rot[j][2] * local[2][m];
     }
     for (int a = 0; a < 8; ++a)
       for (int m = 0; m < 4; ++m) {
@@ -472,7 +554,7 @@ GroupStepResult brick8_one_point_forces(const ElementTable& table, const Element
         fy[a] += gamma[m][a] * global_q[1][m];
         fz[a] += gamma[m][a] * global_q[2][m];
       }
-    double check = internal + hourglass_work;
+    double check = internal + hourglass_work + stabilisation_work + damping_work;
     for (int a = 0; a < 8; ++a) {
       const auto k = static_cast<std::size_t>(n[a]);
       nodes.fx[k] -= fx[a];
@@ -482,9 +564,9 @@ GroupStepResult brick8_one_point_forces(const ElementTable& table, const Element
     }
     if (!std::isfinite(check)) result.non_finite = e;  // a NaN or an infinity stops the run at once
     // Isolid 24's stabilisation stores the strain energy of the assumed-strain field: internal energy (eq. B-11).
-    // Isolid 1's viscous forces dissipate: hourglass energy.
-    const double strain_work = physical ? internal + hourglass_work : internal;
-    const double viscous_work = physical ? 0.0 : hourglass_work;
+    // The viscous forces (Isolid 1, 2; dn of Isolid 24) dissipate: hourglass energy.
+    const double strain_work = internal + stabilisation_work;
+    const double viscous_work = hourglass_work + damping_work;
     state.internal_energy[ue] += strain_work;
     state.hourglass_energy[ue] += viscous_work;
     result.internal_energy += strain_work;
@@ -518,6 +600,12 @@ GroupStepResult brick8_full_forces(const ElementTable& table, const ElementGroup
     const std::int32_t* n = table.nodes_of(ue);
     Element el;
     gather(nodes, n, dt, el);
+    // Iframe 2, or an objective small-strain element: the stresses turn with the element frame (eq. B-3a).
+    const bool small_strain = state.small_strain[ue] != 0;
+    const bool frame_turns = p.corotational || (small_strain && p.ismstr != 3);
+    double spin[3], turn[3][3];
+    if (frame_turns) frame_turn(el, turn), spin_of_turn(turn, dt, spin);
+    if (small_strain) use_reference_shape(p, state, ue, dt, turn, el);
     double bx[8], by[8], bz[8], mbx[8], mby[8], mbz[8];
     const double volume = geometry::brick_volume_gradient(el.x, el.y, el.z, bx, by, bz);
     const double volume_mid = geometry::brick_volume_gradient(el.mx, el.my, el.mz, mbx, mby, mbz);
@@ -541,7 +629,10 @@ GroupStepResult brick8_full_forces(const ElementTable& table, const ElementGroup
     // Rates of the points (eq. B-10), with the assumed shears of eq. B-10a and the mean dilatation (Icpre 1).
     Rates r[8];
     double weight[8];
-    for (int g = 0; g < 8; ++g) r[g] = rates_of(pk[g].l), weight[g] = pk[g].det_mid;
+    for (int g = 0; g < 8; ++g) {
+      r[g] = rates_of(pk[g].l), weight[g] = pk[g].det_mid;
+      if (frame_turns) std::copy(spin, spin + 3, r[g].w);
+    }
     if (p.assumed_shear) {
       double d[8][6];
       for (int g = 0; g < 8; ++g) std::copy(r[g].d, r[g].d + 6, d[g]);

@@ -11,7 +11,8 @@ namespace {
 // Radioss defaults of /PROP/SOLID (docs/cards/starter-model.md, section 8).
 constexpr double kDefaultQa = 1.1;         // quadratic bulk viscosity
 constexpr double kDefaultQb = 0.05;        // linear bulk viscosity
-constexpr double kDefaultHourglass = 0.1;  // viscous hourglass coefficient, Isolid 1
+constexpr double kDefaultHourglass = 0.1;  // viscous hourglass coefficient, Isolid 1 and 2
+constexpr double kDefaultDamping = 0.1;    // numerical damping dn of Isolid 24 (the reference listing prints it)
 
 }  // namespace
 
@@ -19,13 +20,7 @@ void setup_bricks(const Model& m, SolverState& s) {
   const ElementTable& table = m.elements[static_cast<int>(ElementKind::Brick8)];
   const std::size_t n = table.size();
   BrickState& st = s.bricks;
-  st.volume0.assign(n, 0.0);
-  st.hourglass.assign(12 * n, 0.0);
-  st.internal_energy.assign(n, 0.0);
-  st.hourglass_energy.assign(n, 0.0);
-  st.deleted.assign(n, 0);
-  st.critical_dt.assign(n, 0.0);
-  st.mass.assign(n, 0.0);
+  st.resize_elements(n);
   s.brick_groups.assign(m.element_groups.size(), BrickGroupParameters{});
   st.point_offset.assign(m.element_groups.size(), 0);
   st.points.assign(m.element_groups.size(), 0);
@@ -41,9 +36,12 @@ void setup_bricks(const Model& m, SolverState& s) {
     p.hardening = materials::Hardening::of(mat, m.functions);
     p.young = mat.young, p.poisson = mat.poisson, p.density = mat.density;
     brick8_configure(f.isolid, f.icpre, p);
+    p.ismstr = f.ismstr;
+    p.corotational = f.iframe == 2;
     p.qa = prop.solid.qa > 0.0 ? prop.solid.qa : kDefaultQa;
     p.qb = prop.solid.qb > 0.0 ? prop.solid.qb : kDefaultQb;
     p.hourglass = prop.solid.h > 0.0 ? prop.solid.h : kDefaultHourglass;
+    p.numerical_damping = prop.solid.dn > 0.0 ? prop.solid.dn : kDefaultDamping;
     p.failure_strain = p.hardening.failure_strain() >= 1e20 ? 0.0 : p.hardening.failure_strain();
     p.first_point = total_points;
     st.point_offset[g] = total_points;
@@ -58,6 +56,7 @@ void setup_bricks(const Model& m, SolverState& s) {
       }
       st.volume0[static_cast<std::size_t>(e)] = geometry::brick_volume(x);
       st.mass[static_cast<std::size_t>(e)] = element_mass(m, ElementKind::Brick8, static_cast<std::size_t>(e));
+      if (p.ismstr == 1 || p.ismstr == 3) brick8_switch_to_small_strain(table, e, s.nodes, st);  // from t = 0
     }
   }
   st.resize_points(total_points);

@@ -73,9 +73,7 @@ class Bricks {
     brick8_configure(isolid, isolid == 17 ? 1 : 3, p);  // the default Icpre
     const std::size_t points = n * static_cast<std::size_t>(p.points);
     state.resize_points(points);
-    state.volume0.assign(n, 0.0), state.hourglass.assign(12 * n, 0.0), state.internal_energy.assign(n, 0.0);
-    state.hourglass_energy.assign(n, 0.0), state.critical_dt.assign(n, 0.0), state.mass.assign(n, 0.0);
-    state.deleted.assign(n, 0);
+    state.resize_elements(n);
     for (std::size_t e = 0; e < n; ++e) state.volume0[e] = volume(e);
   }
   Bricks(const Bricks&) = delete;
@@ -426,6 +424,72 @@ TEST(Brick8, DegenerateTetrahedronHasNoHourglassForce) {
     for (int k = 0; k < 12; ++k) stored = std::max(stored, std::abs(b.state.hourglass[static_cast<std::size_t>(k)]));
     EXPECT_LT(std::abs(r.hourglass_energy), 1e-12 * r.internal_energy) << isolid;
     EXPECT_LT(stored, 1e-12 * kE * 1e-6) << isolid;  // a strain of 1e-6 on a unit area
+  }
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// Small strain (Ismstr, eq. B-14)
+
+// Stretches a unit cube (nu = 0) along x to 1 + total in `steps` equal increments; returns s_xx.
+double stretched_stress(bool small_strain, double total, int steps) {
+  std::vector<Point> corners(kCorners, kCorners + 8);
+  Bricks b(corners, {{0, 1, 2, 3, 4, 5, 6, 7}}, 1, elastic_material(kE, 0.0));
+  if (small_strain) brick8_switch_to_small_strain(b.table, 0, b.nodes, b.state);
+  const double dt = 1e-6, rate = total / steps / dt;
+  for (int step = 0; step < steps; ++step) {
+    for (std::size_t k = 0; k < 8; ++k) b.set_velocity(k, {rate * kCorners[k][0], 0.0, 0.0});
+    b.advance(dt);
+  }
+  return b.stress(0)[0];
+}
+
+TEST(Brick8, SmallStrainComputesEngineeringStrainOnTheReferenceShape) {
+  // 10 % stretch: on the frozen reference shape the strain increments add up to the engineering strain 0.1;
+  // on the current geometry (large strain) to the logarithmic strain ln 1.1 (eq. B-14).
+  EXPECT_NEAR(stretched_stress(true, 0.1, 200), kE * 0.1, 1e-9 * kE);
+  EXPECT_NEAR(stretched_stress(false, 0.1, 200), kE * std::log(1.1), 1e-5 * kE);
+}
+
+TEST(Brick8, SwitchToSmallStrainFreezesTheStepAndStaysObjective) {
+  // A cube crushed to half its height (no bulk viscosity, so that the step is the geometric one): with large
+  // strain its critical step L / c falls to 0.5 / sqrt(0.5) of the initial one (L halves, the density doubles);
+  // it stays at the value of the switch once brick8_switch_to_small_strain has frozen the shape. A rigid rotation
+  // after the switch rotates the stress and changes nothing else (the frozen shape turns with the element frame
+  // and the frame's rigid turn is taken out of the velocities).
+  for (bool switched : {false, true}) {
+    std::vector<Point> corners(kCorners, kCorners + 8);
+    Bricks b(corners, {{0, 1, 2, 3, 4, 5, 6, 7}}, 1, elastic_material(kE, 0.0));
+    b.p.qa = b.p.qb = 0.0;
+    const double dt = 1e-6;
+    b.forces(0.0);
+    const double initial_step = b.state.critical_dt[0];
+    if (switched) brick8_switch_to_small_strain(b.table, 0, b.nodes, b.state);
+    EXPECT_EQ(b.state.small_strain[0], switched ? 1 : 0);
+    for (int step = 0; step < 100; ++step) {
+      for (std::size_t k = 0; k < 8; ++k) b.set_velocity(k, {0.0, 0.0, -0.005 * kCorners[k][2] / dt});
+      b.advance(dt);
+    }
+    const double ratio = b.state.critical_dt[0] / initial_step;
+    if (switched)
+      EXPECT_NEAR(ratio, 1.0, 1e-12);
+    else
+      EXPECT_NEAR(ratio, 0.5 / std::sqrt(0.5), 1e-6);
+    if (!switched) continue;
+    const auto before = b.stress(0);
+    const Matrix rot = rotation({0.2, 1.0, -0.4}, 0.3);
+    for (std::size_t k = 0; k < 8; ++k) {
+      const Point x = b.position(k), y = mul(rot, x);
+      b.set_velocity(k, {(y[0] - x[0]) / dt, (y[1] - x[1]) / dt, (y[2] - x[2]) / dt});
+    }
+    b.advance(dt);
+    const auto after = b.stress(0);
+    // s_zz alone before; after: R s R^T, so the trace and the z-z projection on the rotated axis are kept.
+    EXPECT_NEAR(after[0] + after[1] + after[2], before[2], 1e-9 * std::abs(before[2]));
+    const Point axis = mul(rot, {0.0, 0.0, 1.0});
+    const double projected = after[0] * axis[0] * axis[0] + after[1] * axis[1] * axis[1] + after[2] * axis[2] * axis[2] +
+                             2.0 * (after[3] * axis[0] * axis[1] + after[4] * axis[1] * axis[2] + after[5] * axis[2] * axis[0]);
+    EXPECT_NEAR(projected, before[2], 1e-9 * std::abs(before[2]));
+    EXPECT_LT(before[2], 0.0);
   }
 }
 
@@ -940,8 +1004,8 @@ std::string bar_starter(int n, double h, int isolid, double young, double nu, co
     s += I(i + 1) + I(id(i, 0, 0)) + I(id(i, 1, 0)) + I(id(i, 1, 1)) + I(id(i, 0, 1)) + I(id(i + 1, 0, 0)) +
          I(id(i + 1, 1, 0)) + I(id(i + 1, 1, 1)) + I(id(i + 1, 0, 1)) + "\n";
   s += "/PART/1\nbar\n" + I(1) + I(1) + "\n";
-  s += "/PROP/SOLID/1\nsolid\n" + I(isolid) + I(0) + I(0) + I(isolid == 18 ? 3 : 0) + "\n" + R(0.0) + R(0.0) + R(0.0) +
-       "\n";  // Isolid 18 needs its Icpre given
+  s += "/PROP/SOLID/1\nsolid\n" + I(isolid) + I(isolid == 18 ? 4 : 0) + I(0) + I(isolid == 18 ? 3 : 0) + "\n" + R(0.0) + R(0.0) + R(0.0) +
+       "\n";  // Isolid 18 needs its Ismstr and Icpre given
   s += "/MAT/ELAST/1\nsteel\n" + R(kRho) + "\n" + R(young) + R(nu) + "\n";
   s += "/GRNOD/NODE/10\nleft\n" + I(id(0, 0, 0)) + I(id(0, 1, 0)) + I(id(0, 0, 1)) + I(id(0, 1, 1)) + "\n";
   s += "/GRNOD/NODE/20\nright\n" + I(id(n, 0, 0)) + I(id(n, 1, 0)) + I(id(n, 0, 1)) + I(id(n, 1, 1)) + "\n";

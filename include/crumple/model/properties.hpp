@@ -30,8 +30,9 @@ struct SolidSection {  // /PROP/TYPE14 (= /PROP/SOLID), the values as written (0
   int iframe = 0;  // element frame: 1 non co-rotational, 2 co-rotational
   int inpts = 0;   // integration points ijk for Isolid 14
   double qa = 0.0, qb = 0.0;  // bulk viscosity coefficients (0 -> 1.1 and 0.05)
-  double dn = 0.0;            // numerical damping of the Isolid 24 stabilisation
+  double dn = 0.0;            // numerical damping of the Isolid 24 stabilisation (0 -> 0.1)
   double h = 0.0;             // hourglass coefficient (0 -> 0.1)
+  int ihkt = 0;               // Isolid 24 hourglass modulus: 0, 1 elastic (2, tangent, is refused)
 };
 
 enum class PropertyKind : std::uint8_t { Shell, Solid };
@@ -58,6 +59,7 @@ struct ResolvedFormulation {
   int ish3n = 2;    // 3-node shells: 1 or 2
   int isolid = 1;   // bricks: 1, 14 or 24
   int icpre = 0;    // bricks: 1 constant pressure, 3 none (0 for the one-point Isolid 1)
+  int iframe = 1;   // bricks: 1 non co-rotational, 2 co-rotational
   int ismstr = 0;   // small-strain flag after /DEF_SHELL or /DEF_SOLID
   int n_points = 0; // shells: through-thickness points; 0 = global (stress-resultant) plasticity
 };
