@@ -373,6 +373,85 @@ void average_local_shears(const double* x, const double* y, const double* z, con
   }
 }
 
+// Orthogonalised hourglass vectors gamma and hourglass rates q_i,alpha = gamma_alpha . v_i (eq. B-5); with
+// `plain` (Isolid 2) the base vectors h themselves (eq. B-6a). b = dV/dx of eq. B-2 at x^n.
+void hourglass_rates(const Element& el, const double* bx, const double* by, const double* bz, double volume,
+                     bool plain, double gamma[4][8], double q[3][4]) {
+  for (int m = 0; m < 4; ++m) {
+    double hx = 0.0, hy = 0.0, hz = 0.0;
+    if (!plain)
+      for (int a = 0; a < 8; ++a) hx += kH[m][a] * el.x[a], hy += kH[m][a] * el.y[a], hz += kH[m][a] * el.z[a];
+    hx /= volume, hy /= volume, hz /= volume;
+    double qx = 0.0, qy = 0.0, qz = 0.0;
+    for (int a = 0; a < 8; ++a) {
+      const double g = kH[m][a] - (hx * bx[a] + hy * by[a] + hz * bz[a]);
+      gamma[m][a] = g;
+      qx += g * el.vx[a], qy += g * el.vy[a], qz += g * el.vz[a];
+    }
+    q[0][m] = qx, q[1][m] = qy, q[2][m] = qz;
+  }
+}
+
+// Viscous hourglass forces Q = coefficient q (eq. B-6) and their work over dt. Returns the damper's rate bound
+// coefficient * max row sum of |gamma gamma^T| (Gershgorin, eq. B-13); on flattened elements gamma grows.
+double viscous_hourglass(const double gamma[4][8], const double q[3][4], double coefficient, double dt,
+                         double global_q[3][4], double& work) {
+  double largest_row = 0.0;
+  for (int m = 0; m < 4; ++m) {
+    double row = 0.0;
+    for (int k = 0; k < 4; ++k) {
+      double dot = 0.0;
+      for (int a = 0; a < 8; ++a) dot += gamma[m][a] * gamma[k][a];
+      row += std::abs(dot);
+    }
+    largest_row = std::max(largest_row, row);
+  }
+  for (int i = 0; i < 3; ++i)
+    for (int m = 0; m < 4; ++m) {
+      global_q[i][m] = coefficient * q[i][m];
+      work += global_q[i][m] * q[i][m] * dt;
+    }
+  return coefficient * largest_row;
+}
+
+// Isolid 24: updates the 12 stored generalized hourglass stresses hq (element frame) for the rates q over dt and
+// gives their global forces (eq. B-8 to B-9b). `stored` gets the elastic work, `damped` the dn part's. False
+// when the centre Jacobian is not positive (no frame).
+bool physical_stabilisation(const Element& el, const BrickGroupParameters& p, double bulk, double shear,
+                            double volume, double transit, const double q[3][4], double dt, double* hq,
+                            double global_q[3][4], double& stored, double& damped) {
+  // Co-rotational frame and half-widths (eq. B-8): J0 = R U, a_k = 1 / |row k of J0^-1|.
+  double j0[3][3], cof[3][3], rot[3][3];
+  centre_jacobian(el.x, el.y, el.z, j0);
+  const double det = cofactor(j0, cof);
+  if (!(det > 0.0)) return false;
+  polar_rotation(j0, rot);
+  double half[3];
+  for (int k = 0; k < 3; ++k)
+    half[k] = std::abs(det) / std::sqrt(cof[0][k] * cof[0][k] + cof[1][k] * cof[1][k] + cof[2][k] * cof[2][k]);
+  double dq[3][4], dQ[3][4];
+  for (int i = 0; i < 3; ++i)
+    for (int m = 0; m < 4; ++m) dq[i][m] = (rot[0][i] * q[0][m] + rot[1][i] * q[1][m] + rot[2][i] * q[2][m]) * dt;
+  stabilisation_increment(half, volume, p.constant_pressure ? 0.0 : bulk, shear, dq, dQ);  // eq. B-9, B-9a
+  // Numerical damping dn (eq. B-9b): a viscous force dn (dt_e / dt) dQ, the elastic increment over the element's
+  // own transit time, not stored; its work is dissipated (hourglass energy).
+  const double viscous = dt > 0.0 ? p.numerical_damping * transit / dt : 0.0;
+  double local[3][4];
+  for (int i = 0; i < 3; ++i)
+    for (int m = 0; m < 4; ++m) {
+      double& h = hq[m * 3 + i];
+      const double old = h;
+      h += dQ[i][m];
+      stored += 0.5 * (old + h) * dq[i][m];
+      damped += viscous * dQ[i][m] * dq[i][m];
+      local[i][m] = h + viscous * dQ[i][m];
+    }
+  for (int j = 0; j < 3; ++j)
+    for (int m = 0; m < 4; ++m)
+      global_q[j][m] = rot[j][0] * local[0][m] + rot[j][1] * local[1][m] + rot[j][2] * local[2][m];
+  return true;
+}
+
 }  // namespace
 
 void brick8_switch_to_small_strain(const ElementTable& table, std::int32_t element, const NodalState& nodes,
@@ -469,84 +548,21 @@ GroupStepResult brick8_one_point_forces(const ElementTable& table, const Element
       fz[a] = bx[a] * s[5] + by[a] * s[4] + bz[a] * szz;
     }
 
-    // Orthogonalised hourglass vectors gamma and hourglass rates q_i,alpha (eq. B-5); Isolid 2 takes the base
-    // vectors h themselves (eq. B-6a).
     double gamma[4][8], q[3][4];
-    for (int m = 0; m < 4; ++m) {
-      double hx = 0.0, hy = 0.0, hz = 0.0;
-      if (!p.plain_hourglass)
-        for (int a = 0; a < 8; ++a) hx += kH[m][a] * el.x[a], hy += kH[m][a] * el.y[a], hz += kH[m][a] * el.z[a];
-      hx /= volume, hy /= volume, hz /= volume;
-      double qx = 0.0, qy = 0.0, qz = 0.0;
-      for (int a = 0; a < 8; ++a) {
-        const double g = kH[m][a] - (hx * bx[a] + hy * by[a] + hz * bz[a]);
-        gamma[m][a] = g;
-        qx += g * el.vx[a], qy += g * el.vy[a], qz += g * el.vz[a];
-      }
-      q[0][m] = qx, q[1][m] = qy, q[2][m] = qz;
-    }
+    hourglass_rates(el, bx, by, bz, volume, p.plain_hourglass, gamma, q);  // eq. B-5, B-6a
     double hourglass_work = 0.0, stabilisation_work = 0.0, damping_work = 0.0;  // viscous, elastic, dn
     double global_q[3][4];  // generalized hourglass forces in the global frame
     double damper_rate = 0.0;  // bound of the hourglass damper's largest eigenvalue (C = m lambda) [M/T]
+    const double transit = length / (visc.speed + std::sqrt(visc.speed * visc.speed + c * c));  // eq. B-12
     if (!physical) {
       // Viscous hourglass forces (eq. B-6): Q = h rho c V^(2/3) / 4 q.
       const double cbrt_v = std::cbrt(volume);
-      const double coefficient = 0.25 * p.hourglass * rho * c * cbrt_v * cbrt_v;
-      // These forces are a damper on the hourglass modes, its largest rate bounded by Gershgorin on gamma gamma^T
-      // (eq. B-13). On flattened elements gamma grows.
-      double largest_row = 0.0;
-      for (int m = 0; m < 4; ++m) {
-        double row = 0.0;
-        for (int k = 0; k < 4; ++k) {
-          double dot = 0.0;
-          for (int a = 0; a < 8; ++a) dot += gamma[m][a] * gamma[k][a];
-          row += std::abs(dot);
-        }
-        largest_row = std::max(largest_row, row);
-      }
-      damper_rate = coefficient * largest_row;
-      for (int i = 0; i < 3; ++i)
-        for (int m = 0; m < 4; ++m) {
-          global_q[i][m] = coefficient * q[i][m];
-          hourglass_work += global_q[i][m] * q[i][m] * dt;
-        }
-    } else {
-      // Co-rotational frame and half-widths (eq. B-8): J0 columns g_k = sum s_k,I x_I / 8, R from J0 = R U,
-      // a_k = 1 / |row k of J0^-1|.
-      double j0[3][3];
-      centre_jacobian(el.x, el.y, el.z, j0);
-      double cof[3][3], rot[3][3];
-      const double det = cofactor(j0, cof);
-      if (!(det > 0.0)) {  // the one-point Jacobian of a badly distorted element: no frame
-        result.inverted = e;
-        continue;
-      }
-      polar_rotation(j0, rot);
-      double half[3];
-      for (int k = 0; k < 3; ++k)
-        half[k] = std::abs(det) / std::sqrt(cof[0][k] * cof[0][k] + cof[1][k] * cof[1][k] + cof[2][k] * cof[2][k]);
-      double dq[3][4], dQ[3][4];
-      for (int i = 0; i < 3; ++i)
-        for (int m = 0; m < 4; ++m) dq[i][m] = (rot[0][i] * q[0][m] + rot[1][i] * q[1][m] + rot[2][i] * q[2][m]) * dt;
-      stabilisation_increment(half, volume, p.constant_pressure ? 0.0 : K, G, dq, dQ);  // eq. B-9, B-9a
-      // Numerical damping dn (eq. B-9b): a viscous force dn (dt_e / dt) dQ, the elastic increment over the
-      // element's own transit time, not stored; its work is dissipated (hourglass energy).
-      const double transit = length / (visc.speed + std::sqrt(visc.speed * visc.speed + c * c));
-      const double viscous = dt > 0.0 ? p.numerical_damping * transit / dt : 0.0;
-      double* hq = &state.hourglass[ue * 12];
-      double local[3][4];
-      for (int i = 0; i < 3; ++i)
-        for (int m = 0; m < 4; ++m) {
-          double& stored = hq[m * 3 + i];
-          const double old = stored;
-          stored += dQ[i][m];
-          stabilisation_work += 0.5 * (old + stored) * dq[i][m];
-          damping_work += viscous * dQ[i][m] * dq[i][m];
-          local[i][m] = stored + viscous * dQ[i][m];
-        }
-      for (int j = 0; j < 3; ++j)
-        for (int m = 0; m < 4; ++m)
-          global_q[j][m] = rot[j][0] * local[0][m] + rot[j][1] * local[1][m] + rot[j][2] * local[2][m];
+      damper_rate = viscous_hourglass(gamma, q, 0.25 * p.hourglass * rho * c * cbrt_v * cbrt_v, dt, global_q,
+                                      hourglass_work);
+    } else if (!physical_stabilisation(el, p, K, G, volume, transit, q, dt, &state.hourglass[ue * 12], global_q,
+                                       stabilisation_work, damping_work)) {
+      result.inverted = e;  // the one-point Jacobian of a badly distorted element: no frame
+      continue;
     }
     for (int a = 0; a < 8; ++a)
       for (int m = 0; m < 4; ++m) {
@@ -575,9 +591,8 @@ GroupStepResult brick8_one_point_forces(const ElementTable& table, const Element
     // Critical step L / (Q + sqrt(Q^2 + c^2)) (eq. B-12), where Q carries the bulk viscosity, and the hourglass
     // damper's own bound 2 m / lambda_max (eq. B-13): hourglass modes carry no stiffness in Isolid 1.
     const double nodal_mass = 0.125 * p.density * state.volume0[ue];
-    const double step = std::min(length / (visc.speed + std::sqrt(visc.speed * visc.speed + c * c)),
-                                 damper_rate > 0.0 ? 2.0 * nodal_mass / damper_rate
-                                                   : std::numeric_limits<double>::infinity());
+    const double step = std::min(transit, damper_rate > 0.0 ? 2.0 * nodal_mass / damper_rate
+                                                            : std::numeric_limits<double>::infinity());
     state.critical_dt[ue] = step;
     if (step < result.min_dt) result.min_dt = step, result.controlling = e;
     if (u.failed) {

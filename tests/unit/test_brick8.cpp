@@ -167,13 +167,14 @@ Patch macneal_harder_patch() {
   return p;
 }
 
-// A 2 x 2 x 2 block of the unit cube with every node moved by up to 0.1 (deterministic pseudo-random).
-Patch perturbed_block() {
+// A 2 x 2 x 2 block of the unit cube with every node moved by up to `amplitude` / 2 (deterministic
+// pseudo-random; 0 gives the regular block of cubes).
+Patch perturbed_block(double amplitude = 0.2) {
   Patch p;
   unsigned state = 12345u;
   auto jitter = [&]() {
     state = state * 1103515245u + 12345u;
-    return 0.2 * (static_cast<double>((state >> 8) & 0xffffu) / 65535.0 - 0.5);
+    return amplitude * (static_cast<double>((state >> 8) & 0xffffu) / 65535.0 - 0.5);
   };
   auto id = [](int i, int j, int k) { return i + 3 * j + 9 * k; };
   for (int k = 0; k < 3; ++k)
@@ -338,6 +339,11 @@ TEST(Brick8, PatchTestSingleDistortedBrick) {
 TEST(Brick8, PatchTestMacNealHarderSevenElements) {
   const Patch patch = macneal_harder_patch();
   for (int isolid : kIsolids) check_patch(patch, isolid);
+}
+
+TEST(Brick8, PatchTestRegularBlockOfIsolid2) {
+  // Isolid 2's hourglass base vectors are orthogonal to linear fields only on parallelepipeds (eq. B-6a).
+  check_patch(perturbed_block(0.0), 2);
 }
 
 TEST(Brick8, PatchTestPerturbedBlock) {
