@@ -18,30 +18,13 @@ struct ElementFacts {  // what a segment or a node needs of an element
 };
 
 double brick_volume(const Model& m, std::int32_t e) {
-  // Volume of the hexahedron as 24 tetrahedra (centroid, face centre, face edge); the faces are consistently
-  // oriented, so the signed volumes add up to plus or minus the volume.
   const std::int32_t* c = m.elements[static_cast<int>(ElementKind::Brick8)].nodes_of(static_cast<std::size_t>(e));
-  auto X = [&](int a) {
+  std::array<geometry::Point, 8> x;
+  for (std::size_t a = 0; a < 8; ++a) {
     const auto k = static_cast<std::size_t>(c[a]);
-    return std::array<double, 3>{m.nodes.x[k], m.nodes.y[k], m.nodes.z[k]};
-  };
-  static constexpr int faces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
-  std::array<double, 3> centre{};
-  for (int a = 0; a < 8; ++a)
-    for (int d = 0; d < 3; ++d) centre[static_cast<std::size_t>(d)] += X(a)[static_cast<std::size_t>(d)] / 8.0;
-  double volume = 0.0;
-  for (const auto& f : faces) {
-    std::array<double, 3> fc{};
-    for (int a : f)
-      for (int d = 0; d < 3; ++d) fc[static_cast<std::size_t>(d)] += X(a)[static_cast<std::size_t>(d)] / 4.0;
-    for (int a = 0; a < 4; ++a) {
-      const auto p = X(f[a]), q = X(f[(a + 1) % 4]);
-      double u[3], v[3], w[3];
-      for (std::size_t d = 0; d < 3; ++d) u[d] = p[d] - centre[d], v[d] = q[d] - centre[d], w[d] = fc[d] - centre[d];
-      volume -= (u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) + u[2] * (v[0] * w[1] - v[1] * w[0])) / 6.0;
-    }
+    x[a] = {m.nodes.x[k], m.nodes.y[k], m.nodes.z[k]};
   }
-  return std::abs(volume);
+  return std::abs(geometry::brick_volume(x));
 }
 
 double segment_area(const Model& m, const std::array<std::int32_t, 4>& s) {

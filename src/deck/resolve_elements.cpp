@@ -17,7 +17,7 @@ geometry::Point point(const Nodes& nodes, std::int32_t i) {
   return {nodes.x[k], nodes.y[k], nodes.z[k]};
 }
 
-// Area (shells) or one-point volume (bricks) of an element given by dense node indices.
+// Area (shells) or exact volume (bricks) of an element given by dense node indices.
 double measure(const Nodes& nodes, ElementKind kind, const std::int32_t* n) {
   switch (kind) {
     case ElementKind::Shell4:
@@ -31,6 +31,49 @@ double measure(const Nodes& nodes, ElementKind kind, const std::int32_t* n) {
     }
   }
   return 0.0;
+}
+
+// A brick may repeat nodes to write a prism, pyramid or tetrahedron, as the reference accepts: the equal node ids
+// must sit at connectivity positions joined by edges of the hexahedron (nodes merged along edges, e.g. the prism
+// 1 2 3 3 5 6 7 7 or the tetrahedron 1 2 3 3 4 4 4 4), and at least 4 nodes must stay distinct
+// (docs/theory/brick8.md, "Degenerate bricks"). A repetition across a face or body diagonal is an error.
+bool check_degenerate_brick(Resolver& r, const SourceLocation& where, const std::string& keyword, std::int64_t id,
+                            const std::int64_t* nodes) {
+  constexpr int kEdges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6},
+                                 {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
+  int component[8];  // positions joined through edges whose two ends carry the same node
+  for (int a = 0; a < 8; ++a) component[a] = a;
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (const auto& edge : kEdges)
+      if (nodes[edge[0]] == nodes[edge[1]] && component[edge[0]] != component[edge[1]]) {
+        component[edge[0]] = component[edge[1]] = std::min(component[edge[0]], component[edge[1]]);
+        changed = true;
+      }
+  }
+  int distinct = 0;
+  for (int a = 0; a < 8; ++a) {
+    bool first = true;
+    for (int b = 0; b < a; ++b)
+      if (nodes[b] == nodes[a]) {
+        first = false;
+        if (component[b] != component[a]) {
+          r.error(where, keyword, fmt::format("node_ID{}", a + 1),
+                  fmt::format("repeated nodes only along edges of BRICK {} (a degenerate prism 1 2 3 3 5 6 7 7, "
+                              "pyramid or tetrahedron 1 2 3 3 4 4 4 4)",
+                              id),
+                  fmt::format("node {} as node_ID{} and node_ID{}, not joined by an edge", nodes[a], b + 1, a + 1));
+          return false;
+        }
+      }
+    distinct += first ? 1 : 0;
+  }
+  if (distinct < 4) {
+    r.error(where, keyword, "node_ID1..", fmt::format("at least 4 distinct nodes in BRICK {}", id),
+            fmt::format("{} distinct nodes", distinct));
+    return false;
+  }
+  return true;
 }
 
 void resolve_kind(Resolver& r, ElementKind kind) {
@@ -60,7 +103,7 @@ void resolve_kind(Resolver& r, ElementKind kind) {
       const std::int32_t node = r.find(m.index.nodes, id, where, keyword, fmt::format("node_ID{}", k + 1), "node");
       connectivity[e * static_cast<std::size_t>(n) + static_cast<std::size_t>(k)] = node;
       nodes_ok = nodes_ok && node >= 0;
-      for (int j = 0; j < k; ++j)
+      for (int j = 0; j < k && kind != ElementKind::Brick8; ++j)
         if (raw.node_ids[e * static_cast<std::size_t>(n) + static_cast<std::size_t>(j)] == id) {
           r.error(where, keyword, fmt::format("node_ID{}", k + 1),
                   fmt::format("{} distinct nodes in {} {}", n, name, raw.user_id[e]),
@@ -69,6 +112,8 @@ void resolve_kind(Resolver& r, ElementKind kind) {
           break;
         }
     }
+    if (kind == ElementKind::Brick8 && nodes_ok)
+      nodes_ok = check_degenerate_brick(r, where, keyword, raw.user_id[e], &raw.node_ids[e * 8]);
     if (part[e] >= 0) {
       const Part& p = m.parts[static_cast<std::size_t>(part[e])];
       if (p.property >= 0) {

@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "crumple/materials/solid_update.hpp"
+#include "crumple/model/geometry.hpp"
 
 namespace crumple {
 namespace {
@@ -22,22 +23,6 @@ constexpr double kH[4][8] = {{1, 1, -1, -1, -1, -1, 1, 1},
                              {1, -1, -1, 1, -1, 1, 1, -1},
                              {1, -1, 1, -1, 1, -1, 1, -1},
                              {-1, 1, -1, 1, 1, -1, 1, -1}};
-
-// Exact volume (eq. B-2): V = sum over I < J < K of c_IJK x_I . (x_J x x_K) / 12 with integer c_IJK, so that
-// dV/dx_I = sum_{J<K} c_IJK (x_J x x_K) / 12. kPairs lists the 24 node pairs (J, K) that occur (every pair but the
-// four body diagonals); kVolumeTerms[I] the nine (pair, c) of node I.
-constexpr int kPairs[24][2] = {{0, 1}, {0, 2}, {0, 3}, {0, 4}, {0, 5}, {0, 7}, {1, 2}, {1, 3},
-                               {1, 4}, {1, 5}, {1, 6}, {2, 3}, {2, 5}, {2, 6}, {2, 7}, {3, 4},
-                               {3, 6}, {3, 7}, {4, 5}, {4, 6}, {4, 7}, {5, 6}, {5, 7}, {6, 7}};
-constexpr int kVolumeTerms[8][9][2] = {
-    {{6, -1}, {7, -1}, {8, 1}, {9, 1}, {11, -1}, {15, -1}, {17, -1}, {18, -1}, {20, 1}},
-    {{1, 1}, {2, 1}, {3, -1}, {4, -1}, {11, -1}, {12, 1}, {13, 1}, {18, -1}, {21, -1}},
-    {{0, -1}, {2, 1}, {7, 1}, {9, -1}, {10, -1}, {16, 1}, {17, 1}, {21, -1}, {23, -1}},
-    {{0, -1}, {1, -1}, {3, 1}, {5, 1}, {6, -1}, {13, -1}, {14, -1}, {20, 1}, {23, -1}},
-    {{0, 1}, {2, -1}, {4, 1}, {5, -1}, {9, 1}, {17, -1}, {21, 1}, {22, 1}, {23, 1}},
-    {{0, 1}, {3, -1}, {6, 1}, {8, -1}, {10, 1}, {13, 1}, {19, -1}, {20, -1}, {23, 1}},
-    {{6, 1}, {9, -1}, {11, 1}, {12, -1}, {14, 1}, {17, 1}, {18, 1}, {20, -1}, {22, -1}},
-    {{2, -1}, {3, 1}, {11, 1}, {13, -1}, {15, 1}, {16, -1}, {18, 1}, {19, 1}, {21, 1}}};
 
 // Faces for the characteristic length (eq. B-12).
 constexpr int kFaces[6][4] = {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
@@ -135,6 +120,68 @@ void gather(const NodalState& nodes, const std::int32_t* n, double dt, Element& 
   }
 }
 
+// Centre Jacobian J0 = [g_r g_s g_t], g_k = sum_I k_I x_I / 8 (eq. B-8).
+void centre_jacobian(const double* x, const double* y, const double* z, double j0[3][3]) {
+  for (int i = 0; i < 3; ++i)
+    for (int k = 0; k < 3; ++k) j0[i][k] = 0.0;
+  for (int a = 0; a < 8; ++a) {
+    const double xa[3] = {x[a], y[a], z[a]}, sa[3] = {kS1[a], kS2[a], kS3[a]};
+    for (int i = 0; i < 3; ++i)
+      for (int k = 0; k < 3; ++k) j0[i][k] += 0.125 * sa[k] * xa[i];
+  }
+}
+
+// Turn of the element frame over the step (Iframe 2, eq. B-3a): the frames R0, R1 of eq. B-8 at x^(n-1) and x^n
+// give dR = R1 R0^T.
+void frame_turn(const Element& el, double dr[3][3]) {
+  double x0[8], y0[8], z0[8];
+  for (int a = 0; a < 8; ++a) x0[a] = 2.0 * el.mx[a] - el.x[a], y0[a] = 2.0 * el.my[a] - el.y[a], z0[a] = 2.0 * el.mz[a] - el.z[a];
+  double j[3][3], r0[3][3], r1[3][3];
+  centre_jacobian(x0, y0, z0, j);
+  polar_rotation(j, r0);
+  centre_jacobian(el.x, el.y, el.z, j);
+  polar_rotation(j, r1);
+  for (int i = 0; i < 3; ++i)
+    for (int k = 0; k < 3; ++k) dr[i][k] = r1[i][0] * r0[k][0] + r1[i][1] * r0[k][1] + r1[i][2] * r0[k][2];
+}
+
+// The spin whose Cayley transform (eq. SU-2) is dR exactly: w dt = 4 axial(dR) / (1 + tr dR). Per unit time.
+void spin_of_turn(const double dr[3][3], double dt, double w[3]) {
+  w[0] = w[1] = w[2] = 0.0;
+  if (!(dt > 0.0)) return;
+  const double f = 2.0 / ((1.0 + dr[0][0] + dr[1][1] + dr[2][2]) * dt);  // 4 / (1 + tr) times the half difference
+  w[0] = f * (dr[2][1] - dr[1][2]), w[1] = f * (dr[0][2] - dr[2][0]), w[2] = f * (dr[1][0] - dr[0][1]);
+}
+
+// Small strain (eq. B-14): the element's current and mid-step geometries become its frozen reference shape, turned
+// by the rotation of the element frame since the freeze (Ismstr 1, 2) or kept as frozen (Ismstr 3).
+void use_reference_shape(const BrickGroupParameters& p, const BrickState& state, std::size_t e, double dt,
+                         const double dr[3][3], Element& el) {
+  const double* shape = &state.reference_shape[24 * e];
+  if (p.ismstr != 3 && dt > 0.0)  // objective: the velocities lose the frame's rigid turn, (I - dR^T) x / dt
+    for (int a = 0; a < 8; ++a) {
+      const double x[3] = {el.x[a], el.y[a], el.z[a]};
+      double* v[3] = {&el.vx[a], &el.vy[a], &el.vz[a]};
+      for (int i = 0; i < 3; ++i) *v[i] -= (x[i] - dr[0][i] * x[0] - dr[1][i] * x[1] - dr[2][i] * x[2]) / dt;
+    }
+  double turn[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};  // R_now R_freeze^T
+  if (p.ismstr != 3) {
+    double j0[3][3], now[3][3];
+    centre_jacobian(el.x, el.y, el.z, j0);
+    polar_rotation(j0, now);
+    const double* frozen = &state.reference_frame[9 * e];
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) turn[i][j] = now[i][0] * frozen[3 * j] + now[i][1] * frozen[3 * j + 1] +
+                                               now[i][2] * frozen[3 * j + 2];
+  }
+  for (int a = 0; a < 8; ++a) {
+    const double* x = shape + 3 * a;
+    el.x[a] = el.mx[a] = turn[0][0] * x[0] + turn[0][1] * x[1] + turn[0][2] * x[2];
+    el.y[a] = el.my[a] = turn[1][0] * x[0] + turn[1][1] * x[1] + turn[1][2] * x[2];
+    el.z[a] = el.mz[a] = turn[2][0] * x[0] + turn[2][1] * x[1] + turn[2][2] * x[2];
+  }
+}
+
 // Rate of deformation (engineering shears) and spin axial vector from the velocity gradient L_ij = dv_i/dx_j
 // (eq. B-3).
 struct Rates {
@@ -192,10 +239,12 @@ Viscosity bulk_viscosity(const BrickGroupParameters& p, double rho, double c, do
 // Assumed-strain stabilisation of Isolid 24 (eq. B-9): increments dQ of the 12 generalized hourglass stresses
 // (local frame, [direction][mode]) for the increments dq of the hourglass rates times dt, in a parallelepiped of
 // half-widths a[3] and volume V. Modes 0, 1, 2 are the products s t, r t, r s (mode k lacks coordinate k); mode 3
-// is r s t.
-void stabilisation_increment(const double a[3], double volume, double young, double poisson, double shear,
-                             const double dq[3][4], double dQ[3][4]) {
-  const double plate = young / (1.0 - poisson * poisson);
+// is r s t. `bulk` is the modulus that the hourglass strains' volume change meets: the material's K, or 0 with a
+// constant pressure (Icpre 1, eq. B-9a).
+void stabilisation_increment(const double a[3], double volume, double bulk, double shear, const double dq[3][4],
+                             double dQ[3][4]) {
+  const double normal = bulk + 4.0 / 3.0 * shear;  // d sigma_nn / d e_nn with the other normal strains held
+  const double cross = bulk - 2.0 / 3.0 * shear;   // d sigma_nn / d e_pp
   for (int i = 0; i < 3; ++i)
     for (int k = 0; k < 4; ++k) dQ[i][k] = 0.0;
   for (int m = 0; m < 3; ++m) {
@@ -203,60 +252,237 @@ void stabilisation_increment(const double a[3], double volume, double young, dou
     // Strain field linear in the natural coordinate of axis m: mode q (= coordinates n, m) along n stretches n,
     // mode n (= coordinates q, m) along q stretches q, and the two cross terms shear the n-q plane. The shears
     // of the m direction (d v_m / d x_n ... linear in that same coordinate) are left out: they are the parasitic
-    // shears of bending. Plane stress normal to m keeps the bending stiffness free of volumetric locking.
+    // shears of bending. The stretch along m is zero: that field has no d/dx_m.
     const double hn = 1.0 / (8.0 * a[n]), hq = 1.0 / (8.0 * a[q]);
     const double enn = dq[n][q] * hn, eqq = dq[q][n] * hq;
     const double gnq = dq[n][n] * hq + dq[q][q] * hn;
     const double w = volume / 3.0;  // integral of the coordinate squared
-    const double snn = plate * (enn + poisson * eqq), sqq = plate * (eqq + poisson * enn), tnq = shear * gnq;
+    const double snn = normal * enn + cross * eqq, sqq = cross * enn + normal * eqq, tnq = shear * gnq;
     dQ[n][q] += w * snn * hn;
     dQ[q][n] += w * sqq * hq;
     dQ[n][n] += w * tnq * hq;
     dQ[q][q] += w * tnq * hn;
-    // Mode 3 (r s t): gradient along axis m times the product of the two other coordinates; uniaxial stress for
-    // the stretch, shear modulus for the two shears.
+    // Mode 3 (r s t): gradient along axis m times the product of the two other coordinates, one stretch and two
+    // shears.
     const double hm = 1.0 / (8.0 * a[m]);
     const double w3 = volume / 9.0;
-    dQ[m][3] += w3 * young * dq[m][3] * hm * hm;
+    dQ[m][3] += w3 * normal * dq[m][3] * hm * hm;
     dQ[n][3] += w3 * shear * dq[n][3] * hm * hm;
     dQ[q][3] += w3 * shear * dq[q][3] * hm * hm;
   }
 }
 
-}  // namespace
-
-double brick8_volume_gradient(const double* x, const double* y, const double* z, double* dv_dx, double* dv_dy,
-                              double* dv_dz) {
-  double cx[24], cy[24], cz[24];
-  for (int k = 0; k < 24; ++k) {
-    const int j = kPairs[k][0], l = kPairs[k][1];
-    cx[k] = y[j] * z[l] - z[j] * y[l];
-    cy[k] = z[j] * x[l] - x[j] * z[l];
-    cz[k] = x[j] * y[l] - y[j] * x[l];
-  }
-  double volume = 0.0;
-  for (int i = 0; i < 8; ++i) {
-    double bx = 0.0, by = 0.0, bz = 0.0;
-    for (const auto& t : kVolumeTerms[i]) {
-      const double c = t[1];
-      bx += c * cx[t[0]], by += c * cy[t[0]], bz += c * cz[t[0]];
+// Kinematics of Gauss point g (eq. B-10): the velocity gradient on the mid-step geometry, the cofactor matrix of
+// the current Jacobian (det J B_I = C grad_rst N_I) and both determinants. False when a determinant is not
+// positive.
+struct PointKinematics {
+  double l[3][3] = {};  // L = dv/dx at x^(n-1/2)
+  double cn[3][3];      // cofactors of J at x^n
+  double det_mid = 0.0, det_now = 0.0;
+};
+bool point_kinematics(const Element& el, int g, PointKinematics& pk) {
+  const auto& dn = kGauss.d[g];
+  double jm[3][3] = {}, jn[3][3] = {};
+  for (int a = 0; a < 8; ++a)
+    for (int k = 0; k < 3; ++k) {
+      jm[0][k] += el.mx[a] * dn[k][a], jm[1][k] += el.my[a] * dn[k][a], jm[2][k] += el.mz[a] * dn[k][a];
+      jn[0][k] += el.x[a] * dn[k][a], jn[1][k] += el.y[a] * dn[k][a], jn[2][k] += el.z[a] * dn[k][a];
     }
-    dv_dx[i] = bx / 12.0, dv_dy[i] = by / 12.0, dv_dz[i] = bz / 12.0;
-    // V is linear in each of the x, y and z coordinate vectors: V = sum x_I dV/dx_I (= same with y, z).
-    volume += x[i] * dv_dx[i] + y[i] * dv_dy[i] + z[i] * dv_dz[i];
+  double cm[3][3];
+  pk.det_mid = cofactor(jm, cm);
+  pk.det_now = cofactor(jn, pk.cn);
+  if (!(pk.det_mid > 0.0) || !(pk.det_now > 0.0)) return false;
+  for (int a = 0; a < 8; ++a) {
+    double b[3];  // dN_a/dx = J^-T dN_a/dxi = C dN_a/dxi / det
+    for (int i = 0; i < 3; ++i) b[i] = (cm[i][0] * dn[0][a] + cm[i][1] * dn[1][a] + cm[i][2] * dn[2][a]) / pk.det_mid;
+    const double v[3] = {el.vx[a], el.vy[a], el.vz[a]};
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) pk.l[i][j] += v[i] * b[j];
   }
-  return volume / 3.0;
+  return true;
 }
 
-double brick8_volume(const double* x, const double* y, const double* z) {
-  double bx[8], by[8], bz[8];
-  return brick8_volume_gradient(x, y, z, bx, by, bz);
+// Adds the forces of the 8 point stresses to f and returns sum det J p for the mean-gradient pressure forces
+// (eq. B-10): with a constant pressure the points carry their deviatoric stress, otherwise the whole stress.
+double point_forces(const PointKinematics* pk, const double (*sigma)[6], bool constant_pressure, double* fx,
+                    double* fy, double* fz) {
+  double pressure_volume = 0.0;
+  for (int g = 0; g < 8; ++g) {
+    const auto& dn = kGauss.d[g];
+    const double* s = sigma[g];
+    const double pressure = constant_pressure ? (s[0] + s[1] + s[2]) / 3.0 : 0.0;
+    pressure_volume += pk[g].det_now * pressure;
+    const double dxx = s[0] - pressure, dyy = s[1] - pressure, dzz = s[2] - pressure;
+    const auto& cn = pk[g].cn;
+    for (int a = 0; a < 8; ++a) {
+      double b[3];  // det J B = C dN/dxi: the weight det J cancels the division
+      for (int i = 0; i < 3; ++i) b[i] = cn[i][0] * dn[0][a] + cn[i][1] * dn[1][a] + cn[i][2] * dn[2][a];
+      fx[a] += b[0] * dxx + b[1] * s[3] + b[2] * s[5];
+      fy[a] += b[0] * s[3] + b[1] * dyy + b[2] * s[4];
+      fz[a] += b[0] * s[5] + b[1] * s[4] + b[2] * dzz;
+    }
+  }
+  return pressure_volume;
+}
+
+// Assumed shears of Isolid 14 (eq. B-10a): in the element frame R of eq. B-8 (polar decomposition of the centre
+// Jacobian of x, y, z), the shear of the plane of natural axes i, j at each point becomes the w-weighted mean over
+// the four points on the same side of the third axis. t holds 8 symmetric tensors (xx yy zz xy yz zx), with
+// engineering shears when `engineering`.
+void average_local_shears(const double* x, const double* y, const double* z, const double* w, bool engineering,
+                          double (*t)[6]) {
+  double j0[3][3], rot[3][3];
+  centre_jacobian(x, y, z, j0);
+  polar_rotation(j0, rot);
+  const double f = engineering ? 0.5 : 1.0;  // tensor shear = f * stored shear
+  double local[8][3][3];
+  for (int g = 0; g < 8; ++g) {
+    const double a[3][3] = {{t[g][0], f * t[g][3], f * t[g][5]},
+                            {f * t[g][3], t[g][1], f * t[g][4]},
+                            {f * t[g][5], f * t[g][4], t[g][2]}};
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        double v = 0.0;  // (R^T a R)_ij
+        for (int k = 0; k < 3; ++k)
+          for (int l = 0; l < 3; ++l) v += rot[k][i] * a[k][l] * rot[l][j];
+        local[g][i][j] = v;
+      }
+  }
+  const double* side[3] = {kS1, kS2, kS3};
+  for (int third = 0; third < 3; ++third) {
+    const int i = (third + 1) % 3, j = (third + 2) % 3;
+    for (double sign : {-1.0, 1.0}) {
+      double sum = 0.0, weight = 0.0;
+      for (int g = 0; g < 8; ++g)
+        if (side[third][g] == sign) sum += w[g] * local[g][i][j], weight += w[g];
+      for (int g = 0; g < 8; ++g)
+        if (side[third][g] == sign) local[g][i][j] = local[g][j][i] = sum / weight;
+    }
+  }
+  for (int g = 0; g < 8; ++g) {
+    double a[3][3];
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        double v = 0.0;  // (R local R^T)_ij
+        for (int k = 0; k < 3; ++k)
+          for (int l = 0; l < 3; ++l) v += rot[i][k] * local[g][k][l] * rot[j][l];
+        a[i][j] = v;
+      }
+    t[g][0] = a[0][0], t[g][1] = a[1][1], t[g][2] = a[2][2];
+    t[g][3] = a[0][1] / f, t[g][4] = a[1][2] / f, t[g][5] = a[2][0] / f;
+  }
+}
+
+// Orthogonalised hourglass vectors gamma and hourglass rates q_i,alpha = gamma_alpha . v_i (eq. B-5); with
+// `plain` (Isolid 2) the base vectors h themselves (eq. B-6a). b = dV/dx of eq. B-2 at x^n.
+void hourglass_rates(const Element& el, const double* bx, const double* by, const double* bz, double volume,
+                     bool plain, double gamma[4][8], double q[3][4]) {
+  for (int m = 0; m < 4; ++m) {
+    double hx = 0.0, hy = 0.0, hz = 0.0;
+    if (!plain)
+      for (int a = 0; a < 8; ++a) hx += kH[m][a] * el.x[a], hy += kH[m][a] * el.y[a], hz += kH[m][a] * el.z[a];
+    hx /= volume, hy /= volume, hz /= volume;
+    double qx = 0.0, qy = 0.0, qz = 0.0;
+    for (int a = 0; a < 8; ++a) {
+      const double g = kH[m][a] - (hx * bx[a] + hy * by[a] + hz * bz[a]);
+      gamma[m][a] = g;
+      qx += g * el.vx[a], qy += g * el.vy[a], qz += g * el.vz[a];
+    }
+    q[0][m] = qx, q[1][m] = qy, q[2][m] = qz;
+  }
+}
+
+// Viscous hourglass forces Q = coefficient q (eq. B-6) and their work over dt. Returns the damper's rate bound
+// coefficient * max row sum of |gamma gamma^T| (Gershgorin, eq. B-13); on flattened elements gamma grows.
+double viscous_hourglass(const double gamma[4][8], const double q[3][4], double coefficient, double dt,
+                         double global_q[3][4], double& work) {
+  double largest_row = 0.0;
+  for (int m = 0; m < 4; ++m) {
+    double row = 0.0;
+    for (int k = 0; k < 4; ++k) {
+      double dot = 0.0;
+      for (int a = 0; a < 8; ++a) dot += gamma[m][a] * gamma[k][a];
+      row += std::abs(dot);
+    }
+    largest_row = std::max(largest_row, row);
+  }
+  for (int i = 0; i < 3; ++i)
+    for (int m = 0; m < 4; ++m) {
+      global_q[i][m] = coefficient * q[i][m];
+      work += global_q[i][m] * q[i][m] * dt;
+    }
+  return coefficient * largest_row;
+}
+
+// Isolid 24: updates the 12 stored generalized hourglass stresses hq (element frame) for the rates q over dt and
+// gives their global forces (eq. B-8 to B-9b). `stored` gets the elastic work, `damped` the dn part's. False
+// when the centre Jacobian is not positive (no frame).
+bool physical_stabilisation(const Element& el, const BrickGroupParameters& p, double bulk, double shear,
+                            double volume, double transit, const double q[3][4], double dt, double* hq,
+                            double global_q[3][4], double& stored, double& damped) {
+  // Co-rotational frame and half-widths (eq. B-8): J0 = R U, a_k = 1 / |row k of J0^-1|.
+  double j0[3][3], cof[3][3], rot[3][3];
+  centre_jacobian(el.x, el.y, el.z, j0);
+  const double det = cofactor(j0, cof);
+  if (!(det > 0.0)) return false;
+  polar_rotation(j0, rot);
+  double half[3];
+  for (int k = 0; k < 3; ++k)
+    half[k] = std::abs(det) / std::sqrt(cof[0][k] * cof[0][k] + cof[1][k] * cof[1][k] + cof[2][k] * cof[2][k]);
+  double dq[3][4], dQ[3][4];
+  for (int i = 0; i < 3; ++i)
+    for (int m = 0; m < 4; ++m) dq[i][m] = (rot[0][i] * q[0][m] + rot[1][i] * q[1][m] + rot[2][i] * q[2][m]) * dt;
+  stabilisation_increment(half, volume, p.constant_pressure ? 0.0 : bulk, shear, dq, dQ);  // eq. B-9, B-9a
+  // Numerical damping dn (eq. B-9b): a viscous force dn (dt_e / dt) dQ, the elastic increment over the element's
+  // own transit time, not stored; its work is dissipated (hourglass energy).
+  const double viscous = dt > 0.0 ? p.numerical_damping * transit / dt : 0.0;
+  double local[3][4];
+  for (int i = 0; i < 3; ++i)
+    for (int m = 0; m < 4; ++m) {
+      double& h = hq[m * 3 + i];
+      const double old = h;
+      h += dQ[i][m];
+      stored += 0.5 * (old + h) * dq[i][m];
+      damped += viscous * dQ[i][m] * dq[i][m];
+      local[i][m] = h + viscous * dQ[i][m];
+    }
+  for (int j = 0; j < 3; ++j)
+    for (int m = 0; m < 4; ++m)
+      global_q[j][m] = rot[j][0] * local[0][m] + rot[j][1] * local[1][m] + rot[j][2] * local[2][m];
+  return true;
+}
+
+}  // namespace
+
+void brick8_switch_to_small_strain(const ElementTable& table, std::int32_t element, const NodalState& nodes,
+                                   BrickState& state) {
+  const auto e = static_cast<std::size_t>(element);
+  Element el;
+  gather(nodes, table.nodes_of(e), 0.0, el);
+  double j0[3][3], frame[3][3];
+  centre_jacobian(el.x, el.y, el.z, j0);
+  polar_rotation(j0, frame);
+  for (int a = 0; a < 8; ++a) {
+    double* x = &state.reference_shape[24 * e + 3 * static_cast<std::size_t>(a)];
+    x[0] = el.x[a], x[1] = el.y[a], x[2] = el.z[a];
+  }
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) state.reference_frame[9 * e + 3 * static_cast<std::size_t>(i) + static_cast<std::size_t>(j)] = frame[i][j];
+  state.small_strain[e] = 1;
+}
+
+void brick8_configure(int isolid, int icpre, BrickGroupParameters& p) {
+  p.isolid = isolid;
+  p.plain_hourglass = isolid == 2;  // Hallquist's viscous form (eq. B-6a)
+  p.points = isolid == 1 || isolid == 2 || isolid == 24 ? 1 : 8;
+  p.assumed_shear = isolid == 14 || isolid == 18;      // shear-locking free 2x2x2 (eq. B-10a)
+  p.constant_pressure = icpre == 1 || isolid == 12;  // Isolid 12: bulk always at one point (eq. B-10)
 }
 
 GroupStepResult brick8_forces(const ElementTable& table, const ElementGroup& group, const BrickGroupParameters& p,
                               NodalState& nodes, BrickState& state, double dt) {
-  return p.isolid == 14 ? brick8_full_forces(table, group, p, nodes, state, dt)
-                        : brick8_one_point_forces(table, group, p, nodes, state, dt);
+  return p.points == 8 ? brick8_full_forces(table, group, p, nodes, state, dt)
+                       : brick8_one_point_forces(table, group, p, nodes, state, dt);
 }
 
 GroupStepResult brick8_one_point_forces(const ElementTable& table, const ElementGroup& group,
@@ -274,11 +500,17 @@ GroupStepResult brick8_one_point_forces(const ElementTable& table, const Element
     const std::int32_t* n = table.nodes_of(ue);
     Element el;
     gather(nodes, n, dt, el);
+    // Iframe 2, or an objective small-strain element: the stresses turn with the element frame (eq. B-3a).
+    const bool small_strain = state.small_strain[ue] != 0;
+    const bool frame_turns = p.corotational || (small_strain && p.ismstr != 3);
+    double spin[3], turn[3][3];
+    if (frame_turns) frame_turn(el, turn), spin_of_turn(turn, dt, spin);
+    if (small_strain) use_reference_shape(p, state, ue, dt, turn, el);
 
     // Uniform gradients at x^n (forces) and at the mid-step geometry (rates), eq. B-2, B-3.
     double bx[8], by[8], bz[8], mbx[8], mby[8], mbz[8];
-    const double volume = brick8_volume_gradient(el.x, el.y, el.z, bx, by, bz);
-    const double volume_mid = brick8_volume_gradient(el.mx, el.my, el.mz, mbx, mby, mbz);
+    const double volume = geometry::brick_volume_gradient(el.x, el.y, el.z, bx, by, bz);
+    const double volume_mid = geometry::brick_volume_gradient(el.mx, el.my, el.mz, mbx, mby, mbz);
     if (!(volume > 0.0) || !(volume_mid > 0.0)) {
       result.inverted = e;
       continue;
@@ -291,7 +523,8 @@ GroupStepResult brick8_one_point_forces(const ElementTable& table, const Element
     }
     for (auto& row : l)
       for (double& v : row) v /= volume_mid;
-    const Rates r = rates_of(l);
+    Rates r = rates_of(l);
+    if (frame_turns) std::copy(spin, spin + 3, r.w);
 
     // Stress update at the single point (eq. SU-1 to SU-4), stress power (eq. B-11).
     const std::size_t ip = p.first_point + static_cast<std::size_t>(e - group.begin);
@@ -315,79 +548,21 @@ GroupStepResult brick8_one_point_forces(const ElementTable& table, const Element
       fz[a] = bx[a] * s[5] + by[a] * s[4] + bz[a] * szz;
     }
 
-    // Orthogonalised hourglass vectors gamma and hourglass rates q_i,alpha (eq. B-5).
     double gamma[4][8], q[3][4];
-    for (int m = 0; m < 4; ++m) {
-      double hx = 0.0, hy = 0.0, hz = 0.0;
-      for (int a = 0; a < 8; ++a) hx += kH[m][a] * el.x[a], hy += kH[m][a] * el.y[a], hz += kH[m][a] * el.z[a];
-      hx /= volume, hy /= volume, hz /= volume;
-      double qx = 0.0, qy = 0.0, qz = 0.0;
-      for (int a = 0; a < 8; ++a) {
-        const double g = kH[m][a] - (hx * bx[a] + hy * by[a] + hz * bz[a]);
-        gamma[m][a] = g;
-        qx += g * el.vx[a], qy += g * el.vy[a], qz += g * el.vz[a];
-      }
-      q[0][m] = qx, q[1][m] = qy, q[2][m] = qz;
-    }
-    double hourglass_work = 0.0;
+    hourglass_rates(el, bx, by, bz, volume, p.plain_hourglass, gamma, q);  // eq. B-5, B-6a
+    double hourglass_work = 0.0, stabilisation_work = 0.0, damping_work = 0.0;  // viscous, elastic, dn
     double global_q[3][4];  // generalized hourglass forces in the global frame
     double damper_rate = 0.0;  // bound of the hourglass damper's largest eigenvalue (C = m lambda) [M/T]
+    const double transit = length / (visc.speed + std::sqrt(visc.speed * visc.speed + c * c));  // eq. B-12
     if (!physical) {
       // Viscous hourglass forces (eq. B-6): Q = h rho c V^(2/3) / 4 q.
       const double cbrt_v = std::cbrt(volume);
-      const double coefficient = 0.25 * p.hourglass * rho * c * cbrt_v * cbrt_v;
-      // These forces are a damper on the hourglass modes, its largest rate bounded by Gershgorin on gamma gamma^T
-      // (eq. B-13). On flattened elements gamma grows.
-      double largest_row = 0.0;
-      for (int m = 0; m < 4; ++m) {
-        double row = 0.0;
-        for (int k = 0; k < 4; ++k) {
-          double dot = 0.0;
-          for (int a = 0; a < 8; ++a) dot += gamma[m][a] * gamma[k][a];
-          row += std::abs(dot);
-        }
-        largest_row = std::max(largest_row, row);
-      }
-      damper_rate = coefficient * largest_row;
-      for (int i = 0; i < 3; ++i)
-        for (int m = 0; m < 4; ++m) {
-          global_q[i][m] = coefficient * q[i][m];
-          hourglass_work += global_q[i][m] * q[i][m] * dt;
-        }
-    } else {
-      // Co-rotational frame and half-widths (eq. B-8): J0 columns g_k = sum s_k,I x_I / 8, R from J0 = R U,
-      // a_k = 1 / |row k of J0^-1|.
-      double j0[3][3] = {};
-      for (int a = 0; a < 8; ++a) {
-        const double xa[3] = {el.x[a], el.y[a], el.z[a]}, sa[3] = {kS1[a], kS2[a], kS3[a]};
-        for (int i = 0; i < 3; ++i)
-          for (int k = 0; k < 3; ++k) j0[i][k] += 0.125 * sa[k] * xa[i];
-      }
-      double cof[3][3], rot[3][3];
-      const double det = cofactor(j0, cof);
-      if (!(det > 0.0)) {  // the one-point Jacobian of a badly distorted element: no frame
-        result.inverted = e;
-        continue;
-      }
-      polar_rotation(j0, rot);
-      double half[3];
-      for (int k = 0; k < 3; ++k)
-        half[k] = std::abs(det) / std::sqrt(cof[0][k] * cof[0][k] + cof[1][k] * cof[1][k] + cof[2][k] * cof[2][k]);
-      double dq[3][4], dQ[3][4];
-      for (int i = 0; i < 3; ++i)
-        for (int m = 0; m < 4; ++m) dq[i][m] = (rot[0][i] * q[0][m] + rot[1][i] * q[1][m] + rot[2][i] * q[2][m]) * dt;
-      stabilisation_increment(half, volume, p.young, p.poisson, G, dq, dQ);  // eq. B-9
-      double* hq = &state.hourglass[ue * 12];
-      for (int i = 0; i < 3; ++i)
-        for (int m = 0; m < 4; ++m) {
-          double& stored = hq[m * 3 + i];
-          const double old = stored;
-          stored += dQ[i][m];
-          hourglass_work += 0.5 * (old + stored) * dq[i][m];
-        }
-      for (int j = 0; j < 3; ++j)
-        for (int m = 0; m < 4; ++m)
-          global_q[j][m] = rot[j][0] * hq[m * 3] + rot[j][1] * hq[m * 3 + 1] + rot[j][2] * hq[m * 3 + 2];
+      damper_rate = viscous_hourglass(gamma, q, 0.25 * p.hourglass * rho * c * cbrt_v * cbrt_v, dt, global_q,
+                                      hourglass_work);
+    } else if (!physical_stabilisation(el, p, K, G, volume, transit, q, dt, &state.hourglass[ue * 12], global_q,
+                                       stabilisation_work, damping_work)) {
+      result.inverted = e;  // the one-point Jacobian of a badly distorted element: no frame
+      continue;
     }
     for (int a = 0; a < 8; ++a)
       for (int m = 0; m < 4; ++m) {
@@ -395,7 +570,7 @@ GroupStepResult brick8_one_point_forces(const ElementTable& table, const Element
         fy[a] += gamma[m][a] * global_q[1][m];
         fz[a] += gamma[m][a] * global_q[2][m];
       }
-    double check = internal + hourglass_work;
+    double check = internal + hourglass_work + stabilisation_work + damping_work;
     for (int a = 0; a < 8; ++a) {
       const auto k = static_cast<std::size_t>(n[a]);
       nodes.fx[k] -= fx[a];
@@ -404,17 +579,20 @@ GroupStepResult brick8_one_point_forces(const ElementTable& table, const Element
       check += fx[a] + fy[a] + fz[a];
     }
     if (!std::isfinite(check)) result.non_finite = e;  // a NaN or an infinity stops the run at once
-    state.internal_energy[ue] += internal;
-    state.hourglass_energy[ue] += hourglass_work;
-    result.internal_energy += internal;
-    result.hourglass_energy += hourglass_work;
+    // Isolid 24's stabilisation stores the strain energy of the assumed-strain field: internal energy (eq. B-11).
+    // The viscous forces (Isolid 1, 2; dn of Isolid 24) dissipate: hourglass energy.
+    const double strain_work = internal + stabilisation_work;
+    const double viscous_work = hourglass_work + damping_work;
+    state.internal_energy[ue] += strain_work;
+    state.hourglass_energy[ue] += viscous_work;
+    result.internal_energy += strain_work;
+    result.hourglass_energy += viscous_work;
 
     // Critical step L / (Q + sqrt(Q^2 + c^2)) (eq. B-12), where Q carries the bulk viscosity, and the hourglass
     // damper's own bound 2 m / lambda_max (eq. B-13): hourglass modes carry no stiffness in Isolid 1.
     const double nodal_mass = 0.125 * p.density * state.volume0[ue];
-    const double step = std::min(length / (visc.speed + std::sqrt(visc.speed * visc.speed + c * c)),
-                                 damper_rate > 0.0 ? 2.0 * nodal_mass / damper_rate
-                                                   : std::numeric_limits<double>::infinity());
+    const double step = std::min(transit, damper_rate > 0.0 ? 2.0 * nodal_mass / damper_rate
+                                                            : std::numeric_limits<double>::infinity());
     state.critical_dt[ue] = step;
     if (step < result.min_dt) result.min_dt = step, result.controlling = e;
     if (u.failed) {
@@ -429,8 +607,7 @@ GroupStepResult brick8_full_forces(const ElementTable& table, const ElementGroup
                                    const BrickGroupParameters& p, NodalState& nodes, BrickState& state, double dt) {
   GroupStepResult result;
   const materials::SolidElastic elastic{p.young, p.poisson};
-  const double G = elastic.shear(), K = elastic.bulk();
-  const double wave_modulus = K + 4.0 / 3.0 * G;
+  const double wave_modulus = elastic.bulk() + 4.0 / 3.0 * elastic.shear();
 
   for (std::int32_t e = group.begin; e < group.end; ++e) {
     const auto ue = static_cast<std::size_t>(e);
@@ -438,10 +615,19 @@ GroupStepResult brick8_full_forces(const ElementTable& table, const ElementGroup
     const std::int32_t* n = table.nodes_of(ue);
     Element el;
     gather(nodes, n, dt, el);
+    // Iframe 2, or an objective small-strain element: the stresses turn with the element frame (eq. B-3a).
+    const bool small_strain = state.small_strain[ue] != 0;
+    const bool frame_turns = p.corotational || (small_strain && p.ismstr != 3);
+    double spin[3], turn[3][3];
+    if (frame_turns) frame_turn(el, turn), spin_of_turn(turn, dt, spin);
+    if (small_strain) use_reference_shape(p, state, ue, dt, turn, el);
     double bx[8], by[8], bz[8], mbx[8], mby[8], mbz[8];
-    const double volume = brick8_volume_gradient(el.x, el.y, el.z, bx, by, bz);
-    const double volume_mid = brick8_volume_gradient(el.mx, el.my, el.mz, mbx, mby, mbz);
-    if (!(volume > 0.0) || !(volume_mid > 0.0)) {
+    const double volume = geometry::brick_volume_gradient(el.x, el.y, el.z, bx, by, bz);
+    const double volume_mid = geometry::brick_volume_gradient(el.mx, el.my, el.mz, mbx, mby, mbz);
+    PointKinematics pk[8];
+    bool inverted = !(volume > 0.0) || !(volume_mid > 0.0);
+    for (int g = 0; g < 8 && !inverted; ++g) inverted = !point_kinematics(el, g, pk[g]);
+    if (inverted) {  // a point with det J <= 0 counts as an inverted element
       result.inverted = e;
       continue;
     }
@@ -455,62 +641,45 @@ GroupStepResult brick8_full_forces(const ElementTable& table, const ElementGroup
     const double length = volume / largest_face_area(el.x, el.y, el.z);
     const Viscosity visc = bulk_viscosity(p, rho, c, length, dv_mean);
 
-    double fx[8] = {}, fy[8] = {}, fz[8] = {};
-    double pressure_volume = 0.0;  // sum over the points of det J p
+    // Rates of the points (eq. B-10), with the assumed shears of eq. B-10a and the mean dilatation (Icpre 1).
+    Rates r[8];
+    double weight[8];
+    for (int g = 0; g < 8; ++g) {
+      r[g] = rates_of(pk[g].l), weight[g] = pk[g].det_mid;
+      if (frame_turns) std::copy(spin, spin + 3, r[g].w);
+    }
+    if (p.assumed_shear) {
+      double d[8][6];
+      for (int g = 0; g < 8; ++g) std::copy(r[g].d, r[g].d + 6, d[g]);
+      average_local_shears(el.mx, el.my, el.mz, weight, true, d);
+      for (int g = 0; g < 8; ++g) std::copy(d[g], d[g] + 6, r[g].d);
+    }
+    if (p.constant_pressure)
+      for (auto& rg : r) {
+        const double correction = (dv_mean - (rg.d[0] + rg.d[1] + rg.d[2])) / 3.0;
+        for (int k = 0; k < 3; ++k) rg.d[k] += correction;
+      }
+
+    double sigma[8][6];
     double internal = 0.0;
-    bool failed = false, inverted = false;
+    bool failed = false;
     const std::size_t first = p.first_point + static_cast<std::size_t>(e - group.begin) * 8;
     for (int g = 0; g < 8; ++g) {
-      const auto& dn = kGauss.d[g];
-      // Mid-step Jacobian, gradient, rates with the mean dilatation in place of the point's own (eq. B-10).
-      double jm[3][3] = {}, jn[3][3] = {};
-      for (int a = 0; a < 8; ++a)
-        for (int k = 0; k < 3; ++k) {
-          jm[0][k] += el.mx[a] * dn[k][a], jm[1][k] += el.my[a] * dn[k][a], jm[2][k] += el.mz[a] * dn[k][a];
-          jn[0][k] += el.x[a] * dn[k][a], jn[1][k] += el.y[a] * dn[k][a], jn[2][k] += el.z[a] * dn[k][a];
-        }
-      double cm[3][3], cn[3][3];
-      const double det_mid = cofactor(jm, cm);
-      const double det_now = cofactor(jn, cn);
-      if (!(det_mid > 0.0) || !(det_now > 0.0)) {
-        inverted = true;
-        break;
-      }
-      double l[3][3] = {};
-      for (int a = 0; a < 8; ++a) {
-        double b[3];  // dN_a/dx = J^-T dN_a/dxi = C dN_a/dxi / det
-        for (int i = 0; i < 3; ++i) b[i] = (cm[i][0] * dn[0][a] + cm[i][1] * dn[1][a] + cm[i][2] * dn[2][a]) / det_mid;
-        const double v[3] = {el.vx[a], el.vy[a], el.vz[a]};
-        for (int i = 0; i < 3; ++i)
-          for (int j = 0; j < 3; ++j) l[i][j] += v[i] * b[j];
-      }
-      Rates r = rates_of(l);
-      const double correction = (dv_mean - (r.d[0] + r.d[1] + r.d[2])) / 3.0;
-      for (int k = 0; k < 3; ++k) r.d[k] += correction;
-      double s[6];
-      const PointUpdate u = update_point(p, elastic, state, first + static_cast<std::size_t>(g), r, dt, s);
+      const PointUpdate u = update_point(p, elastic, state, first + static_cast<std::size_t>(g), r[g], dt, sigma[g]);
       failed = failed || u.failed;
-      internal += det_mid * u.power * dt;  // Gauss weights are 1
-      // Deviatoric forces at the point on the current geometry; the pressure goes through the mean gradient.
-      const double pressure = (s[0] + s[1] + s[2]) / 3.0;
-      pressure_volume += det_now * pressure;
-      const double dxx = s[0] - pressure, dyy = s[1] - pressure, dzz = s[2] - pressure;
-      for (int a = 0; a < 8; ++a) {
-        double b[3];
-        for (int i = 0; i < 3; ++i) b[i] = cn[i][0] * dn[0][a] + cn[i][1] * dn[1][a] + cn[i][2] * dn[2][a];
-        // det J B = C dN/dxi: the weight det J cancels the division.
-        fx[a] += b[0] * dxx + b[1] * s[3] + b[2] * s[5];
-        fy[a] += b[0] * s[3] + b[1] * dyy + b[2] * s[4];
-        fz[a] += b[0] * s[5] + b[1] * s[4] + b[2] * dzz;
-      }
-    }
-    if (inverted) {
-      result.inverted = e;
-      continue;
+      internal += pk[g].det_mid * u.power * dt;  // Gauss weights are 1
     }
     internal -= visc.q * dv_mean * volume_mid * dt;
+    // The forces are the transpose of the rates' operator: with assumed shears each point carries the weighted
+    // mean shear stress of its group (eq. B-10a).
+    if (p.assumed_shear) {
+      for (int g = 0; g < 8; ++g) weight[g] = pk[g].det_now;
+      average_local_shears(el.x, el.y, el.z, weight, false, sigma);
+    }
+    double fx[8] = {}, fy[8] = {}, fz[8] = {};
+    const double mean_stress = point_forces(pk, sigma, p.constant_pressure, fx, fy, fz) / volume - visc.q;
+
     // Pressure forces (sum det J p) B_bar - q V B_bar with B_bar = dV/dx / V (eq. B-10).
-    const double mean_stress = pressure_volume / volume - visc.q;
     double check = internal + mean_stress;
     for (int a = 0; a < 8; ++a) {
       const auto k = static_cast<std::size_t>(n[a]);

@@ -1,6 +1,7 @@
 // Solver state of the 8-node bricks (docs/theory/brick8.md): per-group parameters from the part's property
 // (/PROP/SOLID) and material, zero initial stresses, initial volumes for the current density.
 #include "crumple/elements/brick8.hpp"
+#include "crumple/model/geometry.hpp"
 #include "crumple/model/mass.hpp"
 #include "solver/internal.hpp"
 
@@ -10,7 +11,8 @@ namespace {
 // Radioss defaults of /PROP/SOLID (docs/cards/starter-model.md, section 8).
 constexpr double kDefaultQa = 1.1;         // quadratic bulk viscosity
 constexpr double kDefaultQb = 0.05;        // linear bulk viscosity
-constexpr double kDefaultHourglass = 0.1;  // viscous hourglass coefficient, Isolid 1
+constexpr double kDefaultHourglass = 0.1;  // viscous hourglass coefficient, Isolid 1 and 2
+constexpr double kDefaultDamping = 0.1;    // numerical damping dn of Isolid 24 (the reference listing prints it)
 
 }  // namespace
 
@@ -18,13 +20,7 @@ void setup_bricks(const Model& m, SolverState& s) {
   const ElementTable& table = m.elements[static_cast<int>(ElementKind::Brick8)];
   const std::size_t n = table.size();
   BrickState& st = s.bricks;
-  st.volume0.assign(n, 0.0);
-  st.hourglass.assign(12 * n, 0.0);
-  st.internal_energy.assign(n, 0.0);
-  st.hourglass_energy.assign(n, 0.0);
-  st.deleted.assign(n, 0);
-  st.critical_dt.assign(n, 0.0);
-  st.mass.assign(n, 0.0);
+  st.resize_elements(n);
   s.brick_groups.assign(m.element_groups.size(), BrickGroupParameters{});
   st.point_offset.assign(m.element_groups.size(), 0);
   st.points.assign(m.element_groups.size(), 0);
@@ -39,11 +35,13 @@ void setup_bricks(const Model& m, SolverState& s) {
     BrickGroupParameters& p = s.brick_groups[g];
     p.hardening = materials::Hardening::of(mat, m.functions);
     p.young = mat.young, p.poisson = mat.poisson, p.density = mat.density;
-    p.isolid = f.isolid;
+    brick8_configure(f.isolid, f.icpre, p);
+    p.ismstr = f.ismstr;
+    p.corotational = f.iframe == 2;
     p.qa = prop.solid.qa > 0.0 ? prop.solid.qa : kDefaultQa;
     p.qb = prop.solid.qb > 0.0 ? prop.solid.qb : kDefaultQb;
     p.hourglass = prop.solid.h > 0.0 ? prop.solid.h : kDefaultHourglass;
-    p.points = f.isolid == 14 ? 8 : 1;
+    p.numerical_damping = prop.solid.dn > 0.0 ? prop.solid.dn : kDefaultDamping;
     p.failure_strain = p.hardening.failure_strain() >= 1e20 ? 0.0 : p.hardening.failure_strain();
     p.first_point = total_points;
     st.point_offset[g] = total_points;
@@ -51,13 +49,14 @@ void setup_bricks(const Model& m, SolverState& s) {
     total_points += static_cast<std::size_t>(group.end - group.begin) * static_cast<std::size_t>(p.points);
     for (std::int32_t e = group.begin; e < group.end; ++e) {
       const std::int32_t* nodes = table.nodes_of(static_cast<std::size_t>(e));
-      double x[8], y[8], z[8];
-      for (int a = 0; a < 8; ++a) {
+      std::array<geometry::Point, 8> x;
+      for (std::size_t a = 0; a < 8; ++a) {
         const auto k = static_cast<std::size_t>(nodes[a]);
-        x[a] = m.nodes.x[k], y[a] = m.nodes.y[k], z[a] = m.nodes.z[k];
+        x[a] = {m.nodes.x[k], m.nodes.y[k], m.nodes.z[k]};
       }
-      st.volume0[static_cast<std::size_t>(e)] = brick8_volume(x, y, z);
+      st.volume0[static_cast<std::size_t>(e)] = geometry::brick_volume(x);
       st.mass[static_cast<std::size_t>(e)] = element_mass(m, ElementKind::Brick8, static_cast<std::size_t>(e));
+      if (p.ismstr == 1 || p.ismstr == 3) brick8_switch_to_small_strain(table, e, s.nodes, st);  // from t = 0
     }
   }
   st.resize_points(total_points);

@@ -14,6 +14,7 @@
 #include "crumple/deck/reader.hpp"
 #include "crumple/elements/brick8.hpp"
 #include "crumple/materials/solid_update.hpp"
+#include "crumple/model/geometry.hpp"
 #include "crumple/solver/solver.hpp"
 #include "crumple/solver/solver_state.hpp"
 #include "deck_files.hpp"
@@ -29,7 +30,8 @@ using Matrix = std::array<std::array<double, 3>, 3>;
 using Connectivity = std::array<int, 8>;
 
 constexpr double kE = 210e9, kNu = 0.3, kRho = 7800.0;
-constexpr int kIsolids[3] = {1, 14, 24};
+// The formulations that pass the patch test on distorted elements (Isolid 2 does on parallelepipeds only).
+constexpr int kIsolids[] = {1, 12, 14, 17, 18, 24};
 
 Material elastic_material(double young = kE, double nu = kNu) {
   Material m;
@@ -43,6 +45,11 @@ Material johnson_cook_material(double a, double b, double n) {
   m.law = MaterialLaw::JohnsonCook;
   m.johnson_cook.a = a, m.johnson_cook.b = b, m.johnson_cook.n = n;
   return m;
+}
+
+double volume_of(const double* x, const double* y, const double* z) {
+  double bx[8], by[8], bz[8];
+  return geometry::brick_volume_gradient(x, y, z, bx, by, bz);
 }
 
 // A group of bricks with its own nodes and state, driven directly through brick8_forces.
@@ -63,13 +70,10 @@ class Bricks {
     group = {ElementKind::Brick8, 0, 0, 0, 0, static_cast<std::int32_t>(n)};
     p.hardening = materials::Hardening::of(material_, functions_);
     p.young = material_.young, p.poisson = material_.poisson, p.density = material_.density;
-    p.isolid = isolid;
-    p.points = isolid == 14 ? 8 : 1;
+    brick8_configure(isolid, isolid == 17 ? 1 : 3, p);  // the default Icpre
     const std::size_t points = n * static_cast<std::size_t>(p.points);
     state.resize_points(points);
-    state.volume0.assign(n, 0.0), state.hourglass.assign(12 * n, 0.0), state.internal_energy.assign(n, 0.0);
-    state.hourglass_energy.assign(n, 0.0), state.critical_dt.assign(n, 0.0), state.mass.assign(n, 0.0);
-    state.deleted.assign(n, 0);
+    state.resize_elements(n);
     for (std::size_t e = 0; e < n; ++e) state.volume0[e] = volume(e);
   }
   Bricks(const Bricks&) = delete;
@@ -78,7 +82,7 @@ class Bricks {
   double volume(std::size_t e) const {
     double x[8], y[8], z[8];
     coordinates_of(e, x, y, z);
-    return brick8_volume(x, y, z);
+    return volume_of(x, y, z);
   }
   void coordinates_of(std::size_t e, double* x, double* y, double* z) const {
     const std::int32_t* c = table.nodes_of(e);
@@ -156,20 +160,21 @@ Patch macneal_harder_patch() {
       const Point& q = p.nodes[static_cast<std::size_t>(c[static_cast<std::size_t>(a)])];
       x[a] = q[0], y[a] = q[1], z[a] = q[2];
     }
-    if (brick8_volume(x, y, z) < 0.0) c = {f[0] + 8, f[1] + 8, f[2] + 8, f[3] + 8, f[0], f[1], f[2], f[3]};
+    if (volume_of(x, y, z) < 0.0) c = {f[0] + 8, f[1] + 8, f[2] + 8, f[3] + 8, f[0], f[1], f[2], f[3]};
     p.elements.push_back(c);
   }
   for (std::size_t k = 8; k < 16; ++k) p.interior.push_back(k);
   return p;
 }
 
-// A 2 x 2 x 2 block of the unit cube with every node moved by up to 0.1 (deterministic pseudo-random).
-Patch perturbed_block() {
+// A 2 x 2 x 2 block of the unit cube with every node moved by up to `amplitude` / 2 (deterministic
+// pseudo-random; 0 gives the regular block of cubes).
+Patch perturbed_block(double amplitude = 0.2) {
   Patch p;
   unsigned state = 12345u;
   auto jitter = [&]() {
     state = state * 1103515245u + 12345u;
-    return 0.2 * (static_cast<double>((state >> 8) & 0xffffu) / 65535.0 - 0.5);
+    return amplitude * (static_cast<double>((state >> 8) & 0xffffu) / 65535.0 - 0.5);
   };
   auto id = [](int i, int j, int k) { return i + 3 * j + 9 * k; };
   for (int k = 0; k < 3; ++k)
@@ -223,7 +228,7 @@ TEST(Brick8, VolumeAndItsGradientAreExact) {
     for (std::size_t a = 0; a < 8; ++a) x[a] = p[a][0], y[a] = p[a][1], z[a] = p[a][2];
   };
   fill(box(2.0, 3.0, 0.5));
-  EXPECT_NEAR(brick8_volume(x, y, z), 3.0, 1e-14);
+  EXPECT_NEAR(volume_of(x, y, z), 3.0, 1e-14);
   fill(distorted_brick());
   double gauss = 0.0;
   const double g = 1.0 / std::sqrt(3.0);
@@ -240,7 +245,7 @@ TEST(Brick8, VolumeAndItsGradientAreExact) {
              j[0][2] * (j[1][0] * j[2][1] - j[1][1] * j[2][0]);
   }
   double bx[8], by[8], bz[8];
-  const double volume = brick8_volume_gradient(x, y, z, bx, by, bz);
+  const double volume = geometry::brick_volume_gradient(x, y, z, bx, by, bz);
   EXPECT_NEAR(volume, gauss, 1e-14);
   // V is linear in each coordinate of each node: a central difference is exact up to round-off.
   for (std::size_t a = 0; a < 8; ++a) {
@@ -250,9 +255,9 @@ TEST(Brick8, VolumeAndItsGradientAreExact) {
     for (int k = 0; k < 3; ++k) {
       const double keep = *coordinate[k];
       *coordinate[k] = keep + h;
-      const double plus = brick8_volume(x, y, z);
+      const double plus = volume_of(x, y, z);
       *coordinate[k] = keep - h;
-      const double minus = brick8_volume(x, y, z);
+      const double minus = volume_of(x, y, z);
       *coordinate[k] = keep;
       EXPECT_NEAR((plus - minus) / (2 * h), gradient[k], 1e-11) << "node " << a << " direction " << k;
     }
@@ -336,9 +341,162 @@ TEST(Brick8, PatchTestMacNealHarderSevenElements) {
   for (int isolid : kIsolids) check_patch(patch, isolid);
 }
 
+TEST(Brick8, PatchTestRegularBlockOfIsolid2) {
+  // Isolid 2's hourglass base vectors are orthogonal to linear fields only on parallelepipeds (eq. B-6a).
+  check_patch(perturbed_block(0.0), 2);
+}
+
 TEST(Brick8, PatchTestPerturbedBlock) {
   const Patch patch = perturbed_block();
   for (int isolid : kIsolids) check_patch(patch, isolid);
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// Degenerate bricks: prisms 1 2 3 3 5 6 7 7 and tetrahedra 1 2 3 3 4 4 4 4 written with repeated nodes
+
+Connectivity tetrahedron(const std::vector<Point>& nodes, int a, int b, int c, int d) {
+  Connectivity t{a, b, c, c, d, d, d, d};
+  double x[8], y[8], z[8];
+  for (std::size_t k = 0; k < 8; ++k) {
+    const Point& q = nodes[static_cast<std::size_t>(t[k])];
+    x[k] = q[0], y[k] = q[1], z[k] = q[2];
+  }
+  if (volume_of(x, y, z) < 0.0) t = {b, a, c, c, d, d, d, d};
+  return t;
+}
+
+// The perturbed block with every brick split into two prisms (through its 1-3 / 5-7 diagonal plane) or six
+// tetrahedra around its 1-7 diagonal (the same diagonal direction everywhere: a conforming mesh).
+Patch degenerate_block(bool tetrahedra) {
+  const Patch block = perturbed_block();
+  Patch p;
+  p.nodes = block.nodes, p.interior = block.interior;
+  for (const Connectivity& h : block.elements) {
+    if (!tetrahedra) {
+      p.elements.push_back({h[0], h[1], h[2], h[2], h[4], h[5], h[6], h[6]});
+      p.elements.push_back({h[0], h[2], h[3], h[3], h[4], h[6], h[7], h[7]});
+      continue;
+    }
+    constexpr int ring[7] = {1, 2, 3, 7, 4, 5, 1};
+    for (int k = 0; k < 6; ++k) p.elements.push_back(tetrahedron(p.nodes, h[0], h[ring[k]], h[ring[k + 1]], h[6]));
+  }
+  return p;
+}
+
+TEST(Brick8, DegenerateVolumesAreExact) {
+  // Tetrahedron: |det(b - a, c - a, d - a)| / 6. Oblique prism with a triangular base: base area times height.
+  const std::vector<Point> tet = {{0.1, 0.2, -0.1}, {1.3, 0.1, 0.2}, {0.2, 0.9, 0.1}, {0.3, 0.4, 1.2}};
+  double x[8], y[8], z[8];
+  const Connectivity t = tetrahedron(tet, 0, 1, 2, 3);
+  for (std::size_t k = 0; k < 8; ++k) {
+    const Point& q = tet[static_cast<std::size_t>(t[k])];
+    x[k] = q[0], y[k] = q[1], z[k] = q[2];
+  }
+  Point e[3];
+  for (std::size_t i = 0; i < 3; ++i)
+    for (std::size_t j = 0; j < 3; ++j) e[i][j] = tet[i + 1][j] - tet[0][j];
+  const double det = e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) - e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
+                     e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0]);
+  EXPECT_NEAR(volume_of(x, y, z), std::abs(det) / 6.0, 1e-14);
+  const Point base[3] = {{0.0, 0.0, 0.0}, {2.0, 0.0, 0.0}, {0.5, 1.5, 0.0}}, shift{0.3, -0.2, 0.7};
+  const int prism[8] = {0, 1, 2, 2, 3, 4, 5, 5};
+  for (std::size_t k = 0; k < 8; ++k) {
+    const int n = prism[k];
+    const Point& q = base[n % 3];
+    const double top = n >= 3 ? 1.0 : 0.0;
+    x[k] = q[0] + top * shift[0], y[k] = q[1] + top * shift[1], z[k] = q[2] + top * shift[2];
+  }
+  EXPECT_NEAR(volume_of(x, y, z), 0.5 * 2.0 * 1.5 * 0.7, 1e-14);
+}
+
+TEST(Brick8, PatchTestDegeneratePrismsAndTetrahedra) {
+  for (bool tetrahedra : {false, true}) {
+    const Patch patch = degenerate_block(tetrahedra);
+    for (int isolid : kIsolids) check_patch(patch, isolid);
+  }
+}
+
+TEST(Brick8, DegenerateTetrahedronHasNoHourglassForce) {
+  // A tetrahedron is a linear element: every nodal velocity field is linear, so the orthogonalised hourglass rates
+  // vanish and Isolid 1's viscous forces and Isolid 24's stabilisation stay zero for any motion.
+  const std::vector<Point> tet = {{0.1, 0.2, -0.1}, {1.3, 0.1, 0.2}, {0.2, 0.9, 0.1}, {0.3, 0.4, 1.2}};
+  for (int isolid : {1, 24}) {
+    Bricks b(tet, {tetrahedron(tet, 0, 1, 2, 3)}, isolid, elastic_material());
+    const Point v[4] = {{1.0, -2.0, 0.5}, {-0.3, 0.8, 1.1}, {0.2, 0.1, -0.9}, {0.7, -0.4, 0.3}};
+    for (std::size_t k = 0; k < 4; ++k) b.set_velocity(k, v[k]);
+    const GroupStepResult r = b.advance(1e-7);
+    ASSERT_GT(r.internal_energy, 0.0);
+    double stored = 0.0;  // Isolid 24's generalized hourglass stresses [F]
+    for (int k = 0; k < 12; ++k) stored = std::max(stored, std::abs(b.state.hourglass[static_cast<std::size_t>(k)]));
+    EXPECT_LT(std::abs(r.hourglass_energy), 1e-12 * r.internal_energy) << isolid;
+    EXPECT_LT(stored, 1e-12 * kE * 1e-6) << isolid;  // a strain of 1e-6 on a unit area
+  }
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// Small strain (Ismstr, eq. B-14)
+
+// Stretches a unit cube (nu = 0) along x to 1 + total in `steps` equal increments; returns s_xx.
+double stretched_stress(bool small_strain, double total, int steps) {
+  std::vector<Point> corners(kCorners, kCorners + 8);
+  Bricks b(corners, {{0, 1, 2, 3, 4, 5, 6, 7}}, 1, elastic_material(kE, 0.0));
+  if (small_strain) brick8_switch_to_small_strain(b.table, 0, b.nodes, b.state);
+  const double dt = 1e-6, rate = total / steps / dt;
+  for (int step = 0; step < steps; ++step) {
+    for (std::size_t k = 0; k < 8; ++k) b.set_velocity(k, {rate * kCorners[k][0], 0.0, 0.0});
+    b.advance(dt);
+  }
+  return b.stress(0)[0];
+}
+
+TEST(Brick8, SmallStrainComputesEngineeringStrainOnTheReferenceShape) {
+  // 10 % stretch: on the frozen reference shape the strain increments add up to the engineering strain 0.1;
+  // on the current geometry (large strain) to the logarithmic strain ln 1.1 (eq. B-14).
+  EXPECT_NEAR(stretched_stress(true, 0.1, 200), kE * 0.1, 1e-9 * kE);
+  EXPECT_NEAR(stretched_stress(false, 0.1, 200), kE * std::log(1.1), 1e-5 * kE);
+}
+
+TEST(Brick8, SwitchToSmallStrainFreezesTheStepAndStaysObjective) {
+  // A cube crushed to half its height (no bulk viscosity, so that the step is the geometric one): with large
+  // strain its critical step L / c falls to 0.5 / sqrt(0.5) of the initial one (L halves, the density doubles);
+  // it stays at the value of the switch once brick8_switch_to_small_strain has frozen the shape. A rigid rotation
+  // after the switch rotates the stress and changes nothing else (the frozen shape turns with the element frame
+  // and the frame's rigid turn is taken out of the velocities).
+  for (bool switched : {false, true}) {
+    std::vector<Point> corners(kCorners, kCorners + 8);
+    Bricks b(corners, {{0, 1, 2, 3, 4, 5, 6, 7}}, 1, elastic_material(kE, 0.0));
+    b.p.qa = b.p.qb = 0.0;
+    const double dt = 1e-6;
+    b.forces(0.0);
+    const double initial_step = b.state.critical_dt[0];
+    if (switched) brick8_switch_to_small_strain(b.table, 0, b.nodes, b.state);
+    EXPECT_EQ(b.state.small_strain[0], switched ? 1 : 0);
+    for (int step = 0; step < 100; ++step) {
+      for (std::size_t k = 0; k < 8; ++k) b.set_velocity(k, {0.0, 0.0, -0.005 * kCorners[k][2] / dt});
+      b.advance(dt);
+    }
+    const double ratio = b.state.critical_dt[0] / initial_step;
+    if (switched)
+      EXPECT_NEAR(ratio, 1.0, 1e-12);
+    else
+      EXPECT_NEAR(ratio, 0.5 / std::sqrt(0.5), 1e-6);
+    if (!switched) continue;
+    const auto before = b.stress(0);
+    const Matrix rot = rotation({0.2, 1.0, -0.4}, 0.3);
+    for (std::size_t k = 0; k < 8; ++k) {
+      const Point x = b.position(k), y = mul(rot, x);
+      b.set_velocity(k, {(y[0] - x[0]) / dt, (y[1] - x[1]) / dt, (y[2] - x[2]) / dt});
+    }
+    b.advance(dt);
+    const auto after = b.stress(0);
+    // s_zz alone before; after: R s R^T, so the trace and the z-z projection on the rotated axis are kept.
+    EXPECT_NEAR(after[0] + after[1] + after[2], before[2], 1e-9 * std::abs(before[2]));
+    const Point axis = mul(rot, {0.0, 0.0, 1.0});
+    const double projected = after[0] * axis[0] * axis[0] + after[1] * axis[1] * axis[1] + after[2] * axis[2] * axis[2] +
+                             2.0 * (after[3] * axis[0] * axis[1] + after[4] * axis[1] * axis[2] + after[5] * axis[2] * axis[0]);
+    EXPECT_NEAR(projected, before[2], 1e-9 * std::abs(before[2]));
+    EXPECT_LT(before[2], 0.0);
+  }
 }
 
 // ---------------------------------------------------------------------------------------------------------------
@@ -457,13 +615,52 @@ TEST(Brick8, ViscousHourglassOfIsolid1) {
     }
 }
 
-TEST(Brick8, HourglassModesAreResistedByIsolid24And14) {
+TEST(Brick8, PlainViscousHourglassOfIsolid2) {
+  // Isolid 2 (Hallquist): the hourglass rates are h . v with the base vectors themselves (eq. B-6a). On a
+  // parallelepiped h is orthogonal to every linear field, as gamma is, and Isolid 2 gives Isolid 1's forces; on a
+  // distorted brick a linear velocity field (here a rigid rotation rate) has h . v != 0 and meets viscous forces
+  // that Isolid 1's orthogonalised gamma does not produce.
+  const double dt = 1e-4, reference_force = kE * 1e-3 * 1.0;  // as in RigidTranslationAndRotationGiveNoForce
+  const Matrix rot = rotation({1.0, 2.0, -0.5}, 0.01);            // 100 rad/s
+  for (bool distorted : {false, true}) {
+    double largest[2] = {};
+    for (int which = 0; which < 2; ++which) {
+      Bricks b(distorted ? distorted_brick() : box(1.0, 2.0, 0.5), {{0, 1, 2, 3, 4, 5, 6, 7}}, which == 0 ? 1 : 2,
+               elastic_material());
+      for (std::size_t k = 0; k < 8; ++k) {
+        const Point x = b.position(k), y = mul(rot, x);
+        b.set_velocity(k, {(y[0] - x[0]) / dt, (y[1] - x[1]) / dt, (y[2] - x[2]) / dt});
+      }
+      b.advance(dt);
+      for (std::size_t k = 0; k < 8; ++k) largest[which] = std::max(largest[which], norm(b.force(k)));
+    }
+    EXPECT_LT(largest[0], 1e-12 * reference_force);
+    if (distorted)
+      EXPECT_GT(largest[1], 1e-3 * reference_force);
+    else
+      EXPECT_LT(largest[1], 1e-12 * reference_force);
+  }
+  // Pure hourglass velocity on a cube: gamma = h there, so Isolid 2's force equals Isolid 1's.
+  for (int mode = 0; mode < 4; ++mode) {
+    Point f[2];
+    for (int which = 0; which < 2; ++which) {
+      Bricks b(box(0.01, 0.01, 0.01), {{0, 1, 2, 3, 4, 5, 6, 7}}, which == 0 ? 1 : 2, elastic_material());
+      for (std::size_t k = 0; k < 8; ++k) b.set_velocity(k, {kHourglass[mode][k], 0.0, 0.0});
+      b.forces(1e-9);
+      f[which] = b.force(0);
+    }
+    EXPECT_NEAR(f[1][0], f[0][0], 1e-12 * std::abs(f[0][0])) << "mode " << mode;
+    EXPECT_LT(f[0][0] * kHourglass[mode][0], 0.0);
+  }
+}
+
+TEST(Brick8, HourglassModesAreResistedByTheStiffFormulations) {
   // An hourglass displacement of amplitude d: the nodal forces oppose it (f . u < 0) and the element stores
   // energy. For Isolid 24 and a cube of half-width a the twisting-type mode (mode k along axis k) stores
   // (V/3) G d^2 / a^2 (eq. B-9).
   const double side = 0.01, a = 0.5 * side, dt = 1e-6, d = 1e-7;
   const double G = kE / (2 * (1 + kNu)), V = side * side * side;
-  for (int isolid : {24, 14})
+  for (int isolid : {24, 12, 14, 17, 18})
     for (int mode = 0; mode < 4; ++mode)
       for (std::size_t dir = 0; dir < 3; ++dir) {
         Bricks b(box(side, side, side), {{0, 1, 2, 3, 4, 5, 6, 7}}, isolid, elastic_material());
@@ -481,26 +678,29 @@ TEST(Brick8, HourglassModesAreResistedByIsolid24And14) {
         // Linear spring: energy = -f . u / 2 (the stress work is taken on the mid-step geometry: O(d / side)).
         EXPECT_NEAR(-0.5 * work, stored, 1e-4 * stored);
         if (isolid == 24 && mode < 3 && static_cast<std::size_t>(mode) == dir) {
-          EXPECT_NEAR(r.hourglass_energy, V / 3.0 * G * d * d / (a * a), 1e-6 * r.hourglass_energy);
+          // Elastic strain energy of the assumed-strain field: internal energy, no hourglass (dissipated) energy.
+          EXPECT_NEAR(r.internal_energy, V / 3.0 * G * d * d / (a * a), 1e-6 * r.internal_energy);
+          EXPECT_EQ(r.hourglass_energy, 0.0);
         }
       }
 }
 
-TEST(Brick8, PhysicalStabilisationBendsWithoutShearLocking) {
-  // One thin brick (1 x 1 x 0.1, nu = 0) bent by u_x = k x z: the one-point strain is zero and the assumed-strain
-  // stabilisation stores exactly the Euler-Bernoulli energy E I k^2 L / 2 (eq. B-9), in any orientation (the
-  // co-rotational frame of eq. B-8). The fully integrated element (Isolid 14) adds the parasitic shear G (k x)^2
-  // and is about 50 times stiffer here.
+TEST(Brick8, StabilisedAndAssumedShearBricksBendWithoutShearLocking) {
+  // One thin brick (1 x 1 x 0.1, nu = 0) bent by u_x = k x z, in any orientation (the element frame of eq. B-8).
+  // The one-point strain is zero and the assumed-strain stabilisation of Isolid 24 (eq. B-9) stores exactly the
+  // Euler-Bernoulli energy E I k^2 L / 2, as internal energy. Isolid 14's assumed shears (eq. B-10a) remove the
+  // parasitic shear G (k x)^2 and store the same energy; the plain 2x2x2 element keeps it and is about 50 times
+  // stiffer here.
   const double young = 2e11, curvature = 1e-4, dt = 1e-6;
   const double beam = 0.5 * young * (1.0 * 0.1 * 0.1 * 0.1 / 12.0) * curvature * curvature * 1.0;
   const Matrix identity = {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
   for (const Matrix& orientation : {identity, rotation({1.0, 2.0, 3.0}, 0.7)}) {
-    double energy[2];
-    int which = 0;
-    for (int isolid : {24, 14}) {
+    double energy[3];
+    for (int variant = 0; variant < 3; ++variant) {
       std::vector<Point> corners;
       for (const Point& x : box(1.0, 1.0, 0.1)) corners.push_back(mul(orientation, x));
-      Bricks b(corners, {{0, 1, 2, 3, 4, 5, 6, 7}}, isolid, elastic_material(young, 0.0));
+      Bricks b(corners, {{0, 1, 2, 3, 4, 5, 6, 7}}, variant == 0 ? 24 : 14, elastic_material(young, 0.0));
+      b.p.assumed_shear = variant == 1;
       for (std::size_t k = 0; k < 8; ++k) {
         Point local{};  // R^T x
         const Point g = b.position(k);
@@ -510,35 +710,40 @@ TEST(Brick8, PhysicalStabilisationBendsWithoutShearLocking) {
         b.set_velocity(k, {u[0] / dt, u[1] / dt, u[2] / dt});
       }
       const GroupStepResult r = b.advance(dt);
-      energy[which++] = r.internal_energy + r.hourglass_energy;
-      if (isolid == 24) {
-        EXPECT_NEAR(r.hourglass_energy, beam, 1e-6 * beam);
-        EXPECT_LT(std::abs(r.internal_energy), 1e-6 * beam);
-      }
+      EXPECT_EQ(r.hourglass_energy, 0.0);
+      energy[variant] = r.internal_energy;
     }
-    EXPECT_GT(energy[1], 10.0 * energy[0]);
+    EXPECT_NEAR(energy[0], beam, 1e-6 * beam);
+    EXPECT_NEAR(energy[1], beam, 1e-6 * beam);
+    EXPECT_GT(energy[2], 10.0 * beam);
   }
 }
 
-TEST(Brick8, NoVolumetricLockingNearIncompressibility) {
-  // Bending field u_x = k x z on a cube, shear modulus fixed, nu from 0.3 to 0.4999 (bulk modulus x 800): the
-  // energy of Isolid 24 (plane-stress stabilisation) and of Isolid 14 (mean dilatation) changes by less than a
-  // factor 2, where plain 2x2x2 integration would follow the bulk modulus.
+// Energy of the bending field u_x = k x z on a unit cube, shear modulus fixed, for Poisson ratio nu.
+double cube_bending_energy(int isolid, bool constant_pressure, double nu) {
   const double shear = 8e10, curvature = 1e-4, dt = 1e-6;
-  for (int isolid : {24, 14}) {
-    double energy[2];
-    int which = 0;
-    for (double nu : {0.3, 0.4999}) {
-      Bricks b(box(1.0, 1.0, 1.0), {{0, 1, 2, 3, 4, 5, 6, 7}}, isolid, elastic_material(2 * shear * (1 + nu), nu));
-      for (std::size_t k = 0; k < 8; ++k) {
-        const Point x = b.position(k);
-        b.set_velocity(k, {curvature * x[0] * x[2] / dt, 0.0, 0.0});
-      }
-      const GroupStepResult r = b.advance(dt);
-      energy[which++] = r.internal_energy + r.hourglass_energy;
-    }
-    EXPECT_GT(energy[0], 0.0);
-    EXPECT_LT(energy[1], 2.0 * energy[0]) << "Isolid " << isolid;
+  Bricks b(box(1.0, 1.0, 1.0), {{0, 1, 2, 3, 4, 5, 6, 7}}, isolid, elastic_material(2 * shear * (1 + nu), nu));
+  b.p.constant_pressure = constant_pressure;
+  for (std::size_t k = 0; k < 8; ++k) {
+    const Point x = b.position(k);
+    b.set_velocity(k, {curvature * x[0] * x[2] / dt, 0.0, 0.0});
+  }
+  const GroupStepResult r = b.advance(dt);
+  return r.internal_energy + r.hourglass_energy;
+}
+
+TEST(Brick8, ConstantPressureRemovesVolumetricLocking) {
+  // nu from 0.3 to 0.4999 multiplies the bulk modulus by 800. With Icpre 1 (constant pressure: deviatoric
+  // stabilisation for Isolid 24, eq. B-9a; mean dilatation for Isolid 14, eq. B-10) the bending energy changes by
+  // less than a factor 2. With Icpre 3 the hourglass strains (24) or the Gauss-point dilatations (14) meet the
+  // bulk modulus and the energy grows by more than 100.
+  for (int isolid : {24, 14, 17, 18}) {
+    const double free_0 = cube_bending_energy(isolid, true, 0.3), free_1 = cube_bending_energy(isolid, true, 0.4999);
+    EXPECT_GT(free_0, 0.0);
+    EXPECT_LT(free_1, 2.0 * free_0) << "Isolid " << isolid;
+    const double locked_0 = cube_bending_energy(isolid, false, 0.3);
+    const double locked_1 = cube_bending_energy(isolid, false, 0.4999);
+    EXPECT_GT(locked_1, 100.0 * locked_0) << "Isolid " << isolid;
   }
 }
 
@@ -617,7 +822,7 @@ TEST(Brick8, CriticalStepIsLengthOverDilatationalSpeed) {
     r = b.advance(dt);
     double x[8], y[8], z[8];
     b.coordinates_of(0, x, y, z);
-    const double volume = brick8_volume(x, y, z);
+    const double volume = volume_of(x, y, z);
     const double rho = kRho * lx * ly * lz / volume;
     const double c_now = std::sqrt(kE * (1 - kNu) / ((1 + kNu) * (1 - 2 * kNu)) / rho);
     const double length = volume / (x[1] - x[0]) / (y[3] - y[0]);
@@ -805,11 +1010,38 @@ std::string bar_starter(int n, double h, int isolid, double young, double nu, co
     s += I(i + 1) + I(id(i, 0, 0)) + I(id(i, 1, 0)) + I(id(i, 1, 1)) + I(id(i, 0, 1)) + I(id(i + 1, 0, 0)) +
          I(id(i + 1, 1, 0)) + I(id(i + 1, 1, 1)) + I(id(i + 1, 0, 1)) + "\n";
   s += "/PART/1\nbar\n" + I(1) + I(1) + "\n";
-  s += "/PROP/SOLID/1\nsolid\n" + I(isolid) + "\n" + R(0.0) + R(0.0) + R(0.0) + "\n";
+  s += "/PROP/SOLID/1\nsolid\n" + I(isolid) + I(isolid == 18 ? 4 : 0) + I(0) + I(isolid == 18 ? 3 : 0) + "\n" + R(0.0) + R(0.0) + R(0.0) +
+       "\n";  // Isolid 18 needs its Ismstr and Icpre given
   s += "/MAT/ELAST/1\nsteel\n" + R(kRho) + "\n" + R(young) + R(nu) + "\n";
   s += "/GRNOD/NODE/10\nleft\n" + I(id(0, 0, 0)) + I(id(0, 1, 0)) + I(id(0, 0, 1)) + I(id(0, 1, 1)) + "\n";
   s += "/GRNOD/NODE/20\nright\n" + I(id(n, 0, 0)) + I(id(n, 1, 0)) + I(id(n, 0, 1)) + I(id(n, 1, 1)) + "\n";
   return s + extra + "/END\n";
+}
+
+TEST(Brick8, DegenerateBricksReadWithTheirExactMass) {
+  // A unit cube of 7800 kg/m^3 written as one prism 1 2 3 3 5 6 7 7 (corners 1 2 3 | 5 6 7, half the cube) and
+  // three tetrahedra 1 2 3 3 4 4 4 4 filling the other half (1 3 4 | 5 7 8): (1 3 4 5), (3 4 5 7), (4 8 5 7). The
+  // reader accepts them and the mass is rho times the exact volume.
+  std::string s = test::begin_card("DEGEN") + "/NODE\n";
+  for (int k = 0; k < 8; ++k) s += I(k + 1) + R(kCorners[k][0]) + R(kCorners[k][1]) + R(kCorners[k][2]) + "\n";
+  s += "/BRICK/1\n" + I(1) + I(1) + I(2) + I(3) + I(3) + I(5) + I(6) + I(7) + I(7) + "\n";
+  s += I(2) + I(1) + I(3) + I(4) + I(4) + I(5) + I(5) + I(5) + I(5) + "\n";
+  s += I(3) + I(3) + I(4) + I(5) + I(5) + I(7) + I(7) + I(7) + I(7) + "\n";
+  s += I(4) + I(4) + I(8) + I(5) + I(5) + I(7) + I(7) + I(7) + I(7) + "\n";
+  s += "/PART/1\ncube\n" + I(1) + I(1) + "\n/PROP/SOLID/1\nsolid\n" + I(1) + "\n" + R(0.0) + R(0.0) + R(0.0) + "\n";
+  s += "/MAT/ELAST/1\nsteel\n" + R(kRho) + "\n" + R(kE) + R(kNu) + "\n/END\n";
+  test::TempDir dir;
+  const Model m = read_deck(dir.write("DEGEN_0000.rad", s)).model;
+  ASSERT_EQ(m.elements[static_cast<int>(ElementKind::Brick8)].size(), 4u);
+  EXPECT_NEAR(m.element_mass, kRho * 1.0, 1e-12 * kRho);
+  double nodal = 0.0;
+  for (double v : m.nodal_mass) nodal += v;
+  EXPECT_NEAR(nodal, kRho, 1e-12 * kRho);
+  // Each connectivity slot carries 1/8 of its element's mass (as the reference lumps degenerate bricks): node 5
+  // holds 4/8 of each tetrahedron having it four times.
+  EXPECT_NEAR(m.nodal_mass[static_cast<std::size_t>(m.index.nodes.at(5))],
+              kRho * (0.5 / 8.0 + (1.0 / 6.0) * (4.0 / 8.0) + (1.0 / 6.0) * (2.0 / 8.0) + (1.0 / 6.0) * (2.0 / 8.0)),
+              1e-12 * kRho);
 }
 
 std::string bar_engine(double end_time, double history) {

@@ -26,22 +26,14 @@ inline double triangle_area(const Point& p1, const Point& p2, const Point& p3) {
   return 0.5 * norm(cross(sub(p2, p1), sub(p3, p1)));
 }
 
-// Signed volume of an 8-node brick in Radioss/LS-DYNA numbering (1-4 bottom face, 5-8 top), from the one-point
-// Jacobian: V = 8 det J(0). Negative for an inverted element.
-inline double brick_volume(const std::array<Point, 8>& p) {
-  Point g1{}, g2{}, g3{};  // derivatives of x with respect to the natural coordinates at the centre, times 8
-  constexpr double s1[8] = {-1, 1, 1, -1, -1, 1, 1, -1};
-  constexpr double s2[8] = {-1, -1, 1, 1, -1, -1, 1, 1};
-  constexpr double s3[8] = {-1, -1, -1, -1, 1, 1, 1, 1};
-  for (int a = 0; a < 8; ++a)
-    for (int k = 0; k < 3; ++k) {
-      g1[k] += s1[a] * p[a][k];
-      g2[k] += s2[a] * p[a][k];
-      g3[k] += s3[a] * p[a][k];
-    }
-  // J = g/8; V = 8 det(J) = det(g) / 64.
-  return dot(g1, cross(g2, g3)) / 64.0;
-}
+// Exact signed volume of an 8-node brick, the integral of det J over the trilinear map (docs/theory/brick8.md,
+// eq. B-2), Radioss numbering (1-4 one face, 5-8 the opposite one). Exact also for the degenerate shapes written
+// with repeated nodes (prism, pyramid, tetrahedron). Negative for an inverted element.
+double brick_volume(const std::array<Point, 8>& p);
+// The same from coordinate arrays, with its derivatives dv_dx[I] = dV/dx_I, ... (eq. B-2); the uniform gradient
+// of Flanagan and Belytschko is dV/dx_I / V. Returns V.
+double brick_volume_gradient(const double* x, const double* y, const double* z, double* dv_dx, double* dv_dy,
+                             double* dv_dz);
 
 // Characteristic length of a 4-node shell for the critical time step: L = A / longest side
 // (docs/theory/time-step.md); for a square it is the side.

@@ -26,15 +26,16 @@ struct ShellSection {  // /PROP/TYPE1 (= /PROP/SHELL); flags and checks: docs/th
   SourceLocation section_where;
 };
 
-struct SolidSection {  // /PROP/TYPE14 (= /PROP/SOLID)
-  int isolid = 0;  // 1 one point with viscous hourglass (default), 14 fully integrated, 24 physically stabilised
-  int ismstr = 0;
-  int icpre = 0;
-  int iframe = 0;
-  int inpts = 0;   // integration points for Isolid 14
+struct SolidSection {  // /PROP/TYPE14 (= /PROP/SOLID), the values as written (0 = default)
+  int isolid = 0;  // brick formulation (docs/theory/brick8.md, "Formulations")
+  int ismstr = 0;  // small-strain flag
+  int icpre = 0;   // constant (reduced) pressure flag: 1 on, 3 off, 2 plasticity dependent
+  int iframe = 0;  // element frame: 1 non co-rotational, 2 co-rotational
+  int inpts = 0;   // integration points ijk for Isolid 14
   double qa = 0.0, qb = 0.0;  // bulk viscosity coefficients (0 -> 1.1 and 0.05)
-  double dn = 0.0;            // numerical damping
+  double dn = 0.0;            // numerical damping of the Isolid 24 stabilisation (0 -> 0.1)
   double h = 0.0;             // hourglass coefficient (0 -> 0.1)
+  int ihkt = 0;               // Isolid 24 hourglass modulus: 0, 1 elastic (2, tangent, is refused)
 };
 
 enum class PropertyKind : std::uint8_t { Shell, Solid };
@@ -53,7 +54,7 @@ struct ShellDefaults {  // /DEF_SHELL
   SourceLocation where;  // its data line (none: where.line == 0)
 };
 struct SolidDefaults {  // /DEF_SOLID
-  int isolid = 0, ismstr = 0, istrain = 0, iframe = 0;
+  int isolid = 0, ismstr = 0, icpre = 0, istrain = 0, iframe = 0;
 };
 
 // Effective element formulations after property, /DEF_SHELL or /DEF_SOLID and the built-in defaults.
@@ -61,6 +62,8 @@ struct ResolvedFormulation {
   int ishell = 24;  // 4-node shells: 1 or 24
   int ish3n = 2;    // 3-node shells: 1 or 2
   int isolid = 1;   // bricks: 1, 14 or 24
+  int icpre = 0;    // bricks: 1 constant pressure, 3 none (0 for the one-point Isolid 1)
+  int iframe = 1;   // bricks: 1 non co-rotational, 2 co-rotational
   int ismstr = 0;   // small-strain flag after /DEF_SHELL or /DEF_SOLID (shells: 1, 2 or 4)
   int n_points = 0; // shells: through-thickness points; 0 = global (stress-resultant) plasticity
 };

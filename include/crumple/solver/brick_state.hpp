@@ -25,7 +25,21 @@ struct BrickState {
   std::vector<double> critical_dt;       // critical step of the last cycle (eq. B-12) [T]
   std::vector<double> mass;              // element mass [M] (nodal time-step estimate)
   std::vector<std::uint8_t> deleted;     // 1 once the element has failed
+  // Small strain (Ismstr 1, 3 from t = 0; Ismstr 2 once /DT/BRICK/CST switches it, docs/theory/brick8.md B-14):
+  // the element computes its strains, forces and step on the frozen reference shape.
+  std::vector<std::uint8_t> small_strain;  // 1 when the element runs on its reference shape
+  std::vector<double> reference_shape;     // 24 per element: node coordinates minus the centroid at the freeze [L]
+  std::vector<double> reference_frame;     // 9 per element: the element frame R (eq. B-8) at the freeze, row-major
 
+  // Sizes the per-element arrays for n elements, every value zero.
+  void resize_elements(std::size_t n) {
+    for (auto* v : {&volume0, &internal_energy, &hourglass_energy, &critical_dt, &mass}) v->assign(n, 0.0);
+    hourglass.assign(12 * n, 0.0);
+    reference_shape.assign(24 * n, 0.0);
+    reference_frame.assign(9 * n, 0.0);
+    deleted.assign(n, 0);
+    small_strain.assign(n, 0);
+  }
   // Sizes the per-point arrays for `total` integration points, every value zero.
   void resize_points(std::size_t total) {
     for (auto* v : {&sxx, &syy, &szz, &sxy, &syz, &szx, &eps_p, &eps_rate}) v->assign(total, 0.0);

@@ -200,14 +200,35 @@ void read_def_shell(CardReader& reader, DeckContext& context) {
   reader.finish();
 }
 
+// /DEF_SOLID: Isolid 1-10, Ismstr 11-20, Icpre 21-30 (blank in the 2019 layout), Istrain 31-40 (2019 layout),
+// Itetra4 41-50, Itetra10 51-60, Imas 61-70, Iframe 71-80. The tetrahedron fields concern /TETRA4 and /TETRA10
+// elements, which Crumple does not read; Istrain is an output flag.
 void read_def_solid(CardReader& reader, DeckContext& context) {
   SolidDefaults& d = context.model.solid_defaults;
   if (reader.at_end()) return;
-  const Line line = reader.next("Isolid, Ismstr, Istrain, Iframe");
+  const Line line = reader.next("Isolid, Ismstr, Icpre, Istrain, Itetra4, Itetra10, Imas, Iframe");
   d.isolid = static_cast<int>(line.integer(1, 10, "Isolid"));
   d.ismstr = static_cast<int>(line.integer(11, 10, "Ismstr"));
+  if (d.ismstr < 0 || d.ismstr > 4)
+    line.fail(11, 10, "Ismstr",
+              "0 (default, 4), 1 or 3 (small strain from t = 0), 2 (switchable by /DT/BRICK/CST) or 4 (large "
+              "strain); the automatic -1, -2 and the total-strain 10, 11, 12 are not supported by Crumple");
+  d.icpre = static_cast<int>(line.integer(21, 10, "Icpre"));
+  if (d.icpre != 0 && d.icpre != 1 && d.icpre != 3)
+    line.fail(21, 10, "Icpre",
+              "0 (default), 1 (constant pressure) or 3 (none); 2 (plasticity-dependent pressure) and the automatic "
+              "-1, -2 are not supported by Crumple");
   d.istrain = static_cast<int>(line.integer(31, 10, "Istrain"));
+  const auto warn_if = [&](int column, std::string_view name, std::string_view why) {
+    if (const auto value = line.integer(column, 10, name); value != 0)
+      context.warn(line.where(), reader.card().keyword, fmt::format("{} = {}: {}", name, value, why));
+  };
+  warn_if(31, "Istrain", "strain output flag; Crumple's output does not depend on it");
+  warn_if(41, "Itetra4", "applies to /TETRA4 elements only; no effect on bricks");
+  warn_if(51, "Itetra10", "applies to /TETRA10 elements only; no effect on bricks");
+  warn_if(61, "Imas", "nodal mass distribution of tetrahedra only; no effect on bricks");
   d.iframe = static_cast<int>(line.integer(71, 10, "Iframe"));
+  if (d.iframe < 0 || d.iframe > 2) line.fail(71, 10, "Iframe", "0 (default), 1 (non co-rotational) or 2 (co-rotational)");
   reader.finish();
 }
 

@@ -1,4 +1,5 @@
 // /PROP/TYPE1 (SHELL) and /PROP/TYPE14 (SOLID). Layouts: docs/cards/starter-model.md.
+#include <fmt/format.h>
 #include <tuple>
 
 #include "../context.hpp"
@@ -80,26 +81,80 @@ void read_shell_property(CardReader& reader, DeckContext& context) {
   context.model.properties.push_back(std::move(p));
 }
 
+constexpr const char* kIcpreChoices =
+    "0 (default), 1 (constant pressure) or 3 (none); 2 (plasticity-dependent pressure) and the automatic -1, -2 are "
+    "not supported by Crumple";
+constexpr const char* kIsmstrChoices =
+    "0 (default, 4), 1 or 3 (small strain from t = 0), 2 (switchable by /DT/BRICK/CST) or 4 (large strain); the "
+    "automatic -1, -2 and the total-strain 10, 11, 12 are not supported by Crumple";
+
+// A field that only matters for elements Crumple does not read (tetrahedra) or only for output: a named warning
+// when it is set.
+void note_if_set(const Line& line, DeckContext& context, const CardReader& reader, std::int64_t value,
+                 std::string_view name, std::string_view why) {
+  if (value != 0)
+    context.warn(line.where(), reader.card().keyword, fmt::format("{} = {}: {}", name, value, why));
+}
+
+// /PROP/SOLID line 1 (2019 layout): Isolid, Ismstr, -, Icpre, Itetra10, Inpts, Itetra4, Iframe, dn.
+void read_solid_flags(CardReader& reader, DeckContext& context, SolidSection& s) {
+  const Line flags = reader.next("Isolid, Ismstr, Icpre, Itetra10, Inpts, Itetra4, Iframe, dn");
+  s.isolid = static_cast<int>(flags.integer(1, 10, "Isolid"));
+  s.ismstr = static_cast<int>(flags.integer(11, 10, "Ismstr"));
+  if (s.ismstr < 0 || s.ismstr > 4) flags.fail(11, 10, "Ismstr", kIsmstrChoices);
+  s.icpre = static_cast<int>(flags.integer(31, 10, "Icpre"));
+  if (s.icpre != 0 && s.icpre != 1 && s.icpre != 3) flags.fail(31, 10, "Icpre", kIcpreChoices);
+  note_if_set(flags, context, reader, flags.integer(41, 10, "Itetra10"), "Itetra10",
+              "applies to /TETRA10 elements only; no effect on bricks");
+  s.inpts = static_cast<int>(flags.integer(51, 10, "Inpts"));
+  note_if_set(flags, context, reader, flags.integer(61, 10, "Itetra4"), "Itetra4",
+              "applies to /TETRA4 elements only; no effect on bricks");
+  s.iframe = static_cast<int>(flags.integer(71, 10, "Iframe"));
+  if (s.iframe < 0 || s.iframe > 2) flags.fail(71, 10, "Iframe", "0 (default), 1 (non co-rotational) or 2 (co-rotational)");
+  s.dn = flags.real(81, 20, "dn", dim::none);
+  if (s.dn < 0.0) flags.fail(81, 20, "dn", "a non-negative numerical damping");
+}
+
+// Line 2: q_a, q_b, h, LAMBDA_v, MU_v. The numerical Navier-Stokes viscosity is not implemented.
+void read_solid_viscosity(CardReader& reader, SolidSection& s) {
+  const Line viscosity = reader.next("q_a, q_b, h, LAMBDA_v, MU_v");
+  s.qa = viscosity.real(1, 20, "q_a", dim::none);
+  s.qb = viscosity.real(21, 20, "q_b", dim::none);
+  s.h = viscosity.real(41, 20, "h", dim::none);
+  if (s.qa < 0.0) viscosity.fail(1, 20, "q_a", "a non-negative bulk viscosity coefficient");
+  if (s.qb < 0.0) viscosity.fail(21, 20, "q_b", "a non-negative bulk viscosity coefficient");
+  if (s.h < 0.0) viscosity.fail(41, 20, "h", "a non-negative hourglass coefficient");
+  if (viscosity.real(61, 20, "LAMBDA_v", dim::none) != 0.0)
+    viscosity.fail(61, 20, "LAMBDA_v", "0 (the numerical Navier-Stokes viscosity is not supported by Crumple)");
+  if (viscosity.real(81, 20, "MU_v", dim::none) != 0.0)
+    viscosity.fail(81, 20, "MU_v", "0 (the numerical Navier-Stokes viscosity is not supported by Crumple)");
+}
+
+// Line 3: dt_min, Istrain, IHKT.
+void read_solid_step_line(CardReader& reader, DeckContext& context, SolidSection& s) {
+  const Line step = reader.next("dt_min, Istrain, IHKT");
+  if (step.real(1, 20, "dt_min", dim::time) != 0.0)
+    step.fail(1, 20, "dt_min", "0 (a per-property minimum brick step is not supported by Crumple; use /DT/BRICK)");
+  note_if_set(step, context, reader, step.integer(21, 10, "Istrain"), "Istrain",
+              "strain output flag; Crumple's output does not depend on it");
+  s.ihkt = static_cast<int>(step.integer(31, 10, "IHKT"));
+  if (s.ihkt != 0 && s.ihkt != 1)
+    step.fail(31, 10, "IHKT",
+              "0 or 1 (elastic hourglass modulus); 2 (tangent modulus) is not supported by Crumple");
+}
+
 void read_solid_property(CardReader& reader, DeckContext& context) {
   Property p = begin_property(reader, PropertyKind::Solid);
   SolidSection& s = p.solid;
-  if (!reader.at_end()) {
-    const Line flags = reader.next("Isolid, Ismstr, Icpre, Itetra4, Itetra10, Imass, Iframe");
-    s.isolid = static_cast<int>(flags.integer(1, 10, "Isolid"));
-    s.ismstr = static_cast<int>(flags.integer(11, 10, "Ismstr"));
-    s.icpre = static_cast<int>(flags.integer(31, 10, "Icpre"));
-    s.iframe = static_cast<int>(flags.integer(71, 10, "Iframe"));
+  if (!reader.at_end()) read_solid_flags(reader, context, s);
+  if (!reader.at_end()) read_solid_viscosity(reader, s);
+  if (!reader.at_end()) read_solid_step_line(reader, context, s);
+  if (reader.has_data()) {  // the optional Sol2SPH line
+    const Line sph = reader.next("Ndir, sphpart_ID");
+    if (sph.integer(1, 10, "Ndir") != 0 || sph.integer(11, 10, "sphpart_ID") != 0)
+      sph.fail(1, 20, "Ndir, sphpart_ID", "blank (the solid-to-SPH option is not supported by Crumple)");
   }
-  if (!reader.at_end()) {
-    const Line viscosity = reader.next("q_a, q_b, h, LAMBDA_v, MU_v");
-    s.qa = viscosity.real(1, 20, "q_a", dim::none);
-    s.qb = viscosity.real(21, 20, "q_b", dim::none);
-    s.h = viscosity.real(41, 20, "h", dim::none);
-    if (s.qa < 0.0) viscosity.fail(1, 20, "q_a", "a non-negative bulk viscosity coefficient");
-    if (s.qb < 0.0) viscosity.fail(21, 20, "q_b", "a non-negative bulk viscosity coefficient");
-    if (s.h < 0.0) viscosity.fail(41, 20, "h", "a non-negative hourglass coefficient");
-  }
-  while (reader.has_data()) reader.next("optional solid property line");  // time-step and Ndir lines: unused
+  reader.finish();
   context.model.properties.push_back(std::move(p));
 }
 

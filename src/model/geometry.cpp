@@ -1,0 +1,55 @@
+// Exact brick volume (docs/theory/brick8.md, eq. B-2): one definition for the reader's checks, the mass, the
+// time-step estimate, the contact stiffness and the brick kernels.
+#include "crumple/model/geometry.hpp"
+
+namespace crumple::geometry {
+namespace {
+
+// Exact volume (eq. B-2): V = sum over I < J < K of c_IJK x_I . (x_J x x_K) / 12 with integer c_IJK, so that
+// dV/dx_I = sum_{J<K} c_IJK (x_J x x_K) / 12. kPairs lists the 24 node pairs (J, K) that occur (every pair but the
+// four body diagonals); kVolumeTerms[I] the nine (pair, c) of node I.
+constexpr int kPairs[24][2] = {{0, 1}, {0, 2}, {0, 3}, {0, 4}, {0, 5}, {0, 7}, {1, 2}, {1, 3},
+                               {1, 4}, {1, 5}, {1, 6}, {2, 3}, {2, 5}, {2, 6}, {2, 7}, {3, 4},
+                               {3, 6}, {3, 7}, {4, 5}, {4, 6}, {4, 7}, {5, 6}, {5, 7}, {6, 7}};
+constexpr int kVolumeTerms[8][9][2] = {
+    {{6, -1}, {7, -1}, {8, 1}, {9, 1}, {11, -1}, {15, -1}, {17, -1}, {18, -1}, {20, 1}},
+    {{1, 1}, {2, 1}, {3, -1}, {4, -1}, {11, -1}, {12, 1}, {13, 1}, {18, -1}, {21, -1}},
+    {{0, -1}, {2, 1}, {7, 1}, {9, -1}, {10, -1}, {16, 1}, {17, 1}, {21, -1}, {23, -1}},
+    {{0, -1}, {1, -1}, {3, 1}, {5, 1}, {6, -1}, {13, -1}, {14, -1}, {20, 1}, {23, -1}},
+    {{0, 1}, {2, -1}, {4, 1}, {5, -1}, {9, 1}, {17, -1}, {21, 1}, {22, 1}, {23, 1}},
+    {{0, 1}, {3, -1}, {6, 1}, {8, -1}, {10, 1}, {13, 1}, {19, -1}, {20, -1}, {23, 1}},
+    {{6, 1}, {9, -1}, {11, 1}, {12, -1}, {14, 1}, {17, 1}, {18, 1}, {20, -1}, {22, -1}},
+    {{2, -1}, {3, 1}, {11, 1}, {13, -1}, {15, 1}, {16, -1}, {18, 1}, {19, 1}, {21, 1}}};
+
+}  // namespace
+
+double brick_volume_gradient(const double* x, const double* y, const double* z, double* dv_dx, double* dv_dy,
+                             double* dv_dz) {
+  double cx[24], cy[24], cz[24];
+  for (int k = 0; k < 24; ++k) {
+    const int j = kPairs[k][0], l = kPairs[k][1];
+    cx[k] = y[j] * z[l] - z[j] * y[l];
+    cy[k] = z[j] * x[l] - x[j] * z[l];
+    cz[k] = x[j] * y[l] - y[j] * x[l];
+  }
+  double volume = 0.0;
+  for (int i = 0; i < 8; ++i) {
+    double bx = 0.0, by = 0.0, bz = 0.0;
+    for (const auto& t : kVolumeTerms[i]) {
+      const double c = t[1];
+      bx += c * cx[t[0]], by += c * cy[t[0]], bz += c * cz[t[0]];
+    }
+    dv_dx[i] = bx / 12.0, dv_dy[i] = by / 12.0, dv_dz[i] = bz / 12.0;
+    // V is linear in each of the x, y and z coordinate vectors: V = sum x_I dV/dx_I (= same with y, z).
+    volume += x[i] * dv_dx[i] + y[i] * dv_dy[i] + z[i] * dv_dz[i];
+  }
+  return volume / 3.0;
+}
+
+double brick_volume(const std::array<Point, 8>& p) {
+  double x[8], y[8], z[8], bx[8], by[8], bz[8];
+  for (std::size_t a = 0; a < 8; ++a) x[a] = p[a][0], y[a] = p[a][1], z[a] = p[a][2];
+  return brick_volume_gradient(x, y, z, bx, by, bz);
+}
+
+}  // namespace crumple::geometry
