@@ -137,9 +137,11 @@ ContactStep contact_forces(const Model& m, ContactState& c, NodalState& nodes, d
         const double k0 = in.pair_stiffness(i, s);
         const double kt = tangent_stiffness(k0, g, p);
         const double mass = nodes.mass[n];
+        const double body_mass = c.rigid_body_mass.empty() ? 0.0 : c.rigid_body_mass[n];
         // Interface step of the pair (eq. C-11): /DT/INTER/DEL (or the card's dtmin) releases the pair when it
         // would fall below the minimum (/DT/INTER/CST acts per node, below).
-        const double pair_step = scale * std::min(kinematic_step(g, p, penetration_rate), stiffness_step(mass, kt, viss));
+        const double pair_step = scale * std::min(kinematic_step(g, p, penetration_rate),
+                                                  stiffness_step(body_mass > 0.0 ? body_mass : mass, kt, viss));
         if (release_step > 0.0 && pair_step < release_step) {
           ++res.released;
           forget();
@@ -215,8 +217,10 @@ ContactStep contact_forces(const Model& m, ContactState& c, NodalState& nodes, d
     for (std::int32_t i : in.touched_list) {
       const auto ui = static_cast<std::size_t>(i);
       const auto n = static_cast<std::size_t>(in.secondary_nodes[ui]);
-      const double stiffness = in.node_tangent_sum[ui] + in.node_element_stiffness[ui];
-      double node_step = scale * stiffness_step(nodes.mass[n], stiffness, viss);
+      // A node carried by a rigid body: the springs act on the body's mass, its elements are not computed.
+      const double body_mass = c.rigid_body_mass.empty() ? 0.0 : c.rigid_body_mass[n];
+      const double stiffness = in.node_tangent_sum[ui] + (body_mass > 0.0 ? 0.0 : in.node_element_stiffness[ui]);
+      double node_step = scale * stiffness_step(body_mass > 0.0 ? body_mass : nodes.mass[n], stiffness, viss);
       if (mass_step > 0.0 && node_step < mass_step) {
         const double ratio = mass_step / (scale * stiffness_factor);
         const double needed = 0.5 * stiffness * ratio * ratio;

@@ -72,7 +72,10 @@ double largest_eigenvalue(const Mat3& a) {
 
 // Mass, centre of mass, inertia and velocity field of a body from its nodes' current positions, masses and
 // velocities (eqs. RB-0a to RB-0c); the main node moves to the centre of mass (ICoG 1).
-void form_body(const RigidBody& rb, const Model& m, SolverState& s, std::int32_t index, RigidBodyState& b) {
+// `at_start`: the first forming, where the main node's initial velocity moves the body (RB-0c); a body formed
+// again by /RBODY/ON takes its nodes' momentum.
+void form_body(const RigidBody& rb, const Model& m, SolverState& s, std::int32_t index, RigidBodyState& b,
+               bool at_start) {
   NodalState& n = s.nodes;
   b.main_node = rb.main_node;
   b.secondary.clear(), b.rx.clear(), b.ry.clear(), b.rz.clear();
@@ -129,11 +132,19 @@ void form_body(const RigidBody& rb, const Model& m, SolverState& s, std::int32_t
   }
   b.inertia_body = I;
   b.rotation = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+  // The body starts with one velocity field (RB-0c): the main node's velocity when the start gives it one (an
+  // /INIVEL on the main node moves the whole body, as in the reference, whatever the main node's mass), else the
+  // nodes' mean translation and their angular momentum.
+  V3 velocity{momentum[0] / (mass > 0.0 ? mass : 1.0), momentum[1] / (mass > 0.0 ? mass : 1.0),
+              momentum[2] / (mass > 0.0 ? mass : 1.0)};
+  const V3 main_velocity{n.vx[main], n.vy[main], n.vz[main]}, main_spin{n.wx[main], n.wy[main], n.wz[main]};
+  const bool driven_by_main = at_start && (main_velocity != V3{} || main_spin != V3{});
+  if (driven_by_main) {
+    velocity = main_velocity;
+    angular = mul(I, main_spin);
+  }
   b.momentum_angular = angular;
-  b.omega = solve(I, angular);
-  // The body starts with one velocity field: the mean translation plus the rotation.
-  const V3 velocity{momentum[0] / (mass > 0.0 ? mass : 1.0), momentum[1] / (mass > 0.0 ? mass : 1.0),
-                    momentum[2] / (mass > 0.0 ? mass : 1.0)};
+  b.omega = driven_by_main ? main_spin : solve(I, angular);
   b.velocity = velocity;
   n.vx[main] = velocity[0], n.vy[main] = velocity[1], n.vz[main] = velocity[2];
   n.wx[main] = b.omega[0], n.wy[main] = b.omega[1], n.wz[main] = b.omega[2];
@@ -195,13 +206,24 @@ void mark_elements_in_rigid_bodies(const Model& m, SolverState& s) {
   }
 }
 
+// The rigid-body mass of every node for the contact step (ContactState::rigid_body_mass, eq. C-11).
+void mark_contact_nodes_in_rigid_bodies(SolverState& s) {
+  if (s.contact.interfaces.empty()) return;
+  s.contact.rigid_body_mass.assign(s.nodes.size(), 0.0);
+  for (std::size_t k = 0; k < s.nodes.size(); ++k) {
+    const std::int32_t owner = s.rigid_owner[k];
+    if (owner >= 0 && s.bodies[static_cast<std::size_t>(owner)].active)
+      s.contact.rigid_body_mass[k] = s.bodies[static_cast<std::size_t>(owner)].mass;
+  }
+}
+
 }  // namespace
 
 void setup_rigid_bodies(const Model& m, SolverState& s) {
   for (std::size_t index = 0; index < m.rigid_bodies.size(); ++index) {
     const RigidBody& rb = m.rigid_bodies[index];
     RigidBodyState b;
-    form_body(rb, m, s, static_cast<std::int32_t>(index), b);
+    form_body(rb, m, s, static_cast<std::int32_t>(index), b, true);
     const auto main = static_cast<std::size_t>(rb.main_node);
     s.x0[main] = s.nodes.x[main], s.y0[main] = s.nodes.y[main], s.z0[main] = s.nodes.z[main];
     for (std::size_t c = 0; c < m.imposed.size(); ++c) {
@@ -213,7 +235,7 @@ void setup_rigid_bodies(const Model& m, SolverState& s) {
     }
     s.bodies.push_back(std::move(b));
   }
-  if (!s.bodies.empty()) mark_elements_in_rigid_bodies(m, s);
+  if (!s.bodies.empty()) mark_elements_in_rigid_bodies(m, s), mark_contact_nodes_in_rigid_bodies(s);
 }
 
 void switch_rigid_bodies(const Model& m, SolverState& s) {
@@ -225,9 +247,10 @@ void switch_rigid_bodies(const Model& m, SolverState& s) {
   }
   for (std::int32_t body : m.run.bodies_on) {
     RigidBodyState& b = s.bodies[static_cast<std::size_t>(body)];
-    if (!b.active) form_body(m.rigid_bodies[static_cast<std::size_t>(body)], m, s, body, b);
+    if (!b.active) form_body(m.rigid_bodies[static_cast<std::size_t>(body)], m, s, body, b, false);
   }
-  if (!m.run.bodies_on.empty() || !m.run.bodies_off.empty()) mark_elements_in_rigid_bodies(m, s);
+  if (!m.run.bodies_on.empty() || !m.run.bodies_off.empty())
+    mark_elements_in_rigid_bodies(m, s), mark_contact_nodes_in_rigid_bodies(s);
 }
 
 void gather_rigid_body_forces(SolverState& s) {

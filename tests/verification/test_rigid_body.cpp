@@ -141,5 +141,37 @@ TEST(RigidBody, FreeTumblingKeepsAngularMomentum) {
               worst_momentum, worst_energy, run.summary.energy.error_percent);
 }
 
+// A rigid body of shells whose main node alone has an /INIVEL (it has no mass of its own): the whole body moves at
+// that velocity, as in the reference (RB-0c), with the kinetic energy M v^2 / 2 of its mass. The shells it
+// carries are not computed (kElementInRigidBody), so the tiny one among them (side 1 mm against 50 mm) does not
+// set the step: the free shell beside the body does.
+TEST(RigidBody, MainNodeVelocityMovesTheBodyAndItsElementsSetNoStep) {
+  constexpr double rho = 7800.0, t = 0.002, h = 0.05, v = 4.0;
+  std::vector<NodeRow> nodes{{1, 0.0, 0.0, 0.0}, {2, h, 0.0, 0.0}, {3, h, h, 0.0}, {4, 0.0, h, 0.0},
+                             {5, 0.0, 0.0, 0.01}, {6, 0.001, 0.0, 0.01}, {7, 0.001, 0.001, 0.01}, {8, 0.0, 0.001, 0.01},
+                             {11, 1.0, 0.0, 0.0}, {12, 1.0 + h, 0.0, 0.0}, {13, 1.0 + h, h, 0.0}, {14, 1.0, h, 0.0},
+                             {100, 0.02, 0.02, 0.0}};
+  const std::string starter = node_cards(nodes) +
+                              shell_cards(1, {{1, 1, 2, 3, 4}, {2, 5, 6, 7, 8}, {3, 11, 12, 13, 14}}) + part_card() +
+                              shell_property(t, 1) + elastic_material(rho, 2.1e11, 0.3) +
+                              node_group(1, {1, 2, 3, 4, 5, 6, 7, 8}) + rigid_body(1, 100, 1) + node_group(2, {100}) +
+                              initial_velocity(1, 0.0, 0.0, v, 2);
+  const double mass = rho * t * (h * h + 0.001 * 0.001);
+  double smallest_dt = 1e300, worst_velocity = 0.0;
+  test::TempDir dir;
+  constexpr double end = 2e-4;
+  const RunResult run = run_deck(dir, starter, end, 1e-9, [&](const Model& m, const SolverState& s) {
+    if (s.time < end * (1.0 - 1e-12)) smallest_dt = std::min(smallest_dt, s.dt);  // not the cut last step
+    for (long long id : {1, 3, 6, 100})
+      worst_velocity = std::max(worst_velocity, std::abs(s.nodes.vz[node_index(m, id)] - v));
+  });
+  ASSERT_EQ(run.summary.status, RunStatus::Normal) << run.summary.message;
+  EXPECT_LT(worst_velocity, 1e-12 * v);
+  EXPECT_NEAR(run.summary.energy.kinetic_translational, 0.5 * mass * v * v, 1e-12 * mass * v * v);
+  // The free shell's step, 0.9 h / c_plate = 8.3e-6 s; the tiny one would have set 0.9 x 1 mm / c = 1.7e-7 s.
+  const double c = std::sqrt(2.1e11 / (rho * (1.0 - 0.09)));
+  EXPECT_NEAR(smallest_dt, 0.9 * h / c, 1e-3 * 0.9 * h / c);
+}
+
 }  // namespace
 }  // namespace crumple::verification

@@ -133,6 +133,10 @@ struct ContactState {
   std::vector<std::int32_t> touched;  // nodes with a contact force this cycle (to clear and to sum work)
   // IBC: (node, dof mask) whose boundary conditions the time loop releases after this cycle's pass.
   std::vector<std::pair<std::int32_t, std::uint8_t>> bc_releases;
+  // Per node: the mass of the rigid body the node moves with (0: none). Its contact springs then load the body,
+  // so its step is the body's, and its own elements (carried by the body) add no stiffness (eq. C-11). The solver
+  // keeps it as bodies switch on and off.
+  std::vector<double> rigid_body_mass;
   contact::PairBatch batch;  // scratch of the pass: one batch of gathered pairs (eq. C-1)
 };
 
