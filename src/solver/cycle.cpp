@@ -63,21 +63,37 @@ long long delete_below_minimum(const ElementGroup& group, SolverState& s, RunEve
   return count;
 }
 
+// Switches element e of group g to small strain; false when its formulation cannot (shells: shell4.md S-16;
+// bricks: brick8.md B-14, only Ismstr 2 switches).
+bool switch_element(const Model& m, std::size_t g, SolverState& s, std::int32_t e) {
+  const ElementGroup& group = m.element_groups[g];
+  const ElementTable& table = m.elements[static_cast<int>(group.kind)];
+  if (group.kind != ElementKind::Brick8) {
+    ShellState& shells = group.kind == ElementKind::Shell4 ? s.shells : s.shells3;
+    return shell_switch_to_small_strain(table, s.shell_groups[g], s.nodes, shells, e);
+  }
+  if (s.brick_groups[g].ismstr != 2 || s.bricks.small_strain[static_cast<std::size_t>(e)] != 0) return false;
+  brick8_switch_to_small_strain(table, e, s.nodes, s.bricks);
+  return true;
+}
+
 // /DT/<type>/CST: the group's elements whose scaled step is below the minimum switch to the small-strain
 // formulation (Ismstr 2), which freezes their shape and with it their step (docs/theory/time-step.md, "Element
 // minimum"); elements that cannot switch (Ismstr 1, 3, 4) go on as they are.
 void switch_below_minimum(const Model& m, std::size_t g, SolverState& s, RunEvents& events, double type_scale,
                           double minimum) {
   const ElementGroup& group = m.element_groups[g];
-  const ElementTable& table = m.elements[static_cast<int>(group.kind)];
-  ShellState& shells = group.kind == ElementKind::Shell4 ? s.shells : s.shells3;
+  const bool brick = group.kind == ElementKind::Brick8;
+  const ShellState& shells = group.kind == ElementKind::Shell4 ? s.shells : s.shells3;
+  const auto& status = brick ? s.bricks.deleted : shells.deleted;
+  const auto& critical_dt = brick ? s.bricks.critical_dt : shells.critical_dt;
   for (std::int32_t e = group.begin; e < group.end; ++e) {
     const auto ue = static_cast<std::size_t>(e);
-    if (shells.deleted[ue] || !(type_scale * shells.critical_dt[ue] < minimum)) continue;
-    if (!shell_switch_to_small_strain(table, s.shell_groups[g], s.nodes, shells, e)) continue;
+    if (status[ue] || !(type_scale * critical_dt[ue] < minimum)) continue;
+    if (!switch_element(m, g, s, e)) continue;
     ++events.switched_to_small_strain;
     RunEvent event{RunEvent::Kind::ElementSwitchedToSmallStrain, s.cycle, s.time, group.kind, e};
-    event.value = type_scale * shells.critical_dt[ue];
+    event.value = type_scale * critical_dt[ue];
     events.pending.push_back(event);
   }
 }
@@ -91,7 +107,7 @@ long long control_group_step(const Model& m, std::size_t g, SolverState& s, RunE
   const TimeStepControl& type = type_control(m.run, group.kind);
   if (r.controlling < 0 || !(type.minimum > 0.0) || !(type_scale * r.min_dt < type.minimum) || events.stop.stopped())
     return 0;
-  if (type.action == TimeStepAction::SmallStrain && group.kind != ElementKind::Brick8) {
+  if (type.action == TimeStepAction::SmallStrain) {
     switch_below_minimum(m, g, s, events, type_scale, type.minimum);
     return 0;
   }

@@ -155,5 +155,43 @@ TEST(TimeLoop, ShellsAtTheirMinimumStepSwitchToSmallStrainOrAreDeleted) {
               del.run.summary.energy.error_percent);
 }
 
+// /DT/BRICK/CST on Ismstr 2 bricks (brick8.md B-14): the same crush on a bar of 4 one-point bricks. With Ismstr 2
+// the bricks at the minimum switch and the step stays above 0.9 of it; with Ismstr 4 (the default) CST has no
+// effect, as the manual says, and the step goes on falling with the bricks' length.
+double smallest_brick_step(int ismstr, double minimum) {
+  constexpr double h = 0.1, end = 6e-4;
+  std::vector<NodeRow> nodes;
+  auto id = [](int i, int j, int k) { return 1 + 4 * i + j + 2 * k; };
+  for (int i = 0; i <= 4; ++i)
+    for (int k = 0; k < 2; ++k)
+      for (int j = 0; j < 2; ++j) nodes.push_back({id(i, j, k), h * i, h * j, h * k});
+  std::string bricks = "/BRICK/1\n";
+  for (int i = 0; i < 4; ++i)
+    bricks += I(1 + i) + I(id(i, 0, 0)) + I(id(i, 1, 0)) + I(id(i, 1, 1)) + I(id(i, 0, 1)) + I(id(i + 1, 0, 0)) +
+              I(id(i + 1, 1, 0)) + I(id(i + 1, 1, 1)) + I(id(i + 1, 0, 1)) + "\n";
+  const std::string starter = node_cards(nodes) + bricks + part_card() + "/PROP/SOLID/1\nsolid\n" + I(1) + I(ismstr) +
+                              "\n" + R(0.0) + R(0.0) + R(0.0) + "\n" + elastic_material(7800.0, 2.1e11, 0.3) +
+                              node_group(1, {1, 2, 3, 4}) + boundary_condition(1, "111 000", 1) +
+                              node_group(2, {17, 18, 19, 20}) + unit_function(1) + imposed_velocity(1, 1, "X", 2, -300.0);
+  std::ostringstream engine;
+  engine << "/DT/BRICK/CST\n0.9 " << minimum << "\n";
+  test::TempDir dir;
+  double smallest = 1e300;
+  const RunResult run = run_deck(dir, starter, end, 1e-9, [&](const Model&, const SolverState& s) {
+    if (s.time < end * (1.0 - 1e-12)) smallest = std::min(smallest, s.dt);
+  }, engine.str());
+  EXPECT_EQ(run.summary.status, RunStatus::Normal) << run.summary.message;
+  return smallest;
+}
+
+TEST(TimeLoop, BricksAtTheirMinimumStepSwitchWhenTheirFormulationCan) {
+  const double crushed = smallest_brick_step(4, 1e-12);  // no switch: the crushed bar's smallest step
+  const double minimum = 1.3 * crushed;                   // reached during the crush
+  const double switched = smallest_brick_step(2, minimum), unswitched = smallest_brick_step(4, minimum);
+  EXPECT_GT(switched, 0.9 * minimum);
+  EXPECT_LT(unswitched, 0.8 * minimum);
+  std::printf("[dt brick cst] minimum %.4e  smallest step Ismstr 2 %.4e, Ismstr 4 %.4e\n", minimum, switched, unswitched);
+}
+
 }  // namespace
 }  // namespace crumple::verification
