@@ -41,18 +41,19 @@ RigidWallShape wall_shape(const CardReader& reader) {
 }
 
 // Line 2: node_ID, Slide, grnod_ID1, grnod_ID2.
-void read_wall_nodes(const CardReader& reader, const Line& line, RigidWall& w, DeckContext& context) {
+void read_wall_nodes(const Line& line, RigidWall& w, DeckContext& context) {
   w.node_id = optional_id(line, 1, "node_ID");
   const std::int64_t slide = line.integer(11, 10, "Slide");
   if (slide < 0 || slide > 2) line.fail(11, 10, "Slide", "0 (sliding), 1 (tied) or 2 (sliding with friction)");
   w.slide = static_cast<WallSliding>(slide);
   w.node_group1_id = optional_id(line, 21, "grnod_ID1");
   w.node_group2_id = optional_id(line, 31, "grnod_ID2");
+  // Blank in the 2019-2021 layouts; later versions read a penalty formulation flag there (Iform), which Crumple
+  // does not have: its walls are kinematic.
   const std::string penalty = line.text(41, 10);
   if (!penalty.empty() && parse_integer(penalty) != std::optional<std::int64_t>(0))
-    context.warn(line.where(), reader.card().keyword,
-                 "columns 41-50 ignored (blank in the Radioss 2021 layout; newer versions read a penalty "
-                 "formulation flag there, which Crumple does not support)");
+    context.unsupported(line.error(41, 10, "Iform",
+                                   default_only("the penalty rigid-wall formulation (columns 41-50) is")));
 }
 
 // Line 3: D_search, fric, Diameter, ffac, ifq.
@@ -115,7 +116,7 @@ void read_rigid_wall(CardReader& reader, DeckContext& context) {
   w.shape = wall_shape(reader);
   w.user_id = card_id(reader, 2);
   w.title = read_title(reader);
-  read_wall_nodes(reader, reader.next("node_ID, Slide, grnod_ID1, grnod_ID2"), w, context);
+  read_wall_nodes(reader.next("node_ID, Slide, grnod_ID1, grnod_ID2"), w, context);
   read_wall_contact(reader, reader.next("D_search, fric, Diameter, ffac, ifq"), w, context);
   const Line origin = reader.next(w.node_id == 0 ? "XM, YM, ZM" : "Mass, VX_0, VY_0, VZ_0");
   read_wall_origin(origin, w);
