@@ -593,12 +593,7 @@ GroupStepResult brick8_one_point_forces(const ElementTable& table, const Element
     const double nodal_mass = 0.125 * p.density * state.volume0[ue];
     const double step = std::min(transit, damper_rate > 0.0 ? 2.0 * nodal_mass / damper_rate
                                                             : std::numeric_limits<double>::infinity());
-    state.critical_dt[ue] = step;
-    if (step < result.min_dt) result.min_dt = step, result.controlling = e;
-    if (u.failed) {
-      state.deleted[ue] = 1;
-      ++result.failed;
-    }
+    close_element(state, result, e, step, u.failed);
   }
   return result;
 }
@@ -693,12 +688,7 @@ GroupStepResult brick8_full_forces(const ElementTable& table, const ElementGroup
     result.internal_energy += internal;
 
     const double step = length / (visc.speed + std::sqrt(visc.speed * visc.speed + c * c));
-    state.critical_dt[ue] = step;
-    if (step < result.min_dt) result.min_dt = step, result.controlling = e;
-    if (failed) {
-      state.deleted[ue] = 1;
-      ++result.failed;
-    }
+    close_element(state, result, e, step, failed);
   }
   return result;
 }

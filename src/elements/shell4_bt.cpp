@@ -277,12 +277,7 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
     result.internal_energy += internal;
     result.hourglass_energy += hourglass_work;
 
-    state.critical_dt[ue] = step;
-    if (step < result.min_dt) result.min_dt = step, result.controlling = e;
-    if (failed) {
-      state.deleted[ue] = 1;
-      ++result.failed;
-    }
+    close_element(state, result, e, step, failed);
   }
   return result;
 }

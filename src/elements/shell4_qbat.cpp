@@ -319,12 +319,7 @@ GroupStepResult shell4_qbat_forces(const ElementTable& table, const ElementGroup
     if (!std::isfinite(work)) result.non_finite = e;
     state.internal_energy[ue] += work;
     result.internal_energy += work;
-    state.critical_dt[ue] = step;
-    if (step < result.min_dt) result.min_dt = step, result.controlling = e;
-    if (failed) {
-      state.deleted[ue] = 1;
-      ++result.failed;
-    }
+    close_element(state, result, e, step, failed);
   }
   return result;
 }

@@ -6,6 +6,7 @@
 #include "crumple/materials/hardening.hpp"
 #include "crumple/model/elements.hpp"
 #include "crumple/solver/nodal_state.hpp"
+#include "crumple/solver/element_status.hpp"
 #include "crumple/solver/shell_state.hpp"
 
 namespace crumple {
@@ -43,6 +44,19 @@ struct GroupStepResult {
   std::int32_t inverted = -1;      // an element whose area became zero or negative (-1: none)
   std::int32_t non_finite = -1;    // an element whose forces became NaN or infinite (-1: none)
 };
+
+// The end of one element's cycle in a kernel: its critical step into the state and the group's result (the
+// smallest and its element), and its deletion when it failed (every kernel closes its elements this way).
+template <class State>
+inline void close_element(State& state, GroupStepResult& result, std::int32_t e, double step, bool failed) {
+  const auto ue = static_cast<std::size_t>(e);
+  state.critical_dt[ue] = step;
+  if (step < result.min_dt) result.min_dt = step, result.controlling = e;
+  if (failed) {
+    state.deleted[ue] = kElementDeleted;
+    ++result.failed;
+  }
+}
 
 // Updates the stresses of the group's elements over the step dt (the velocities of `nodes` act over dt), then
 // adds their internal forces and moments (with a minus sign) to the nodal force and moment accumulators.
