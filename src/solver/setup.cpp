@@ -67,7 +67,9 @@ void setup_shells(const Model& m, SolverState& s, ElementKind kind) {
     p.hm = prop.shell.hm > 0.0 ? prop.shell.hm : membrane_rotation_default;
     p.hf = prop.shell.hf > 0.0 ? prop.shell.hf : kDefaultHourglass;
     p.hr = prop.shell.hr > 0.0 ? prop.shell.hr : membrane_rotation_default;
-    p.orthogonal_hourglass = f.ishell != 2;
+    // Ishell 2 never orthogonalises its hourglass vector (eq. S-17); the reference's Ishell 1 does not either with
+    // Ismstr 1 (small strain from t = 0, eq. S-15).
+    p.orthogonal_hourglass = f.ishell != 2 && !(f.ishell == 1 && f.ismstr == 1);
     p.elastoplastic_hourglass = f.ishell == 3;
     p.viscous_rotation_hourglass = f.ishell == 1 || f.ishell == 2;  // hr damps the rotation modes (eq. S-19)
     // N = 0: stress-resultant (global) plasticity, one membrane point plus the element's bending stress.
