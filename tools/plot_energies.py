@@ -26,10 +26,12 @@ def crumple_listing(path):
         parts = line.split()
         if not rows or len(parts) < 10 or not parts[0].isdigit():
             continue
-        # CYCLE TIME DT ELEMENT(2 words) ERROR IE KE_T KE_R ...
+        # CYCLE TIME DT ELEMENT ERROR IE KE_T KE_R ...; ELEMENT is "SHELL 10002" or "INTER 1 NODE 1017": the
+        # energies follow the ERROR column (the one ending in %).
+        error = next(i for i, p in enumerate(parts) if p.endswith("%"))
         t.append(number(parts[1]))
-        ie.append(number(parts[6]))
-        ke.append(number(parts[7]))
+        ie.append(number(parts[error + 1]))
+        ke.append(number(parts[error + 2]))
     return t, ie, ke
 
 
