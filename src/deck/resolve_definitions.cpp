@@ -8,6 +8,9 @@
 namespace crumple::deck {
 namespace {
 
+// Points through the thickness the reference solver gives a /MAT/PLAS_JOHNS shell property with N = 0.
+constexpr int kJohnsonCookPointsForGlobalIntegration = 3;
+
 bool one_of(int value, std::initializer_list<int> allowed) {
   for (int a : allowed)
     if (value == a) return true;
@@ -157,9 +160,10 @@ void check_plasticity_algorithm(Resolver& r, const Property& p, const ResolvedFo
   if (iplas == 0 || iplas == (points ? 1 : 2)) return;
   r.error(own ? p.shell.section_where : ds.where, own ? keyword_of(p) : "/DEF_SHELL",
           own ? "Iplas (columns 81-90)" : "Iplas (columns 31-40)",
-          points ? fmt::format("0 or 1 for the plastic points of {} (N = {}): the radial return, 2, is not supported "
+          points ? fmt::format("0 or 1 for the plastic points of {} (N = {}{}): the radial return, 2, is not supported "
                                "by Crumple",
-                               keyword_of(p), f.n_points)
+                               keyword_of(p), f.n_points,
+                               p.shell.n_points == 0 ? ", from N = 0 with /MAT/PLAS_JOHNS" : "")
                  : fmt::format("0 or 2 for the plastic resultants of {} (N = 0): the iterative return, 1, is not "
                                "supported by Crumple",
                                keyword_of(p)),
@@ -186,16 +190,41 @@ void check_shell_material(Resolver& r, const Property& p, const ResolvedFormulat
   const double failure = mat.law == MaterialLaw::JohnsonCook ? mat.johnson_cook.eps_p_max
                          : tabulated                         ? mat.tabulated.eps_p_max
                                                              : 0.0;
+  // (N = 0 with /MAT/PLAS_JOHNS runs 3 points, as in the reference: integrate_johnson_cook_through_points.)
+  const bool switched = s.n_points == 0 && f.n_points >= 2;
   if (f.n_points >= 2 && failure > 0.0 && failure < 1e20)
     r.error(s.flags_where, keyword_of(p), "P_thick_fail (columns 61-80)",
-            fmt::format("N = 0 or 1 with the failure strain of material {}: with N = {} the reference deletes an "
+            fmt::format("N = {} with the failure strain of material {}: with N = {}{} the reference deletes an "
                         "element when all its points failed, Crumple at the first (not supported by Crumple)",
-                        mat.user_id, f.n_points),
+                        switched ? "1" : "0 or 1", mat.user_id, f.n_points,
+                        switched ? " (N = 0 runs 3 points for /MAT/PLAS_JOHNS)" : ""),
             "'0'");
   if (plastic) check_plasticity_algorithm(r, p, f);
 }
 
+// N = 0 asks for global (resultant) integration through the thickness. The reference solver does not integrate
+// /MAT/PLAS_JOHNS globally: it switches such a property to 3 points and says so (its starter warning 1912, in the
+// listings of the QA decks ball_on_wall, contact_idel and friction). Crumple does the same, so that the fully
+// plastic moment is the 3-point one, sigma_y t^2 / 6, not the resultant surface's sigma_y t^2 / 4
+// (docs/theory/materials.md, "Which laws run on the resultants").
+void integrate_johnson_cook_through_points(Resolver& r) {
+  Model& m = r.model;
+  for (const Part& part : m.parts) {
+    if (part.property < 0 || part.material < 0) continue;
+    const Property& p = m.properties[static_cast<std::size_t>(part.property)];
+    ResolvedFormulation& f = m.formulations[static_cast<std::size_t>(part.property)];
+    const Material& mat = m.materials[static_cast<std::size_t>(part.material)];
+    if (p.kind != PropertyKind::Shell || f.n_points != 0 || mat.law != MaterialLaw::JohnsonCook) continue;
+    f.n_points = kJohnsonCookPointsForGlobalIntegration;
+    r.context.warn(p.shell.section_where, keyword_of(p),
+                   fmt::format("N = 0 (global integration) with /MAT/PLAS_JOHNS/{}: the reference solver does not "
+                               "integrate this law globally and runs {} points through the thickness; so does Crumple",
+                               mat.user_id, kJohnsonCookPointsForGlobalIntegration));
+  }
+}
+
 void check_shell_formulations(Resolver& r) {
+  integrate_johnson_cook_through_points(r);
   const Model& m = r.model;
   const std::vector<PropertyUse> use = property_use(r);
   for (std::size_t i = 0; i < m.properties.size(); ++i) {

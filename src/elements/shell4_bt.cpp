@@ -180,6 +180,7 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
     double* hq = nullptr;
     double damping[5] = {0, 0, 0, 0, 0};                  // viscous hourglass forces of the cycle (Ishell 24)
     double shear_moment_x[NN] = {}, shear_moment_y[NN] = {};  // rotation coefficients of the shear mode (eq. S-13)
+    double rotation_damping_x[NN] = {}, rotation_damping_y[NN] = {};  // Ishell 1, 2 rotation modes (eq. S-19)
     double hourglass_work = 0.0;
     if constexpr (NN == 4) {
       constexpr double h[4] = {1.0, -1.0, 1.0, -1.0};
@@ -228,11 +229,12 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
         for (int a = 0; a < 4; ++a) shear_moment_x[a] = cx[a], shear_moment_y[a] = cy[a];
       } else {
         // Each coefficient is the fraction of the element's own stiffness for the matching deformation:
-        // membrane E t A |B|^2, bending D A |B|^4 for the transverse mode and D A |B|^2 for the rotation modes.
+        // membrane E t A |B|^2, bending D A |B|^4 for the transverse mode and D A |B|^2 for the rotation modes;
+        // Ishell 1 and 2 damp their rotation modes instead (eq. S-19, below).
         const double plate = E * t * t * t / 12.0;
         const double membrane = p.hm * E * t * area * bb;
         const double bending = p.hf * plate * area * bb * bb;
-        const double rotation = p.hr * plate * area * bb;
+        const double rotation = p.viscous_rotation_hourglass ? 0.0 : p.hr * plate * area * bb;
         const double stiffness[5] = {membrane, membrane, bending, rotation, rotation};
         // Ishell 3 (eq. S-18): the membrane and transverse modes carry at most what the section's yield stress
         // allows.
@@ -244,6 +246,22 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
           hq[m] += stiffness[m] * rates[m] * dt;
           if (cap[m] > 0.0) hq[m] = std::clamp(hq[m], -cap[m], cap[m]);
           hourglass_work += 0.5 * (old + hq[m]) * rates[m] * dt;
+        }
+        if (p.viscous_rotation_hourglass) {
+          // Ishell 1, 2 (eqs. S-19, S-20): the reference's hr damps the rotation modes, on g = 4 gamma (h for a
+          // parallelogram), so that a linear rotation field (constant curvature) is not resisted.
+          const double inertia = shell_node_rotational_inertia(p.density * t * area, t, area, 4);
+          double q_rotation[2] = {0.0, 0.0}, g_norm = 0.0;
+          for (int a = 0; a < 4; ++a) {
+            q_rotation[0] += 4.0 * gamma[a] * tx[a], q_rotation[1] += 4.0 * gamma[a] * ty[a];
+            g_norm += 16.0 * gamma[a] * gamma[a];
+          }
+          double moment[2];
+          for (int r = 0; r < 2; ++r)
+            moment[r] = shell_hourglass::rotation_damping_moment(p.hr, p.density, t, area, q_rotation[r], inertia, g_norm, dt);
+          hourglass_work += (moment[0] * q_rotation[0] + moment[1] * q_rotation[1]) * dt;
+          for (int a = 0; a < 4; ++a)
+            rotation_damping_x[a] = 4.0 * gamma[a] * moment[0], rotation_damping_y[a] = 4.0 * gamma[a] * moment[1];
         }
       }
     }
@@ -259,7 +277,8 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
         const double q[5] = {hq[0] + damping[0], hq[1] + damping[1], hq[2] + damping[2], hq[3] + damping[3],
                              hq[4] + damping[4]};
         fx += gamma[a] * q[0], fy += gamma[a] * q[1], fz += gamma[a] * q[2];
-        mx += gamma[a] * q[3] + shear_moment_x[a] * q[2], my += gamma[a] * q[4] + shear_moment_y[a] * q[2];
+        mx += gamma[a] * q[3] + shear_moment_x[a] * q[2] + rotation_damping_x[a];
+        my += gamma[a] * q[4] + shear_moment_y[a] * q[2] + rotation_damping_y[a];
       }
       const auto k = static_cast<std::size_t>(n[a]);
       nodes.fx[k] -= fx * e1.x + fy * e2.x + fz * e3.x;

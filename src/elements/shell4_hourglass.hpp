@@ -1,7 +1,28 @@
 #pragma once
 // Physical hourglass stabilisation of the one-point 4-node shell, Ishell 24 (docs/theory/shell4.md, "Physical
-// stabilisation", eqs. S-10 to S-14). Plain functions over one element's local data, used by the shell kernel.
+// stabilisation", eqs. S-10 to S-14), and the damped rotation modes of Ishell 1 and 2 (eqs. S-19, S-20). Plain
+// functions over one element's local data, used by the shell kernel.
+#include <algorithm>
+#include <cmath>
+
 namespace crumple::shell_hourglass {
+
+// The reference solver's quadratic hourglass viscosity of the rotation modes of Ishell 1, 2 (eq. S-19):
+// 100 rho / 4 times its viscous share 1/2 times 1 / (8 sqrt 3) for the rotation modes = 25 / (16 sqrt 3).
+inline constexpr double kRotationHourglassViscosity = 25.0 / (16.0 * 1.7320508075688772);
+
+// Moment of a rotation hourglass mode of Ishell 1, 2 for its rate q = sum_a g_a theta_a [T^-1], g = 4 gamma the
+// hourglass vector of S-5 (h = (1, -1, 1, -1) when not orthogonalised) (eq. S-19): C hr rho t^2 A |q| q, given to
+// node a as g_a times it, in the deck's working units as the reference does. At most the moment that stops the
+// mode within the step dt on the element's share `inertia` of each node's rotational inertia,
+// I |q| / (|g|^2 dt) with g_norm = |g|^2 (4 for h) (eq. S-20): a damper never reverses the motion it resists.
+inline double rotation_damping_moment(double hr, double density, double thickness, double area, double q,
+                                      double inertia, double g_norm, double dt) {
+  const double viscous = kRotationHourglassViscosity * hr * density * thickness * thickness * area * std::abs(q) * q;
+  if (!(dt > 0.0)) return viscous;
+  const double limit = inertia * std::abs(q) / (g_norm * dt);
+  return std::clamp(viscous, -limit, limit);
+}
 
 // H_ij = integral over the element of h_,i h_,j with h = xi eta the bilinear mode (eq. S-10), from the Jacobian at
 // the centre: H = (A / 3) (grad xi grad xi^T + grad eta grad eta^T), exact for parallelograms.

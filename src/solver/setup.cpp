@@ -67,8 +67,11 @@ void setup_shells(const Model& m, SolverState& s, ElementKind kind) {
     p.hm = prop.shell.hm > 0.0 ? prop.shell.hm : membrane_rotation_default;
     p.hf = prop.shell.hf > 0.0 ? prop.shell.hf : kDefaultHourglass;
     p.hr = prop.shell.hr > 0.0 ? prop.shell.hr : membrane_rotation_default;
-    p.orthogonal_hourglass = f.ishell != 2;
+    // Ishell 2 never orthogonalises its hourglass vector (eq. S-17); the reference's Ishell 1 does not either with
+    // Ismstr 1 (small strain from t = 0, eq. S-15).
+    p.orthogonal_hourglass = f.ishell != 2 && !(f.ishell == 1 && f.ismstr == 1);
     p.elastoplastic_hourglass = f.ishell == 3;
+    p.viscous_rotation_hourglass = f.ishell == 1 || f.ishell == 2;  // hr damps the rotation modes (eq. S-19)
     // N = 0: stress-resultant (global) plasticity, one membrane point plus the element's bending stress.
     const int np = f.n_points == 0 ? 1 : f.n_points;
     p.resultant_plasticity = f.n_points == 0;
@@ -107,7 +110,7 @@ void setup_shells(const Model& m, SolverState& s, ElementKind kind) {
       const double area = mass / (mat.density * prop.shell.thickness);
       for (int a = 0; a < nodes_per; ++a)
         s.nodes.inertia[static_cast<std::size_t>(nodes[a])] +=
-            mass / nodes_per * (prop.shell.thickness * prop.shell.thickness + area) / 12.0;
+            shell_node_rotational_inertia(mass, prop.shell.thickness, area, nodes_per);
     }
   }
   st.resize_points(total_points);

@@ -1,6 +1,7 @@
 // Hourglass treatments of the one-point 4-node shell (docs/theory/shell4.md, S-5, S-17, S-18): Ishell 1
 // orthogonalises the hourglass vector against the linear fields, Ishell 2 does not, Ishell 3 limits the hourglass
 // stresses by the yield stress of the section.
+#include "elements/shell4_hourglass.hpp"  // kRotationHourglassViscosity (eq. S-19)
 #include "shell4_element.hpp"
 
 using namespace crumple;
@@ -61,6 +62,70 @@ TEST(Shell4Hourglass, Ishell2ResistsTheHourglassModeAsIshell1) {
   // A = 0.02, |B|^2 = sum (b1^2 + b2^2) = 4 (1 / 0.2^2 + 1 / 0.1^2) / 4 = 125; rate gamma . v = 1.
   EXPECT_NEAR(q[0], 0.01 * kE * 0.01 * 0.02 * 125.0, 1e-9 * q[0]);
   EXPECT_NEAR(q[1], q[0], 1e-12 * q[0]);
+}
+
+// Ishell 1 and 2 damp their rotation hourglass modes, as the reference does (its hr is printed as the "shell
+// hourglass rotational damping"; eq. S-19): the mode theta_x = h omega on the 0.2 x 0.1 rectangle (t = 0.01,
+// rho = 7800, hr = 0.01) has the rate q = h . theta = 4 omega and gets at each node h_a M about the local x axis,
+// M = C hr rho t^2 A q^2 = 0.9021 * 0.01 * 7800 * 1e-4 * 0.02 * 16 = 2.2517e-3 for omega = 1; nothing is stored, so the
+// mode at rest again carries no moment (an elastic stiffness would hold a restoring one), and the work of the
+// moments, M q dt, is hourglass energy. The other rotation axis and Ishell 3, which keeps its stiffness, for contrast.
+TEST(Shell4Hourglass, Ishell1And2DampTheirRotationModes) {
+  constexpr double h[4] = {1, -1, 1, -1};
+  const double t = 0.01, area = 0.02, dt = 1e-6;
+  const double expected = shell_hourglass::kRotationHourglassViscosity * 0.01 * kRho * t * t * area * 16.0;
+  EXPECT_NEAR(expected, 2.2517e-3, 1e-7);
+  for (const int ishell : {1, 2}) {
+    for (const int axis : {0, 1}) {
+      Element el(kRectangle, t, 3);
+      el.one_point(ishell);
+      el.p.zeta = el.zeta, el.p.membrane_weight = el.wn, el.p.bending_weight = el.wb;
+      for (std::size_t k = 0; k < 4; ++k) (axis == 0 ? el.nodes.wx : el.nodes.wy)[k] = h[k];
+      const GroupStepResult moving = shell4_forces(el.table, el.group, el.p, el.nodes, el.state, dt);
+      // The element lies in the global x-y plane with e1 = x, e2 = y: moments are global. The curvature of the mode
+      // is zero at the centre and the transverse shear sees its mean, zero: only the hourglass moment acts.
+      for (std::size_t k = 0; k < 4; ++k) {
+        const double m = -(axis == 0 ? el.nodes.mx : el.nodes.my)[k];
+        EXPECT_NEAR(m, h[k] * expected, 1e-9 * expected) << "ishell " << ishell << " axis " << axis << " node " << k;
+      }
+      EXPECT_NEAR(moving.hourglass_energy, expected * 4.0 * dt, 1e-9 * expected * 4.0 * dt);
+      EXPECT_EQ(el.state.hourglass[3 + static_cast<std::size_t>(axis)], 0.0);
+      // At rest again: no moment.
+      el.nodes.clear_forces();
+      for (std::size_t k = 0; k < 4; ++k) el.nodes.wx[k] = el.nodes.wy[k] = 0.0;
+      shell4_forces(el.table, el.group, el.p, el.nodes, el.state, dt);
+      for (std::size_t k = 0; k < 4; ++k) {
+        EXPECT_EQ(el.nodes.mx[k], 0.0);
+        EXPECT_EQ(el.nodes.my[k], 0.0);
+      }
+    }
+  }
+  Element stiff(kRectangle, t, 3);
+  stiff.one_point(3);
+  stiff.p.zeta = stiff.zeta, stiff.p.membrane_weight = stiff.wn, stiff.p.bending_weight = stiff.wb;
+  for (std::size_t k = 0; k < 4; ++k) stiff.nodes.wx[k] = h[k];
+  shell4_forces(stiff.table, stiff.group, stiff.p, stiff.nodes, stiff.state, dt);
+  EXPECT_NE(stiff.state.hourglass[3], 0.0) << "Ishell 3 keeps the elastic rotation stiffness of S-5";
+}
+
+// The damper never reverses the motion it resists (eq. S-20): at a rotation rate where C hr rho t^2 A q^2 would
+// exceed it, the moment is the one that stops the mode within the step on the element's share of the nodal
+// inertia, I |q| / (|g|^2 dt) with I = rho t A (t^2 + A) / 48 (eq. S-8) and |g|^2 = |h|^2 = 4 on the rectangle.
+TEST(Shell4Hourglass, RotationDampingStopsButNeverReversesTheMode) {
+  constexpr double h[4] = {1, -1, 1, -1};
+  const double t = 0.01, area = 0.02, dt = 1e-3, omega = 1e4;
+  Element el(kRectangle, t, 3);
+  el.one_point(1);
+  el.p.zeta = el.zeta, el.p.membrane_weight = el.wn, el.p.bending_weight = el.wb;
+  for (std::size_t k = 0; k < 4; ++k) el.nodes.wx[k] = h[k] * omega;
+  shell4_forces(el.table, el.group, el.p, el.nodes, el.state, dt);
+  const double inertia = kRho * t * area * (t * t + area) / 48.0, q = 4.0 * omega;
+  const double viscous = shell_hourglass::kRotationHourglassViscosity * 0.01 * kRho * t * t * area * q * q;
+  const double limit = inertia * q / (4.0 * dt);
+  ASSERT_GT(viscous, 10.0 * limit);
+  for (std::size_t k = 0; k < 4; ++k) EXPECT_NEAR(-el.nodes.mx[k], h[k] * limit, 1e-12 * limit);
+  // The rate after the step on that inertia: q - 4 M dt / I = 0.
+  EXPECT_NEAR(q - 4.0 * limit * dt / inertia, 0.0, 1e-9 * q);
 }
 
 // Ishell 3: with an elastic law the hourglass stresses grow with the deformation (no limit); with a plastic law

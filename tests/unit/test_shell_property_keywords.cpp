@@ -76,22 +76,57 @@ TEST(ShellPropertyKeywords, FirstDefShellCounts) {
   EXPECT_TRUE(contains(warnings(d), "only the first /DEF_SHELL counts")) << warnings(d);
 }
 
+const std::string kJohnsonCook = "/MAT/PLAS_JOHNS/1\nsteel\n" + R(7800.0) + "\n" + R(2.1e11) + R(0.3) + I(0) + "\n" +
+                                 R(2.5e8) + R(4.5e8) + R(0.5) + "\n" + R(0.0) + R(0.0) + I(0) + I(0) + R(0.0) +
+                                 R(0.0) + "\n";
+// /MAT/PLAS_TAB with the hardening curve /FUNCT/5 (written before the property, see plate_with_property).
+const std::string kTabulated = "/MAT/PLAS_TAB/1\nsteel\n" + R(7800.0) + "\n" + R(2.1e11) + R(0.3) + "\n" + I(1) +
+                               I(0) + R(0.0) + R(0.0) + "\n" + I(0) + R(0.0) + I(0) + "\n" + I(5) + "\n" + R(1.0) +
+                               "\n" + R(0.0) + "\n/FUNCT/5\nhardening\n" + R(0.0) + R(2e8) + "\n" + R(1.0) + R(4e8) +
+                               "\n";
+
 // Iplas acts on plastic sections only: Iplas 2 with an elastic law has nothing to act on; with a plastic law and
-// points it is refused (bad-input decks iplas_*), with N = 0 accepted (the radial return on the resultants).
+// points it is refused (bad-input decks iplas_*), with resultants (N = 0, /MAT/PLAS_TAB) accepted (the radial
+// return on the resultants). N = 0 with /MAT/PLAS_JOHNS runs 3 points, so Iplas 2 is refused there too, and the
+// message says where the points come from.
 TEST(ShellPropertyKeywords, IplasActsOnPlasticSectionsOnly) {
   test::TempDir dir;
   const std::string section2 = I(3) + I(0) + R(0.001) + R(0.0) + test::blank(10) + I(0) + I(2);
   EXPECT_NO_THROW(read(dir, plate_with_property(I(24) + I(0) + I(0) + I(0), R(0.0), section2)));
-  const std::string jc = "/MAT/PLAS_JOHNS/1\nsteel\n" + R(7800.0) + "\n" + R(2.1e11) + R(0.3) + I(0) + "\n" +
-                         R(2.5e8) + R(4.5e8) + R(0.5) + "\n" + R(0.0) + R(0.0) + I(0) + I(0) + R(0.0) + R(0.0) + "\n";
   const std::string resultants2 = I(0) + I(0) + R(0.001) + R(0.0) + test::blank(10) + I(0) + I(2);
-  const Deck d = read(dir, plate_with_property(I(24) + I(0) + I(0) + I(0), R(0.0), resultants2, jc));
+  const Deck d = read(dir, plate_with_property(I(24) + I(0) + I(0) + I(0), R(0.0), resultants2, kTabulated));
   EXPECT_EQ(d.model.properties[0].shell.iplas, 2);
+  EXPECT_EQ(d.model.formulations[0].n_points, 0);
   EXPECT_TRUE(contains(test::first_error(dir.write("Q_0000.rad", test::begin_card() +
                                                                     plate_with_property(I(24) + I(0) + I(0) + I(0),
-                                                                                        R(0.0), section2, jc) +
+                                                                                        R(0.0), section2, kJohnsonCook) +
                                                                     "/END\n")),
                        "field Iplas (columns 81-90): expected 0 or 1 for the plastic points"));
+  EXPECT_TRUE(contains(test::first_error(dir.write("S_0000.rad", test::begin_card() +
+                                                                    plate_with_property(I(24) + I(0) + I(0) + I(0),
+                                                                                        R(0.0), resultants2, kJohnsonCook) +
+                                                                    "/END\n")),
+                       "expected 0 or 1 for the plastic points of /PROP/SHELL/1 (N = 3, from N = 0 with "
+                       "/MAT/PLAS_JOHNS)"));
+}
+
+// N = 0 asks for global integration. The reference solver does not integrate /MAT/PLAS_JOHNS globally: it runs 3
+// points and warns (its warning 1912 in the starter listings of ball_on_wall, contact_idel and friction). Crumple
+// resolves such a property to 3 points with a warning; elastic and tabulated laws keep N = 0.
+TEST(ShellPropertyKeywords, GlobalIntegrationOfJohnsonCookRunsThreePoints) {
+  test::TempDir dir;
+  const std::string flags = I(1) + I(0) + I(0) + I(0), global = I(0) + I(0) + R(0.001);
+  const Deck jc = read(dir, plate_with_property(flags, R(0.0), global, kJohnsonCook));
+  EXPECT_EQ(jc.model.formulations[0].n_points, 3);
+  EXPECT_EQ(jc.model.properties[0].shell.n_points, 0);  // the deck's value is kept as read
+  EXPECT_TRUE(contains(warnings(jc), "N = 0 (global integration) with /MAT/PLAS_JOHNS/1: the reference solver does "
+                                     "not integrate this law globally and runs 3 points through the thickness"))
+      << warnings(jc);
+  EXPECT_EQ(read(dir, plate_with_property(flags, R(0.0), global)).model.formulations[0].n_points, 0);
+  EXPECT_EQ(read(dir, plate_with_property(flags, R(0.0), global, kTabulated)).model.formulations[0].n_points, 0);
+  // Points asked for explicitly stay as asked.
+  EXPECT_EQ(read(dir, plate_with_property(flags, R(0.0), I(5) + I(0) + R(0.001), kJohnsonCook)).model.formulations[0].n_points,
+            5);
 }
 
 }  // namespace

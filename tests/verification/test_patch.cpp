@@ -33,9 +33,10 @@ std::vector<ShellRow> patch_shells() {
 // Ishell 12 runs with its numerical damping dn (eq. Q-8) practically off: the damping stress is proportional to each
 // element's size, so on a distorted mesh it is not a constant state and the patch cannot balance it (with the
 // default dn = 0.001 the interior forces are 3e-6 of the boundary ones). The patch tests measure the stiffness.
-std::string patch_starter(int points, int ishell) {
+std::string patch_starter(int points, int ishell, int ismstr = 0) {
   return node_cards(patch_nodes()) + shell_cards(1, patch_shells()) + part_card() +
-         shell_property(kThickness, points, 0.0, ishell, ishell == 12 ? 1e-30 : 0.0) + elastic_material(kRho, kYoung, kNu);
+         shell_property(kThickness, points, 0.0, ishell, ishell == 12 ? 1e-30 : 0.0, ismstr) +
+         elastic_material(kRho, kYoung, kNu);
 }
 
 // Plane-stress elasticity on engineering strains (exx, eyy, gxy).
@@ -70,13 +71,15 @@ struct Patch {
   ShellGroupParameters p;
   const double* zeta;
 
-  Patch(int points, int ishell) : model(read_patch(points, ishell)), solver(start(model)), nodes(solver.nodes), state(solver.shells) {
+  Patch(int points, int ishell, int ismstr = 0)
+      : model(read_patch(points, ishell, ismstr)), solver(start(model)), nodes(solver.nodes), state(solver.shells) {
     p = solver.shell_groups.at(0);
     zeta = p.zeta;
   }
-  static Model read_patch(int points, int ishell) {
+  static Model read_patch(int points, int ishell, int ismstr) {
     test::TempDir dir;
-    return read_deck(dir.write("P_0000.rad", test::begin_card("P") + patch_starter(points, ishell) + "/END\n")).model;
+    return read_deck(dir.write("P_0000.rad", test::begin_card("P") + patch_starter(points, ishell, ismstr) + "/END\n"))
+        .model;
   }
   static SolverState start(const Model& m) {
     std::vector<std::string> notes;
@@ -302,6 +305,36 @@ TEST_P(PatchTest, MembranePatchThroughTheSolver) {
   std::printf("[solver membrane patch] cycles %lld  velocity %.2e  position %.2e  stress %.2e (relative)  "
               "energy error %.3f %%\n",
               run.summary.cycles, worst_velocity, worst_position, worst_stress, run.summary.energy.error_percent);
+}
+
+// With Ismstr 1 the reference's Ishell 1 does not orthogonalise its hourglass vector (docs/theory/shell4.md, S-15):
+// on the distorted patch a constant strain rate then loads the membrane hourglass modes exactly as Ishell 2's plain
+// vector does (the patch test is failed by design, as for Ishell 2), while with Ismstr 2 they stay at rest.
+TEST(PatchSmallStrain, Ishell1WithIsmstr1TakesThePlainHourglassVector) {
+  const double G[2][2] = {{1.0e-3, 0.4e-3}, {-0.7e-3, -0.3e-3}};
+  auto hourglass_of = [&](int ishell, int ismstr) {
+    Patch patch(1, ishell, ismstr);
+    for (std::size_t k = 0; k < patch.nodes.size(); ++k) {
+      patch.nodes.vx[k] = G[0][0] * patch.nodes.x[k] + G[0][1] * patch.nodes.y[k];
+      patch.nodes.vy[k] = G[1][0] * patch.nodes.x[k] + G[1][1] * patch.nodes.y[k];
+    }
+    patch.step(1e-3);
+    return patch.state.hourglass;
+  };
+  const std::vector<double> plain = hourglass_of(2, 1), small = hourglass_of(1, 1), large = hourglass_of(1, 2);
+  ASSERT_EQ(plain.size(), small.size());
+  double largest = 0.0, worst_difference = 0.0, worst_large = 0.0;
+  for (std::size_t i = 0; i < plain.size(); ++i) {
+    largest = std::max(largest, std::abs(plain[i]));
+    worst_difference = std::max(worst_difference, std::abs(small[i] - plain[i]));
+    worst_large = std::max(worst_large, std::abs(large[i]));
+  }
+  // sigma ~ E G dt = 1e-3, force scale sigma t 0.24 ~ 2.4e-7: the plain vector's hourglass forces are a sizeable
+  // fraction of it on this mesh, the orthogonal ones round-off.
+  const double force_scale = kYoung * 1.0e-6 * kThickness * 0.24;
+  EXPECT_GT(largest, 1e-3 * force_scale);
+  EXPECT_LE(worst_difference, 1e-12 * largest);
+  EXPECT_LT(worst_large, 1e-12 * force_scale);
 }
 
 }  // namespace

@@ -23,6 +23,7 @@ struct ShellGroupParameters {
   bool physical_hourglass = false;         // Ishell 24 (QEPH): stiffness from the material, eqs. S-10 to S-14
   bool orthogonal_hourglass = true;        // false for Ishell 2: hourglass vector not orthogonalised (eq. S-17)
   bool elastoplastic_hourglass = false;    // Ishell 3: hourglass stresses limited by the yield stress (eq. S-18)
+  bool viscous_rotation_hourglass = false; // Ishell 1, 2: rotation modes damped by hr, without stiffness (eq. S-19)
   double numerical_damping = 0.015;        // dn: viscous fraction on the physical hourglass modes (eq. S-14), or
                                            // on the membrane and bending resultants of Ishell 12 (eq. Q-8)
   int points = 1;                          // through-thickness integration points (1 when resultant_plasticity)
@@ -79,6 +80,12 @@ GroupStepResult shell3_forces(const ElementTable& table, const ElementGroup& gro
 // Ismstr 4: the switch has no effect), when it already switched or was deleted, or when its shape has no frame.
 bool shell_switch_to_small_strain(const ElementTable& table, const ShellGroupParameters& p, const NodalState& nodes,
                                   ShellState& state, std::int32_t element);
+
+// Lumped rotational inertia an element of mass `element_mass` gives each of its `nodes` nodes [M L^2]:
+// (m / n) (t^2 + A) / 12 (docs/theory/shell4.md, eq. S-8).
+inline double shell_node_rotational_inertia(double element_mass, double thickness, double area, int nodes) {
+  return element_mass / nodes * (thickness * thickness + area) / 12.0;
+}
 
 // Through-thickness rule for n = 1..10 points (docs/theory/shell4.md, eq. S-4): n equally spaced points from the
 // lower to the upper surface; the stress between points is taken linear, so the membrane weights are the
