@@ -31,6 +31,7 @@ void shell_formulation(Resolver& r, const Property& p, ResolvedFormulation& f) {
   f.ishell = pick(p.shell.ishell, ds.ishell, 1);  // the manual: 1 without /IMPLICIT (the QA listings print 1)
   f.ish3n = pick(p.shell.ish3n, ds.ish3n, 2);
   f.ismstr = pick(p.shell.ismstr, ds.ismstr, 2);
+  f.iplas = pick(p.shell.iplas, ds.iplas, 2);  // the manual: 2 (radial return) without /IMPLICIT
   f.n_points = p.shell.n_points;
   // Ishell 2 needs bending points: with N = 1 the reference solver runs Ishell 1 and says so.
   if (f.ishell == 2 && f.n_points == 1) {
@@ -144,30 +145,18 @@ void check_triangle_formulation(Resolver& r, const Property& p, const ResolvedFo
           fmt::format("'{}'", f.ish3n));
 }
 
-// Iplas of a plastic section. With points through the thickness Crumple's return is the iterative projection of
-// Iplas 1 run to convergence (materials.md, PS-3); with N = 0 it is the radial return on the resultants (RP-1 to
-// RP-3), the counterpart of Iplas 2. The default (0, the reference's radial return) runs either, with a warning
-// for the points.
+// Iplas of a plastic section. At points through the thickness both returns exist: 1, the iterative plane-stress
+// projection (run to convergence, materials.md PS-3), and 2, the radial return (PS-5), the default. On the
+// resultants (N = 0) the return is radial (RP-1 to RP-3): the iterative one, 1, is an option Crumple lacks.
 void check_plasticity_algorithm(Resolver& r, const Property& p, const ResolvedFormulation& f) {
-  const ShellDefaults& ds = r.model.shell_defaults;
+  if (f.n_points >= 1 || f.iplas == 2) return;
   const bool own = p.shell.iplas != 0;
-  const int iplas = own ? p.shell.iplas : ds.iplas;
-  const bool points = f.n_points >= 1;
-  if (iplas == 0 && points)
-    r.context.warn(p.shell.section_where, keyword_of(p),
-                   "Iplas 0: the reference's default plane-stress return is a radial return; Crumple runs the "
-                   "converged iterative projection of Iplas 1");
-  if (iplas == 0 || iplas == (points ? 1 : 2)) return;
-  r.error(own ? p.shell.section_where : ds.where, own ? keyword_of(p) : "/DEF_SHELL",
+  r.error(own ? p.shell.section_where : r.model.shell_defaults.where, own ? keyword_of(p) : "/DEF_SHELL",
           own ? "Iplas (columns 81-90)" : "Iplas (columns 31-40)",
-          points ? fmt::format("0 or 1 for the plastic points of {} (N = {}{}): the radial return, 2, is not supported "
-                               "by Crumple",
-                               keyword_of(p), f.n_points,
-                               p.shell.n_points == 0 ? ", from N = 0 with /MAT/PLAS_JOHNS" : "")
-                 : fmt::format("0 or 2 for the plastic resultants of {} (N = 0): the iterative return, 1, is not "
-                               "supported by Crumple",
-                               keyword_of(p)),
-          fmt::format("'{}'", iplas));
+          fmt::format("0 or 2 for the plastic resultants of {} (N = 0): the iterative return, 1, is not supported by "
+                      "Crumple",
+                      keyword_of(p)),
+          fmt::format("'{}'", f.iplas));
 }
 
 // Flags whose effect depends on the material of a part that uses the property (docs/theory/shell4.md,

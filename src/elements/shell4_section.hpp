@@ -135,8 +135,9 @@ inline Update update(const ShellGroupParameters& p, const materials::PlaneStress
       const double increment_rate = std::sqrt(2.0 / 3.0 * (ex * ex + ey * ey + (ex + ey) * (ex + ey) + 0.5 * g * g)) / dt;
       const double rate = p.hardening.filtered_rate(increment_rate, state.eps_rate[ip], dt);  // eq. RF
       state.eps_rate[ip] = rate;
-      const auto r = materials::plane_stress_update(elastic, p.hardening, ex, ey, g, rate, state.eps_p[ip], sxx, syy,
-                                                    sxy, &state.static_yield[ip]);
+      const auto return_to_yield = p.radial_return ? materials::plane_stress_radial_return : materials::plane_stress_update;
+      const auto r = return_to_yield(elastic, p.hardening, ex, ey, g, rate, state.eps_p[ip], sxx, syy, sxy,
+                                     &state.static_yield[ip]);
       state.eps_p[ip] += r.plastic_strain_increment;
       if (r.plastic_strain_increment > 0.0 && p.physical_hourglass) {
         // Elastic-plastic tangent of the point, E H' / (E + H'), for the hourglass modes (eq. S-12).

@@ -78,4 +78,49 @@ PlaneStressResult plane_stress_update(const PlaneStressElastic& el, const Harden
   return result;
 }
 
+PlaneStressResult plane_stress_radial_return(const PlaneStressElastic& el, const Hardening& hardening, double dexx,
+                                             double deyy, double dgxy, double rate, double eps_p, double& sxx,
+                                             double& syy, double& sxy, double* static_yield) {
+  const double E = el.young, nu = el.poisson;
+  const double G = E / (2.0 * (1.0 + nu));
+  const double c = E / (1.0 - nu * nu);
+  // Elastic predictor (PS-1), as in plane_stress_update.
+  const double txx = sxx + c * (dexx + nu * deyy);
+  const double tyy = syy + c * (deyy + nu * dexx);
+  const double txy = sxy + G * dgxy;
+  const double old_sum = sxx + syy;
+  sxx = txx, syy = tyy, sxy = txy;
+  PlaneStressResult result{0.0, -nu / E * ((txx + tyy) - old_sum)};
+  if (!hardening.plastic()) return result;
+  const bool kept = static_yield != nullptr && hardening.has_static_part();
+  if (kept && std::isnan(*static_yield)) *static_yield = hardening.static_part(eps_p);
+  const double yield0 = kept ? hardening.yield_from_static(*static_yield, rate) : hardening.yield(eps_p, rate);
+  const double trial = von_mises_plane_stress(txx, tyy, txy);
+  if (trial <= yield0) return result;
+  // PS-5: f(d) = trial - 3 G d - sigma_y(eps_p + d) = 0, decreasing in d; Newton from d = 0, safeguarded.
+  double d = 0.0, lo = 0.0, hi = trial / (3.0 * G);
+  for (int it = 0; it < 50; ++it) {
+    double slope = 0.0;
+    const double yield = hardening.yield_and_slope(eps_p + d, rate, slope);
+    const double f = trial - 3.0 * G * d - yield;
+    if (std::abs(f) <= 1e-12 * yield) break;
+    if (f > 0.0) lo = d; else hi = d;
+    double next = d + f / (3.0 * G + std::max(slope, 0.0));
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    if (std::abs(next - d) <= 1e-14 * next) {
+      d = next;
+      break;
+    }
+    d = next;
+  }
+  const double scale = (trial - 3.0 * G * d) / trial;
+  sxx = txx * scale, syy = tyy * scale, sxy = txy * scale;
+  result.plastic_strain_increment = d;
+  if (kept) *static_yield = hardening.static_part(eps_p + d);
+  // Plastic flow along the normal (3/2) s / sigma_vm: through the thickness -d (sxx + syy) / (2 sigma_vm).
+  const double vm = von_mises_plane_stress(sxx, syy, sxy);
+  result.thickness_strain = -nu / E * ((sxx + syy) - old_sum) - (vm > 0.0 ? d * (sxx + syy) / (2.0 * vm) : 0.0);
+  return result;
+}
+
 }  // namespace crumple::materials

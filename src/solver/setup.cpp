@@ -75,6 +75,7 @@ void setup_shells(const Model& m, SolverState& s, ElementKind kind) {
     // N = 0: stress-resultant (global) plasticity, one membrane point plus the element's bending stress.
     const int np = f.n_points == 0 ? 1 : f.n_points;
     p.resultant_plasticity = f.n_points == 0;
+    p.radial_return = f.iplas == 2;
     if (p.resultant_plasticity && st.bending_stress.empty()) st.bending_stress.assign(3 * table.size(), 0.0);
     p.physical_hourglass = kind == ElementKind::Shell4 && f.ishell == 24;
     p.fully_integrated = kind == ElementKind::Shell4 && f.ishell == 12;

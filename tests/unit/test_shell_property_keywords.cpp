@@ -89,25 +89,25 @@ const std::string kTabulated = "/MAT/PLAS_TAB/1\nsteel\n" + R(7800.0) + "\n" + R
 // points it is refused (bad-input decks iplas_*), with resultants (N = 0, /MAT/PLAS_TAB) accepted (the radial
 // return on the resultants). N = 0 with /MAT/PLAS_JOHNS runs 3 points, so Iplas 2 is refused there too, and the
 // message says where the points come from.
-TEST(ShellPropertyKeywords, IplasActsOnPlasticSectionsOnly) {
+// Iplas at plastic points: 2 (the default: Iplas 0, as the manual says for explicit decks) runs the radial return
+// and 1 the iterative projection (materials.md PS-5, PS-3); on plastic resultants (N = 0) only the radial return
+// exists, so Iplas 1 there is an option Crumple lacks.
+TEST(ShellPropertyKeywords, IplasChoosesThePlaneStressReturn) {
   test::TempDir dir;
-  const std::string section2 = I(3) + I(0) + R(0.001) + R(0.0) + test::blank(10) + I(0) + I(2);
-  EXPECT_NO_THROW(read(dir, plate_with_property(I(24) + I(0) + I(0) + I(0), R(0.0), section2)));
-  const std::string resultants2 = I(0) + I(0) + R(0.001) + R(0.0) + test::blank(10) + I(0) + I(2);
-  const Deck d = read(dir, plate_with_property(I(24) + I(0) + I(0) + I(0), R(0.0), resultants2, kTabulated));
-  EXPECT_EQ(d.model.properties[0].shell.iplas, 2);
-  EXPECT_EQ(d.model.formulations[0].n_points, 0);
-  EXPECT_TRUE(contains(test::first_error(dir.write("Q_0000.rad", test::begin_card() +
-                                                                    plate_with_property(I(24) + I(0) + I(0) + I(0),
-                                                                                        R(0.0), section2, kJohnsonCook) +
-                                                                    "/END\n")),
-                       "field Iplas (columns 81-90): expected 0 or 1 for the plastic points"));
+  const auto section = [](int n, int iplas) { return I(n) + I(0) + R(0.001) + R(0.0) + test::blank(10) + I(0) + I(iplas); };
+  const auto formulation = [&](int n, int iplas, const std::string& material) {
+    return read(dir, plate_with_property(I(24) + I(0) + I(0) + I(0), R(0.0), section(n, iplas), material)).model.formulations[0];
+  };
+  EXPECT_EQ(formulation(3, 0, kJohnsonCook).iplas, 2);
+  EXPECT_EQ(formulation(3, 1, kJohnsonCook).iplas, 1);
+  EXPECT_EQ(formulation(3, 2, kJohnsonCook).iplas, 2);
+  EXPECT_EQ(formulation(0, 2, kTabulated).iplas, 2);
+  EXPECT_EQ(formulation(0, 1, kJohnsonCook).iplas, 1);  // N = 0 with Johnson-Cook runs 3 points
   EXPECT_TRUE(contains(test::first_error(dir.write("S_0000.rad", test::begin_card() +
-                                                                    plate_with_property(I(24) + I(0) + I(0) + I(0),
-                                                                                        R(0.0), resultants2, kJohnsonCook) +
+                                                                    plate_with_property(I(24) + I(0) + I(0) + I(0), R(0.0),
+                                                                                        section(0, 1), kTabulated) +
                                                                     "/END\n")),
-                       "expected 0 or 1 for the plastic points of /PROP/SHELL/1 (N = 3, from N = 0 with "
-                       "/MAT/PLAS_JOHNS)"));
+                       "field Iplas (columns 81-90): expected 0 or 2 for the plastic resultants"));
 }
 
 // N = 0 asks for global integration. The reference solver does not integrate /MAT/PLAS_JOHNS globally: it runs 3

@@ -64,11 +64,13 @@ inline std::string shell_cards(long long part, const std::vector<ShellRow>& shel
 inline std::string part_card() { return "/PART/1\npart\n" + I(1) + I(1) + "\n"; }
 
 // /PROP/SHELL/1: Belytschko-Tsay (Ishell 1) unless told, hourglass coefficients hm = hf = hr (0: default 0.01),
-// N points, numerical damping dn (0: the formulation's default), small-strain flag Ismstr (0: default 2).
+// N points, numerical damping dn (0: the formulation's default), small-strain flag Ismstr (0: default 2),
+// plane-stress return Iplas (0: default 2, the radial return; 1 the iterative projection).
 inline std::string shell_property(double thickness, int points, double hourglass = 0.0, int ishell = 1,
-                                  double dn = 0.0, int ismstr = 0) {
+                                  double dn = 0.0, int ismstr = 0, int iplas = 0) {
   return "/PROP/SHELL/1\nshell\n" + I(ishell) + I(ismstr) + I(0) + "\n" + R(hourglass) + R(hourglass) + R(hourglass) +
-         (dn > 0.0 ? R(0.0) + R(dn) : std::string()) + "\n" + I(points) + I(0) + R(thickness) + "\n";
+         (dn > 0.0 ? R(0.0) + R(dn) : std::string()) + "\n" + I(points) + I(0) + R(thickness) +
+         (iplas != 0 ? R(0.0) + I(0) + I(0) + I(iplas) : std::string()) + "\n";
 }
 
 inline std::string elastic_material(double rho, double young, double nu) {

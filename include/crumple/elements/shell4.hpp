@@ -28,6 +28,7 @@ struct ShellGroupParameters {
                                            // on the membrane and bending resultants of Ishell 12 (eq. Q-8)
   int points = 1;                          // through-thickness integration points (1 when resultant_plasticity)
   bool resultant_plasticity = false;       // N = 0: plasticity on the stress resultants (RP-1 to RP-3)
+  bool radial_return = true;               // Iplas 2 at the points (PS-5); false: the iterative projection (PS-3)
   std::size_t first_point = 0;             // ShellState index of the group's first element's first point
   const double* zeta = nullptr;            // point heights in units of the thickness, in [-1/2, 1/2]
   const double* membrane_weight = nullptr; // N = t sum w_i sigma_i (weights sum to 1)

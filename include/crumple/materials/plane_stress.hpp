@@ -24,6 +24,14 @@ PlaneStressResult plane_stress_update(const PlaneStressElastic& elastic, const H
                                       double deyy, double dgxy, double rate, double eps_p, double& sxx, double& syy,
                                       double& sxy, double* static_yield = nullptr);
 
+// The same elastic predictor with the radial return of Iplas 2, the reference's default for explicit decks
+// (docs/theory/materials.md, PS-5): the plastic strain increment solves sigma_vm_trial - 3 G d_eps_p =
+// sigma_y(eps_p + d_eps_p) and the trial stress is scaled back onto the yield surface along itself, which keeps
+// it plane but is not the exact plane-stress projection of plane_stress_update.
+PlaneStressResult plane_stress_radial_return(const PlaneStressElastic& elastic, const Hardening& hardening,
+                                             double dexx, double deyy, double dgxy, double rate, double eps_p,
+                                             double& sxx, double& syy, double& sxy, double* static_yield = nullptr);
+
 inline double von_mises_plane_stress(double sxx, double syy, double sxy) {
   const double v = sxx * sxx - sxx * syy + syy * syy + 3.0 * sxy * sxy;
   return v > 0.0 ? __builtin_sqrt(v) : 0.0;

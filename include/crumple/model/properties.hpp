@@ -66,6 +66,7 @@ struct ResolvedFormulation {
   int iframe = 1;   // bricks: 1 non co-rotational, 2 co-rotational
   int ismstr = 0;   // small-strain flag after /DEF_SHELL or /DEF_SOLID (shells: 1, 2 or 4)
   int n_points = 0; // shells: through-thickness points; 0 = global (stress-resultant) plasticity
+  int iplas = 2;    // shells, plastic points: 1 the iterative (exact) plane-stress return, 2 the radial return
 };
 
 }  // namespace crumple
