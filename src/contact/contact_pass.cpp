@@ -149,9 +149,9 @@ ContactStep contact_forces(const Model& m, ContactState& c, NodalState& nodes, d
         const double closing = scale * kinematic_step(g, p, penetration_rate);
         if (closing < res.dt) res.dt = closing, res.dt_node = static_cast<std::int32_t>(n);
         in.node_tangent_sum[i] += kt;
-        // Normal force: penalty plus the pushing part of the damping (eqs. C-5, C-8).
+        // Normal force: penalty plus damping, never attractive (eqs. C-5, C-8).
         const double elastic = penalty_force(k0, g, p);
-        const double damping = damping_force(viss, kt, mass, penetration_rate);
+        const double damping = damping_force(viss, kt, mass, penetration_rate, elastic);
         const double fn = elastic + damping;
         res.elastic_energy += elastic_energy(k0, g, p);
         res.damping_work += damping * penetration_rate * dt_previous;

@@ -34,11 +34,15 @@ TEST(ContactKernels, PenaltyForceStiffnessAndEnergyByHand) {
   EXPECT_NEAR(elastic_energy(k0, g, (1.0 - 1e-10) * g) / (k0 * g * g), std::log(1e10) - 1.0, 1e-6);
 }
 
-TEST(ContactKernels, DampingNeverPulls) {
-  const double kt = 4000.0, mass = 2.0, viss = 0.05;
-  EXPECT_NEAR(damping_force(viss, kt, mass, 3.0), 0.05 * std::sqrt(2.0 * 4000.0 * 2.0) * 3.0, 1e-12);
-  EXPECT_EQ(damping_force(viss, kt, mass, -3.0), 0.0);  // separating: no pull
-  EXPECT_EQ(damping_force(viss, kt, mass, 0.0), 0.0);
+TEST(ContactKernels, DampingActsBothWaysButNeverPulls) {
+  const double kt = 4000.0, mass = 2.0, viss = 0.05, c = 0.05 * std::sqrt(2.0 * 4000.0 * 2.0);  // C = 8
+  EXPECT_NEAR(damping_force(viss, kt, mass, 3.0, 100.0), c * 3.0, 1e-12);  // closing: adds to the push
+  // Separating: it takes off the push (C dp/dt = -24 of 100), the manual's F = Ks p + C dp/dt ...
+  EXPECT_NEAR(damping_force(viss, kt, mass, -3.0, 100.0), -c * 3.0, 1e-12);
+  // ... but never more than the elastic push: the total normal force stays >= 0 (10 - 24 -> 0).
+  EXPECT_EQ(damping_force(viss, kt, mass, -3.0, 10.0), -10.0);
+  EXPECT_EQ(10.0 + damping_force(viss, kt, mass, -3.0, 10.0), 0.0);
+  EXPECT_EQ(damping_force(viss, kt, mass, 0.0, 10.0), 0.0);
 }
 
 TEST(ContactKernels, FrictionCone) {

@@ -20,9 +20,11 @@ inline double tangent_stiffness(double k0, double g, double p) {
 // Stored elastic energy, the integral of the penalty force from 0 to p (eq. C-7).
 inline double elastic_energy(double k0, double g, double p) { return k0 * g * (-p - g * std::log((g - p) / g)); }
 
-// Normal damping (eq. C-8): C = VisS sqrt(2 Kt M) times the penetration rate; only its pushing part acts.
-inline double damping_force(double viss, double kt, double mass, double penetration_rate) {
-  return std::max(0.0, viss * std::sqrt(2.0 * kt * mass) * penetration_rate);
+// Normal damping (eq. C-8): C = VisS sqrt(2 Kt M) times the penetration rate, on the way in and on the way out,
+// but never more pull than the elastic push `elastic` (>= 0): the normal force elastic + damping stays >= 0, so
+// the surfaces are never pulled together.
+inline double damping_force(double viss, double kt, double mass, double penetration_rate, double elastic) {
+  return std::max(-elastic, viss * std::sqrt(2.0 * kt * mass) * penetration_rate);
 }
 
 // Interface steps (eq. C-11): kinematic 0.5 (g - p) / (dp/dt) while closing; stiffness sqrt(2 M / Kt) reduced by
