@@ -26,10 +26,11 @@ def crumple_listing(path):
         parts = line.split()
         if not rows or len(parts) < 10 or not parts[0].isdigit():
             continue
-        # CYCLE TIME DT ELEMENT(2 words) ERROR IE KE_T KE_R ...
+        # CYCLE TIME DT ELEMENT ERROR IE KE_T KE_R EXT HG CONTACT MAS.ERR TOTAL_MASS MASS_ADDED, the element in two
+        # words (SHELL 31) or four (INTER 2 NODE 31): the energies counted from the end of the row.
         t.append(number(parts[1]))
-        ie.append(number(parts[6]))
-        ke.append(number(parts[7]))
+        ie.append(number(parts[-9]))
+        ke.append(number(parts[-8]))
     return t, ie, ke
 
 
