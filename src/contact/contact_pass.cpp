@@ -55,13 +55,13 @@ ContactStep contact_forces(const Model& m, ContactState& c, NodalState& nodes, d
     const double release_step = std::max(in.dt_minimum, rc.dt_inter_del.given ? rc.dt_inter_del.minimum : 0.0);
     const double mass_step = rc.dt_inter_cst.given ? rc.dt_inter_cst.minimum : 0.0;
     const double viss = in.damping;
-    const double stiffness_factor = std::sqrt(1.0 + viss * viss) - viss;
     const bool filtered = in.friction_filter > 0;
     ++in.passes;
     const double alpha = filtered ? friction_filter_weight(in.friction_filter, in.filter_value, dt_previous) : 1.0;
     for (std::int32_t i : in.touched_list) {
       in.node_touched[static_cast<std::size_t>(i)] = 0;
       in.node_tangent_sum[static_cast<std::size_t>(i)] = 0.0;
+      in.node_friction_viscosity[static_cast<std::size_t>(i)] = 0.0;
     }
     in.touched_list.clear();
 
@@ -138,10 +138,15 @@ ContactStep contact_forces(const Model& m, ContactState& c, NodalState& nodes, d
         const double kt = tangent_stiffness(k0, g, p);
         const double mass = nodes.mass[n];
         const double body_mass = c.rigid_body_mass.empty() ? 0.0 : c.rigid_body_mass[n];
+        const double step_mass = body_mass > 0.0 ? body_mass : mass;  // what the springs and dashpots push [M]
+        // The viscous friction's dashpot (eq. C-9, Iform 1, on the node's own mass), which the step must hold too
+        // (eq. C-11b).
+        const bool viscous_friction = in.friction && in.friction_form != 2;
+        const double ct = viscous_friction ? friction_viscosity(in.friction_damping, kt, mass) : 0.0;
         // Interface step of the pair (eq. C-11): /DT/INTER/DEL (or the card's dtmin) releases the pair when it
         // would fall below the minimum (/DT/INTER/CST acts per node, below).
-        const double pair_step = scale * std::min(kinematic_step(g, p, penetration_rate),
-                                                  stiffness_step(body_mass > 0.0 ? body_mass : mass, kt, viss));
+        const double pair_step = std::min(scale * kinematic_step(g, p, penetration_rate),
+                                          scaled_stiffness_step(step_mass, kt, ct, viss, scale));
         if (release_step > 0.0 && pair_step < release_step) {
           ++res.released;
           forget();
@@ -152,9 +157,10 @@ ContactStep contact_forces(const Model& m, ContactState& c, NodalState& nodes, d
         const double closing = scale * kinematic_step(g, p, penetration_rate);
         if (closing < res.dt) res.dt = closing, res.dt_node = static_cast<std::int32_t>(n);
         in.node_tangent_sum[i] += kt;
-        // Normal force: penalty plus the pushing part of the damping (eqs. C-5, C-8).
+        in.node_friction_viscosity[i] += ct;
+        // Normal force: penalty plus damping, never attractive (eqs. C-5, C-8).
         const double elastic = penalty_force(k0, g, p);
-        const double damping = damping_force(viss, kt, mass, penetration_rate);
+        const double damping = damping_force(viss, kt, mass, penetration_rate, elastic);
         const double fn = elastic + damping;
         res.elastic_energy += elastic_energy(k0, g, p);
         res.damping_work += damping * penetration_rate * dt_previous;
@@ -182,7 +188,6 @@ ContactStep contact_forces(const Model& m, ContactState& c, NodalState& nodes, d
             for (int k = 0; k < 3; ++k) ft[k] = *friction[k] - along * normal[k] - kt * vt[k] * dt_previous;
           } else {
             // Viscous form: C_t = VisF sqrt(2 Kt M) times the sliding velocity.
-            const double ct = in.friction_damping * std::sqrt(2.0 * kt * mass);
             for (int k = 0; k < 3; ++k) ft[k] = -ct * vt[k];
           }
           friction_cone(ft, mu * fn);
@@ -211,7 +216,8 @@ ContactStep contact_forces(const Model& m, ContactState& c, NodalState& nodes, d
       }
     }
     // Stiffness step per node (eq. C-11) on the sum of its pairs' tangent stiffnesses plus the stiffness of its own
-    // elements: the node sits between the contact springs and its element, and both act in the same cycle.
+    // elements: the node sits between the contact springs and its element, and both act in the same cycle; with
+    // viscous friction, the pairs' dashpots too (eq. C-11b).
     // /DT/INTER/CST adds mass to the node so that this step stays at the minimum (reported as added mass); with
     // /DT/INTER/DEL the pairs release themselves below the minimum, so the step does not follow them down.
     for (std::int32_t i : in.touched_list) {
@@ -220,10 +226,13 @@ ContactStep contact_forces(const Model& m, ContactState& c, NodalState& nodes, d
       // A node carried by a rigid body: the springs act on the body's mass, its elements are not computed.
       const double body_mass = c.rigid_body_mass.empty() ? 0.0 : c.rigid_body_mass[n];
       const double stiffness = in.node_tangent_sum[ui] + (body_mass > 0.0 ? 0.0 : in.node_element_stiffness[ui]);
-      double node_step = scale * stiffness_step(body_mass > 0.0 ? body_mass : nodes.mass[n], stiffness, viss);
+      const double viscosity = in.node_friction_viscosity[ui];
+      double node_step = scaled_stiffness_step(body_mass > 0.0 ? body_mass : nodes.mass[n], stiffness, viscosity,
+                                               viss, scale);
       if (mass_step > 0.0 && node_step < mass_step) {
-        const double ratio = mass_step / (scale * stiffness_factor);
-        const double needed = 0.5 * stiffness * ratio * ratio;
+        // The dashpots grow with sqrt(M): C = (C / sqrt(M)) sqrt(M).
+        const double c_unit = viscosity > 0.0 ? viscosity / std::sqrt(nodes.mass[n]) : 0.0;
+        const double needed = mass_for_step(stiffness, c_unit, viss, scale, mass_step);
         added_mass += needed - nodes.mass[n];
         res.added_mass += needed - nodes.mass[n];
         nodes.mass[n] = needed;

@@ -213,6 +213,7 @@ ContactState setup_contact(const Model& m, NodalState& nodes, std::vector<std::s
       }
     }
     in.node_tangent_sum.assign(in.secondary_nodes.size(), 0.0);
+    in.node_friction_viscosity.assign(in.secondary_nodes.size(), 0.0);
     if (!(in.largest_gap > 0.0))
       throw DeckError(card.where, fmt::format("/INTER/TYPE7/{}", card.user_id), "Gapmin",
                       "a positive gap (the main surface gives none: no thickness and no side length)", "0");

@@ -34,11 +34,20 @@ TEST(ContactKernels, PenaltyForceStiffnessAndEnergyByHand) {
   EXPECT_NEAR(elastic_energy(k0, g, (1.0 - 1e-10) * g) / (k0 * g * g), std::log(1e10) - 1.0, 1e-6);
 }
 
-TEST(ContactKernels, DampingNeverPulls) {
-  const double kt = 4000.0, mass = 2.0, viss = 0.05;
-  EXPECT_NEAR(damping_force(viss, kt, mass, 3.0), 0.05 * std::sqrt(2.0 * 4000.0 * 2.0) * 3.0, 1e-12);
-  EXPECT_EQ(damping_force(viss, kt, mass, -3.0), 0.0);  // separating: no pull
-  EXPECT_EQ(damping_force(viss, kt, mass, 0.0), 0.0);
+TEST(ContactKernels, DampingActsBothWaysButNeverPulls) {
+  const double kt = 4000.0, mass = 2.0, viss = 0.05, c = 0.05 * std::sqrt(2.0 * 4000.0 * 2.0);  // C = 8
+  EXPECT_NEAR(damping_force(viss, kt, mass, 3.0, 100.0), c * 3.0, 1e-12);  // closing: adds to the push
+  // Separating: it takes off the push (C dp/dt = -24 of 100), the manual's F = Ks p + C dp/dt ...
+  EXPECT_NEAR(damping_force(viss, kt, mass, -3.0, 100.0), -c * 3.0, 1e-12);
+  // ... but never more than the elastic push: the total normal force stays >= 0 (10 - 24 -> 0).
+  EXPECT_EQ(damping_force(viss, kt, mass, -3.0, 10.0), -10.0);
+  EXPECT_EQ(10.0 + damping_force(viss, kt, mass, -3.0, 10.0), 0.0);
+  EXPECT_EQ(damping_force(viss, kt, mass, 0.0, 10.0), 0.0);
+}
+
+TEST(ContactKernels, FrictionViscosityIsVisFOfTheCriticalDashpot) {
+  EXPECT_DOUBLE_EQ(friction_viscosity(1.0, 4000.0, 2.0), std::sqrt(2.0 * 4000.0 * 2.0));  // 126.49 N s/m
+  EXPECT_DOUBLE_EQ(friction_viscosity(3.0, 4000.0, 2.0), 3.0 * std::sqrt(16000.0));
 }
 
 TEST(ContactKernels, FrictionCone) {
@@ -96,6 +105,30 @@ TEST(ContactKernels, KinematicAndStiffnessSteps) {
   EXPECT_DOUBLE_EQ(stiffness_step(2.0, 4000.0, 0.0), std::sqrt(2.0 * 2.0 / 4000.0));
   const double xi = 0.05;
   EXPECT_DOUBLE_EQ(stiffness_step(2.0, 4000.0, xi), std::sqrt(2.0 * 2.0 / 4000.0) * (std::sqrt(1.0 + xi * xi) - xi));
+}
+
+// eq. C-11b: the step with a friction dashpot C solves dt = a sqrt(2 M / (K + C / dt)), a = scale (sqrt(1 + xi^2)
+// - xi); without the dashpot it is the stiffness step, without the spring the dashpot's 2 M a^2 / C.
+TEST(ContactKernels, StepWithTheFrictionDashpot) {
+  const double m = 2.0, k = 4000.0, xi = 0.05, scale = 0.9, a = scale * (std::sqrt(1.0 + xi * xi) - xi);
+  EXPECT_NEAR(scaled_stiffness_step(m, k, 0.0, xi, scale), scale * stiffness_step(m, k, xi), 1e-15);
+  EXPECT_NEAR(scaled_stiffness_step(m, 0.0, 126.0, xi, scale), 2.0 * m * a * a / 126.0, 1e-15);
+  for (double c : {1.0, 126.0, 1e4}) {
+    const double dt = scaled_stiffness_step(m, k, c, xi, scale);
+    EXPECT_NEAR(dt, a * std::sqrt(2.0 * m / (k + c / dt)), 1e-13 * dt) << c;  // the root of its own equation
+  }
+  EXPECT_TRUE(std::isinf(scaled_stiffness_step(m, 0.0, 0.0, xi, scale)));
+  // The QA deck `friction` (plate node 0.0225 kg on K0 = E t / 2 = 4.725e8 N/m, VisF 1, /DT 0.1, no VisS factor):
+  // the reference's listing settles at 9.66e-8 s once the node is in contact (cycles 165 to 167, p << g so that
+  // Kt = K0), a tenth of the 9.76e-7 s of the spring alone.
+  const double node = 0.0225, k0 = 0.5 * 2.1e11 * 0.0045;
+  EXPECT_NEAR(scaled_stiffness_step(node, k0, friction_viscosity(1.0, k0, node), 0.0, 0.1), 9.66e-8, 0.005e-8);
+  EXPECT_NEAR(scaled_stiffness_step(node, k0, 0.0, 0.0, 0.1), 9.759e-7, 0.001e-7);
+  // /DT/INTER/CST: the mass that brings the step up to dt (the dashpot grows with sqrt(M)).
+  const double c_unit = friction_viscosity(1.0, k, 1.0), target = 0.05;
+  const double added = mass_for_step(k, c_unit, xi, scale, target);
+  EXPECT_NEAR(scaled_stiffness_step(added, k, c_unit * std::sqrt(added), xi, scale), target, 1e-12);
+  EXPECT_NEAR(mass_for_step(k, 0.0, xi, scale, target), 0.5 * k * std::pow(target / a, 2), 1e-12);
 }
 
 namespace {
@@ -159,7 +192,7 @@ struct TwoSegments {
     ContactInterface in;
     in.secondary_nodes = {6};
     in.node_gap = {0.0}, in.gap_reduction = {0.0}, in.gap_clearance = {0.0}, in.node_active = {1}, in.node_touched = {0}, in.node_impacted = {0};
-    in.node_tangent_sum = {0.0}, in.node_element_stiffness = {0.0};
+    in.node_tangent_sum = {0.0}, in.node_friction_viscosity = {0.0}, in.node_element_stiffness = {0.0};
     in.segments = {{0, 1, 4, 3}, {1, 2, 5, 4}};
     in.segment_gap = {0.1, 0.1}, in.segment_stiffness = {1000.0, 1000.0};
     in.segment_active = {1, 1}, in.segment_owner = {-1, -1}, in.segment_owner_kind = {0, 0};
@@ -215,6 +248,25 @@ TEST(ContactPass, StepOfAClosingNodeIsTheSmallerOfKinematicAndStiffness) {
   const double expected = 0.9 * std::min(kinematic_step(0.1, 0.06, 100.0), stiffness_step(0.5, kt, 0.0));
   EXPECT_NEAR(step.dt, expected, 1e-15);
   EXPECT_EQ(step.node, 6);
+}
+
+// With viscous friction (Iform 1) the node's step also holds the pair's dashpot C_t = VisF sqrt(2 Kt M) (eq.
+// C-11b); the stiffness form (Iform 2) has no dashpot and keeps the stiffness step.
+TEST(ContactPass, ViscousFrictionDashpotShortensTheNodeStep) {
+  const double kt = tangent_stiffness(1000.0, 0.1, 0.06), ct = friction_viscosity(3.0, kt, 0.5);
+  for (int form : {1, 2}) {
+    TwoSegments s(0.5, 0.25, 0.04);
+    s.nodes.vx[6] = 1.0;  // sliding, separating so slowly that the kinematic step does not bound it
+    s.nodes.vz[6] = 1e-3;
+    ContactInterface& in = s.contact.interfaces[0];
+    in.friction = true, in.friction_law.fric = 0.2, in.friction_damping = 3.0, in.friction_form = form;
+    const ContactStep step = s.run();
+    const double expected = form == 1 ? scaled_stiffness_step(0.5, kt, ct, 0.0, 0.9) : 0.9 * stiffness_step(0.5, kt, 0.0);
+    EXPECT_NEAR(step.dt, expected, 1e-15) << form;
+    if (form == 1) {
+      EXPECT_LT(step.dt, 0.5 * 0.9 * stiffness_step(0.5, kt, 0.0));  // C_t / dt dominates K
+    }
+  }
 }
 
 // The bucket sort finds exactly the pairs a brute-force test of every node against every grown segment box finds.

@@ -93,6 +93,7 @@ struct ContactInterface {
   std::vector<std::uint8_t> node_touched;       // scratch: secondary node had a force this cycle
   std::vector<std::int32_t> touched_list;       // scratch: those nodes (index into secondary_nodes)
   std::vector<double> node_tangent_sum;         // scratch: sum of the node's pairs' tangent stiffnesses [F/L]
+  std::vector<double> node_friction_viscosity;  // scratch: sum of its pairs' friction dashpots C_t (Iform 1) [F T/L]
   double margin = 0.0;                          // search margin beyond the gap [L]
   double bucket_scale = 0.2;                    // Bumult: bucket size factor
   double motion = std::numeric_limits<double>::infinity();  // accumulated largest nodal motion since the sort [L]

@@ -20,10 +20,14 @@ inline double tangent_stiffness(double k0, double g, double p) {
 // Stored elastic energy, the integral of the penalty force from 0 to p (eq. C-7).
 inline double elastic_energy(double k0, double g, double p) { return k0 * g * (-p - g * std::log((g - p) / g)); }
 
-// Normal damping (eq. C-8): C = VisS sqrt(2 Kt M) times the penetration rate; only its pushing part acts.
-inline double damping_force(double viss, double kt, double mass, double penetration_rate) {
-  return std::max(0.0, viss * std::sqrt(2.0 * kt * mass) * penetration_rate);
+// Normal damping (eq. C-8): C = VisS sqrt(2 Kt M) times the penetration rate, on the way in and on the way out,
+// but never more pull than the elastic push `elastic` (>= 0): the normal force elastic + damping stays >= 0, so
+// the surfaces are never pulled together.
+inline double damping_force(double viss, double kt, double mass, double penetration_rate, double elastic) {
+  return std::max(-elastic, viss * std::sqrt(2.0 * kt * mass) * penetration_rate);
 }
+// Viscous friction (eq. C-9, Iform 1): the dashpot C_t = VisF sqrt(2 Kt M) on the sliding velocity [F T/L].
+inline double friction_viscosity(double visf, double kt, double mass) { return visf * std::sqrt(2.0 * kt * mass); }
 
 // Interface steps (eq. C-11): kinematic 0.5 (g - p) / (dp/dt) while closing; stiffness sqrt(2 M / Kt) reduced by
 // the damping fraction xi as for a damped oscillator, (sqrt(1 + xi^2) - xi).
@@ -32,6 +36,25 @@ inline double kinematic_step(double g, double p, double penetration_rate) {
 }
 inline double stiffness_step(double mass, double kt, double xi) {
   return std::sqrt(2.0 * mass / kt) * (std::sqrt(1.0 + xi * xi) - xi);
+}
+// Stiffness step with the friction dashpot C (eq. C-11b), already scaled: over a step dt the dashpot's force C v
+// acts on the displacement v dt, a spring C / dt for that step, so the node's stiffness is K + C / dt with dt the
+// step itself: dt = a sqrt(2 M / (K + C / dt)), a = scale (sqrt(1 + xi^2) - xi), whose root is
+// dt = 2 b / (C + sqrt(C^2 + 4 K b)), b = 2 M a^2. C = 0 gives a sqrt(2 M / K) (stiffness_step); K = 0 gives
+// 2 M a^2 / C, the explicit dashpot's bound 2 M / C times a^2.
+inline double scaled_stiffness_step(double mass, double k, double c, double xi, double scale) {
+  if (c == 0.0) return scale * stiffness_step(mass, k, xi);
+  const double a = scale * (std::sqrt(1.0 + xi * xi) - xi), b = 2.0 * mass * a * a;
+  const double denominator = c + std::sqrt(c * c + 4.0 * k * b);
+  return denominator > 0.0 ? 2.0 * b / denominator : std::numeric_limits<double>::infinity();
+}
+// The mass that gives the node the scaled step dt (eq. C-11b solved for M; /DT/INTER/CST): the dashpot grows
+// with sqrt(M), C = c_unit sqrt(M), so 2 a^2 M - c_unit dt sqrt(M) - K dt^2 = 0 with a as above.
+inline double mass_for_step(double k, double c_unit, double xi, double scale, double dt) {
+  const double a = scale * (std::sqrt(1.0 + xi * xi) - xi);
+  if (c_unit == 0.0) return 0.5 * k * (dt / a) * (dt / a);
+  const double root = (c_unit * dt + std::sqrt(c_unit * c_unit * dt * dt + 8.0 * a * a * k * dt * dt)) / (4.0 * a * a);
+  return root * root;
 }
 
 // Coulomb cone (eq. C-9): scales the trial tangential force to at most `limit` = mu Fn. Returns true if it slid.
