@@ -58,7 +58,9 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
                              NodalState& nodes, ShellState& state, double dt) {
   GroupStepResult result;
   const double E = p.young, nu = p.poisson, G = E / (2.0 * (1.0 + nu));
-  const double wave_speed = std::sqrt(E / (p.density * (1.0 - nu * nu)));  // plate wave speed
+  // Ishell 1 to 4 and the triangle: the bar speed sqrt(E / rho), as the reference takes (eq. T-1a: its printed
+  // element steps are L / sqrt(E / rho) to all their digits); Ishell 24 the plate speed [L/T].
+  const double wave_speed = p.physical_hourglass ? std::sqrt(E / (p.density * (1.0 - nu * nu))) : std::sqrt(E / p.density);
   const materials::PlaneStressElastic elastic{E, nu};
   const int np = p.points;
   constexpr double mean = 1.0 / NN;  // shape function value at the element centre
@@ -166,8 +168,8 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
     work += 0.5 * (old_qx + qx) * gxz * dt + 0.5 * (old_qy + qy) * gyz * dt;
     if (p.thickness_update && dt > 0.0) state.thickness[ue] = t * std::exp(thickness_strain);
 
-    // Critical step (eq. T-1): quadrilateral area over the longest side, triangle twice the area over it.
-    double length = shell_section::characteristic_length<NN>(lx, ly, area);
+    // Critical step: eq. T-1b for Ishell 1 to 4, T-1 for Ishell 24 and the triangle.
+    double length = shell_section::characteristic_length<NN>(lx, ly, area, !p.physical_hourglass);
     if (small_strain) {  // eq. S-15: the step of the initial geometry
       if (state.initial_length[ue] == 0.0) state.initial_length[ue] = length;
       length = state.initial_length[ue];

@@ -9,6 +9,7 @@
 #include "crumple/elements/shell4.hpp"
 #include "crumple/materials/plane_stress.hpp"
 #include "crumple/materials/resultant_plasticity.hpp"
+#include "crumple/model/geometry.hpp"
 
 namespace crumple::shell_section {
 
@@ -56,14 +57,24 @@ inline double local_area(const double (&lx)[NN], const double (&ly)[NN]) {
   return 0.5 * ((lx[1] - lx[0]) * (ly[2] - ly[0]) - (lx[2] - lx[0]) * (ly[1] - ly[0]));
 }
 
-// Characteristic length of the critical step (eq. T-1): quadrilateral area over the longest side, triangle twice
-// the area over it [L].
+// Characteristic length of the critical step [L]: triangle twice the area over its longest side, quadrilateral
+// the area over its longest side (eq. T-1), or with `belytschko_tsay` (Ishell 1 to 4) the length of eq. T-1b.
 template <int NN>
-inline double characteristic_length(const double (&lx)[NN], const double (&ly)[NN], double area) {
-  double longest = 0.0;
+inline double characteristic_length(const double (&lx)[NN], const double (&ly)[NN], double area,
+                                    bool belytschko_tsay = false) {
+  double longest = 0.0, shortest = 1e300;
   for (int a = 0; a < NN; ++a) {
     const double sx = lx[(a + 1) % NN] - lx[a], sy = ly[(a + 1) % NN] - ly[a];
     longest = std::max(longest, sx * sx + sy * sy);
+    shortest = std::min(shortest, sx * sx + sy * sy);
+  }
+  if constexpr (NN == 4) {
+    if (belytschko_tsay) {
+      const double d13 = (lx[2] - lx[0]) * (lx[2] - lx[0]) + (ly[2] - ly[0]) * (ly[2] - ly[0]);
+      const double d24 = (lx[3] - lx[1]) * (lx[3] - lx[1]) + (ly[3] - ly[1]) * (ly[3] - ly[1]);
+      return geometry::belytschko_tsay_length(area, std::sqrt(shortest), std::sqrt(longest),
+                                              std::sqrt(std::max(d13, d24)));
+    }
   }
   return (NN == 4 ? area : 2.0 * area) / std::sqrt(longest);
 }

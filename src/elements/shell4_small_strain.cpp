@@ -11,7 +11,8 @@ using shell_section::Vec;
 // The element's current shape in its current co-rotational frame becomes its reference shape (the local
 // coordinates the kernels use for the gradient operator, the area and the critical step).
 template <int NN>
-bool freeze_shape(const ElementTable& table, const NodalState& nodes, ShellState& state, std::size_t element) {
+bool freeze_shape(const ElementTable& table, const ShellGroupParameters& p, const NodalState& nodes, ShellState& state,
+                  std::size_t element) {
   const std::int32_t* n = table.nodes_of(element);
   Vec x[NN];
   for (int a = 0; a < NN; ++a) {
@@ -31,7 +32,7 @@ bool freeze_shape(const ElementTable& table, const NodalState& nodes, ShellState
   double* shape = &state.initial_shape[2 * NN * element];
   for (int a = 0; a < NN; ++a) shape[a] = lx[a], shape[NN + a] = ly[a];
   // The step of the frozen shape is the element's step from now on (the step "becomes constant", S-16).
-  state.initial_length[element] = shell_section::characteristic_length<NN>(lx, ly, area);
+  state.initial_length[element] = shell_section::characteristic_length<NN>(lx, ly, area, !p.physical_hourglass);
   state.small_strain[element] = 1;
   return true;
 }
@@ -42,8 +43,8 @@ bool shell_switch_to_small_strain(const ElementTable& table, const ShellGroupPar
                                   ShellState& state, std::int32_t element) {
   const auto ue = static_cast<std::size_t>(element);
   if (!p.small_strain_switchable || state.deleted[ue] != 0 || state.small_strain[ue] != 0) return false;
-  if (table.kind == ElementKind::Shell3) return freeze_shape<3>(table, nodes, state, ue);
-  return freeze_shape<4>(table, nodes, state, ue);
+  if (table.kind == ElementKind::Shell3) return freeze_shape<3>(table, p, nodes, state, ue);
+  return freeze_shape<4>(table, p, nodes, state, ue);
 }
 
 }  // namespace crumple

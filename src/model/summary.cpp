@@ -24,13 +24,17 @@ double initial_element_time_step(const Model& model, ElementKind kind, std::size
   const Nodes& x = model.nodes;
   switch (kind) {
     case ElementKind::Shell4: {
-      const double c = std::sqrt(mat.young / (mat.density * (1.0 - mat.poisson * mat.poisson)));
-      return geometry::quad_characteristic_length(point(x, n[0]), point(x, n[1]), point(x, n[2]), point(x, n[3])) / c;
+      // Ishell 1 to 4: the bar speed over eq. T-1b's length (T-1a); QBAT and QEPH: the plate speed over T-1's.
+      const int ishell = model.formulations[static_cast<std::size_t>(part.property)].ishell;
+      const geometry::Point a = point(x, n[0]), b = point(x, n[1]), c = point(x, n[2]), d = point(x, n[3]);
+      if (ishell == 12 || ishell == 24)
+        return geometry::quad_characteristic_length(a, b, c, d) /
+               std::sqrt(mat.young / (mat.density * (1.0 - mat.poisson * mat.poisson)));
+      return geometry::belytschko_tsay_length(a, b, c, d) / std::sqrt(mat.young / mat.density);
     }
-    case ElementKind::Shell3: {
-      const double c = std::sqrt(mat.young / (mat.density * (1.0 - mat.poisson * mat.poisson)));
-      return geometry::triangle_characteristic_length(point(x, n[0]), point(x, n[1]), point(x, n[2])) / c;
-    }
+    case ElementKind::Shell3:  // the bar speed (T-1a)
+      return geometry::triangle_characteristic_length(point(x, n[0]), point(x, n[1]), point(x, n[2])) /
+             std::sqrt(mat.young / mat.density);
     case ElementKind::Brick8: {
       const double c = std::sqrt((mat.bulk_modulus() + 4.0 / 3.0 * mat.shear_modulus()) / mat.density);
       std::array<geometry::Point, 8> p;

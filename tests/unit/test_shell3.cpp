@@ -58,9 +58,9 @@ TEST(Shell3, UniformStretchGivesConstantStressAndBalancedForces) {
   EXPECT_NEAR(fx, 0.0, 1e-12 * scale);
   EXPECT_NEAR(fy, 0.0, 1e-12 * scale);
   EXPECT_NEAR(fz, 0.0, 1e-12 * scale);
-  // Critical step: twice the area over the longest side, over the plate wave speed.
+  // Critical step: twice the area over the longest side, over the bar speed sqrt(E / rho) (eq. T-1a).
   const double area = 0.5 * 2.0 * 1.5, longest = std::sqrt(1.5 * 1.5 + 1.5 * 1.5);
-  EXPECT_NEAR(r.min_dt, 2.0 * area / longest / std::sqrt(c / 7800.0), 1e-12);
+  EXPECT_NEAR(r.min_dt, 2.0 * area / longest / std::sqrt(2.0e11 / 7800.0), 1e-12);
 }
 
 TEST(Shell3, RigidRotationGivesNoStress) {

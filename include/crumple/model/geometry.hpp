@@ -35,13 +35,25 @@ double brick_volume(const std::array<Point, 8>& p);
 double brick_volume_gradient(const double* x, const double* y, const double* z, double* dv_dx, double* dv_dy,
                              double* dv_dz);
 
-// Characteristic length of a 4-node shell for the critical time step: L = A / longest side
-// (docs/theory/time-step.md); for a square it is the side.
+// Characteristic length of a 4-node shell for the critical time step: L = A / longest side (eq. T-1,
+// docs/theory/time-step.md); for a square it is the side.
 inline double quad_characteristic_length(const Point& p1, const Point& p2, const Point& p3, const Point& p4) {
   const double area = quad_area(p1, p2, p3, p4);
   const double longest_side = std::max(std::max(norm(sub(p2, p1)), norm(sub(p3, p2))),
                                        std::max(norm(sub(p4, p3)), norm(sub(p1, p4))));
   return area / longest_side;
+}
+// The Belytschko-Tsay quadrilateral's length (eq. T-1b): the reference's max(shortest side, A / longest
+// diagonal), never above T-1's A / longest side [L]. Equal to T-1 on rectangles; below it on trapezoids with one
+// short side, where the reference's steps are A / longest diagonal.
+inline double belytschko_tsay_length(double area, double shortest_side, double longest_side, double longest_diagonal) {
+  return std::min(area / longest_side, std::max(shortest_side, area / longest_diagonal));
+}
+inline double belytschko_tsay_length(const Point& p1, const Point& p2, const Point& p3, const Point& p4) {
+  const double sides[4] = {norm(sub(p2, p1)), norm(sub(p3, p2)), norm(sub(p4, p3)), norm(sub(p1, p4))};
+  const double longest_diagonal = std::max(norm(sub(p3, p1)), norm(sub(p4, p2)));
+  return belytschko_tsay_length(quad_area(p1, p2, p3, p4), *std::min_element(sides, sides + 4),
+                                *std::max_element(sides, sides + 4), longest_diagonal);
 }
 // Triangle: twice the area over the longest side, the smallest height.
 inline double triangle_characteristic_length(const Point& p1, const Point& p2, const Point& p3) {
