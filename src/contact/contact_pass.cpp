@@ -61,6 +61,7 @@ ContactStep contact_forces(const Model& m, ContactState& c, NodalState& nodes, d
     for (std::int32_t i : in.touched_list) {
       in.node_touched[static_cast<std::size_t>(i)] = 0;
       in.node_tangent_sum[static_cast<std::size_t>(i)] = 0.0;
+      in.node_reach_stiffness[static_cast<std::size_t>(i)] = 0.0;
       in.node_friction_viscosity[static_cast<std::size_t>(i)] = 0.0;
     }
     in.touched_list.clear();
@@ -125,12 +126,14 @@ ContactStep contact_forces(const Model& m, ContactState& c, NodalState& nodes, d
           const double approach = scale * kinematic_step(g, p, penetration_rate);
           if (approach < res.dt && !(release_step > 0.0 && approach < release_step))
             res.dt = approach, res.dt_node = static_cast<std::int32_t>(n);
-          // A node near the gap may enter it within a step or two and meet the penalty's initial stiffness K0: the
-          // force then acts over the mean of that step and the one before, so both must already be stable for K0.
-          // Nodes within a gap (plus two steps of their normal motion) of entering keep the contact step.
-          if (d - g < g + 2.0 * std::abs(penetration_rate) * dt_estimate) {
+          // A node within three steps of its normal motion of the gap may enter it within the next steps (or turn
+          // back into it as it leaves) and meet the penalty's initial stiffness K0: its first force acts over the
+          // mean of that step and the one before, so both must already be stable for K0, and the entry is better
+          // resolved with a step of margin (eq. C-11). A node at rest near the gap does not count.
+          if (d - g < 3.0 * std::abs(penetration_rate) * dt_estimate) {
             if (in.node_touched[i] == 0) in.node_touched[i] = 1, in.touched_list.push_back(static_cast<std::int32_t>(i));
             in.node_tangent_sum[i] += in.pair_stiffness(i, s);
+            in.node_reach_stiffness[i] += in.pair_stiffness(i, s);
           }
           continue;
         }
@@ -157,6 +160,10 @@ ContactStep contact_forces(const Model& m, ContactState& c, NodalState& nodes, d
         const double closing = scale * kinematic_step(g, p, penetration_rate);
         if (closing < res.dt) res.dt = closing, res.dt_node = static_cast<std::int32_t>(n);
         in.node_tangent_sum[i] += kt;
+        // The penetration the node can reach within the step (at most half its remaining distance, the kinematic
+        // bound), and the stiffness there: what /DT/INTER/CST's mass must hold (eq. C-11c).
+        const double reach = std::min(p + std::max(penetration_rate, 0.0) * dt_estimate, p + 0.5 * (g - p));
+        in.node_reach_stiffness[i] += tangent_stiffness(k0, g, reach);
         in.node_friction_viscosity[i] += ct;
         // Normal force: penalty plus damping, never attractive (eqs. C-5, C-8).
         const double elastic = penalty_force(k0, g, p);
@@ -232,9 +239,13 @@ ContactStep contact_forces(const Model& m, ContactState& c, NodalState& nodes, d
       if (mass_step > 0.0 && node_step < mass_step) {
         // The dashpots grow with sqrt(M): C = (C / sqrt(M)) sqrt(M).
         const double c_unit = viscosity > 0.0 ? viscosity / std::sqrt(nodes.mass[n]) : 0.0;
-        const double needed = mass_for_step(stiffness, c_unit, viss, scale, mass_step);
+        const double reach_stiffness = stiffness - in.node_tangent_sum[ui] + in.node_reach_stiffness[ui];
+        const double needed = std::max(nodes.mass[n], mass_for_step(reach_stiffness, c_unit, viss, scale, mass_step));
         added_mass += needed - nodes.mass[n];
         res.added_mass += needed - nodes.mass[n];
+        // The added mass moves at the node's speed: kinetic energy created by the scaling, the balance's error.
+        res.added_mass_energy += 0.5 * (needed - nodes.mass[n]) *
+                                 (nodes.vx[n] * nodes.vx[n] + nodes.vy[n] * nodes.vy[n] + nodes.vz[n] * nodes.vz[n]);
         nodes.mass[n] = needed;
         node_step = mass_step;
       }

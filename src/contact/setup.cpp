@@ -54,10 +54,11 @@ ElementFacts facts_of(const Model& m, ElementRef ref, double area) {
   const Property& prop = m.properties[static_cast<std::size_t>(part.property)];
   const Material& mat = m.materials[static_cast<std::size_t>(part.material)];
   if (ref.kind == ElementKind::Brick8) {
-    // B A^2 / V; for a node (area 0) the element's own face, A = V^(2/3): B V^(1/3).
+    // B A^2 / (2 V), the half that the shell's E t / 2 has too (eq. C-3); for a node (area 0) the element's own
+    // face, A = V^(2/3): B V^(1/3) / 2.
     const double volume = brick_volume(m, ref.index);
     const double face = area > 0.0 ? area : std::cbrt(volume * volume);
-    f.stiffness = mat.bulk_modulus() * face * face / volume;
+    f.stiffness = 0.5 * mat.bulk_modulus() * face * face / volume;
   } else {
     f.shell = true;
     f.thickness = prop.shell.thickness;
@@ -213,6 +214,7 @@ ContactState setup_contact(const Model& m, NodalState& nodes, std::vector<std::s
       }
     }
     in.node_tangent_sum.assign(in.secondary_nodes.size(), 0.0);
+    in.node_reach_stiffness.assign(in.secondary_nodes.size(), 0.0);
     in.node_friction_viscosity.assign(in.secondary_nodes.size(), 0.0);
     if (!(in.largest_gap > 0.0))
       throw DeckError(card.where, fmt::format("/INTER/TYPE7/{}", card.user_id), "Gapmin",

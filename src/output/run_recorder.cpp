@@ -190,9 +190,10 @@ void RunRecorder::finish(const SolverState& s, const RunEvents& events, const Ph
   for (std::size_t f = 0; f < s.contact.results.size(); ++f) {
     const InterfaceResult& r = s.contact.results[f];
     listing_.line(fmt::format("INTER {}: largest p/g {:.4f}, absorbed energy {:.6g} (elastic now {:.6g}, damping "
-                              "{:.6g}, friction {:.6g}), contacts released below dtmin {}, mass added {:.6g}",
+                              "{:.6g}, friction {:.6g}), contacts released below dtmin {}, mass added {:.6g} (its kinetic energy {:.6g})",
                               model_.type7_interfaces[f].user_id, r.max_penetration_ratio, r.absorbed,
-                              r.elastic_energy, r.damping_work, r.friction_work, r.released, r.added_mass));
+                              r.elastic_energy, r.damping_work, r.friction_work, r.released, r.added_mass,
+                              r.added_mass_energy));
   }
   listing_.line(fmt::format("TOTAL NUMBER OF CYCLES {}   ELAPSED {:.3f} s", s.cycle, wall));
   const double cycle_time = phases.elements + phases.contact + phases.loads + phases.update + phases.output;

@@ -67,6 +67,7 @@ struct ImpactResult {
   // pairs in the state the pass saw (x^n, v^(n-1/2)): must not exceed the /DT scale.
   double worst_step_over_kinematic = 0.0;
   long long released = 0;  // contacts released below dtmin (/DT/INTER/DEL, card dtmin)
+  double added_mass_energy = 0.0;  // kinetic energy the /DT/INTER/CST mass took when it was added [J]
 };
 
 // Two 4 x 4 shell plates (0.1 m, t = 2 mm steel) 1 mm apart, free; the upper one (secondary nodes, offset by half an
@@ -140,6 +141,7 @@ inline ImpactResult plate_impact(double speed, const Type7Options& o, const std:
     out.worst_momentum = std::max(out.worst_momentum, std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]) / momentum0);
     out.max_ratio = std::max(out.max_ratio, s.contact.results.at(0).max_penetration_ratio);
     out.released = s.contact.results.at(0).released;
+    out.added_mass_energy = s.contact.results.at(0).added_mass_energy;
     // The last step is cut to land on the end time: not a step the solver chose.
     if (s.time < end_time * (1.0 - 1e-9)) out.smallest_dt = std::min(out.smallest_dt, s.dt);
   }, extra_engine);

@@ -45,7 +45,8 @@ TEST(ContactRemedies, CardDtminActsAsDtInterDel) {
 
 // /DT/INTER/CST: mass is added to the contacting nodes so that their step stays at dtmin; the contact holds (no
 // node reaches the mid-surface) and the added mass is reported. Its cost shows in the balance: the added mass
-// moves with the plate, and its kinetic energy 1/2 dm v^2, created by the scaling, is the whole energy error.
+// moves with its node, and its kinetic energy 1/2 dm |v|^2 at the node's speed when it was added, created by the
+// scaling, is the whole energy error (most of it comes at the approach speed, some once the nodes are in the gap).
 // Mass scaling is for small corrections; dtmin = 3e-7 s already needs half the plate's mass with this stiffness.
 TEST(ContactRemedies, DtInterCstAddsMassAndKeepsTheContact) {
   constexpr double dtmin = 3e-7;
@@ -56,8 +57,9 @@ TEST(ContactRemedies, DtInterCstAddsMassAndKeepsTheContact) {
   EXPECT_LT(r.max_ratio, 1.0);
   EXPECT_GT(r.max_ratio, 0.0);
   const double plate_kinetic = 0.5 * 7800.0 * kPlateThickness * 0.01 * kSpeed * kSpeed;
-  const double scaling_energy = 0.5 * r.run.summary.mass_added * kSpeed * kSpeed;
-  EXPECT_NEAR(r.run.summary.energy.error_percent, 100.0 * scaling_energy / plate_kinetic, 1.0);
+  EXPECT_NEAR(r.added_mass_energy, 0.5 * r.run.summary.mass_added * kSpeed * kSpeed,
+              0.5 * 0.5 * r.run.summary.mass_added * kSpeed * kSpeed);  // at about the approach speed
+  EXPECT_NEAR(r.run.summary.energy.error_percent, 100.0 * r.added_mass_energy / plate_kinetic, 1.0);
   std::printf("[/DT/INTER/CST] cycles %lld  smallest dt %.3e  added mass %.4g kg  max p/g %.3f  energy error %.3f %%\n",
               r.run.summary.cycles, r.smallest_dt, r.run.summary.mass_added, r.max_ratio,
               r.run.summary.energy.error_percent);

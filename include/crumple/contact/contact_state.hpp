@@ -30,6 +30,7 @@ struct InterfaceResult {
   double dt = std::numeric_limits<double>::infinity();  // interface step of the last cycle, scaled [T]
   std::int32_t dt_node = -1;    // dense index of the secondary node controlling it
   double added_mass = 0.0;      // mass added by /DT/INTER/CST so far [M]
+  double added_mass_energy = 0.0;  // kinetic energy the added mass took at its node's speed, sum dm |v|^2 / 2 [E]
   long long released = 0;       // contacts released by /DT/INTER/DEL or the card's dtmin so far
   std::vector<InitialPenetration> initial_penetrations;  // found before the run (type7.md §7)
   double max_penetration_ratio = 0.0;  // largest p / g seen in any cycle
@@ -93,6 +94,7 @@ struct ContactInterface {
   std::vector<std::uint8_t> node_touched;       // scratch: secondary node had a force this cycle
   std::vector<std::int32_t> touched_list;       // scratch: those nodes (index into secondary_nodes)
   std::vector<double> node_tangent_sum;         // scratch: sum of the node's pairs' tangent stiffnesses [F/L]
+  std::vector<double> node_reach_stiffness;     // scratch: the same at the depth each pair can reach in a step [F/L]
   std::vector<double> node_friction_viscosity;  // scratch: sum of its pairs' friction dashpots C_t (Iform 1) [F T/L]
   double margin = 0.0;                          // search margin beyond the gap [L]
   double bucket_scale = 0.2;                    // Bumult: bucket size factor
