@@ -4,8 +4,8 @@
 // meet end to end: bar 1 moves at v toward bar 2 at rest (bar 2's end face, one segment, is the main surface). Elementary wave theory: a compression wave of
 // amplitude v/2 runs through both bars; contact lasts the round trip 2L/c, after which bar 1 is at rest and bar 2
 // moves at v (the velocities are exchanged). Bar 1's end nodes are secondary, bar 2's surface is main, with a gap
-// of 1 % of the element and the default stiffness (K0 = B A^2 / V, about one element's axial stiffness): the
-// contact spring adds a little compliance, +1 % on the duration. VisS is at its floor (1e-6: zero would mean the default 0.05), so the exchange is elastic.
+// of 1 % of the element and the default stiffness (K0 = B A^2 / (2 V), half an element's axial stiffness): the
+// contact spring adds a little compliance, +2 % on the duration. VisS is at its floor (1e-6: zero would mean the default 0.05), so the exchange is elastic.
 #include <cmath>
 
 #include "contact_cards.hpp"
