@@ -132,7 +132,7 @@ void RunRecorder::row(const SolverState& s, double dt, const StepControl& contro
   const double mass = total_mass(s);
   listing_.row({s.cycle, s.time, dt, describe(control, model_), e.error_percent(), e.internal,
                 e.kinetic_translational, e.kinetic_rotational, e.external_work, e.hourglass, e.contact,
-                (mass - s.mass_initial) / s.mass_initial, mass, s.mass_added});
+                s.mass_initial > 0.0 ? (mass - s.mass_initial) / s.mass_initial : 0.0, mass, s.mass_added});
 }
 
 void RunRecorder::events(RunEvents& events) {

@@ -146,7 +146,8 @@ SolverState make_state(const Model& m, std::vector<std::string>& notes) {
   setup_rigid_walls(m, s);
   s.mass_initial = 0.0;
   for (double mass : s.nodes.mass) s.mass_initial += mass;
-  s.energy.initial_kinetic = kinetic_energy(s).first;
+  const auto [translational, rotational] = kinetic_energy(s);  // a rigid body's initial spin is rotational (RB-7)
+  s.energy.initial_kinetic = translational + rotational;
   return s;
 }
 

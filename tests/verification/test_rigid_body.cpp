@@ -136,6 +136,10 @@ TEST(RigidBody, FreeTumblingKeepsAngularMomentum) {
   // docs/verification.md); the run's balance within 0.1 % (issue 4).
   EXPECT_LT(worst_energy, omega_dt * omega_dt);
   EXPECT_LT(std::abs(run.summary.energy.error_percent), 0.1);
+  // The listing's split (RB-7): the centre's translation, the spin in the rotational column.
+  const double translation = 0.5 * M * (V0[0] * V0[0] + V0[1] * V0[1] + V0[2] * V0[2]);
+  EXPECT_NEAR(run.summary.energy.kinetic_translational, translation, 1e-9 * energy0);
+  EXPECT_NEAR(run.summary.energy.kinetic_rotational, energy0 - translation, 1e-6 * energy0);
   std::printf("[rigid body] cycles %lld  |w| dt %.2e  w turned %.1f deg  L state %.2e  L nodal %.2e  P %.2e  body energy %.2e (relative)  energy error %.5f %%\n",
               run.summary.cycles, omega_dt, turn * 180.0 / kPi, worst_state, worst_nodal,
               worst_momentum, worst_energy, run.summary.energy.error_percent);
