@@ -6,27 +6,52 @@
 
 namespace crumple::materials {
 
+namespace {
+
+// The elastic predictor (docs/theory/materials.md, eq. PS-1) and the yield check that both returns start with: the
+// stress becomes the trial stress; `plastic` says whether its von Mises stress `trial` is above the yield stress.
+struct Predictor {
+  PlaneStressResult elastic;  // the step's result if it is elastic
+  double old_sum = 0.0;       // sxx + syy before the step
+  double trial = 0.0;         // von Mises stress of the trial stress
+  bool kept = false;          // the static part of the yield stress is kept in *static_yield
+  bool plastic = false;
+};
+
+Predictor predict(const PlaneStressElastic& el, const Hardening& hardening, double dexx, double deyy, double dgxy,
+                  double rate, double eps_p, double& sxx, double& syy, double& sxy, double* static_yield) {
+  const double E = el.young, nu = el.poisson;
+  const double G = E / (2.0 * (1.0 + nu));
+  const double c = E / (1.0 - nu * nu);
+  const double txx = sxx + c * (dexx + nu * deyy);
+  const double tyy = syy + c * (deyy + nu * dexx);
+  const double txy = sxy + G * dgxy;
+  Predictor pr;
+  pr.old_sum = sxx + syy;
+  sxx = txx, syy = tyy, sxy = txy;
+  pr.elastic = {0.0, -nu / E * ((txx + tyy) - pr.old_sum)};
+  if (!hardening.plastic()) return pr;
+  pr.kept = static_yield != nullptr && hardening.has_static_part();
+  if (pr.kept && std::isnan(*static_yield)) *static_yield = hardening.static_part(eps_p);
+  const double yield0 = pr.kept ? hardening.yield_from_static(*static_yield, rate) : hardening.yield(eps_p, rate);
+  pr.trial = von_mises_plane_stress(txx, tyy, txy);
+  pr.plastic = !(pr.trial <= yield0);
+  return pr;
+}
+
+}  // namespace
+
 PlaneStressResult plane_stress_update(const PlaneStressElastic& el, const Hardening& hardening, double dexx,
                                       double deyy, double dgxy, double rate, double eps_p, double& sxx, double& syy,
                                       double& sxy, double* static_yield) {
   const double E = el.young;
   const double nu = el.poisson;
   const double G = E / (2.0 * (1.0 + nu));
-  const double c = E / (1.0 - nu * nu);
-  // Elastic predictor (docs/theory/materials.md, eq. PS-1).
-  const double txx = sxx + c * (dexx + nu * deyy);
-  const double tyy = syy + c * (deyy + nu * dexx);
-  const double txy = sxy + G * dgxy;
-  const double old_sum = sxx + syy;
-  sxx = txx, syy = tyy, sxy = txy;
-  PlaneStressResult result{0.0, -nu / E * ((txx + tyy) - old_sum)};
-  if (!hardening.plastic()) return result;
-
-  const bool kept = static_yield != nullptr && hardening.has_static_part();
-  if (kept && std::isnan(*static_yield)) *static_yield = hardening.static_part(eps_p);
-  const double yield0 = kept ? hardening.yield_from_static(*static_yield, rate) : hardening.yield(eps_p, rate);
-  const double trial = von_mises_plane_stress(txx, tyy, txy);
-  if (trial <= yield0) return result;
+  const Predictor pr = predict(el, hardening, dexx, deyy, dgxy, rate, eps_p, sxx, syy, sxy, static_yield);
+  PlaneStressResult result = pr.elastic;
+  if (!pr.plastic) return result;
+  const double txx = sxx, tyy = syy, txy = sxy, old_sum = pr.old_sum;
+  const bool kept = pr.kept;
 
   // Return mapping in the eigen-basis of the plane-stress projection (eq. PS-3): with p = sxx + syy,
   // q = syy - sxx, r = sxy the corrected stress is p/(1 + E g/(3(1-nu))), q/(1 + 2 G g), r/(1 + 2 G g) for the
@@ -83,20 +108,11 @@ PlaneStressResult plane_stress_radial_return(const PlaneStressElastic& el, const
                                              double& syy, double& sxy, double* static_yield) {
   const double E = el.young, nu = el.poisson;
   const double G = E / (2.0 * (1.0 + nu));
-  const double c = E / (1.0 - nu * nu);
-  // Elastic predictor (PS-1), as in plane_stress_update.
-  const double txx = sxx + c * (dexx + nu * deyy);
-  const double tyy = syy + c * (deyy + nu * dexx);
-  const double txy = sxy + G * dgxy;
-  const double old_sum = sxx + syy;
-  sxx = txx, syy = tyy, sxy = txy;
-  PlaneStressResult result{0.0, -nu / E * ((txx + tyy) - old_sum)};
-  if (!hardening.plastic()) return result;
-  const bool kept = static_yield != nullptr && hardening.has_static_part();
-  if (kept && std::isnan(*static_yield)) *static_yield = hardening.static_part(eps_p);
-  const double yield0 = kept ? hardening.yield_from_static(*static_yield, rate) : hardening.yield(eps_p, rate);
-  const double trial = von_mises_plane_stress(txx, tyy, txy);
-  if (trial <= yield0) return result;
+  const Predictor pr = predict(el, hardening, dexx, deyy, dgxy, rate, eps_p, sxx, syy, sxy, static_yield);
+  PlaneStressResult result = pr.elastic;
+  if (!pr.plastic) return result;
+  const double txx = sxx, tyy = syy, txy = sxy, old_sum = pr.old_sum, trial = pr.trial;
+  const bool kept = pr.kept;
   // PS-5: f(d) = trial - 3 G d - sigma_y(eps_p + d) = 0, decreasing in d; Newton from d = 0, safeguarded.
   double d = 0.0, lo = 0.0, hi = trial / (3.0 * G);
   for (int it = 0; it < 50; ++it) {
