@@ -133,7 +133,7 @@ ContactStep contact_forces(const Model& m, ContactState& c, NodalState& nodes, d
           if (d - g < 3.0 * std::abs(penetration_rate) * dt_estimate) {
             if (in.node_touched[i] == 0) in.node_touched[i] = 1, in.touched_list.push_back(static_cast<std::int32_t>(i));
             in.node_tangent_sum[i] += in.pair_stiffness(i, s);
-            in.node_reach_stiffness[i] += in.pair_stiffness(i, s);
+            if (mass_step > 0.0) in.node_reach_stiffness[i] += in.pair_stiffness(i, s);
           }
           continue;
         }
@@ -160,10 +160,12 @@ ContactStep contact_forces(const Model& m, ContactState& c, NodalState& nodes, d
         const double closing = scale * kinematic_step(g, p, penetration_rate);
         if (closing < res.dt) res.dt = closing, res.dt_node = static_cast<std::int32_t>(n);
         in.node_tangent_sum[i] += kt;
-        // The penetration the node can reach within the step (at most half its remaining distance, the kinematic
-        // bound), and the stiffness there: what /DT/INTER/CST's mass must hold (eq. C-11c).
-        const double reach = std::min(p + std::max(penetration_rate, 0.0) * dt_estimate, p + 0.5 * (g - p));
-        in.node_reach_stiffness[i] += tangent_stiffness(k0, g, reach);
+        // With /DT/INTER/CST: the penetration the node can reach within the step (at most half its remaining
+        // distance, the kinematic bound), and the stiffness there, which the added mass must hold (eq. C-11c).
+        if (mass_step > 0.0) {
+          const double reach = std::min(p + std::max(penetration_rate, 0.0) * dt_estimate, p + 0.5 * (g - p));
+          in.node_reach_stiffness[i] += tangent_stiffness(k0, g, reach);
+        }
         in.node_friction_viscosity[i] += ct;
         // Normal force: penalty plus damping, never attractive (eqs. C-5, C-8).
         const double elastic = penalty_force(k0, g, p);
@@ -232,15 +234,16 @@ ContactStep contact_forces(const Model& m, ContactState& c, NodalState& nodes, d
       const auto n = static_cast<std::size_t>(in.secondary_nodes[ui]);
       // A node carried by a rigid body: the springs act on the body's mass, its elements are not computed.
       const double body_mass = c.rigid_body_mass.empty() ? 0.0 : c.rigid_body_mass[n];
-      const double stiffness = in.node_tangent_sum[ui] + (body_mass > 0.0 ? 0.0 : in.node_element_stiffness[ui]);
+      const double element = body_mass > 0.0 ? 0.0 : in.node_element_stiffness[ui];
+      const double stiffness = in.node_tangent_sum[ui] + element;
       const double viscosity = in.node_friction_viscosity[ui];
       double node_step = scaled_stiffness_step(body_mass > 0.0 ? body_mass : nodes.mass[n], stiffness, viscosity,
                                                viss, scale);
       if (mass_step > 0.0 && node_step < mass_step) {
         // The dashpots grow with sqrt(M): C = (C / sqrt(M)) sqrt(M).
         const double c_unit = viscosity > 0.0 ? viscosity / std::sqrt(nodes.mass[n]) : 0.0;
-        const double reach_stiffness = stiffness - in.node_tangent_sum[ui] + in.node_reach_stiffness[ui];
-        const double needed = std::max(nodes.mass[n], mass_for_step(reach_stiffness, c_unit, viss, scale, mass_step));
+        const double needed =
+            std::max(nodes.mass[n], mass_for_step(in.node_reach_stiffness[ui] + element, c_unit, viss, scale, mass_step));
         added_mass += needed - nodes.mass[n];
         res.added_mass += needed - nodes.mass[n];
         // The added mass moves at the node's speed: kinetic energy created by the scaling, the balance's error.

@@ -18,19 +18,27 @@ double EnergyBalanceState::error_percent() const {
 namespace solver {
 namespace {
 
-// Kinetic energy of a body's nodes relative to their centre of mass, sum 1/2 m_i |v_i - v_c|^2 [E].
+// Kinetic energy of a body's nodes (main and secondary) relative to their centre of mass,
+// sum 1/2 m_i |v_i - v_c|^2 [E]: the centre's velocity first, then the sum, without the cancellation of
+// "total minus 1/2 M v_c^2" on a body that mostly translates.
 double relative_kinetic_energy(const NodalState& n, const RigidBodyState& b) {
-  double mass = 0.0, p[3] = {0.0, 0.0, 0.0}, total = 0.0;
-  auto visit = [&](std::int32_t node, auto&& f) {
-    f(static_cast<std::size_t>(node));
-    for (std::int32_t k : b.secondary) f(static_cast<std::size_t>(k));
-  };
-  visit(b.main_node, [&](std::size_t k) {
-    mass += n.mass[k], p[0] += n.mass[k] * n.vx[k], p[1] += n.mass[k] * n.vy[k], p[2] += n.mass[k] * n.vz[k];
-    total += 0.5 * n.mass[k] * (n.vx[k] * n.vx[k] + n.vy[k] * n.vy[k] + n.vz[k] * n.vz[k]);
-  });
+  double mass = n.mass[static_cast<std::size_t>(b.main_node)], vc[3] = {0.0, 0.0, 0.0};
+  auto add_momentum = [&](std::size_t k, double m) { vc[0] += m * n.vx[k], vc[1] += m * n.vy[k], vc[2] += m * n.vz[k]; };
+  add_momentum(static_cast<std::size_t>(b.main_node), mass);
+  for (std::int32_t k : b.secondary) {
+    const auto uk = static_cast<std::size_t>(k);
+    mass += n.mass[uk];
+    add_momentum(uk, n.mass[uk]);
+  }
   if (!(mass > 0.0)) return 0.0;
-  return std::max(0.0, total - 0.5 * (p[0] * p[0] + p[1] * p[1] + p[2] * p[2]) / mass);
+  for (double& v : vc) v /= mass;
+  auto relative = [&](std::size_t k) {
+    const double dx = n.vx[k] - vc[0], dy = n.vy[k] - vc[1], dz = n.vz[k] - vc[2];
+    return 0.5 * n.mass[k] * (dx * dx + dy * dy + dz * dz);
+  };
+  double spin = relative(static_cast<std::size_t>(b.main_node));
+  for (std::int32_t k : b.secondary) spin += relative(static_cast<std::size_t>(k));
+  return spin;
 }
 
 }  // namespace
@@ -45,13 +53,12 @@ std::pair<double, double> kinetic_energy(const SolverState& s) {
   // Rigid bodies, as the reference's listing splits them: translational 1/2 M v_c^2 of the centre of mass,
   // rotational the rest of the nodes' kinetic energy, sum 1/2 m_i |v_i - v_c|^2, which for a rigid motion is
   // 1/2 w . I w of the nodal masses about the centre (docs/theory/rigid-bodies.md, RB-7). The total is unchanged.
-  for (const RigidBodyState& b : s.bodies) {
-    if (!b.active) continue;
-    const double spin = relative_kinetic_energy(n, b);
-    translational -= spin, rotational += spin;
-  }
   // The inertia the card adds (Jxx..Jxz, in the body frame) spins with the body: 1/2 w . R J R^T w.
   for (const RigidBodyState& b : s.bodies) {
+    if (b.active) {
+      const double spin = relative_kinetic_energy(n, b);
+      translational -= spin, rotational += spin;
+    }
     const auto& R = b.rotation;
     const auto& J = b.inertia_added;
     double local[3];
