@@ -5,6 +5,7 @@ find_package(Eigen3 3.4 REQUIRED NO_MODULE)
 find_package(MPI REQUIRED COMPONENTS C CXX)
 set(HDF5_PREFER_PARALLEL TRUE)
 find_package(HDF5 REQUIRED COMPONENTS C)
+find_package(ZLIB REQUIRED)  # crc32 of the deck files in NAME.summary.json
 if(NOT HDF5_IS_PARALLEL)
   message(FATAL_ERROR "Crumple needs the Open MPI build of HDF5 (libhdf5-openmpi-dev)")
 endif()

@@ -1,6 +1,12 @@
 #include "app/run.hpp"
 
 #include <fmt/ostream.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
 
 #include "app/exit_codes.hpp"
 #include "crumple/output/run_recorder.hpp"
@@ -8,6 +14,21 @@
 #include "crumple/solver/solver_state.hpp"
 
 namespace crumple::app {
+
+// Why the run could not write its files into `dir` (empty when it can): the directory is created if needed and a
+// file is created and removed in it, so that a read-only or full directory is refused before any cycle, with the
+// system's reason, rather than failing at the first listing line.
+std::string output_directory_problem(const std::filesystem::path& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) return fmt::format("cannot create the output directory {}: {}", dir.string(), ec.message());
+  const std::filesystem::path probe = dir / fmt::format(".crumple-write-test-{}", ::getpid());
+  std::FILE* f = std::fopen(probe.c_str(), "w");
+  if (f == nullptr) return fmt::format("cannot write into the output directory {}: {}", dir.string(), std::strerror(errno));
+  std::fclose(f);
+  std::filesystem::remove(probe, ec);
+  return {};
+}
 
 RunSummary run_engine_decks(Deck& deck, const SolverOptions& options, std::ostream& console) {
   Model& m = deck.model;
@@ -29,25 +50,39 @@ RunSummary run_engine_decks(Deck& deck, const SolverOptions& options, std::ostre
   return summary;
 }
 
+int launched_ranks() {
+  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "MPI_LOCALNRANKS"}) {
+    const char* value = std::getenv(name);
+    if (value != nullptr && std::atoi(value) > 1) return std::atoi(value);
+  }
+  return 1;
+}
+
 int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
+  if (const int ranks = launched_ranks(); ranks > 1) {
+    // Each rank would run the whole model and they would race on the same files.
+    fmt::print(err, "crumple: started as {} MPI ranks (mpirun -np {}): parallel runs are not supported by Crumple "
+                    "yet; run it as one process (the result does not depend on it)\n", ranks, ranks);
+    return kExitBadInput;
+  }
   ReadOptions read;
   read.skip_unknown = options.skip_unknown;
   read.require_engine = true;
   Deck deck = read_deck(options.deck, read);
   for (const auto& w : deck.report.warnings) fmt::print(err, "warning: {}\n", w.text());
 
-  std::error_code ec;
-  std::filesystem::create_directories(options.output_directory, ec);
-  if (ec) {
-    fmt::print(err, "crumple: cannot create the output directory {}: {}\n", options.output_directory.string(),
-               ec.message());
+  if (const std::string problem = output_directory_problem(options.output_directory); !problem.empty()) {
+    fmt::print(err, "crumple: {}\n", problem);
     return kExitBadInput;
   }
+  const std::string started = utc_now_iso8601();
   SolverOptions solver;
   solver.name = deck.model.run.run_name.empty() ? deck.model.run_name : deck.model.run.run_name;
   solver.output_directory = options.output_directory;
   for (const SkippedOption& o : deck.report.skipped_options) solver.approximations.push_back(o.text());
-  const RunSummary summary = run_engine_decks(deck, solver, out);
+  RunSummary summary = run_engine_decks(deck, solver, out);
+  summary.date = started;
+  summary.deck_files = describe_deck_files(deck.report.files);
   write_summary(summary, options.output_directory / (solver.name + ".summary.json"));
   fmt::print(out, "crumple run {}: {} after {} cycles, time {:.6g}, energy error {:.3g} %, {:.2f} s\n", solver.name,
              status_name(summary.status), summary.cycles, summary.time, summary.energy.error_percent,

@@ -24,4 +24,10 @@ RunSummary run_engine_decks(Deck& deck, const SolverOptions& options, std::ostre
 // directory. Returns the process exit code (exit_codes.hpp). Deck errors propagate as exceptions.
 int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err);
 
+// How many MPI ranks the launcher started (1 without mpirun), from the environment Open MPI and MPICH set.
+int launched_ranks();
+
+// Why a run could not write its results into `dir` (empty when it can), with the system's reason.
+std::string output_directory_problem(const std::filesystem::path& dir);
+
 }  // namespace crumple::app

@@ -3,7 +3,11 @@
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 
+#include <algorithm>
 #include <cmath>
+
+#include "crumple/output/build_info.hpp"
+#include "crumple/solver/element_status.hpp"
 
 namespace crumple {
 namespace {
@@ -16,6 +20,10 @@ std::string element_name(const Model& m, ElementKind kind, std::int32_t index) {
 std::int64_t part_id_of(const Model& m, ElementKind kind, std::int32_t index) {
   const auto part = m.elements[static_cast<int>(kind)].part[static_cast<std::size_t>(index)];
   return m.parts[static_cast<std::size_t>(part)].user_id;
+}
+
+long long deleted_count(const std::vector<std::uint8_t>& status) {
+  return std::count(status.begin(), status.end(), kElementDeleted);
 }
 
 double total_mass(const SolverState& s) {
@@ -210,6 +218,10 @@ RunSummary summarize_run(const Model& m, const std::string& name, const SolverSt
                          const PhaseTimes& phases, double dt, double wall) {
   RunSummary summary;
   summary.name = name;
+  summary.crumple_version = build::version();
+  summary.commit = build::commit();
+  summary.deleted_elements =
+      deleted_count(s.shells.deleted) + deleted_count(s.shells3.deleted) + deleted_count(s.bricks.deleted);
   summary.phases = phases;
   summary.cycles = s.cycle;
   summary.cycles_total = s.cycles_done + s.cycle;

@@ -1,9 +1,13 @@
 #include "crumple/output/run_summary.hpp"
 
+#include <fmt/chrono.h>
 #include <fmt/format.h>
+#include <zlib.h>
 
 #include <cmath>
 #include <fstream>
+#include <chrono>
+#include <ctime>
 #include <stdexcept>
 
 namespace crumple {
@@ -37,7 +41,41 @@ std::string string_array(const std::vector<std::string>& items) {
   return out + "\n  ]";
 }
 
+// [{"path": ..., "bytes": ..., "crc32": "89abcdef"}, ...]
+std::string file_array(const std::vector<DeckFile>& files) {
+  if (files.empty()) return "[]";
+  std::string out = "[";
+  for (std::size_t k = 0; k < files.size(); ++k)
+    out += fmt::format("{}\n    {{\"path\": \"{}\", \"bytes\": {}, \"crc32\": \"{:08x}\"}}", k == 0 ? "" : ",",
+                       escaped(files[k].path), files[k].bytes, files[k].crc32);
+  return out + "\n  ]";
+}
+
 }  // namespace
+
+std::vector<DeckFile> describe_deck_files(const std::vector<std::string>& paths) {
+  std::vector<DeckFile> files;
+  for (const std::string& path : paths) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw std::runtime_error("cannot read " + path + " again to take its checksum");
+    DeckFile f{path, 0, static_cast<std::uint32_t>(crc32(0L, Z_NULL, 0))};
+    char buffer[1 << 16];
+    while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
+      const auto n = static_cast<uInt>(in.gcount());
+      f.crc32 = static_cast<std::uint32_t>(crc32(f.crc32, reinterpret_cast<const Bytef*>(buffer), n));
+      f.bytes += n;
+    }
+    files.push_back(f);
+  }
+  return files;
+}
+
+std::string utc_now_iso8601() {
+  const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+  std::tm utc{};
+  gmtime_r(&now, &utc);
+  return fmt::format("{:%Y-%m-%dT%H:%M:%SZ}", utc);
+}
 
 const char* status_name(RunStatus status) {
   switch (status) {
@@ -51,19 +89,20 @@ const char* status_name(RunStatus status) {
 std::string to_json(const RunSummary& s) {
   const EnergyBalance& e = s.energy;
   return fmt::format(
-      "{{\n  \"name\": \"{}\",\n  \"cycles\": {},\n  \"cycles_total\": {},\n  \"engine_decks\": {},\n  \"time\": {},\n  \"dt\": {},\n  \"energy\": {{\n"
+      "{{\n  \"name\": \"{}\",\n  \"crumple_version\": \"{}\",\n  \"commit\": \"{}\",\n  \"date\": \"{}\",\n"
+      "  \"deck_files\": {},\n  \"cycles\": {},\n  \"cycles_total\": {},\n  \"engine_decks\": {},\n  \"time\": {},\n  \"dt\": {},\n  \"energy\": {{\n"
       "    \"internal\": {},\n    \"kinetic_translational\": {},\n    \"kinetic_rotational\": {},\n"
       "    \"contact\": {},\n    \"hourglass\": {},\n    \"external_work\": {},\n    \"total\": {},\n"
       "    \"error_percent\": {}\n  }},\n  \"mass\": {{\n    \"total\": {},\n    \"added\": {}\n  }},\n"
       "  \"wall_seconds\": {},\n  \"element_cycles_per_second\": {},\n"
       "  \"profile\": {{\n    \"elements\": {},\n    \"contact\": {},\n    \"contact_passes\": {},\n"
       "    \"loads\": {},\n    \"update\": {},\n    \"output\": {}\n  }},\n  \"ranks\": {},\n  \"precision\": \"{}\",\n"
-      "  \"status\": \"{}\",\n  \"message\": \"{}\",\n  \"approximations\": {}\n}}\n",
-      escaped(s.name), s.cycles, s.cycles_total, s.engine_decks, number(s.time), number(s.dt), number(e.internal), number(e.kinetic_translational),
+      "  \"deleted_elements\": {},\n  \"status\": \"{}\",\n  \"message\": \"{}\",\n  \"approximations\": {}\n}}\n",
+      escaped(s.name), escaped(s.crumple_version), escaped(s.commit), escaped(s.date), file_array(s.deck_files), s.cycles, s.cycles_total, s.engine_decks, number(s.time), number(s.dt), number(e.internal), number(e.kinetic_translational),
       number(e.kinetic_rotational), number(e.contact), number(e.hourglass), number(e.external_work), number(e.total),
       number(e.error_percent), number(s.mass_total), number(s.mass_added), number(s.wall_seconds),
       number(s.element_cycles_per_second), number(s.phases.elements), number(s.phases.contact),
-      s.phases.contact_passes, number(s.phases.loads), number(s.phases.update), number(s.phases.output), s.ranks, escaped(s.precision), status_name(s.status), escaped(s.message),
+      s.phases.contact_passes, number(s.phases.loads), number(s.phases.update), number(s.phases.output), s.ranks, escaped(s.precision), s.deleted_elements, status_name(s.status), escaped(s.message),
       string_array(s.approximations));
 }
 

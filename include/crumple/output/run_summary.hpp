@@ -1,6 +1,7 @@
 #pragma once
 // NAME.summary.json: the contract for batch regression (README, "Run summary"). Energies [M L^2 T^-2],
 // masses [M], times [T], all in the deck's working units.
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -30,8 +31,19 @@ struct PhaseTimes {
   long long contact_passes = 0;
 };
 
+// One file of the deck as read (includes too), to tell later which deck a result came from.
+struct DeckFile {
+  std::string path;
+  std::uintmax_t bytes = 0;
+  std::uint32_t crc32 = 0;  // zlib's CRC-32 of the file's bytes
+};
+
 struct RunSummary {
   std::string name;
+  std::string crumple_version;  // build::version()
+  std::string commit;           // build::commit(): the git commit Crumple was built from
+  std::string date;             // when the run started, UTC, ISO 8601 (2026-12-02T01:23:45Z)
+  std::vector<DeckFile> deck_files;
   long long cycles = 0;        // cycles of the last engine deck (a continued run counts each deck from 0)
   long long cycles_total = 0;  // cycles of every engine deck of the run
   int engine_decks = 1;        // NAME_0001.rad, NAME_0002.rad, ... run in order
@@ -45,6 +57,7 @@ struct RunSummary {
   PhaseTimes phases;
   int ranks = 1;
   std::string precision = "double";
+  long long deleted_elements = 0;  // elements deleted over the run (failure, /DT/<type>/DEL), in every kind
   RunStatus status = RunStatus::Normal;
   std::string message;  // why the run ended when status is not normal
   // Options of the deck that were skipped or approximated (output-only requests not written, performance hints,
@@ -53,6 +66,10 @@ struct RunSummary {
 };
 
 std::string to_json(const RunSummary& summary);
+// The files' sizes and CRC-32s; throws std::runtime_error naming a file that cannot be read.
+std::vector<DeckFile> describe_deck_files(const std::vector<std::string>& paths);
+// Now, UTC, ISO 8601 to the second.
+std::string utc_now_iso8601();
 void write_summary(const RunSummary& summary, const std::filesystem::path& file);
 const char* status_name(RunStatus status);
 
