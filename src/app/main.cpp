@@ -9,6 +9,7 @@
 #include "app/exit_codes.hpp"
 #include "app/run.hpp"
 #include "crumple/deck/reader.hpp"
+#include "crumple/output/restart_file.hpp"
 
 namespace {
 
@@ -42,6 +43,8 @@ int main(int argc, char** argv) {
   run->add_option("DECK", deck_path, "Starter deck (NAME_0000.rad) with its engine deck beside it")->required();
   run->add_option("-o,--output", run_options.output_directory, "Output directory (default: current directory)");
   run->add_flag("--skip-unknown", skip_unknown, skip_help);
+  run->add_option("--restart", run_options.restart,
+                  "Resume from a restart file (NAME.rst.h5, written with /RFILE or when a run is stopped)");
 
   try {
     cli.parse(argc, argv);
@@ -65,6 +68,9 @@ int main(int argc, char** argv) {
     return report_deck_errors(e.errors());
   } catch (const DeckError& e) {
     return report_deck_errors({e});
+  } catch (const RestartError& e) {
+    fmt::print(stderr, "crumple: {}\n", e.what());
+    return app::kExitBadInput;
   } catch (const std::bad_alloc&) {
     fmt::print(stderr, "crumple: out of memory\n");
     return app::kExitRunFailed;

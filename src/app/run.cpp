@@ -7,8 +7,10 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <optional>
 
 #include "app/exit_codes.hpp"
+#include "crumple/output/restart_file.hpp"
 #include "crumple/output/run_recorder.hpp"
 #include "crumple/solver/solver.hpp"
 #include "crumple/solver/solver_state.hpp"
@@ -30,20 +32,37 @@ std::string output_directory_problem(const std::filesystem::path& dir) {
   return {};
 }
 
-RunSummary run_engine_decks(Deck& deck, const SolverOptions& options, std::ostream& console) {
+RunSummary run_engine_decks(Deck& deck, const SolverOptions& options, std::ostream& console,
+                            const std::filesystem::path& restart) {
   Model& m = deck.model;
   const RunControl first = m.run;
+  std::vector<RunControl> controls{first};
+  controls.insert(controls.end(), deck.continued_runs.begin(), deck.continued_runs.end());
   std::vector<std::string> notes;
   SolverState state = initial_state(m, notes);
+  std::optional<ResumeMarks> marks;
+  if (!restart.empty()) {
+    marks = read_restart(restart, m, state);
+    if (marks->engine_deck < 1 || marks->engine_deck > static_cast<int>(controls.size()))
+      throw RestartError(fmt::format("restart file {} was written in engine deck {}; this deck has {}",
+                                     restart.string(), marks->engine_deck, controls.size()));
+    notes.push_back(fmt::format("resumed from {} at cycle {}, time {:.6g} (engine deck {})", restart.string(),
+                                state.cycle, state.time, marks->engine_deck));
+  }
+  const int start = marks ? marks->engine_deck : 1;
   RunRecorder recorder(m, options.output_directory, options.name.empty() ? m.run_name : options.name,
                        options.write_results);
-  RunSummary summary = run_engine_deck(m, options, recorder, state, notes, console);
-  for (const RunControl& next : deck.continued_runs) {
+  RunSummary summary;
+  for (int k = start; k <= static_cast<int>(controls.size()); ++k) {
+    m.run = controls[static_cast<std::size_t>(k - 1)];
+    SolverOptions engine = options;
+    engine.engine_deck = k;
+    engine.resume = k == start && marks ? &*marks : nullptr;
+    if (k > start) continue_from(state);
+    const int decks_before = k > start ? summary.engine_decks : 0;
+    summary = run_engine_deck(m, engine, recorder, state, k == start ? notes : std::vector<std::string>{}, console);
+    summary.engine_decks = decks_before + 1;
     if (summary.status != RunStatus::Normal) break;
-    m.run = next;
-    continue_from(state);
-    summary = run_engine_deck(m, options, recorder, state, {}, console);
-    ++summary.engine_decks;
   }
   m.run = first;
   recorder.close(state, summary.status != RunStatus::Normal);
@@ -80,7 +99,7 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
   solver.name = deck.model.run.run_name.empty() ? deck.model.run_name : deck.model.run.run_name;
   solver.output_directory = options.output_directory;
   for (const SkippedOption& o : deck.report.skipped_options) solver.approximations.push_back(o.text());
-  RunSummary summary = run_engine_decks(deck, solver, out);
+  RunSummary summary = run_engine_decks(deck, solver, out, options.restart);
   summary.date = started;
   summary.deck_files = describe_deck_files(deck.report.files);
   write_summary(summary, options.output_directory / (solver.name + ".summary.json"));

@@ -12,13 +12,16 @@ struct RunOptions {
   std::filesystem::path deck;
   std::filesystem::path output_directory = ".";
   bool skip_unknown = false;
+  std::filesystem::path restart;  // --restart FILE: resume the snapshot of a NAME.rst.h5 (empty: start at t = 0)
 };
 
 // Runs every engine deck of `deck` in order (NAME_0001.rad, then the continued runs NAME_0002.rad...), each from
 // the state the one before left, into one listing and one results file; stops at the first that does not end
 // normally. `deck.model.run` is the run control of the deck being run while it runs. Returns the last deck's
-// summary with the total cycle count.
-RunSummary run_engine_decks(Deck& deck, const SolverOptions& options, std::ostream& console);
+// summary with the total cycle count. With `restart`, the state and the engine deck to resume come from that
+// restart file (docs/theory/time-loop.md, "Restart"); throws RestartError when it does not fit the deck.
+RunSummary run_engine_decks(Deck& deck, const SolverOptions& options, std::ostream& console,
+                            const std::filesystem::path& restart = {});
 
 // `crumple run`: reads the deck and runs it, writing NAME.h5, NAME.out and NAME.summary.json into the output
 // directory. Returns the process exit code (exit_codes.hpp). Deck errors propagate as exceptions.

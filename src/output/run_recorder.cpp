@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "crumple/output/build_info.hpp"
+#include "crumple/output/restart_file.hpp"
 #include "crumple/solver/element_status.hpp"
 
 namespace crumple {
@@ -117,7 +118,7 @@ RunStatus status_of(const StopReason& stop) {
 
 RunRecorder::RunRecorder(const Model& model, const std::filesystem::path& directory, const std::string& name,
                          bool write_results)
-    : model_(model), name_(name), listing_(directory / (name + ".out")) {
+    : model_(model), directory_(directory), name_(name), listing_(directory / (name + ".out")) {
   if (write_results) results_.emplace(directory / (name + ".h5"), model);
 }
 
@@ -150,6 +151,12 @@ void RunRecorder::events(RunEvents& events) {
     if (e.kind == RunEvent::Kind::HourglassShare && console_ != nullptr) fmt::print(*console_, "warning: {}\n", text);
   }
   events.pending.clear();
+}
+
+void RunRecorder::restart(SolverState& s, ResumeMarks& marks) {
+  write_restart(restart_file(), model_, s, marks);
+  listing_.line(fmt::format("CYCLE {} TIME {:.4e}: RESTART FILE {} WRITTEN", s.cycle, s.time,
+                            restart_file().filename().string()));
 }
 
 void RunRecorder::frame(const SolverState& s) {

@@ -2,6 +2,7 @@
 #include <chrono>
 
 #include "crumple/output/run_recorder.hpp"
+#include "crumple/solver/snapshot.hpp"
 #include "crumple/solver/solver.hpp"
 #include "solver/cycle.hpp"
 #include "solver/internal.hpp"
@@ -22,16 +23,42 @@ class PhaseClock {
   std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
 
+// /RFILE Ncycle: a snapshot every Ncycle cycles of the engine deck (and one at its end, below).
+bool restart_due(const Model& m, const SolverState& s) {
+  return m.run.restart_every > 0 && s.cycle > 0 && s.cycle % m.run.restart_every == 0;
+}
+
+// The snapshot at the end of a cycle, with the monitor's marks (solver/snapshot.hpp).
+void write_snapshot(RunRecorder& recorder, SolverState& s, const SolverOptions& options, const RunEvents& events,
+                    const solver::OutputSchedule& schedule) {
+  ResumeMarks marks;
+  marks.engine_deck = options.engine_deck;
+  marks.next_frame = schedule.next_frame, marks.next_history = schedule.next_history;
+  marks.deleted_below_minimum_step = events.deleted_below_minimum_step;
+  marks.switched_to_small_strain = events.switched_to_small_strain;
+  marks.hourglass_warned = events.hourglass_warned;
+  recorder.restart(s, marks);
+}
+
+// A resumed run's monitor carries on from the snapshot's marks: the same output times, no warning twice.
+void resume_monitor(const ResumeMarks& marks, RunEvents& events, solver::OutputSchedule& schedule) {
+  schedule.next_frame = marks.next_frame, schedule.next_history = marks.next_history;
+  events.deleted_below_minimum_step = marks.deleted_below_minimum_step;
+  events.switched_to_small_strain = marks.switched_to_small_strain;
+  events.hourglass_warned = marks.hourglass_warned;
+}
+
 }  // namespace
 
 RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunRecorder& recorder, SolverState& s,
                            const std::vector<std::string>& notes, std::ostream& console) {
   using namespace solver;
   const auto started = std::chrono::steady_clock::now();
-  switch_rigid_bodies(m, s);
+  if (options.resume == nullptr) switch_rigid_bodies(m, s);  // a resumed state has them switched already
   recorder.start(notes, options.approximations, console);
   RunEvents events;
   OutputSchedule schedule(m.run, s.time, options.max_cycles);
+  if (options.resume != nullptr) resume_monitor(*options.resume, events, schedule);
   VelocityScratch scratch(s.nodes.size());
   PhaseTimes phases;
   PhaseClock clock;
@@ -79,6 +106,7 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunReco
       if (options.observer) options.observer(s);
     }
     advance_schedule(m, s, due, schedule);
+    if (restart_due(m, s) && !due.finished) write_snapshot(recorder, s, options, events, schedule);
     clock.lap(phases.output);
     if (due.finished) break;
   }
@@ -86,6 +114,7 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunReco
   recorder.events(events);
   recorder.row(s, dt_next, control);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  if (m.run.restart_every > 0) write_snapshot(recorder, s, options, events, schedule);
   recorder.finish(s, events, phases, wall);
   RunSummary summary = summarize_run(m, recorder.name(), s, events, phases, dt_next, wall);
   summary.approximations = options.approximations;

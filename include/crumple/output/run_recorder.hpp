@@ -12,6 +12,7 @@
 #include "crumple/output/results_file.hpp"
 #include "crumple/output/run_summary.hpp"
 #include "crumple/solver/run_events.hpp"
+#include "crumple/solver/snapshot.hpp"
 #include "crumple/solver/solver_state.hpp"
 
 namespace crumple {
@@ -44,12 +45,16 @@ class RunRecorder {
   // The end of an engine deck: the listing's closing lines (termination, deletions, added mass, interfaces,
   // cycles, time profile).
   void finish(const SolverState& state, const RunEvents& events, const PhaseTimes& phases, double wall_seconds);
+  // The snapshot to NAME.rst.h5 beside the listing (restart_file.hpp), with a listing line.
+  void restart(SolverState& state, ResumeMarks& marks);
+  std::filesystem::path restart_file() const { return directory_ / (name_ + ".rst.h5"); }
   // The end of the whole run: the last good state as a frame when it stopped early, the results file closed.
   void close(const SolverState& state, bool stopped_early);
   const std::string& name() const { return name_; }
 
  private:
   const Model& model_;
+  std::filesystem::path directory_;
   std::string name_;
   std::ostream* console_ = nullptr;
   Listing listing_;

@@ -12,6 +12,7 @@
 namespace crumple {
 
 struct SolverState;  // crumple/solver/solver_state.hpp
+struct ResumeMarks;  // crumple/solver/snapshot.hpp
 class RunRecorder;   // crumple/output/run_recorder.hpp
 
 struct SolverOptions {
@@ -25,6 +26,10 @@ struct SolverOptions {
   // Every option of the deck that was skipped or approximated (DeckReport::skipped_options, one line each:
   // "[skipped] file:line: keyword: field F: what"), for the listing header. Filled by the app (app/run.cpp).
   std::vector<std::string> approximations;
+  // Restart (docs/theory/time-loop.md, "Restart"): the engine deck being run (1 for NAME_0001.rad), and for a run
+  // that resumes a restart file the marks read with its state, so that the cycle goes on exactly where it stopped.
+  int engine_deck = 1;
+  const ResumeMarks* resume = nullptr;
 };
 
 // Runs the model to its end time and writes the listing and results. Returns the summary; a run that ends

@@ -378,7 +378,9 @@ void read_rfile(CardReader& reader, DeckContext& context) {
   reader.finish();
   run.restart_every = every;
   run.restart_sets = static_cast<int>(sets);
-  output_only(reader, context, "restart files are not written by Crumple");
+  // Crumple writes the snapshot into NAME.rst.h5 (docs/output-format.md, "Restart file"); it keeps the last one.
+  if (sets > 1)
+    output_only(reader, context, fmt::format("{} rotating restart sets asked: Crumple keeps the last snapshot only", sets));
 }
 
 void read_rbody_switch(CardReader& reader, std::vector<std::int64_t>& ids, std::vector<SourceLocation>& where) {

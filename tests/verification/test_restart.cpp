@@ -1,0 +1,134 @@
+// Restart (docs/theory/time-loop.md, "Restart"): a run stopped after k cycles with its snapshot written
+// (NAME.rst.h5), then resumed with `--restart`, must end bitwise where the uninterrupted run ends: every field of
+// the snapshot (positions, velocities, stresses, plastic strains, hourglass stresses, contact pairs and their
+// friction history, rigid bodies, walls, energies, cycle count) and every history row written after the restart.
+// The decks cover shells with a rigid body and a rigid wall (the example tube), TYPE7 contact with friction and a
+// rigid body of bricks (contact_idel), and a continued run (ball_two_runs, stopped in its first engine deck).
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <map>
+#include <sstream>
+
+#include "app/run.hpp"
+#include "crumple/output/restart_file.hpp"
+#include "crumple/solver/snapshot.hpp"
+#include "crumple/solver/solver_state.hpp"
+#include "deck_files.hpp"
+#include "h5_reader.hpp"
+
+namespace crumple::test {
+namespace {
+
+// Every field of a snapshot as bytes, by name.
+struct Collector {
+  std::map<std::string, std::string> fields;
+  template <class T>
+  void operator()(const std::string& name, std::vector<T>& v) {
+    fields[name].assign(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
+  }
+  template <class T, std::size_t N>
+  void operator()(const std::string& name, std::array<T, N>& v) {
+    fields[name].assign(reinterpret_cast<const char*>(v.data()), N * sizeof(T));
+  }
+  template <class T>
+  void operator()(const std::string& name, T& v) {
+    fields[name].assign(reinterpret_cast<const char*>(&v), sizeof(T));
+  }
+};
+
+std::map<std::string, std::string> snapshot_fields(const Model& model, const std::filesystem::path& file) {
+  std::vector<std::string> notes;
+  SolverState state = initial_state(model, notes);
+  ResumeMarks marks = read_restart(file, model, state);
+  Collector c;
+  visit_state(c, state, marks);
+  return c.fields;
+}
+
+// Runs the deck into `dir` with a snapshot at its end; `max_cycles` >= 0 stops it there in its first engine deck.
+RunSummary run(const std::filesystem::path& starter, const TempDir& dir, long long max_cycles,
+               const std::filesystem::path& restart = {}) {
+  Deck deck = read_deck(starter);
+  deck.model.run.restart_every = 1LL << 60;  // no snapshot on the way: only the one at the end
+  for (RunControl& r : deck.continued_runs) r.restart_every = 1LL << 60;
+  if (max_cycles >= 0) deck.continued_runs.clear();
+  SolverOptions options;
+  options.name = "RUN";
+  options.output_directory = dir.path();
+  options.max_cycles = max_cycles;
+  std::ostringstream console;
+  return app::run_engine_decks(deck, options, console, restart);
+}
+
+struct RestartCase {
+  const char* name;
+  std::filesystem::path starter;
+  long long stop_cycle;
+};
+
+void PrintTo(const RestartCase& c, std::ostream* os) { *os << c.name << " stopped at cycle " << c.stop_cycle; }
+
+class Restart : public ::testing::TestWithParam<RestartCase> {};
+
+TEST_P(Restart, ResumedRunEndsBitwiseWhereTheUninterruptedRunEnds) {
+  const RestartCase& c = GetParam();
+  TempDir whole, first, second;
+  const RunSummary uninterrupted = run(c.starter, whole, -1);
+  ASSERT_EQ(uninterrupted.status, RunStatus::Normal) << uninterrupted.message;
+  const RunSummary stopped = run(c.starter, first, c.stop_cycle);
+  ASSERT_EQ(stopped.cycles, c.stop_cycle);
+  ASSERT_LT(stopped.time, uninterrupted.time);
+  const RunSummary resumed = run(c.starter, second, -1, first.path() / "RUN.rst.h5");
+  ASSERT_EQ(resumed.status, RunStatus::Normal) << resumed.message;
+  EXPECT_EQ(resumed.cycles_total, uninterrupted.cycles_total);
+
+  const Deck deck = read_deck(c.starter);
+  const auto expected = snapshot_fields(deck.model, whole.path() / "RUN.rst.h5");
+  const auto found = snapshot_fields(deck.model, second.path() / "RUN.rst.h5");
+  ASSERT_EQ(expected.size(), found.size());
+  for (const auto& [name, bytes] : expected) EXPECT_TRUE(found.at(name) == bytes) << "field " << name << " differs";
+
+  // The histories written after the restart are the uninterrupted run's rows from the same time on.
+  const H5Reader a(whole.path() / "RUN.h5"), b(second.path() / "RUN.h5");
+  const std::vector<double> ta = a.doubles("/history/time"), tb = b.doubles("/history/time");
+  ASSERT_FALSE(tb.empty());
+  std::size_t offset = 0;
+  while (offset < ta.size() && ta[offset] != tb[0]) ++offset;
+  ASSERT_LT(offset, ta.size()) << "the resumed run's first history time " << tb[0] << " is not one of the run's";
+  ASSERT_EQ(ta.size() - offset, tb.size());
+  for (const char* series : {"time", "internal", "kinetic_translational", "kinetic_rotational", "hourglass", "contact",
+                             "external_work"}) {
+    const std::vector<double> ya = a.doubles(std::string("/history/") + series), yb = b.doubles(std::string("/history/") + series);
+    EXPECT_EQ(0, std::memcmp(ya.data() + offset, yb.data(), yb.size() * sizeof(double))) << series;
+  }
+}
+
+const std::filesystem::path kQa = CRUMPLE_QA_DIR;
+const std::filesystem::path kDecks = std::filesystem::path(CRUMPLE_SOURCE_DIR) / "decks";
+
+INSTANTIATE_TEST_SUITE_P(
+    Decks, Restart,
+    ::testing::Values(RestartCase{"tube", kDecks / "tube_impact" / "TUBE_0000.rad", 3000},
+                      RestartCase{"contact_idel", kQa / "contact_idel" / "IDEL8_0000.rad", 333},
+                      RestartCase{"ball_two_runs", kQa / "ball_two_runs" / "BOULE1V4_0000.rad", 777}),
+    [](const auto& p) { return std::string(p.param.name); });
+
+TEST(Restart, FileOfAnotherModelIsRefusedWithItsCounts) {
+  TempDir dir;
+  run(kDecks / "tube_impact" / "TUBE_0000.rad", dir, 10);
+  const Deck other = read_deck(kQa / "contact_idel" / "IDEL8_0000.rad");
+  std::vector<std::string> notes;
+  SolverState state = initial_state(other.model, notes);
+  try {
+    read_restart(dir.path() / "RUN.rst.h5", other.model, state);
+    FAIL() << "a restart file of another model was read";
+  } catch (const RestartError& e) {
+    EXPECT_NE(std::string(e.what()).find("written for another model"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(read_restart(dir.path() / "none.rst.h5", other.model, state), RestartError);
+  EXPECT_THROW(read_restart(dir.path() / "RUN.out", other.model, state), RestartError);
+}
+
+}  // namespace
+}  // namespace crumple::test
