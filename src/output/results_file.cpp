@@ -2,9 +2,10 @@
 // Written with the HDF5 C API through a serial file driver: only the process that owns the file calls it.
 #include "crumple/output/results_file.hpp"
 #include "crumple/solver/element_status.hpp"
+#include "hdf5_support.hpp"
+#include "xml_text.hpp"
 
 #include <fmt/format.h>
-#include <hdf5.h>
 
 #include <algorithm>
 #include <array>
@@ -19,123 +20,13 @@
 namespace crumple {
 namespace {
 
+using hdf5::H5Types;
+using hdf5::Handle;
+using hdf5::QuietErrors;
+
 constexpr int kFormatVersion = 1;
 constexpr hsize_t kHistoryChunkRows = 512;   // rows per chunk of the 1-D history datasets
 constexpr std::size_t kHistoryBuffer = 256;  // history rows kept in memory before they are appended
-
-// Owns one HDF5 identifier and closes it with the matching H5?close.
-class Handle {
- public:
-  using Closer = herr_t (*)(hid_t);
-  Handle() = default;
-  Handle(hid_t id, Closer closer) : id_(id), closer_(closer) {}
-  ~Handle() { reset(); }
-  Handle(Handle&& other) noexcept : id_(std::exchange(other.id_, -1)), closer_(other.closer_) {}
-  Handle& operator=(Handle&& other) noexcept {
-    if (this != &other) {
-      reset();
-      id_ = std::exchange(other.id_, -1);
-      closer_ = other.closer_;
-    }
-    return *this;
-  }
-  Handle(const Handle&) = delete;
-  Handle& operator=(const Handle&) = delete;
-
-  hid_t get() const { return id_; }
-  bool valid() const { return id_ >= 0; }
-  // Closes now; returns false when HDF5 reported an error.
-  bool reset() {
-    herr_t status = 0;
-    if (id_ >= 0 && closer_ != nullptr) status = closer_(id_);
-    id_ = -1;
-    return status >= 0;
-  }
-
- private:
-  hid_t id_ = -1;
-  Closer closer_ = nullptr;
-};
-
-// Turns HDF5's automatic printing of error stacks off for the scope of a public call: failures become
-// exceptions that carry the most specific message of the stack instead.
-class QuietErrors {
- public:
-  QuietErrors() {
-    H5Eget_auto2(H5E_DEFAULT, &function_, &data_);
-    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  }
-  ~QuietErrors() { H5Eset_auto2(H5E_DEFAULT, function_, data_); }
-  QuietErrors(const QuietErrors&) = delete;
-  QuietErrors& operator=(const QuietErrors&) = delete;
-
- private:
-  H5E_auto2_t function_ = nullptr;
-  void* data_ = nullptr;
-};
-
-herr_t innermost_error(unsigned, const H5E_error2_t* error, void* client) {
-  if (error != nullptr && error->desc != nullptr) *static_cast<std::string*>(client) = error->desc;
-  return 0;
-}
-
-// The most specific description on the current HDF5 error stack ("No such file or directory" rather than
-// "unable to create file"), or an empty string.
-std::string hdf5_error() {
-  std::string desc;
-  H5Ewalk2(H5E_DEFAULT, H5E_WALK_DOWNWARD, innermost_error, &desc);
-  H5Eclear2(H5E_DEFAULT);
-  constexpr std::string_view marker = "error message = '";
-  if (const auto at = desc.find(marker); at != std::string::npos) {
-    const auto begin = at + marker.size();
-    const auto end = desc.find('\'', begin);
-    if (end != std::string::npos) return desc.substr(begin, end - begin);
-  }
-  return desc;
-}
-
-std::string xml_escaped(std::string_view s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&apos;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
-
-// Memory and file types of the element types written.
-template <class T>
-struct H5Types;
-template <>
-struct H5Types<double> {
-  static hid_t memory() { return H5T_NATIVE_DOUBLE; }
-  static hid_t file() { return H5T_IEEE_F64LE; }
-  static constexpr const char* xdmf = R"(NumberType="Float" Precision="8")";
-};
-template <>
-struct H5Types<std::int32_t> {
-  static hid_t memory() { return H5T_NATIVE_INT32; }
-  static hid_t file() { return H5T_STD_I32LE; }
-  static constexpr const char* xdmf = R"(NumberType="Int" Precision="4")";
-};
-template <>
-struct H5Types<std::int64_t> {
-  static hid_t memory() { return H5T_NATIVE_INT64; }
-  static hid_t file() { return H5T_STD_I64LE; }
-  static constexpr const char* xdmf = R"(NumberType="Int" Precision="8")";
-};
-template <>
-struct H5Types<std::uint8_t> {
-  static hid_t memory() { return H5T_NATIVE_UINT8; }
-  static hid_t file() { return H5T_STD_U8LE; }
-  static constexpr const char* xdmf = R"(NumberType="UChar" Precision="1")";
-};
 
 struct MeshKind {
   ElementKind kind;
@@ -183,7 +74,7 @@ struct ResultsFile::Impl {
   std::size_t pending_rows = 0;
 
   [[noreturn]] void fail(const std::string& what) const {
-    const std::string detail = hdf5_error();
+    const std::string detail = hdf5::last_error();
     throw std::runtime_error("results file " + path.string() + ": " + what + (detail.empty() ? "" : ": " + detail));
   }
   hid_t check(hid_t id, const std::string& what) const {
@@ -661,7 +552,7 @@ ResultsFile::ResultsFile(const std::filesystem::path& path, const Model& model) 
   d.check_status(H5Pset_fclose_degree(fapl.get(), H5F_CLOSE_STRONG), "property list");
   d.file = Handle(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl.get()), H5Fclose);
   if (!d.file.valid()) {
-    const std::string detail = hdf5_error();
+    const std::string detail = hdf5::last_error();
     throw std::runtime_error("cannot create results file " + path.string() + (detail.empty() ? "" : ": " + detail));
   }
   d.open = true;
