@@ -154,7 +154,7 @@ void print_table(const std::vector<RegressCase>& cases, const std::vector<Outcom
     // IE diff in % of the quantity its tolerance is a share of: max(|ref|, floor x scale).
     const double internal_base =
         std::max(std::abs(c.internal.reference), cases[i].tolerances.internal_floor * c.scale);
-    fmt::print(out, "{:<{}}  {:>11.5g} {:>11.5g} {:>6.1f} % {:>6.1f} % {:>13} {:>6.1f} %  {:>7.1f}  {}\n",
+    fmt::print(out, "{:<{}}  {:>11.5g} {:>11.5g} {:>+6.1f} % {:>+6.1f} % {:>13} {:>+6.1f} %  {:>7.1f}  {}\n",
                cases[i].name, width, c.internal.run, c.internal.reference,
                100.0 * c.internal.difference() / internal_base, 100.0 * c.kinetic.difference() / c.scale,
                fmt::format("{:.0f}/{:.0f}", c.cycles.run, c.cycles.reference),
