@@ -196,6 +196,7 @@ std::vector<ChildCommand> run_commands(const RegressOptions& options, const std:
   std::vector<ChildCommand> commands;
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const fs::path output = case_output(work, i, cases[i].name);
+    fs::remove_all(output);  // a given work folder may hold an earlier run's files: never judge those
     fs::create_directories(output);
     ChildCommand command{{"run", cases[i].starter.string(), "-o", output.string()}, output / "console.txt"};
     if (options.skip_unknown) command.arguments.push_back("--skip-unknown");
