@@ -7,6 +7,7 @@
 
 #include "app/check.hpp"
 #include "app/exit_codes.hpp"
+#include "app/regress.hpp"
 #include "app/run.hpp"
 #include "crumple/deck/reader.hpp"
 #include "crumple/output/restart_file.hpp"
@@ -46,6 +47,21 @@ int main(int argc, char** argv) {
   run->add_option("--restart", run_options.restart,
                   "Resume from a restart file (NAME.rst.h5, written with /RFILE or when a run is stopped)");
 
+  app::RegressOptions regress_options;
+  CLI::App* regress = cli.add_subcommand(
+      "regress", "Run every deck folder holding a ref.extract under DIR... and compare with the reference");
+  regress->add_option("DIR", regress_options.folders, "Folders searched for deck folders (ref.extract + NAME_0000.rad)")
+      ->required()
+      ->check(CLI::ExistingDirectory);
+  regress->add_option("-j,--jobs", regress_options.jobs, "Runs at once (default: the core count)")
+      ->check(CLI::PositiveNumber);
+  regress->add_option("--timeout", regress_options.timeout_seconds, "Time limit of each run in seconds (default 600)")
+      ->check(CLI::PositiveNumber);
+  regress->add_option("--junit", regress_options.junit, "Write a JUnit XML report to FILE");
+  regress->add_option("--work", regress_options.work,
+                      "Folder for the runs' output directories (default: a temporary folder, removed when all pass)");
+  regress->add_flag("--skip-unknown", regress_options.skip_unknown, "Pass --skip-unknown to each run");
+
   try {
     cli.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -61,6 +77,7 @@ int main(int argc, char** argv) {
       app::print_check_report(deck, std::cout);
       return app::kExitNormal;
     }
+    if (regress->parsed()) return app::regress(regress_options, std::cout, std::cerr);
     run_options.deck = deck_path;
     run_options.skip_unknown = skip_unknown;
     return app::run_deck(run_options, std::cout, std::cerr);

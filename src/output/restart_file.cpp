@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "crumple/output/build_info.hpp"
-#include "output/hdf5_handles.hpp"
+#include "hdf5_support.hpp"
 
 namespace crumple {
 namespace {
@@ -59,7 +59,7 @@ class Writer {
                           H5P_DEFAULT), H5Dclose);
     if (!set.valid() || (size > 0 && H5Dwrite(set.get(), H5Types<T>::memory(), H5S_ALL, H5S_ALL, H5P_DEFAULT,
                                                data) < 0))
-      throw std::runtime_error(fmt::format("cannot write {} into the restart file: {}", name, hdf5::hdf5_error()));
+      throw std::runtime_error(fmt::format("cannot write {} into the restart file: {}", name, hdf5::last_error()));
   }
   hid_t root_;
   Handle links_;
@@ -104,7 +104,7 @@ class Reader {
     if (size == 0) return;
     Handle set(H5Dopen2(root_, name.c_str(), H5P_DEFAULT), H5Dclose);
     if (H5Dread(set.get(), H5Types<T>::memory(), H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0)
-      fail(name, "cannot be read: " + hdf5::hdf5_error());
+      fail(name, "cannot be read: " + hdf5::last_error());
   }
   hid_t root_;
   std::string file_;
@@ -133,7 +133,7 @@ void write_restart(const std::filesystem::path& file, const Model& model, Solver
   {
     Handle h5(H5Fcreate(partial.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
     if (!h5.valid())
-      throw std::runtime_error(fmt::format("cannot create the restart file {}: {}", partial.string(), hdf5::hdf5_error()));
+      throw std::runtime_error(fmt::format("cannot create the restart file {}: {}", partial.string(), hdf5::last_error()));
     write_count(h5.get(), "format", kRestartFormat);
     const auto counts = model_counts(model, state);
     for (std::size_t k = 0; k < counts.size(); ++k) write_count(h5.get(), kCountNames[k], counts[k]);
@@ -151,7 +151,7 @@ ResumeMarks read_restart(const std::filesystem::path& file, const Model& model, 
   const std::string path = file.string();
   if (!std::filesystem::is_regular_file(file)) throw RestartError(fmt::format("restart file {}: no such file", path));
   Handle h5(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
-  if (!h5.valid()) throw RestartError(fmt::format("restart file {}: not an HDF5 file ({})", path, hdf5::hdf5_error()));
+  if (!h5.valid()) throw RestartError(fmt::format("restart file {}: not an HDF5 file ({})", path, hdf5::last_error()));
   if (const long long format = read_count(h5.get(), "format", path); format != kRestartFormat)
     throw RestartError(fmt::format("restart file {}: format {}, this Crumple reads format {}", path, format,
                                    kRestartFormat));

@@ -2,10 +2,10 @@
 // Written with the HDF5 C API through a serial file driver: only the process that owns the file calls it.
 #include "crumple/output/results_file.hpp"
 #include "crumple/solver/element_status.hpp"
-#include "output/hdf5_handles.hpp"
+#include "hdf5_support.hpp"
+#include "xml_text.hpp"
 
 #include <fmt/format.h>
-#include <hdf5.h>
 
 #include <algorithm>
 #include <array>
@@ -20,29 +20,13 @@
 namespace crumple {
 namespace {
 
-using hdf5::Handle;
 using hdf5::H5Types;
-using hdf5::hdf5_error;
+using hdf5::Handle;
 using hdf5::QuietErrors;
 
 constexpr int kFormatVersion = 1;
 constexpr hsize_t kHistoryChunkRows = 512;   // rows per chunk of the 1-D history datasets
 constexpr std::size_t kHistoryBuffer = 256;  // history rows kept in memory before they are appended
-
-std::string xml_escaped(std::string_view s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&apos;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 struct MeshKind {
   ElementKind kind;
@@ -90,7 +74,7 @@ struct ResultsFile::Impl {
   std::size_t pending_rows = 0;
 
   [[noreturn]] void fail(const std::string& what) const {
-    const std::string detail = hdf5_error();
+    const std::string detail = hdf5::last_error();
     throw std::runtime_error("results file " + path.string() + ": " + what + (detail.empty() ? "" : ": " + detail));
   }
   hid_t check(hid_t id, const std::string& what) const {
@@ -568,7 +552,7 @@ ResultsFile::ResultsFile(const std::filesystem::path& path, const Model& model) 
   d.check_status(H5Pset_fclose_degree(fapl.get(), H5F_CLOSE_STRONG), "property list");
   d.file = Handle(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl.get()), H5Fclose);
   if (!d.file.valid()) {
-    const std::string detail = hdf5_error();
+    const std::string detail = hdf5::last_error();
     throw std::runtime_error("cannot create results file " + path.string() + (detail.empty() ? "" : ": " + detail));
   }
   d.open = true;

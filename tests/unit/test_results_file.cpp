@@ -1,6 +1,5 @@
-// NAME.h5 / NAME.xdmf (docs/output-format.md): written through ResultsFile, read back with the HDF5 C API.
+// NAME.h5 / NAME.xdmf (docs/output-format.md): written through ResultsFile, read back with ResultsReader.
 #include <gtest/gtest.h>
-#include <hdf5.h>
 
 #include <cstdlib>
 #include <fstream>
@@ -10,11 +9,10 @@
 #include <vector>
 
 #include "crumple/output/results_file.hpp"
+#include "crumple/output/results_reader.hpp"
 #include "deck_files.hpp"
-#include "h5_reader.hpp"
 
 using namespace crumple;
-using crumple::test::H5Reader;
 using test::I;
 using test::R;
 
@@ -122,14 +120,14 @@ TEST(ResultsFile, WritesMeshFramesAndHistories) {
   const Model& m = d.model;
   const auto path = write_standard(dir, m);
 
-  const H5Reader h5(path);
+  const ResultsReader h5(path);
   // Mesh: initial coordinates, user ids, 0-based connectivity (deck: 1 2 5 4 and 2 3 6 5).
-  EXPECT_EQ(h5.shape("/mesh/coordinates"), (std::vector<hsize_t>{6, 3}));
+  EXPECT_EQ(h5.shape("/mesh/coordinates"), (std::vector<std::size_t>{6, 3}));
   const auto xyz = h5.doubles("/mesh/coordinates");
   EXPECT_DOUBLE_EQ(xyz[3 * 2 + 0], 0.02);
   EXPECT_DOUBLE_EQ(xyz[3 * 4 + 1], 0.01);
   EXPECT_EQ(h5.longs("/mesh/node_ids"), (std::vector<std::int64_t>{1, 2, 3, 4, 5, 6}));
-  EXPECT_EQ(h5.shape("/mesh/shell4/connectivity"), (std::vector<hsize_t>{2, 4}));
+  EXPECT_EQ(h5.shape("/mesh/shell4/connectivity"), (std::vector<std::size_t>{2, 4}));
   EXPECT_EQ(h5.ints("/mesh/shell4/connectivity"), (std::vector<std::int32_t>{0, 1, 4, 3, 1, 2, 5, 4}));
   EXPECT_EQ(h5.longs("/mesh/shell4/ids"), (std::vector<std::int64_t>{1, 2}));
   EXPECT_EQ(h5.ints("/mesh/shell4/part"), (std::vector<std::int32_t>{0, 0}));
@@ -137,16 +135,16 @@ TEST(ResultsFile, WritesMeshFramesAndHistories) {
   EXPECT_EQ(h5.longs("/mesh/parts/ids"), (std::vector<std::int64_t>{1}));
   EXPECT_FALSE(h5.exists("/mesh/shell3"));
   EXPECT_FALSE(h5.exists("/mesh/brick8"));
-  EXPECT_EQ(h5.attribute<std::int32_t>("/", "format_version", H5T_NATIVE_INT32), 1);
+  EXPECT_EQ(h5.attribute<std::int32_t>("/", "format_version"), 1);
 
   // Frames: time and cycle attributes, nodal and shell fields.
   EXPECT_TRUE(h5.exists("/frames/0000/displacement"));
   EXPECT_FALSE(h5.exists("/frames/0002"));
-  EXPECT_DOUBLE_EQ(h5.attribute<double>("/frames/0001", "time", H5T_NATIVE_DOUBLE), 5e-4);
-  EXPECT_EQ(h5.attribute<std::int64_t>("/frames/0001", "cycle", H5T_NATIVE_INT64), 100);
-  EXPECT_EQ(h5.attribute<std::int64_t>("/frames/0000", "cycle", H5T_NATIVE_INT64), 0);
+  EXPECT_DOUBLE_EQ(h5.attribute<double>("/frames/0001", "time"), 5e-4);
+  EXPECT_EQ(h5.attribute<std::int64_t>("/frames/0001", "cycle"), 100);
+  EXPECT_EQ(h5.attribute<std::int64_t>("/frames/0000", "cycle"), 0);
   for (const char* name : {"displacement", "velocity"}) {
-    EXPECT_EQ(h5.shape(std::string("/frames/0001/") + name), (std::vector<hsize_t>{6, 3})) << name;
+    EXPECT_EQ(h5.shape(std::string("/frames/0001/") + name), (std::vector<std::size_t>{6, 3})) << name;
   }
   for (double u : h5.doubles("/frames/0000/displacement")) EXPECT_EQ(u, 0.0);
   const auto u = h5.doubles("/frames/0001/displacement");
@@ -158,7 +156,7 @@ TEST(ResultsFile, WritesMeshFramesAndHistories) {
   EXPECT_DOUBLE_EQ(v[3 * 3 + 1], -1.0);
   EXPECT_DOUBLE_EQ(v[3 * 3 + 2], 0.5);
 
-  EXPECT_EQ(h5.shape("/frames/0001/shell4/stress"), (std::vector<hsize_t>{2, 3}));
+  EXPECT_EQ(h5.shape("/frames/0001/shell4/stress"), (std::vector<std::size_t>{2, 3}));
   const auto stress = h5.doubles("/frames/0001/shell4/stress");
   // Element 2 owns points 3 and 4 (sxx 3e6, 4e6): mean 3.5e6.
   EXPECT_DOUBLE_EQ(stress[0], 1.5e6);
@@ -177,15 +175,15 @@ TEST(ResultsFile, WritesMeshFramesAndHistories) {
   // Histories: 3 rows.
   for (const char* name : {"time", "dt", "internal", "kinetic_translational", "kinetic_rotational", "hourglass",
                            "contact", "external_work", "total"})
-    EXPECT_EQ(h5.shape(std::string("/history/") + name), (std::vector<hsize_t>{3})) << name;
+    EXPECT_EQ(h5.shape(std::string("/history/") + name), (std::vector<std::size_t>{3})) << name;
   EXPECT_EQ(h5.doubles("/history/time"), (std::vector<double>{0.0, 1e-4, 2e-4}));
   EXPECT_EQ(h5.doubles("/history/kinetic_translational"), (std::vector<double>{100.0, 99.0, 98.0}));
   EXPECT_EQ(h5.doubles("/history/total"), (std::vector<double>{100.0, 108.5, 117.0}));
-  EXPECT_EQ(h5.shape("/history/rigid_wall_force"), (std::vector<hsize_t>{3, 3}));
+  EXPECT_EQ(h5.shape("/history/rigid_wall_force"), (std::vector<std::size_t>{3, 3}));
   EXPECT_EQ(h5.doubles("/history/rigid_wall_force"), (std::vector<double>{0, 0, 0, 1, 2, 3, 2, 4, 6}));
-  EXPECT_EQ(h5.shape("/history/node_values"), (std::vector<hsize_t>{3, 6}));
+  EXPECT_EQ(h5.shape("/history/node_values"), (std::vector<std::size_t>{3, 6}));
   EXPECT_DOUBLE_EQ(h5.doubles("/history/node_values")[6 * 2 + 5], 5.0);
-  EXPECT_EQ(h5.shape("/history/rigid_body_values"), (std::vector<hsize_t>{3, 0}));
+  EXPECT_EQ(h5.shape("/history/rigid_body_values"), (std::vector<std::size_t>{3, 0}));
 }
 
 TEST(ResultsFile, XdmfBesideTheFileHasATemporalCollectionOverTheFrames) {
@@ -241,6 +239,28 @@ TEST(ResultsFile, CannotCreateFileNamesThePath) {
   }
 }
 
+TEST(ResultsReader, FailuresNameTheFileAndTheObject) {
+  test::TempDir dir;
+  const Deck d = read_deck(test::write_deck(dir));
+  const auto path = write_standard(dir, d.model);
+  const ResultsReader h5(path);
+  const auto message = [&](auto&& read) {
+    try {
+      read();
+    } catch (const std::runtime_error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(message([&] { h5.doubles("/history/no_such"); }).find(path.string() + ": no dataset /history/no_such"),
+            std::string::npos);
+  EXPECT_NE(message([&] { h5.attribute<double>("/", "no_such"); }).find("no attribute no_such on /"),
+            std::string::npos);
+  const auto missing = dir.path() / "missing.h5";
+  EXPECT_NE(message([&] { ResultsReader r(missing); }).find("results file " + missing.string() + ": cannot open"),
+            std::string::npos);
+}
+
 TEST(ResultsFile, WritingAfterCloseThrowsAndTheDestructorCloses) {
   test::TempDir dir;
   const Deck d = read_deck(test::write_deck(dir));
@@ -258,14 +278,14 @@ TEST(ResultsFile, WritingAfterCloseThrowsAndTheDestructorCloses) {
     file.write_frame(0.0, 0, m, s);
     file.write_history(history_row(0));
   }  // no close(): the destructor closes
-  const H5Reader h5(dir.path() / "B.h5");
-  EXPECT_EQ(h5.shape("/history/time"), (std::vector<hsize_t>{1}));
-  EXPECT_EQ(h5.shape("/history/rigid_wall_force"), (std::vector<hsize_t>{1, 3}));
+  const ResultsReader h5(dir.path() / "B.h5");
+  EXPECT_EQ(h5.shape("/history/time"), (std::vector<std::size_t>{1}));
+  EXPECT_EQ(h5.shape("/history/rigid_wall_force"), (std::vector<std::size_t>{1, 3}));
   EXPECT_TRUE(h5.exists("/frames/0000/shell4/stress"));
-  const H5Reader a(dir.path() / "A.h5");  // no rows, no frames: every history dataset is there, empty
-  EXPECT_EQ(a.shape("/history/time"), (std::vector<hsize_t>{0}));
-  EXPECT_EQ(a.shape("/history/node_values"), (std::vector<hsize_t>{0, 0}));
-  EXPECT_EQ(a.shape("/mesh/shell4/connectivity"), (std::vector<hsize_t>{2, 4}));
+  const ResultsReader a(dir.path() / "A.h5");  // no rows, no frames: every history dataset is there, empty
+  EXPECT_EQ(a.shape("/history/time"), (std::vector<std::size_t>{0}));
+  EXPECT_EQ(a.shape("/history/node_values"), (std::vector<std::size_t>{0, 0}));
+  EXPECT_EQ(a.shape("/mesh/shell4/connectivity"), (std::vector<std::size_t>{2, 4}));
 }
 
 TEST(ResultsFile, ManyHistoryRowsAreAllAppended) {
@@ -280,7 +300,7 @@ TEST(ResultsFile, ManyHistoryRowsAreAllAppended) {
       if (k == 300) file.write_frame(0.03, 300, d.model, plate_state(d.model, 1));
     }
   }
-  const H5Reader h5(path);
+  const ResultsReader h5(path);
   const auto time = h5.doubles("/history/time");
   ASSERT_EQ(time.size(), static_cast<std::size_t>(rows));
   for (int k = 0; k < rows; ++k) EXPECT_DOUBLE_EQ(time[static_cast<std::size_t>(k)], 1e-4 * k);
@@ -339,7 +359,7 @@ TEST(ResultsFile, MidSurfaceStressIsWeightedByTheIntegrationRuleWhenTheStateHasI
     s.shell_groups[0].membrane_weight = weight;
     file.write_frame(1e-4, 1, m, s);
   }
-  const H5Reader h5(path);
+  const ResultsReader h5(path);
   EXPECT_DOUBLE_EQ(h5.doubles("/frames/0000/shell4/stress")[0], 0.25 * 1e6 + 0.75 * 2e6);
 }
 
@@ -362,15 +382,15 @@ TEST(ResultsFile, ShellsOfBothKindsAreWrittenAndGiveASpatialCollectionPerFrame) 
     s.shells3.deleted[0] = 1;
     file.write_frame(0.0, 0, m, s);
   }
-  const H5Reader h5(path);
-  EXPECT_EQ(h5.shape("/mesh/shell3/connectivity"), (std::vector<hsize_t>{1, 3}));
+  const ResultsReader h5(path);
+  EXPECT_EQ(h5.shape("/mesh/shell3/connectivity"), (std::vector<std::size_t>{1, 3}));
   EXPECT_EQ(h5.ints("/mesh/shell3/connectivity"), (std::vector<std::int32_t>{2, 6, 5}));
   EXPECT_EQ(h5.longs("/mesh/shell3/ids"), (std::vector<std::int64_t>{9}));
-  EXPECT_EQ(h5.shape("/frames/0000/shell3/stress"), (std::vector<hsize_t>{1, 3}));
+  EXPECT_EQ(h5.shape("/frames/0000/shell3/stress"), (std::vector<std::size_t>{1, 3}));
   EXPECT_DOUBLE_EQ(h5.doubles("/frames/0000/shell3/stress")[0], 5e6);
   EXPECT_DOUBLE_EQ(h5.doubles("/frames/0000/shell3/plastic_strain")[0], 0.3);
   EXPECT_EQ(h5.bytes("/frames/0000/shell3/deleted"), (std::vector<std::uint8_t>{1}));
-  EXPECT_EQ(h5.shape("/frames/0000/shell4/stress"), (std::vector<hsize_t>{2, 3}));
+  EXPECT_EQ(h5.shape("/frames/0000/shell4/stress"), (std::vector<std::size_t>{2, 3}));
   const std::string text = read_text(dir.path() / "TEST.xdmf");
   EXPECT_NE(text.find("CollectionType=\"Spatial\""), std::string::npos);
   EXPECT_NE(text.find("TopologyType=\"Triangle\" NumberOfElements=\"1\""), std::string::npos);

@@ -15,7 +15,7 @@
 #include "crumple/solver/snapshot.hpp"
 #include "crumple/solver/solver_state.hpp"
 #include "deck_files.hpp"
-#include "h5_reader.hpp"
+#include "crumple/output/results_reader.hpp"
 
 namespace crumple::test {
 namespace {
@@ -90,7 +90,7 @@ TEST_P(Restart, ResumedRunEndsBitwiseWhereTheUninterruptedRunEnds) {
   for (const auto& [name, bytes] : expected) EXPECT_TRUE(found.at(name) == bytes) << "field " << name << " differs";
 
   // The histories written after the restart are the uninterrupted run's rows from the same time on.
-  const H5Reader a(whole.path() / "RUN.h5"), b(second.path() / "RUN.h5");
+  const ResultsReader a(whole.path() / "RUN.h5"), b(second.path() / "RUN.h5");
   const std::vector<double> ta = a.doubles("/history/time"), tb = b.doubles("/history/time");
   ASSERT_FALSE(tb.empty());
   std::size_t offset = 0;

@@ -1,11 +1,10 @@
 #pragma once
-// The HDF5 C API with owned identifiers, quiet error stacks turned into messages, and the file and memory types of
-// the element types Crumple writes. Shared by the results file and the restart file (src/output/).
+// The output layer's HDF5 plumbing, shared by the results file's writer and its reader (results_file.cpp,
+// results_reader.cpp): owned identifiers, quiet error stacks turned into messages, and the types written.
 #include <hdf5.h>
 
 #include <cstdint>
 #include <string>
-#include <string_view>
 #include <utility>
 
 namespace crumple::hdf5 {
@@ -61,25 +60,9 @@ class QuietErrors {
   void* data_ = nullptr;
 };
 
-inline herr_t innermost_error(unsigned, const H5E_error2_t* error, void* client) {
-  if (error != nullptr && error->desc != nullptr) *static_cast<std::string*>(client) = error->desc;
-  return 0;
-}
-
 // The most specific description on the current HDF5 error stack ("No such file or directory" rather than
-// "unable to create file"), or an empty string.
-inline std::string hdf5_error() {
-  std::string desc;
-  H5Ewalk2(H5E_DEFAULT, H5E_WALK_DOWNWARD, innermost_error, &desc);
-  H5Eclear2(H5E_DEFAULT);
-  constexpr std::string_view marker = "error message = '";
-  if (const auto at = desc.find(marker); at != std::string::npos) {
-    const auto begin = at + marker.size();
-    const auto end = desc.find('\'', begin);
-    if (end != std::string::npos) return desc.substr(begin, end - begin);
-  }
-  return desc;
-}
+// "unable to create file"), or an empty string. Clears the stack.
+std::string last_error();
 
 // Memory and file types of the element types written.
 template <class T>
@@ -108,9 +91,8 @@ struct H5Types<std::uint8_t> {
   static hid_t file() { return H5T_STD_U8LE; }
   static constexpr const char* xdmf = R"(NumberType="UChar" Precision="1")";
 };
-
 template <>
-struct H5Types<long long> {
+struct H5Types<long long> {  // a type of its own beside std::int64_t (long) on LP64
   static hid_t memory() { return H5T_NATIVE_LLONG; }
   static hid_t file() { return H5T_STD_I64LE; }
   static constexpr const char* xdmf = R"(NumberType="Int" Precision="8")";
