@@ -45,7 +45,7 @@ int main(int argc, char** argv) {
   run->add_option("-o,--output", run_options.output_directory, "Output directory (default: current directory)");
   run->add_flag("--skip-unknown", skip_unknown, skip_help);
   run->add_option("--restart", run_options.restart,
-                  "Resume from a restart file (NAME.rst.h5, written with /RFILE or when a run is stopped)");
+                  "Resume from a restart file (NAME.rst, written with /RFILE or when a run is stopped)");
 
   app::RegressOptions regress_options;
   CLI::App* regress = cli.add_subcommand(

@@ -12,7 +12,7 @@ struct RunOptions {
   std::filesystem::path deck;
   std::filesystem::path output_directory = ".";
   bool skip_unknown = false;
-  std::filesystem::path restart;  // --restart FILE: resume the snapshot of a NAME.rst.h5 (empty: start at t = 0)
+  std::filesystem::path restart;  // --restart FILE: resume the snapshot of a NAME.rst (empty: start at t = 0)
 };
 
 // Runs every engine deck of `deck` in order (NAME_0001.rad, then the continued runs NAME_0002.rad...), each from

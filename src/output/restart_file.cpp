@@ -1,4 +1,4 @@
-// NAME.rst.h5 (docs/output-format.md, "Restart file"): one dataset per field of the snapshot (solver/snapshot.hpp),
+// NAME.rst (docs/output-format.md, "Restart file"): one dataset per field of the snapshot (solver/snapshot.hpp),
 // under /state, and the model's counts as attributes of the root to refuse a file written for another deck.
 #include "crumple/output/restart_file.hpp"
 

@@ -103,8 +103,8 @@ void setup_shells(const Model& m, SolverState& s, ElementKind kind) {
     total_points += static_cast<std::size_t>(group.end - group.begin) * static_cast<std::size_t>(sections * np);
     for (std::int32_t e = group.begin; e < group.end; ++e) {
       st.thickness[static_cast<std::size_t>(e)] = prop.shell.thickness;
-      // Lumped rotational inertia of the shell's nodes: (m/n) (t^2 + A)/12 (docs/theory/shell4.md, eq. S-8),
-      // large enough that rotations never control the time step.
+      // Lumped rotational inertia of the shell's nodes: (m/n) (t^2/12 + A/9) (docs/theory/shell4.md, eq. S-8),
+      // large enough that the rotations stay stable at the element step.
       const double mass = element_mass(m, kind, static_cast<std::size_t>(e));
       st.mass[static_cast<std::size_t>(e)] = mass;
       const std::int32_t* nodes = table.nodes_of(static_cast<std::size_t>(e));

@@ -110,7 +110,8 @@ TEST(Shell4Hourglass, Ishell1And2DampTheirRotationModes) {
 
 // The damper never reverses the motion it resists (eq. S-20): at a rotation rate where C hr rho t^2 A q^2 would
 // exceed it, the moment is the one that stops the mode within the step on the element's share of the nodal
-// inertia, I |q| / (|g|^2 dt) with I = rho t A (t^2 + A) / 48 (eq. S-8) and |g|^2 = |h|^2 = 4 on the rectangle.
+// inertia, I |q| / (|g|^2 dt) with I = rho t A (t^2 / 12 + A / 9) / 4 (eq. S-8) and |g|^2 = |h|^2 = 4 on the
+// rectangle.
 TEST(Shell4Hourglass, RotationDampingStopsButNeverReversesTheMode) {
   constexpr double h[4] = {1, -1, 1, -1};
   const double t = 0.01, area = 0.02, dt = 1e-3, omega = 1e4;
@@ -119,7 +120,7 @@ TEST(Shell4Hourglass, RotationDampingStopsButNeverReversesTheMode) {
   el.p.zeta = el.zeta, el.p.membrane_weight = el.wn, el.p.bending_weight = el.wb;
   for (std::size_t k = 0; k < 4; ++k) el.nodes.wx[k] = h[k] * omega;
   shell4_forces(el.table, el.group, el.p, el.nodes, el.state, dt);
-  const double inertia = kRho * t * area * (t * t + area) / 48.0, q = 4.0 * omega;
+  const double inertia = kRho * t * area * (t * t / 12.0 + area / 9.0) / 4.0, q = 4.0 * omega;
   const double viscous = shell_hourglass::kRotationHourglassViscosity * 0.01 * kRho * t * t * area * q * q;
   const double limit = inertia * q / (4.0 * dt);
   ASSERT_GT(viscous, 10.0 * limit);

@@ -20,7 +20,8 @@ TEST(ContactRemedies, WithoutRemedyTheStepCollapses) {
   const ImpactResult r = plate_impact(kSpeed, stiff(), "", 1000000);
   ASSERT_EQ(r.run.summary.status, RunStatus::Normal) << r.run.summary.message;
   EXPECT_LT(r.smallest_dt, 0.5 * kDtMin);
-  std::printf("[no remedy] cycles %lld  smallest dt %.3e\n", r.run.summary.cycles, r.smallest_dt);
+  std::printf("[no remedy] cycles %lld  smallest dt %.3e  energy error %.3f %%\n", r.run.summary.cycles, r.smallest_dt,
+              r.run.summary.energy.error_percent);
 }
 
 // /DT/INTER/DEL: pairs whose step would fall below dtmin are released (the plates pass through where released).
@@ -48,6 +49,10 @@ TEST(ContactRemedies, CardDtminActsAsDtInterDel) {
 // moves with its node, and its kinetic energy 1/2 dm |v|^2 at the node's speed when it was added, created by the
 // scaling, is the whole energy error (most of it comes at the approach speed, some once the nodes are in the gap).
 // Mass scaling is for small corrections; dtmin = 3e-7 s already needs half the plate's mass with this stiffness.
+// The rest of the error is the explicit integration of the impact itself, which the other runs of this plate
+// measure (printed): +0.56 % without a remedy (at 1.3e-7 s), -1.27 % with the gap x 4, -0.21 % with Stfac 10
+// (with the nodal rotational inertia of S-8; +0.92 %, -1.08 %, -0.04 % with the one before): the error and the
+// added mass's energy agree within that spread, 2 % of the plate's kinetic energy.
 TEST(ContactRemedies, DtInterCstAddsMassAndKeepsTheContact) {
   constexpr double dtmin = 3e-7;
   const ImpactResult r = plate_impact(kSpeed, stiff(), "/DT/INTER/CST\n0.9 3e-7\n", 1000000);
@@ -59,7 +64,7 @@ TEST(ContactRemedies, DtInterCstAddsMassAndKeepsTheContact) {
   const double plate_kinetic = 0.5 * 7800.0 * kPlateThickness * 0.01 * kSpeed * kSpeed;
   EXPECT_NEAR(r.added_mass_energy, 0.5 * r.run.summary.mass_added * kSpeed * kSpeed,
               0.5 * 0.5 * r.run.summary.mass_added * kSpeed * kSpeed);  // at about the approach speed
-  EXPECT_NEAR(r.run.summary.energy.error_percent, 100.0 * r.added_mass_energy / plate_kinetic, 1.0);
+  EXPECT_NEAR(r.run.summary.energy.error_percent, 100.0 * r.added_mass_energy / plate_kinetic, 2.0);
   std::printf("[/DT/INTER/CST] cycles %lld  smallest dt %.3e  added mass %.4g kg (its kinetic energy %.3f %% of the "
               "plate's)  max p/g %.3f  energy error %.3f %%\n",
               r.run.summary.cycles, r.smallest_dt, r.run.summary.mass_added, 100.0 * r.added_mass_energy / plate_kinetic,

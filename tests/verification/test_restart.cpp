@@ -1,5 +1,5 @@
 // Restart (docs/theory/time-loop.md, "Restart"): a run stopped after k cycles with its snapshot written
-// (NAME.rst.h5), then resumed with `--restart`, must end bitwise where the uninterrupted run ends: every field of
+// (NAME.rst), then resumed with `--restart`, must end bitwise where the uninterrupted run ends: every field of
 // the snapshot (positions, velocities, stresses, plastic strains, hourglass stresses, contact pairs and their
 // friction history, rigid bodies, walls, energies, cycle count) and every history row written after the restart.
 // The decks cover shells with a rigid body and a rigid wall (the example tube), TYPE7 contact with friction and a
@@ -79,13 +79,13 @@ TEST_P(Restart, ResumedRunEndsBitwiseWhereTheUninterruptedRunEnds) {
   const RunSummary stopped = run(c.starter, first, c.stop_cycle);
   ASSERT_EQ(stopped.cycles, c.stop_cycle);
   ASSERT_LT(stopped.time, uninterrupted.time);
-  const RunSummary resumed = run(c.starter, second, -1, first.path() / "RUN.rst.h5");
+  const RunSummary resumed = run(c.starter, second, -1, first.path() / "RUN.rst");
   ASSERT_EQ(resumed.status, RunStatus::Normal) << resumed.message;
   EXPECT_EQ(resumed.cycles_total, uninterrupted.cycles_total);
 
   const Deck deck = read_deck(c.starter);
-  const auto expected = snapshot_fields(deck.model, whole.path() / "RUN.rst.h5");
-  const auto found = snapshot_fields(deck.model, second.path() / "RUN.rst.h5");
+  const auto expected = snapshot_fields(deck.model, whole.path() / "RUN.rst");
+  const auto found = snapshot_fields(deck.model, second.path() / "RUN.rst");
   ASSERT_EQ(expected.size(), found.size());
   for (const auto& [name, bytes] : expected) EXPECT_TRUE(found.at(name) == bytes) << "field " << name << " differs";
 
@@ -121,12 +121,12 @@ TEST(Restart, FileOfAnotherModelIsRefusedWithItsCounts) {
   std::vector<std::string> notes;
   SolverState state = initial_state(other.model, notes);
   try {
-    read_restart(dir.path() / "RUN.rst.h5", other.model, state);
+    read_restart(dir.path() / "RUN.rst", other.model, state);
     FAIL() << "a restart file of another model was read";
   } catch (const RestartError& e) {
     EXPECT_NE(std::string(e.what()).find("written for another model"), std::string::npos) << e.what();
   }
-  EXPECT_THROW(read_restart(dir.path() / "none.rst.h5", other.model, state), RestartError);
+  EXPECT_THROW(read_restart(dir.path() / "none.rst", other.model, state), RestartError);
   EXPECT_THROW(read_restart(dir.path() / "RUN.out", other.model, state), RestartError);
 }
 

@@ -83,9 +83,9 @@ bool shell_switch_to_small_strain(const ElementTable& table, const ShellGroupPar
                                   ShellState& state, std::int32_t element);
 
 // Lumped rotational inertia an element of mass `element_mass` gives each of its `nodes` nodes [M L^2]:
-// (m / n) (t^2 + A) / 12 (docs/theory/shell4.md, eq. S-8).
+// (m / n) (t^2 / 12 + A / 9) (docs/theory/shell4.md, eq. S-8), the reference solver's.
 inline double shell_node_rotational_inertia(double element_mass, double thickness, double area, int nodes) {
-  return element_mass / nodes * (thickness * thickness + area) / 12.0;
+  return element_mass / nodes * (thickness * thickness / 12.0 + area / 9.0);
 }
 
 // Through-thickness rule for n = 1..10 points (docs/theory/shell4.md, eq. S-4): n equally spaced points from the

@@ -1,5 +1,5 @@
 #pragma once
-// NAME.rst.h5: the run's last snapshot (docs/output-format.md, "Restart file"). Written at the /RFILE interval, at
+// NAME.rst: the run's last snapshot (docs/output-format.md, "Restart file"). Written at the /RFILE interval, at
 // the end of the run and when it is stopped; `crumple run DECK --restart FILE` goes on from it, with results
 // bit-identical to the run it continues.
 #include <filesystem>

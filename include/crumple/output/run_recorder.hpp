@@ -45,9 +45,9 @@ class RunRecorder {
   // The end of an engine deck: the listing's closing lines (termination, deletions, added mass, interfaces,
   // cycles, time profile).
   void finish(const SolverState& state, const RunEvents& events, const PhaseTimes& phases, double wall_seconds);
-  // The snapshot to NAME.rst.h5 beside the listing (restart_file.hpp), with a listing line.
+  // The snapshot to NAME.rst beside the listing (restart_file.hpp), with a listing line.
   void restart(SolverState& state, ResumeMarks& marks);
-  std::filesystem::path restart_file() const { return directory_ / (name_ + ".rst.h5"); }
+  std::filesystem::path restart_file() const { return directory_ / (name_ + ".rst"); }
   // The end of the whole run: the last good state as a frame when it stopped early, the results file closed.
   void close(const SolverState& state, bool stopped_early);
   const std::string& name() const { return name_; }

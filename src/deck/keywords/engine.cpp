@@ -378,7 +378,7 @@ void read_rfile(CardReader& reader, DeckContext& context) {
   reader.finish();
   run.restart_every = every;
   run.restart_sets = static_cast<int>(sets);
-  // Crumple writes the snapshot into NAME.rst.h5 (docs/output-format.md, "Restart file"); it keeps the last one.
+  // Crumple writes the snapshot into NAME.rst (docs/output-format.md, "Restart file"); it keeps the last one.
   if (sets > 1)
     output_only(reader, context, fmt::format("{} rotating restart sets asked: Crumple keeps the last snapshot only", sets));
 }
