@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "app/check.hpp"
+#include "app/console.hpp"
 #include "app/exit_codes.hpp"
 #include "app/run.hpp"
 #include "crumple/deck/reader.hpp"
@@ -29,6 +30,7 @@ int main(int argc, char** argv) {
 
   std::string deck_path;
   bool skip_unknown = false;
+  bool quiet = false;
   app::RunOptions run_options;
 
   CLI::App* check = cli.add_subcommand("check", "Read and validate a deck and print a model summary");
@@ -42,6 +44,9 @@ int main(int argc, char** argv) {
   run->add_option("DECK", deck_path, "Starter deck (NAME_0000.rad) with its engine deck beside it")->required();
   run->add_option("-o,--output", run_options.output_directory, "Output directory (default: current directory)");
   run->add_flag("--skip-unknown", skip_unknown, skip_help);
+  run->add_flag("-q,--quiet", quiet,
+                "No progress on the console (by default a line updated once a second on a terminal, otherwise "
+                "printed every 5 s)");
 
   try {
     cli.parse(argc, argv);
@@ -60,6 +65,7 @@ int main(int argc, char** argv) {
     }
     run_options.deck = deck_path;
     run_options.skip_unknown = skip_unknown;
+    run_options.progress = app::stdout_progress(quiet);
     return app::run_deck(run_options, std::cout, std::cerr);
   } catch (const DeckErrors& e) {
     return report_deck_errors(e.errors());

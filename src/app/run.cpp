@@ -2,6 +2,7 @@
 
 #include <fmt/ostream.h>
 
+#include "app/console.hpp"
 #include "app/exit_codes.hpp"
 #include "crumple/output/run_recorder.hpp"
 #include "crumple/solver/solver.hpp"
@@ -47,11 +48,19 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
   solver.name = deck.model.run.run_name.empty() ? deck.model.run_name : deck.model.run.run_name;
   solver.output_directory = options.output_directory;
   for (const SkippedOption& o : deck.report.skipped_options) solver.approximations.push_back(o.text());
+  solver.deck = options.deck;
+  solver.progress = options.progress;
+  const StopOnSignals signals;
+  solver.stop_request = &signals.request();
   const RunSummary summary = run_engine_decks(deck, solver, out);
   write_summary(summary, options.output_directory / (solver.name + ".summary.json"));
   fmt::print(out, "crumple run {}: {} after {} cycles, time {:.6g}, energy error {:.3g} %, {:.2f} s\n", solver.name,
              status_name(summary.status), summary.cycles, summary.time, summary.energy.error_percent,
              summary.wall_seconds);
+  if (summary.stopped_on_request) {
+    fmt::print(err, "crumple: {}; the listing, the results and the summary end there\n", summary.message);
+    return kExitStopped;
+  }
   if (summary.status != RunStatus::Normal) {
     fmt::print(err, "crumple: run ended abnormally: {}\n", summary.message);
     return kExitRunFailed;

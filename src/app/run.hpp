@@ -12,6 +12,7 @@ struct RunOptions {
   std::filesystem::path deck;
   std::filesystem::path output_directory = ".";
   bool skip_unknown = false;
+  ProgressOptions progress;  // console progress (console.hpp: stdout_progress)
 };
 
 // Runs every engine deck of `deck` in order (NAME_0001.rad, then the continued runs NAME_0002.rad...), each from
@@ -21,7 +22,8 @@ struct RunOptions {
 RunSummary run_engine_decks(Deck& deck, const SolverOptions& options, std::ostream& console);
 
 // `crumple run`: reads the deck and runs it, writing NAME.h5, NAME.out and NAME.summary.json into the output
-// directory. Returns the process exit code (exit_codes.hpp). Deck errors propagate as exceptions.
+// directory; SIGINT and SIGTERM stop the run at the end of the cycle, with its files written to there. Returns
+// the process exit code (exit_codes.hpp). Deck errors propagate as exceptions.
 int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err);
 
 }  // namespace crumple::app

@@ -29,7 +29,8 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunReco
   using namespace solver;
   const auto started = std::chrono::steady_clock::now();
   switch_rigid_bodies(m, s);
-  recorder.start(notes, options.approximations, console);
+  update_kinetic_energy(s);  // for the listing's row of cycle 0
+  recorder.start(s, {options.deck, options.approximations, options.progress}, notes, console);
   RunEvents events;
   OutputSchedule schedule(m.run, s.time, options.max_cycles);
   VelocityScratch scratch(s.nodes.size());
@@ -66,8 +67,9 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunReco
     clock.lap(phases.update);
 
     const MonitorDue due = outputs_due(m, s, schedule, dt_next);
+    const bool show_progress = recorder.progress_due();
+    if (due.energies() || show_progress) update_kinetic_energy(s);
     if (due.energies()) {
-      update_kinetic_energy(s);
       if (due.print) recorder.row(s, dt_next, control);
       check_run_limits(m, s, events);
       if (!events.pending.empty()) recorder.events(events);
@@ -79,12 +81,13 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunReco
       if (options.observer) options.observer(s);
     }
     advance_schedule(m, s, due, schedule);
+    if (show_progress) recorder.progress(s, dt_next, control);
     clock.lap(phases.output);
-    if (due.finished) break;
+    if (due.finished || stop_requested(options.stop_request, s, events)) break;
   }
   update_kinetic_energy(s);
   recorder.events(events);
-  recorder.row(s, dt_next, control);
+  recorder.row(s, dt_next, control);  // the cycle the run ended at, unless its row is printed already
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   recorder.finish(s, events, phases, wall);
   RunSummary summary = summarize_run(m, recorder.name(), s, events, phases, dt_next, wall);
