@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "app/check.hpp"
+#include "app/console.hpp"
 #include "app/exit_codes.hpp"
 #include "app/regress.hpp"
 #include "app/run.hpp"
@@ -31,6 +32,7 @@ int main(int argc, char** argv) {
 
   std::string deck_path;
   bool skip_unknown = false;
+  bool quiet = false;
   app::RunOptions run_options;
 
   CLI::App* check = cli.add_subcommand("check", "Read and validate a deck and print a model summary");
@@ -61,6 +63,9 @@ int main(int argc, char** argv) {
   regress->add_option("--work", regress_options.work,
                       "Folder for the runs' output directories (default: a temporary folder, removed when all pass)");
   regress->add_flag("--skip-unknown", regress_options.skip_unknown, "Pass --skip-unknown to each run");
+  run->add_flag("-q,--quiet", quiet,
+                "No progress on the console (by default a line updated once a second on a terminal, otherwise "
+                "printed every 5 s)");
 
   try {
     cli.parse(argc, argv);
@@ -80,6 +85,7 @@ int main(int argc, char** argv) {
     if (regress->parsed()) return app::regress(regress_options, std::cout, std::cerr);
     run_options.deck = deck_path;
     run_options.skip_unknown = skip_unknown;
+    run_options.progress = app::stdout_progress(quiet);
     return app::run_deck(run_options, std::cout, std::cerr);
   } catch (const DeckErrors& e) {
     return report_deck_errors(e.errors());

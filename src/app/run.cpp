@@ -9,6 +9,7 @@
 #include <cstring>
 #include <optional>
 
+#include "app/console.hpp"
 #include "app/exit_codes.hpp"
 #include "crumple/output/restart_file.hpp"
 #include "crumple/output/run_recorder.hpp"
@@ -99,6 +100,10 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
   solver.name = deck.model.run.run_name.empty() ? deck.model.run_name : deck.model.run.run_name;
   solver.output_directory = options.output_directory;
   for (const SkippedOption& o : deck.report.skipped_options) solver.approximations.push_back(o.text());
+  solver.deck = options.deck;
+  solver.progress = options.progress;
+  const StopOnSignals signals;
+  solver.stop_request = &signals.request();
   RunSummary summary = run_engine_decks(deck, solver, out, options.restart);
   summary.date = started;
   summary.deck_files = describe_deck_files(deck.report.files);
@@ -106,6 +111,10 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
   fmt::print(out, "crumple run {}: {} after {} cycles, time {:.6g}, energy error {:.3g} %, {:.2f} s\n", solver.name,
              status_name(summary.status), summary.cycles, summary.time, summary.energy.error_percent,
              summary.wall_seconds);
+  if (summary.stopped_on_request) {
+    fmt::print(err, "crumple: {}; the listing, the results and the summary end there\n", summary.message);
+    return kExitStopped;
+  }
   if (summary.status != RunStatus::Normal) {
     fmt::print(err, "crumple: run ended abnormally: {}\n", summary.message);
     return kExitRunFailed;

@@ -13,6 +13,7 @@ struct RunOptions {
   std::filesystem::path output_directory = ".";
   bool skip_unknown = false;
   std::filesystem::path restart;  // --restart FILE: resume the snapshot of a NAME.rst (empty: start at t = 0)
+  ProgressOptions progress;  // console progress (console.hpp: stdout_progress)
 };
 
 // Runs every engine deck of `deck` in order (NAME_0001.rad, then the continued runs NAME_0002.rad...), each from
@@ -24,7 +25,8 @@ RunSummary run_engine_decks(Deck& deck, const SolverOptions& options, std::ostre
                             const std::filesystem::path& restart = {});
 
 // `crumple run`: reads the deck and runs it, writing NAME.h5, NAME.out and NAME.summary.json into the output
-// directory. Returns the process exit code (exit_codes.hpp). Deck errors propagate as exceptions.
+// directory; SIGINT and SIGTERM stop the run at the end of the cycle, with its files written to there. Returns
+// the process exit code (exit_codes.hpp). Deck errors propagate as exceptions.
 int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err);
 
 // How many MPI ranks the launcher started (1 without mpirun), from the environment Open MPI and MPICH set.

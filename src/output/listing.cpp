@@ -10,7 +10,9 @@ Listing::Listing(const std::filesystem::path& path) : out_(path) {
   if (!out_) throw std::runtime_error("cannot write the listing " + path.string());
 }
 
-void Listing::line(const std::string& text) { out_ << text << '\n'; }
+// Every line and row is flushed as it is written, so that the listing can be followed while the run goes
+// (`tail -f NAME.out`): a row is printed every /PRINT cycles, and a write of one line costs little next to them.
+void Listing::line(const std::string& text) { out_ << text << '\n' << std::flush; }
 
 void Listing::table_header() {
   out_ << fmt::format("{:>9} {:>11} {:>11} {:<16} {:>7} {:>11} {:>11} {:>11} {:>11} {:>11} {:>11} {:>9} {:>11} {:>11}\n",
@@ -24,6 +26,7 @@ void Listing::row(const ListingRow& r) {
       "{:>9.2e} {:>11.4e} {:>11.4e}\n",
       r.cycle, r.time, r.dt, r.controlling, r.error_percent, r.internal, r.kinetic_translational,
       r.kinetic_rotational, r.external_work, r.hourglass, r.contact, r.mass_error, r.total_mass, r.added_mass);
+  out_.flush();
 }
 
 }  // namespace crumple

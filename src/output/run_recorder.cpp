@@ -1,10 +1,13 @@
 #include "crumple/output/run_recorder.hpp"
 
+#include <fmt/chrono.h>
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 
 #include <algorithm>
 #include <cmath>
+#include <csignal>
+#include <ctime>
 
 #include "crumple/output/build_info.hpp"
 #include "crumple/output/restart_file.hpp"
@@ -31,6 +34,19 @@ double total_mass(const SolverState& s) {
   double total = 0.0;
   for (double mass : s.nodes.mass) total += mass;
   return total;
+}
+
+std::string signal_name(int signal) {
+  if (signal == SIGINT) return "SIGINT";
+  if (signal == SIGTERM) return "SIGTERM";
+  return fmt::format("signal {}", signal);
+}
+
+// The listing's closing verdict.
+std::string termination(const StopReason& stop, const Model& m) {
+  if (!stop.stopped()) return "NORMAL TERMINATION";
+  if (stop.requested()) return "RUN STOPPED ON REQUEST: " + describe(stop, m);
+  return "ERROR TERMINATION: " + describe(stop, m);
 }
 
 }  // namespace
@@ -81,6 +97,8 @@ std::string describe(const StopReason& r, const Model& m) {
                          r.minimum, r.cycle);
     case K::EnergyErrorLimit:
       return fmt::format("/STOP: energy error {:.3g} % exceeds the limit at cycle {}", 100.0 * r.value, r.cycle);
+    case K::Requested:
+      return fmt::format("stopped by {} at the end of cycle {} (time {:.6g})", signal_name(r.index), r.cycle, r.time);
   }
   return "unknown stop";
 }
@@ -113,7 +131,8 @@ std::string describe(const RunEvent& e, const Model& m) {
 }
 
 RunStatus status_of(const StopReason& stop) {
-  return !stop.stopped() ? RunStatus::Normal : stop.is_limit() ? RunStatus::Stopped : RunStatus::Error;
+  if (!stop.stopped()) return RunStatus::Normal;
+  return stop.is_limit() || stop.requested() ? RunStatus::Stopped : RunStatus::Error;
 }
 
 RunRecorder::RunRecorder(const Model& model, const std::filesystem::path& directory, const std::string& name,
@@ -122,21 +141,45 @@ RunRecorder::RunRecorder(const Model& model, const std::filesystem::path& direct
   if (write_results) results_.emplace(directory / (name + ".h5"), model);
 }
 
-void RunRecorder::start(const std::vector<std::string>& notes, const std::vector<std::string>& approximations,
+void RunRecorder::start(const SolverState& s, const RunStart& run, const std::vector<std::string>& notes,
                         std::ostream& console) {
-  const Model& m = model_;
   console_ = &console;
-  listing_.line(fmt::format("Crumple explicit run {}  ({})", name_, m.title));
-  listing_.line(fmt::format("nodes {}  4-node shells {}  element groups {}  end time {:g}", m.nodes.size(),
-                            m.elements[0].size(), m.element_groups.size(), m.run.end_time));
+  if (engine_decks_ == 0) {
+    header(run);
+    progress_options_ = run.progress;
+    progress_clock_ = ProgressClock(run.progress);
+  }
+  ++engine_decks_;
+  listing_.line(fmt::format("ENGINE DECK {}: end time {:g}", engine_decks_, model_.run.end_time));
   for (const auto& note : notes) listing_.line("NOTE: " + note);
-  for (const auto& note : notes) fmt::print(console, "note: {}\n", note);
-  if (!approximations.empty()) listing_.line("OPTIONS SKIPPED OR APPROXIMATED:");
-  for (const auto& option : approximations) listing_.line("  " + option);
+  for (const auto& note : notes) console_line("note: " + note);
   listing_.table_header();
+  last_row_cycle_ = -1;
+  row(s, s.dt, StepControl{});
+  deck_start_time_ = s.time;
+  deck_start_wall_ = progress_clock_.elapsed_seconds();
+}
+
+void RunRecorder::header(const RunStart& run) {
+  const Model& m = model_;
+  const auto count = [&m](ElementKind k) { return m.elements[static_cast<int>(k)].size(); };
+  listing_.line(fmt::format("Crumple {} explicit run {}  ({})", CRUMPLE_VERSION, name_, m.title));
+  listing_.line(fmt::format("STARTED {:%Y-%m-%d %H:%M:%S}", fmt::localtime(std::time(nullptr))));
+  if (!run.deck.empty()) listing_.line("DECK " + run.deck.string());
+  listing_.line(fmt::format("WORKING UNITS (SI size of one unit): mass {:g} kg  length {:g} m  time {:g} s",
+                            m.units.work[0], m.units.work[1], m.units.work[2]));
+  listing_.line(fmt::format("nodes {}  4-node shells {}  3-node shells {}  8-node bricks {}  element groups {}  "
+                            "parts {}  interfaces {}  rigid bodies {}  rigid walls {}",
+                            m.nodes.size(), count(ElementKind::Shell4), count(ElementKind::Shell3),
+                            count(ElementKind::Brick8), m.element_groups.size(), m.parts.size(),
+                            m.type7_interfaces.size(), m.rigid_bodies.size(), m.rigid_walls.size()));
+  if (!run.approximations.empty()) listing_.line("OPTIONS SKIPPED OR APPROXIMATED:");
+  for (const auto& option : run.approximations) listing_.line("  " + option);
 }
 
 void RunRecorder::row(const SolverState& s, double dt, const StepControl& control) {
+  if (s.cycle == last_row_cycle_) return;
+  last_row_cycle_ = s.cycle;
   const EnergyBalanceState& e = s.energy;
   const double mass = total_mass(s);
   listing_.row({s.cycle, s.time, dt, describe(control, model_), e.error_percent(), e.internal,
@@ -148,7 +191,7 @@ void RunRecorder::events(RunEvents& events) {
   for (const RunEvent& e : events.pending) {
     const std::string text = describe(e, model_);
     listing_.line(text);
-    if (e.kind == RunEvent::Kind::HourglassShare && console_ != nullptr) fmt::print(*console_, "warning: {}\n", text);
+    if (e.kind == RunEvent::Kind::HourglassShare) console_line("warning: " + text);
   }
   events.pending.clear();
 }
@@ -159,8 +202,43 @@ void RunRecorder::restart(SolverState& s, ResumeMarks& marks) {
                             restart_file().filename().string()));
 }
 
+void RunRecorder::progress(const SolverState& s, double dt, const StepControl& control) {
+  if (console_ == nullptr) return;
+  ProgressValues v;
+  v.cycle = s.cycle, v.time = s.time, v.end_time = model_.run.end_time, v.dt = dt;
+  v.control = describe(control, model_);
+  v.error_percent = s.energy.error_percent();
+  v.elapsed_seconds = progress_clock_.elapsed_seconds();
+  v.remaining_seconds = remaining_seconds(deck_start_time_, s.time, v.end_time, v.elapsed_seconds - deck_start_wall_);
+  std::string text = progress_line(v);
+  if (progress_options_.mode == ProgressOptions::Mode::Lines) {
+    fmt::print(*console_, "{}\n", text);
+  } else {
+    if (const int width = progress_options_.width; width > 1 && text.size() >= static_cast<std::size_t>(width))
+      text.resize(static_cast<std::size_t>(width - 1));  // one row: a wrapped line would not be rewritten in place
+    fmt::print(*console_, "\r{}\x1b[K", text);
+    progress_shown_ = true;
+  }
+  console_->flush();
+}
+
+void RunRecorder::console_line(const std::string& text) {
+  if (console_ == nullptr) return;
+  clear_progress();
+  fmt::print(*console_, "{}\n", text);
+}
+
+void RunRecorder::clear_progress() {
+  if (!progress_shown_) return;
+  fmt::print(*console_, "\r\x1b[K");
+  console_->flush();
+  progress_shown_ = false;
+}
+
 void RunRecorder::frame(const SolverState& s) {
-  if (results_) results_->write_frame(s.time, s.cycle, model_, s);
+  if (!results_) return;
+  results_->write_frame(s.time, s.cycle, model_, s);
+  last_frame_cycle_ = s.cycles_done + s.cycle;
 }
 
 void RunRecorder::history(const SolverState& s, double dt) {
@@ -189,12 +267,13 @@ void RunRecorder::history(const SolverState& s, double dt) {
 
 void RunRecorder::close(const SolverState& s, bool stopped_early) {
   if (!results_) return;
-  if (stopped_early) results_->write_frame(s.time, s.cycle, model_, s);  // the last good state
+  if (stopped_early && s.cycles_done + s.cycle != last_frame_cycle_) frame(s);  // the last good state
   results_->close();
 }
 
 void RunRecorder::finish(const SolverState& s, const RunEvents& events, const PhaseTimes& phases, double wall) {
-  listing_.line(!events.stop.stopped() ? "NORMAL TERMINATION" : "ERROR TERMINATION: " + describe(events.stop, model_));
+  clear_progress();
+  listing_.line(termination(events.stop, model_));
   if (events.deleted_below_minimum_step > 0)
     listing_.line(fmt::format("ELEMENTS DELETED BELOW THEIR MINIMUM TIME STEP: {}", events.deleted_below_minimum_step));
   if (events.hourglass_warned)
@@ -251,6 +330,7 @@ RunSummary summarize_run(const Model& m, const std::string& name, const SolverSt
   summary.element_cycles_per_second =
       wall > 0.0 ? static_cast<double>(element_count) * static_cast<double>(s.cycle) / wall : 0.0;
   summary.status = status_of(events.stop);
+  summary.stopped_on_request = events.stop.requested();
   summary.message = describe(events.stop, m);
   return summary;
 }

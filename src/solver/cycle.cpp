@@ -350,6 +350,14 @@ void check_run_limits(const Model& m, const SolverState& s, RunEvents& events) {
   }
 }
 
+bool stop_requested(const std::atomic<int>* request, const SolverState& s, RunEvents& events) {
+  const int signal = request != nullptr ? request->load(std::memory_order_relaxed) : 0;
+  if (signal == 0) return false;
+  StopReason& stop = events.stop;
+  stop.kind = StopReason::Kind::Requested, stop.cycle = s.cycle, stop.time = s.time, stop.index = signal;
+  return true;
+}
+
 void advance_schedule(const Model& m, const SolverState& s, const MonitorDue& due, OutputSchedule& schedule) {
   const RunControl& rc = m.run;
   if (due.frame) schedule.next_frame = next_output_time(s.time, rc.anim_start, rc.anim_interval);

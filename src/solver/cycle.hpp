@@ -2,6 +2,7 @@
 // Internal to the solver: the named phases of one cycle of the time loop (docs/theory/time-loop.md, "One cycle").
 // Each is a plain function over the model and the state; time_loop.cpp calls them in order.
 #include <array>
+#include <atomic>
 #include <limits>
 #include <vector>
 
@@ -74,6 +75,9 @@ MonitorDue outputs_due(const Model& model, const SolverState& state, const Outpu
 void update_kinetic_energy(SolverState& state);
 // NaN in the balance, /STOP added-mass and energy-error limits: recorded in `events.stop`.
 void check_run_limits(const Model& model, const SolverState& state, RunEvents& events);
+// A stop asked from outside the solver (SolverOptions::stop_request, which the app's SIGINT and SIGTERM handlers
+// set): recorded in `events.stop` at the end of the cycle; true when there is one. One relaxed load per cycle.
+bool stop_requested(const std::atomic<int>* request, const SolverState& state, RunEvents& events);
 // The next output times once a frame or a history row has been written at the state's time.
 void advance_schedule(const Model& model, const SolverState& state, const MonitorDue& due, OutputSchedule& schedule);
 

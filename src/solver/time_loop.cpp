@@ -55,7 +55,8 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunReco
   using namespace solver;
   const auto started = std::chrono::steady_clock::now();
   if (options.resume == nullptr) switch_rigid_bodies(m, s);  // a resumed state has them switched already
-  recorder.start(notes, options.approximations, console);
+  update_kinetic_energy(s);  // for the listing's row of cycle 0
+  recorder.start(s, {options.deck, options.approximations, options.progress}, notes, console);
   RunEvents events;
   OutputSchedule schedule(m.run, s.time, options.max_cycles);
   if (options.resume != nullptr) resume_monitor(*options.resume, events, schedule);
@@ -93,8 +94,9 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunReco
     clock.lap(phases.update);
 
     const MonitorDue due = outputs_due(m, s, schedule, dt_next);
+    const bool show_progress = recorder.progress_due();
+    if (due.energies() || show_progress) update_kinetic_energy(s);
     if (due.energies()) {
-      update_kinetic_energy(s);
       if (due.print) recorder.row(s, dt_next, control);
       check_run_limits(m, s, events);
       if (!events.pending.empty()) recorder.events(events);
@@ -107,14 +109,19 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunReco
     }
     advance_schedule(m, s, due, schedule);
     if (restart_due(m, s) && !due.finished) write_snapshot(recorder, s, options, events, schedule);
+    if (show_progress) recorder.progress(s, dt_next, control);
     clock.lap(phases.output);
-    if (due.finished) break;
+    if (due.finished || stop_requested(options.stop_request, s, events)) break;
   }
   update_kinetic_energy(s);
   recorder.events(events);
-  recorder.row(s, dt_next, control);
+  recorder.row(s, dt_next, control);  // the cycle the run ended at, unless its row is printed already
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  if (m.run.restart_every > 0) write_snapshot(recorder, s, options, events, schedule);
+  // A snapshot at the end with /RFILE, and always when the run was asked to stop (it can go on from there); never
+  // after a failure (NaN, inverted element), whose state is not worth resuming.
+  const bool resumable = !events.stop.stopped() || events.stop.requested() || events.stop.is_limit();
+  if (resumable && (m.run.restart_every > 0 || events.stop.requested()))
+    write_snapshot(recorder, s, options, events, schedule);
   recorder.finish(s, events, phases, wall);
   RunSummary summary = summarize_run(m, recorder.name(), s, events, phases, dt_next, wall);
   summary.approximations = options.approximations;

@@ -1,5 +1,6 @@
 #pragma once
-// NAME.out: the run listing with the Radioss-style energy balance table (docs/output-format.md, "Listing").
+// NAME.out: the run listing with the Radioss-style energy balance table (docs/output-format.md, "Listing"). Every
+// line and row is flushed as it is written, so that the listing can be followed while the run goes.
 #include <filesystem>
 #include <fstream>
 #include <string>

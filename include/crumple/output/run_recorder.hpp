@@ -9,6 +9,7 @@
 
 #include "crumple/model/model.hpp"
 #include "crumple/output/listing.hpp"
+#include "crumple/output/progress.hpp"
 #include "crumple/output/results_file.hpp"
 #include "crumple/output/run_summary.hpp"
 #include "crumple/solver/run_events.hpp"
@@ -26,39 +27,68 @@ std::string describe(const RunEvent& event, const Model& model);
 // The status a stop reason gives the run.
 RunStatus status_of(const StopReason& stop);
 
+// What the caller says about the run (from SolverOptions): the listing header and the console progress.
+struct RunStart {
+  std::filesystem::path deck;  // the starter deck (empty: not named)
+  // Options of the deck that were skipped or approximated (--skip-unknown, output-only and performance-hint
+  // cards), one line each.
+  std::vector<std::string> approximations;
+  ProgressOptions progress;
+};
+
 class RunRecorder {
  public:
   // Opens NAME.out and, when `write_results`, NAME.h5 in `directory`. Throws std::runtime_error.
   RunRecorder(const Model& model, const std::filesystem::path& directory, const std::string& name,
               bool write_results);
 
-  // Listing header, the start-up notes (also on the console) and the options the deck reader skipped or
-  // approximated (--skip-unknown, output-only and performance-hint cards).
-  void start(const std::vector<std::string>& notes, const std::vector<std::string>& approximations,
+  // The start of an engine deck from `state`, its kinetic energy up to date. The first time, the listing's run
+  // header: the Crumple version, the date, the deck, the working units, the model's counts and the options the
+  // deck reader skipped or approximated; the console progress starts. Then for every engine deck its number and
+  // end time, its start-up notes (also on the console), the table header and the row of cycle 0.
+  void start(const SolverState& state, const RunStart& run, const std::vector<std::string>& notes,
              std::ostream& console);
-  // One row of the energy table with the step dt^(n+1/2) of the cycle and what bounds it.
+  // One row of the energy table with the step dt^(n+1/2) of the cycle and what bounds it; nothing when the row of
+  // this cycle is printed already (the last cycle of a run is often a /PRINT cycle too).
   void row(const SolverState& state, double dt, const StepControl& control);
   // The events of the last cycles as listing lines (warnings also on the console); empties `events.pending`.
   void events(RunEvents& events);
+  // True when a console progress update is due: one clock read, none while progress is off. The caller brings
+  // the kinetic energy up to date, then calls progress().
+  bool progress_due() { return progress_clock_.due(); }
+  void progress(const SolverState& state, double dt, const StepControl& control);
   void frame(const SolverState& state);
   void history(const SolverState& state, double dt);
   // The end of an engine deck: the listing's closing lines (termination, deletions, added mass, interfaces,
-  // cycles, time profile).
+  // cycles, time profile); the progress line is cleared.
   void finish(const SolverState& state, const RunEvents& events, const PhaseTimes& phases, double wall_seconds);
   // The snapshot to NAME.rst beside the listing (restart_file.hpp), with a listing line.
   void restart(SolverState& state, ResumeMarks& marks);
   std::filesystem::path restart_file() const { return directory_ / (name_ + ".rst"); }
-  // The end of the whole run: the last good state as a frame when it stopped early, the results file closed.
+  // The end of the whole run: the last good state as a frame when it stopped early (unless that cycle's frame is
+  // written already), the results file closed.
   void close(const SolverState& state, bool stopped_early);
   const std::string& name() const { return name_; }
 
  private:
+  void header(const RunStart& run);
+  void console_line(const std::string& text);  // on the console, below the progress line
+  void clear_progress();
+
   const Model& model_;
   std::filesystem::path directory_;
   std::string name_;
   std::ostream* console_ = nullptr;
   Listing listing_;
   std::optional<ResultsFile> results_;
+  int engine_decks_ = 0;              // started so far
+  long long last_row_cycle_ = -1;     // the cycle of the engine deck's last row
+  long long last_frame_cycle_ = -1;   // the last frame's cycle counted over the whole run (cycles_done + cycle)
+  ProgressOptions progress_options_;
+  ProgressClock progress_clock_;
+  double deck_start_time_ = 0.0;      // simulation time [T] and progress clock [s] when the engine deck started
+  double deck_start_wall_ = 0.0;
+  bool progress_shown_ = false;       // a Terminal line is on the console
 };
 
 // The run summary of a finished run (README, "Run summary").

@@ -60,6 +60,7 @@ struct RunSummary {
   long long deleted_elements = 0;  // elements deleted over the run (failure, /DT/<type>/DEL), in every kind
   RunStatus status = RunStatus::Normal;
   std::string message;  // why the run ended when status is not normal
+  bool stopped_on_request = false;  // status stopped because SIGINT or SIGTERM asked for it, not a /STOP limit
   // Options of the deck that were skipped or approximated (output-only requests not written, performance hints,
   // options skipped on --skip-unknown), one line each; "approximations" in the JSON. Filled by the app.
   std::vector<std::string> approximations;

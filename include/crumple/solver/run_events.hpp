@@ -52,6 +52,7 @@ struct StopReason {
     EnergyNotFinite,          // NaN or Inf in the energy balance
     AddedMassLimit,           // /STOP Mmax: value = added mass, minimum = the card's ratio
     EnergyErrorLimit,         // /STOP Emax: value = |error| ratio
+    Requested,                // asked from outside (SolverOptions::stop_request): index = the signal number
   };
   Kind kind = Kind::None;
   long long cycle = 0;
@@ -64,6 +65,8 @@ struct StopReason {
   bool stopped() const { return kind != Kind::None; }
   // /STOP limits end the run as "stopped"; everything else is an error.
   bool is_limit() const { return kind == Kind::AddedMassLimit || kind == Kind::EnergyErrorLimit; }
+  // SIGINT or SIGTERM asked the run to stop: it ends as "stopped" at the end of the cycle.
+  bool requested() const { return kind == Kind::Requested; }
 };
 
 // Events of the run: the solver appends, the output drains `pending` at every monitor phase.

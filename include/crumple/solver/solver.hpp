@@ -1,5 +1,6 @@
 #pragma once
 // The explicit time loop (docs/theory/time-loop.md): central difference with velocities at half steps.
+#include <atomic>
 #include <filesystem>
 #include <functional>
 #include <iosfwd>
@@ -7,6 +8,7 @@
 #include <vector>
 
 #include "crumple/model/model.hpp"
+#include "crumple/output/progress.hpp"
 #include "crumple/output/run_summary.hpp"
 
 namespace crumple {
@@ -30,11 +32,16 @@ struct SolverOptions {
   // that resumes a restart file the marks read with its state, so that the cycle goes on exactly where it stopped.
   int engine_deck = 1;
   const ResumeMarks* resume = nullptr;
+  std::filesystem::path deck;  // the starter deck, named in the listing header (empty: not named)
+  ProgressOptions progress;    // the console progress line (off unless the app turns it on)
+  // Optional: the run stops at the end of the first cycle that finds it nonzero (status stopped, the last state
+  // written); the value is kept as the reason, a signal number. The app points it at its SIGINT and SIGTERM flag.
+  const std::atomic<int>* stop_request = nullptr;
 };
 
 // Runs the model to its end time and writes the listing and results. Returns the summary; a run that ends
-// abnormally (NaN, inverted element, time step below the minimum, /STOP limit) returns status error or stopped
-// with the reason in `message`, after writing the last good state.
+// abnormally (NaN, inverted element, time step below the minimum, /STOP limit, a stop request) returns status
+// error or stopped with the reason in `message`, after writing the last good state.
 RunSummary run_simulation(const Model& model, const SolverOptions& options, std::ostream& console);
 
 // The state of a model before its first cycle; `notes` receives the start-up remarks for the listing.
