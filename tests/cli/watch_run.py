@@ -11,6 +11,11 @@ CASE is one of
             columns; SIGTERM once it is shown
   quiet     the same terminal with --quiet: after 3 listing rows and more than two progress intervals, nothing
             but the final message is on it
+  restart   SIGTERM once the listing passes 40 % of the end time; the stopped run leaves NAME.rst; `crumple run
+            --restart` from it into OUT_DIR/resumed ends with the uninterrupted run's (OUT_DIR/whole) energies,
+            time and cycle count, digit for digit (the summary prints 17 significant digits)
+  sigkill   SIGKILL once the listing passes 1.2 (frames at 0, 0.5 and 1.0 are out): NAME.h5 still opens and holds
+            those frames and the histories up to its last flush
 
 Each stopped run must exit with code 4, its summary say "stopped" and name the signal, its listing end with the
 stop message after the stopped cycle's row (printed once), and NAME.h5 open with h5py and hold a last frame at
@@ -138,13 +143,81 @@ def check_stopped(process, out_dir, name, signal_name):
     return summary
 
 
+def listing_time(path):
+    table = rows(read(path))
+    return table[-1][1] if table else 0.0
+
+
+def restart_case(crumple, deck, out_dir, name, console):
+    """Stopped at 40 %, resumed from its snapshot: the end is the uninterrupted run's, bit for bit."""
+    listing = os.path.join(out_dir, name + ".out")
+    process = start(crumple, deck, out_dir, console, quiet=True)
+    wait_for("40 % of the run", lambda: listing_time(listing) > 1.2, process)
+    process.send_signal(signal.SIGTERM)
+    stopped = check_stopped(process, out_dir, name, "SIGTERM")
+    snapshot = os.path.join(out_dir, name + ".rst")
+    if not os.path.isfile(snapshot):
+        fail("the stopped run left no restart file " + snapshot)
+    ends = {}
+    for case, extra in (("resumed", ["--restart", snapshot]), ("whole", [])):
+        folder = os.path.join(out_dir, case)
+        os.makedirs(folder, exist_ok=True)
+        done = subprocess.run([crumple, "run", deck, "-o", folder, "--quiet"] + extra, capture_output=True,
+                              text=True, timeout=LIMIT)
+        if done.returncode != 0:
+            fail(f"{case} run: exit code {done.returncode}\n{done.stderr}")
+        ends[case] = json.loads(read(os.path.join(folder, name + ".summary.json")))
+    a, b = ends["whole"], ends["resumed"]
+    for key in ("time", "cycles_total"):
+        if a[key] != b[key]:
+            fail(f"{key}: resumed {b[key]!r}, uninterrupted {a[key]!r}")
+    for key, value in a["energy"].items():
+        if b["energy"][key] != value:
+            fail(f"energy {key}: resumed {b['energy'][key]!r}, uninterrupted {value!r}")
+    print(f"stopped at cycle {stopped['cycles']}, resumed to cycle {b['cycles_total']}: time, cycles and every "
+          "energy equal to the uninterrupted run's")
+    print("PASS")
+
+
+def sigkill_case(crumple, deck, out_dir, name, console):
+    """Killed without warning: the results file is readable up to its last flushed frame."""
+    listing = os.path.join(out_dir, name + ".out")
+    process = start(crumple, deck, out_dir, console, quiet=True)
+    wait_for("t = 1.2", lambda: listing_time(listing) > 1.2, process)
+    killed_at = listing_time(listing)
+    process.send_signal(signal.SIGKILL)
+    process.wait(timeout=LIMIT)
+    if process.returncode != -signal.SIGKILL:
+        fail(f"exit {process.returncode}, expected death by SIGKILL")
+    with h5py.File(os.path.join(out_dir, name + ".h5"), "r") as f:
+        times = sorted(float(f["frames"][k].attrs["time"]) for k in f["frames"])
+        # each frame goes out at the first cycle at or past its time on the /ANIM/DT grid
+        if len(times) < 3 or any(abs(t - g) > 0.01 for t, g in zip(times, (0.0, 0.5, 1.0))):
+            fail(f"frames at {times}, expected at least the ones near 0, 0.5 and 1.0")
+        history = f["history/time"][:]
+        # the rows are flushed with each frame (the frame goes out before its cycle's history row)
+        if history.shape[0] == 0 or history[-1] < times[-1] - 0.02 or history[-1] > killed_at + 0.5:
+            fail(f"histories end at {history[-1] if history.shape[0] else None}, killed near {killed_at}")
+    print(f"killed near t = {killed_at:.3g}: {len(times)} frames readable, histories to t = {history[-1]:.4g}")
+    print("PASS")
+
+
 def main():
     crumple, deck, out_dir, name, case = sys.argv[1:6]
     os.makedirs(out_dir, exist_ok=True)
     for old in os.listdir(out_dir):
-        os.remove(os.path.join(out_dir, old))
+        path = os.path.join(out_dir, old)
+        if os.path.isdir(path):
+            for inner in os.listdir(path):
+                os.remove(os.path.join(path, inner))
+        else:
+            os.remove(path)
     listing_path = os.path.join(out_dir, name + ".out")
     console = Console(out_dir, terminal=case in ("terminal", "quiet"))
+    if case == "restart":
+        return restart_case(crumple, deck, out_dir, name, console)
+    if case == "sigkill":
+        return sigkill_case(crumple, deck, out_dir, name, console)
     process = start(crumple, deck, out_dir, console, quiet=case == "quiet")
     started = time.monotonic()
     if case in ("sigterm", "sigint"):
