@@ -8,6 +8,7 @@
 #include "app/check.hpp"
 #include "app/console.hpp"
 #include "app/exit_codes.hpp"
+#include "app/plot.hpp"
 #include "app/regress.hpp"
 #include "app/run.hpp"
 #include "crumple/deck/reader.hpp"
@@ -63,6 +64,14 @@ int main(int argc, char** argv) {
   regress->add_option("--work", regress_options.work,
                       "Folder for the runs' output directories (default: a temporary folder, removed when all pass)");
   regress->add_flag("--skip-unknown", regress_options.skip_unknown, "Pass --skip-unknown to each run");
+
+  app::PlotOptions plot_options;
+  CLI::App* plot = cli.add_subcommand("plot", "Draw PNGs of a results file's histories (energy balance, contact and "
+                                              "wall forces, sections, selected /TH columns) with matplotlib");
+  plot->add_option("RESULTS", plot_options.results, "Results file NAME.h5")->required();
+  plot->add_option("-o,--output", plot_options.output_directory, "Folder for the PNGs (default: beside NAME.h5)");
+  plot->add_option("--select", plot_options.select, "Also plot the /history/th columns whose label contains PATTERN")
+      ->expected(1, -1);
   run->add_flag("-q,--quiet", quiet,
                 "No progress on the console (by default a line updated once a second on a terminal, otherwise "
                 "printed every 5 s)");
@@ -83,6 +92,7 @@ int main(int argc, char** argv) {
       return app::kExitNormal;
     }
     if (regress->parsed()) return app::regress(regress_options, std::cout, std::cerr);
+    if (plot->parsed()) return app::plot_results(plot_options);
     run_options.deck = deck_path;
     run_options.skip_unknown = skip_unknown;
     run_options.progress = app::stdout_progress(quiet);
