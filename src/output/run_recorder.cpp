@@ -126,6 +126,10 @@ std::string describe(const RunEvent& e, const Model& m) {
       return fmt::format("{} WARNING: hourglass energy is {:.1f} % of the internal energy (above 10 %): the mesh is "
                          "too coarse for the load or the formulation lets zero-energy modes grow",
                          when, 100.0 * e.value);
+    case K::EnergyErrorLarge:
+      return fmt::format("{} WARNING: energy error {:.3g} % (beyond 10 %): the energy balance is not kept; the run "
+                         "may be going unstable, or mass scaling or contact releases add or take energy",
+                         when, e.value);
   }
   return when;
 }
@@ -191,7 +195,8 @@ void RunRecorder::events(RunEvents& events) {
   for (const RunEvent& e : events.pending) {
     const std::string text = describe(e, model_);
     listing_.line(text);
-    if (e.kind == RunEvent::Kind::HourglassShare) console_line("warning: " + text);
+    if (e.kind == RunEvent::Kind::HourglassShare || e.kind == RunEvent::Kind::EnergyErrorLarge)
+      console_line("warning: " + text);
   }
   events.pending.clear();
 }

@@ -176,6 +176,18 @@ void warn_hourglass_share(const SolverState& s, RunEvents& events) {
   events.pending.push_back(event);
 }
 
+// An energy error beyond 10 % means the balance is not kept: an instability growing, or a remedy (mass scaling, a
+// contact released deep in its gap) adding or taking energy. A run must not end "normal" without saying so
+// (docs/theory/energy.md): one event, the first time, unless /STOP Emax stops the run before.
+void warn_energy_error(const SolverState& s, RunEvents& events) {
+  const double error = s.energy.error_percent();
+  if (events.energy_error_warned || !(std::abs(error) > 10.0)) return;
+  events.energy_error_warned = true;
+  RunEvent event{RunEvent::Kind::EnergyErrorLarge, s.cycle, s.time};
+  event.value = error;
+  events.pending.push_back(event);
+}
+
 }  // namespace
 
 double step_scale(const RunControl& run) { return run.dt.scale > 0.0 ? run.dt.scale : 0.9; }
@@ -336,6 +348,7 @@ void update_kinetic_energy(SolverState& s) {
 void check_run_limits(const Model& m, const SolverState& s, RunEvents& events) {
   const RunControl& rc = m.run;
   warn_hourglass_share(s, events);
+  warn_energy_error(s, events);
   StopReason& stop = events.stop;
   const double total = s.energy.internal + s.energy.kinetic_translational + s.energy.kinetic_rotational;
   if (!std::isfinite(total)) {

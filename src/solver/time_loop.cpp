@@ -37,6 +37,7 @@ void write_snapshot(RunRecorder& recorder, SolverState& s, const SolverOptions& 
   marks.deleted_below_minimum_step = events.deleted_below_minimum_step;
   marks.switched_to_small_strain = events.switched_to_small_strain;
   marks.hourglass_warned = events.hourglass_warned;
+  marks.energy_error_warned = events.energy_error_warned;
   recorder.restart(s, marks);
 }
 
@@ -46,6 +47,7 @@ void resume_monitor(const ResumeMarks& marks, RunEvents& events, solver::OutputS
   events.deleted_below_minimum_step = marks.deleted_below_minimum_step;
   events.switched_to_small_strain = marks.switched_to_small_strain;
   events.hourglass_warned = marks.hourglass_warned;
+  events.energy_error_warned = marks.energy_error_warned;
 }
 
 }  // namespace

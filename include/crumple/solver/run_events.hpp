@@ -31,6 +31,7 @@ struct RunEvent {
     ElementSwitchedToSmallStrain,    // /DT/<type>/CST: element (kind, index), value = its scaled step [T]
     ContactBoundaryReleased,         // TYPE7 IBC: node index, value = the released dof mask
     HourglassShare,                  // hourglass energy above 10 % of the internal energy: value = the ratio
+    EnergyErrorLarge,                // |energy error| above 10 %: value = the error in percent
   };
   Kind kind;
   long long cycle = 0;
@@ -76,6 +77,7 @@ struct RunEvents {
   long long deleted_below_minimum_step = 0;  // elements deleted by /DT/<type>/DEL over the run
   long long switched_to_small_strain = 0;    // elements switched by /DT/<type>/CST over the run
   bool hourglass_warned = false;             // the HourglassShare event has been raised
+  bool energy_error_warned = false;          // the EnergyErrorLarge event has been raised
 };
 
 }  // namespace crumple

@@ -26,6 +26,7 @@ struct ResumeMarks {
   long long deleted_below_minimum_step = 0;
   long long switched_to_small_strain = 0;
   bool hourglass_warned = false;
+  bool energy_error_warned = false;
 };
 
 namespace snapshot_detail {
@@ -126,6 +127,7 @@ void visit_state(V& v, SolverState& s, ResumeMarks& marks) {
   v("marks/deleted_below_minimum_step", marks.deleted_below_minimum_step);
   v("marks/switched_to_small_strain", marks.switched_to_small_strain);
   v("marks/hourglass_warned", marks.hourglass_warned);
+  v("marks/energy_error_warned", marks.energy_error_warned);
   visit_nodes(v, "nodes/", s.nodes);
   v("fixed", s.fixed), v("rigid_owner", s.rigid_owner), v("nodal_stiffness", s.nodal_stiffness);
   visit_shells(v, "shells4/", s.shells);

@@ -1,0 +1,35 @@
+// Warnings a run raises once (docs/theory/energy.md): an energy error beyond 10 % is said in the listing and on
+// the console, so that a run whose balance is lost never ends "normal" without a word.
+#include <gtest/gtest.h>
+
+#include "crumple/output/run_recorder.hpp"
+#include "solver/cycle.hpp"
+
+namespace crumple {
+namespace {
+
+TEST(RunWarnings, EnergyErrorBeyondTenPercentIsRaisedOnce) {
+  Model model;
+  SolverState s;
+  s.energy.initial_kinetic = 100.0;
+  s.energy.internal = 50.0, s.energy.kinetic_translational = 41.0;  // error -9 %: no warning
+  RunEvents events;
+  solver::check_run_limits(model, s, events);
+  EXPECT_TRUE(events.pending.empty());
+  s.energy.kinetic_translational = 30.0;  // -20 %
+  s.cycle = 12, s.time = 0.5;
+  solver::check_run_limits(model, s, events);
+  ASSERT_EQ(events.pending.size(), 1u);
+  const RunEvent& e = events.pending[0];
+  EXPECT_EQ(e.kind, RunEvent::Kind::EnergyErrorLarge);
+  EXPECT_DOUBLE_EQ(e.value, -20.0);
+  EXPECT_NE(describe(e, model).find("WARNING: energy error -20 % (beyond 10 %)"), std::string::npos)
+      << describe(e, model);
+  EXPECT_FALSE(events.stop.stopped()) << "a warning, not a stop (/STOP Emax stops)";
+  s.energy.kinetic_translational = 0.0;  // worse: still one event
+  solver::check_run_limits(model, s, events);
+  EXPECT_EQ(events.pending.size(), 1u);
+}
+
+}  // namespace
+}  // namespace crumple
