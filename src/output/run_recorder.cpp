@@ -109,8 +109,8 @@ RunStatus status_of(const StopReason& stop) {
 
 RunRecorder::RunRecorder(const Model& model, const std::filesystem::path& directory, const std::string& name,
                          bool write_results)
-    : model_(model), name_(name), listing_(directory / (name + ".out")) {
-  if (write_results) results_.emplace(directory / (name + ".h5"), model);
+    : model_(model), name_(name), listing_(directory / (name + ".out")), channels_(model) {
+  if (write_results) results_.emplace(directory / (name + ".h5"), model, channels_.datasets());
 }
 
 void RunRecorder::start(const std::vector<std::string>& notes, const std::vector<std::string>& approximations,
@@ -148,7 +148,7 @@ void RunRecorder::frame(const SolverState& s) {
   if (results_) results_->write_frame(s.time, s.cycle, model_, s);
 }
 
-void RunRecorder::history(const SolverState& s, double dt) {
+void RunRecorder::history(const SolverState& s, double dt, const VelocityChange& change) {
   if (!results_) return;
   const NodalState& n = s.nodes;
   HistoryRow row;
@@ -169,6 +169,7 @@ void RunRecorder::history(const SolverState& s, double dt) {
     for (double v : {r.elastic_energy, r.friction_work, r.absorbed, static_cast<double>(r.active_nodes)})
       row.interface_values.push_back(v);
   }
+  channels_.evaluate(s, change, row.th);
   results_->write_history(row);
 }
 

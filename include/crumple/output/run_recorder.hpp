@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "crumple/model/model.hpp"
+#include "crumple/output/history_channels.hpp"
 #include "crumple/output/listing.hpp"
 #include "crumple/output/results_file.hpp"
 #include "crumple/output/run_summary.hpp"
@@ -40,7 +41,9 @@ class RunRecorder {
   // The events of the last cycles as listing lines (warnings also on the console); empties `events.pending`.
   void events(RunEvents& events);
   void frame(const SolverState& state);
-  void history(const SolverState& state, double dt);
+  // A history row: the energies, walls, bodies and interfaces, and every /TH dataset; `change` is the cycle's
+  // velocity update (accelerations and reactions).
+  void history(const SolverState& state, double dt, const VelocityChange& change = {});
   // The end of an engine deck: the listing's closing lines (termination, deletions, added mass, interfaces,
   // cycles, time profile).
   void finish(const SolverState& state, const RunEvents& events, const PhaseTimes& phases, double wall_seconds);
@@ -53,6 +56,7 @@ class RunRecorder {
   std::string name_;
   std::ostream* console_ = nullptr;
   Listing listing_;
+  HistoryChannels channels_;
   std::optional<ResultsFile> results_;
 };
 
