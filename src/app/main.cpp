@@ -8,6 +8,7 @@
 #include "app/check.hpp"
 #include "app/exit_codes.hpp"
 #include "app/run.hpp"
+#include "app/th.hpp"
 #include "crumple/deck/reader.hpp"
 
 namespace {
@@ -43,6 +44,14 @@ int main(int argc, char** argv) {
   run->add_option("-o,--output", run_options.output_directory, "Output directory (default: current directory)");
   run->add_flag("--skip-unknown", skip_unknown, skip_help);
 
+  app::ThOptions th_options;
+  CLI::App* th = cli.add_subcommand("th", "List the time histories of NAME.h5, or export them as CSV");
+  th->add_option("FILE", th_options.file, "Results file NAME.h5 written by crumple run")->required();
+  th->add_flag("--csv", th_options.csv, "Write the histories as CSV: time first, one column per channel");
+  th->add_option("--select", th_options.select,
+                 "Only the columns whose label matches one of these glob patterns, e.g. 'NODE_2/*/DX' 'internal'");
+  th->add_option("-o,--output", th_options.output, "CSV file to write (default: standard output)");
+
   try {
     cli.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -58,6 +67,7 @@ int main(int argc, char** argv) {
       app::print_check_report(deck, std::cout);
       return app::kExitNormal;
     }
+    if (th->parsed()) return app::run_th(th_options, std::cout, std::cerr);
     run_options.deck = deck_path;
     run_options.skip_unknown = skip_unknown;
     return app::run_deck(run_options, std::cout, std::cerr);

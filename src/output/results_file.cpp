@@ -18,83 +18,18 @@
 #include <system_error>
 #include <utility>
 
+#include "hdf5_support.hpp"
+
 namespace crumple {
 namespace {
+
+using hdf5::Handle;
+using hdf5::hdf5_error;
+using hdf5::QuietErrors;
 
 constexpr int kFormatVersion = 1;
 constexpr hsize_t kHistoryChunkRows = 512;   // rows per chunk of the 1-D history datasets
 constexpr std::size_t kHistoryBuffer = 256;  // history rows kept in memory before they are appended
-
-// Owns one HDF5 identifier and closes it with the matching H5?close.
-class Handle {
- public:
-  using Closer = herr_t (*)(hid_t);
-  Handle() = default;
-  Handle(hid_t id, Closer closer) : id_(id), closer_(closer) {}
-  ~Handle() { reset(); }
-  Handle(Handle&& other) noexcept : id_(std::exchange(other.id_, -1)), closer_(other.closer_) {}
-  Handle& operator=(Handle&& other) noexcept {
-    if (this != &other) {
-      reset();
-      id_ = std::exchange(other.id_, -1);
-      closer_ = other.closer_;
-    }
-    return *this;
-  }
-  Handle(const Handle&) = delete;
-  Handle& operator=(const Handle&) = delete;
-
-  hid_t get() const { return id_; }
-  bool valid() const { return id_ >= 0; }
-  // Closes now; returns false when HDF5 reported an error.
-  bool reset() {
-    herr_t status = 0;
-    if (id_ >= 0 && closer_ != nullptr) status = closer_(id_);
-    id_ = -1;
-    return status >= 0;
-  }
-
- private:
-  hid_t id_ = -1;
-  Closer closer_ = nullptr;
-};
-
-// Turns HDF5's automatic printing of error stacks off for the scope of a public call: failures become
-// exceptions that carry the most specific message of the stack instead.
-class QuietErrors {
- public:
-  QuietErrors() {
-    H5Eget_auto2(H5E_DEFAULT, &function_, &data_);
-    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  }
-  ~QuietErrors() { H5Eset_auto2(H5E_DEFAULT, function_, data_); }
-  QuietErrors(const QuietErrors&) = delete;
-  QuietErrors& operator=(const QuietErrors&) = delete;
-
- private:
-  H5E_auto2_t function_ = nullptr;
-  void* data_ = nullptr;
-};
-
-herr_t innermost_error(unsigned, const H5E_error2_t* error, void* client) {
-  if (error != nullptr && error->desc != nullptr) *static_cast<std::string*>(client) = error->desc;
-  return 0;
-}
-
-// The most specific description on the current HDF5 error stack ("No such file or directory" rather than
-// "unable to create file"), or an empty string.
-std::string hdf5_error() {
-  std::string desc;
-  H5Ewalk2(H5E_DEFAULT, H5E_WALK_DOWNWARD, innermost_error, &desc);
-  H5Eclear2(H5E_DEFAULT);
-  constexpr std::string_view marker = "error message = '";
-  if (const auto at = desc.find(marker); at != std::string::npos) {
-    const auto begin = at + marker.size();
-    const auto end = desc.find('\'', begin);
-    if (end != std::string::npos) return desc.substr(begin, end - begin);
-  }
-  return desc;
-}
 
 std::string xml_escaped(std::string_view s) {
   std::string out;
@@ -269,6 +204,14 @@ struct ResultsFile::Impl {
     return {check(H5Gcreate2(location, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), "cannot create " + name),
             H5Gclose};
   }
+  // A group whose members a reader lists in the order they were written.
+  Handle ordered_group(hid_t location, const std::string& name) const {
+    Handle plist(check(H5Pcreate(H5P_GROUP_CREATE), "property list"), H5Pclose);
+    check_status(H5Pset_link_creation_order(plist.get(), H5P_CRT_ORDER_TRACKED | H5P_CRT_ORDER_INDEXED),
+                 "property list");
+    return {check(H5Gcreate2(location, name.c_str(), H5P_DEFAULT, plist.get(), H5P_DEFAULT), "cannot create " + name),
+            H5Gclose};
+  }
 
   // A contiguous dataset of shape dims written from `data` (row-major).
   template <class T>
@@ -389,7 +332,7 @@ struct ResultsFile::Impl {
   }
 
   void create_history(const Model& model) {
-    Handle history = group(file.get(), "history");
+    Handle history = ordered_group(file.get(), "history");
     for (int i = 0; i < 3; ++i) work_si[i] = model.units.work[i];
     series.resize(kGlobal + th.size());
     pending.resize(series.size());
@@ -407,7 +350,7 @@ struct ResultsFile::Impl {
     wide_columns = {global_columns("rigid_wall_force", model.rigid_walls, kWallColumns, work_si), {},
                     global_columns("rigid_body_values", model.rigid_bodies, kBodyColumns, work_si),
                     global_columns("interface_values", model.type7_interfaces, kInterfaceColumns, work_si)};
-    Handle th_group = group(history.get(), "th");
+    Handle th_group = ordered_group(history.get(), "th");
     for (std::size_t d = 0; d < th.size(); ++d) create_th_series(series[kGlobal + d], th[d]);
   }
 
