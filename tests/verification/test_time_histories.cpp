@@ -23,7 +23,7 @@ std::string var(const std::string& name) { return name + std::string(10 - name.s
 
 // Strip of 2 x 1 shells on [-0.02, 0] x [0, 0.01] (part 1, nodes 1-6): its left edge clamped, its right edge (nodes
 // 3 and 6, at x = 0) pulled at kPull. Brick 1 (part 2, nodes 101-108, the cube [0.1, 0.11] x [0, 0.01]^2): face
-// x = 0.1 held, face x = 0.11 launched at 1 m/s. Both parts in subset 5.
+// x = 0.1 held, face x = 0.11 launched at 1 m/s, 5 g added at each of its nodes. Both parts in subset 5.
 std::string starter() {
   Strip strip;
   strip.nx = 2, strip.length = 0.02, strip.width = kH;
@@ -42,6 +42,10 @@ std::string starter() {
   s += node_group(2, strip.column(2)) + imposed_velocity(1, 1, "X", 2, kPull);
   s += node_group(3, {101, 104, 105, 108}) + boundary_condition(2, "111 000", 3);
   s += node_group(4, {102, 103, 106, 107}) + initial_velocity(1, 1.0, 0.0, 0.0, 4);
+  // A lone brick launched at one face outruns its element step (its dilatational mode, whose frequency the element
+  // step does not bound, rings on nodes of 1/8 of its mass; measured: it diverges within 10 cycles): its nodes
+  // carry added mass, which also puts /ADMAS into the parts' masses.
+  s += node_group(6, {101, 102, 103, 104, 105, 106, 107, 108}) + added_mass(1, 0.005, 6);
   auto th = [](const std::string& keyword, const std::string& variables, const std::string& objects) {
     return keyword + "\nhistory\n" + variables + "\n" + objects;
   };
@@ -165,7 +169,10 @@ TEST(TimeHistories, TheFileHoldsTheStateAtEveryRowAndThePartsSumToTheModel) {
     EXPECT_LE(relative(h("SUBS_3/5/IE", r), ie), 1e-14);
     EXPECT_LE(relative(h("SUBS_3/5/KE", r), ke), 1e-14);
   }
-  // Something happened: the strip carries tension and the brick rings.
+  // Something happened, and stably: the strip carries tension and the brick rings.
+  EXPECT_LT(std::abs(h("total", rows.size() - 1) - h("external_work", rows.size() - 1) - h("total", 0) +
+                     h("external_work", 0)),
+            0.01 * h("total", rows.size() - 1));
   EXPECT_GT(h("SHEL_4/1/F1", rows.size() - 1), 0.0);
   EXPECT_GT(h("PART_2/1/IE", rows.size() - 1), 0.0);
   EXPECT_NE(h("BRIC_5/1/SX", rows.size() - 1), 0.0);
