@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <map>
 #include <optional>
 #include <stdexcept>
 
@@ -316,23 +315,35 @@ void HistoryChannels::add_request(const TimeHistoryRequest& th) {
 // the lumped mass the element gives the node (its mass over its node count).
 void HistoryChannels::split_nodes_by_part() {
   const Model& m = model_;
-  std::vector<std::map<std::int32_t, double>> lumped(m.nodes.size());
+  struct Lumped {
+    std::int32_t node, part;
+    double mass;
+  };
+  std::vector<Lumped> lumped;  // one per element and node, then sorted by node and part
   for (const ElementGroup& g : m.element_groups) {
     const ElementTable& table = m.elements[static_cast<std::size_t>(g.kind)];
     const int count = nodes_per_element(g.kind);
     for (std::int32_t e = g.begin; e < g.end; ++e) {
       const double share = element_mass(m, g.kind, static_cast<std::size_t>(e)) / count;
       const std::int32_t* nodes = table.nodes_of(static_cast<std::size_t>(e));
-      for (int a = 0; a < count; ++a) lumped[static_cast<std::size_t>(nodes[a])][g.part] += share;
+      for (int a = 0; a < count; ++a) lumped.push_back({nodes[a], g.part, share});
     }
   }
-  node_share_offset_.assign(1, 0);
-  for (const auto& parts : lumped) {
+  std::sort(lumped.begin(), lumped.end(),
+            [](const Lumped& a, const Lumped& b) { return a.node != b.node ? a.node < b.node : a.part < b.part; });
+  node_share_offset_.assign(m.nodes.size() + 1, 0);
+  for (std::size_t i = 0, node = 0; node < m.nodes.size(); ++node) {
+    const std::size_t first = node_share_.size();
     double total = 0.0;
-    for (const auto& [part, mass] : parts) total += mass;
-    for (const auto& [part, mass] : parts)  // a node of massless elements only: equal shares
-      node_share_.emplace_back(part, total > 0.0 ? mass / total : 1.0 / static_cast<double>(parts.size()));
-    node_share_offset_.push_back(node_share_.size());
+    for (; i < lumped.size() && lumped[i].node == static_cast<std::int32_t>(node); ++i) {
+      total += lumped[i].mass;
+      if (node_share_.size() > first && node_share_.back().first == lumped[i].part) node_share_.back().second += lumped[i].mass;
+      else node_share_.emplace_back(lumped[i].part, lumped[i].mass);
+    }
+    const double parts = static_cast<double>(node_share_.size() - first);
+    for (std::size_t k = first; k < node_share_.size(); ++k)  // a node of massless elements only: equal shares
+      node_share_[k].second = total > 0.0 ? node_share_[k].second / total : 1.0 / parts;
+    node_share_offset_[node + 1] = node_share_.size();
   }
 }
 
