@@ -11,6 +11,7 @@
 #include "app/plot.hpp"
 #include "app/regress.hpp"
 #include "app/run.hpp"
+#include "app/th.hpp"
 #include "crumple/deck/reader.hpp"
 #include "crumple/output/restart_file.hpp"
 
@@ -76,6 +77,14 @@ int main(int argc, char** argv) {
                 "No progress on the console (by default a line updated once a second on a terminal, otherwise "
                 "printed every 5 s)");
 
+  app::ThOptions th_options;
+  CLI::App* th = cli.add_subcommand("th", "List the time histories of NAME.h5, or export them as CSV");
+  th->add_option("FILE", th_options.file, "Results file NAME.h5 written by crumple run")->required();
+  th->add_flag("--csv", th_options.csv, "Write the histories as CSV: time first, one column per channel");
+  th->add_option("--select", th_options.select,
+                 "Only the columns whose label matches one of these glob patterns, e.g. 'NODE_2/*/DX' 'internal'");
+  th->add_option("-o,--output", th_options.output, "CSV file to write (default: standard output)");
+
   try {
     cli.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -93,6 +102,7 @@ int main(int argc, char** argv) {
     }
     if (regress->parsed()) return app::regress(regress_options, std::cout, std::cerr);
     if (plot->parsed()) return app::plot_results(plot_options);
+    if (th->parsed()) return app::run_th(th_options, std::cout, std::cerr);
     run_options.deck = deck_path;
     run_options.skip_unknown = skip_unknown;
     run_options.progress = app::stdout_progress(quiet);

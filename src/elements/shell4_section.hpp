@@ -85,6 +85,34 @@ struct StrainRates {
   double dxx, dyy, gxy, kxx, kyy, kxy;
 };
 
+// Resultants per unit length of a section: N [M T^-2], M [M L T^-2] (xx, yy, xy).
+struct Resultants {
+  double n[3] = {0.0, 0.0, 0.0}, m[3] = {0.0, 0.0, 0.0};
+};
+
+// The resultants of the section's stored stresses (eq. S-4): N = t sum w_k sigma_k, M = t^2 sum b_k sigma_k over the
+// through-thickness points; N = 0 (RP-1): N = t sigma_m from the membrane stress at the point and M = t^2 / 6 sigma_b
+// from the outer-fibre bending stress. `first` is the ShellState index of the section's first point, `bending` its
+// three bending stresses when N = 0 (else unused).
+inline Resultants resultants(const ShellGroupParameters& p, const ShellState& state, std::size_t first,
+                             const double* bending, double t) {
+  Resultants r;
+  if (p.resultant_plasticity) {
+    const double bending_lever = t * t / 6.0;
+    const double membrane[3] = {state.sxx[first], state.syy[first], state.sxy[first]};
+    for (int c = 0; c < 3; ++c) r.n[c] = t * membrane[c], r.m[c] = bending_lever * bending[c];
+    return r;
+  }
+  for (int k = 0; k < p.points; ++k) {
+    const std::size_t ip = first + static_cast<std::size_t>(k);
+    const double wn = p.membrane_weight[k] * t, wm = p.bending_weight[k] * t * t;
+    const double sxx = state.sxx[ip], syy = state.syy[ip], sxy = state.sxy[ip];
+    r.n[0] += wn * sxx, r.n[1] += wn * syy, r.n[2] += wn * sxy;
+    r.m[0] += wm * sxx, r.m[1] += wm * syy, r.m[2] += wm * sxy;
+  }
+  return r;
+}
+
 // Resultants per unit length before and after the update: N [M T^-2], M [M L T^-2] (xx, yy, xy).
 struct Update {
   double n[3] = {0.0, 0.0, 0.0}, m[3] = {0.0, 0.0, 0.0};
@@ -94,74 +122,73 @@ struct Update {
   bool failed = false;            // a point reached the failure strain
 };
 
-// Updates the section's stresses over dt (dt = 0: no update) and returns its resultants. `first` is the ShellState
-// index of its first point; `bending` its three outer-fibre bending stresses 6 M / t^2 when N = 0 (else unused).
-inline Update update(const ShellGroupParameters& p, const materials::PlaneStressElastic& elastic, ShellState& state,
-                     std::size_t first, double* bending, double t, const StrainRates& s, double dt) {
-  Update u;
-  const double E = p.young;
-  if (p.resultant_plasticity) {
-    // N = 0: one set of resultants, carried as the membrane stress N / t at the point and the outer-fibre
-    // bending stress 6 M / t^2 (docs/theory/materials.md, RP-1 to RP-3).
-    double* sm[3] = {&state.sxx[first], &state.syy[first], &state.sxy[first]};
-    double* sb = bending;
-    double membrane[3] = {*sm[0], *sm[1], *sm[2]};
-    const double bending_lever = t * t / 6.0;
-    for (int c = 0; c < 3; ++c) u.old_n[c] = t * membrane[c], u.old_m[c] = bending_lever * sb[c];
-    if (dt > 0.0) {
-      const double h = 0.5 * t;
-      const materials::ResultantIncrement d{{s.dxx * dt, s.dyy * dt, s.gxy * dt},
-                                            {h * s.kxx * dt, h * s.kyy * dt, h * s.kxy * dt}};
-      // Strain rate of the more strained surface fibre.
-      auto fibre_rate = [&](double sign) {
-        const double ex = d.membrane[0] + sign * d.bending[0], ey = d.membrane[1] + sign * d.bending[1];
-        const double g = d.membrane[2] + sign * d.bending[2];
-        return std::sqrt(2.0 / 3.0 * (ex * ex + ey * ey + (ex + ey) * (ex + ey) + 0.5 * g * g)) / dt;
-      };
-      const double rate = p.hardening.filtered_rate(std::max(fibre_rate(1.0), fibre_rate(-1.0)), state.eps_rate[first], dt);
-      state.eps_rate[first] = rate;
-      const auto r = materials::resultant_update(elastic, p.hardening, d, rate, state.eps_p[first], membrane, sb);
-      state.eps_p[first] += r.plastic_strain_increment;
-      if (r.plastic_strain_increment > 0.0 && p.physical_hourglass) {
-        const double slope = std::max(p.hardening.slope(state.eps_p[first], rate), 0.0);
-        u.tangent_ratio = slope / (E + slope);  // eq. S-12
-      }
-      u.thickness_strain = r.thickness_strain;
-      if (p.failure_strain > 0.0 && state.eps_p[first] >= p.failure_strain) u.failed = true;
-      for (int c = 0; c < 3; ++c) *sm[c] = membrane[c];
-    }
-    u.n[0] = t * membrane[0], u.n[1] = t * membrane[1], u.n[2] = t * membrane[2];
-    u.m[0] = bending_lever * sb[0], u.m[1] = bending_lever * sb[1], u.m[2] = bending_lever * sb[2];
-    return u;
+// N = 0: one set of resultants, carried as the membrane stress N / t at the point and the outer-fibre bending
+// stress 6 M / t^2 (docs/theory/materials.md, RP-1 to RP-3), updated over dt > 0.
+inline void update_resultants(const ShellGroupParameters& p, const materials::PlaneStressElastic& elastic,
+                              ShellState& state, std::size_t first, double* bending, double t, const StrainRates& s,
+                              double dt, Update& u) {
+  double membrane[3] = {state.sxx[first], state.syy[first], state.sxy[first]};
+  const double h = 0.5 * t;
+  const materials::ResultantIncrement d{{s.dxx * dt, s.dyy * dt, s.gxy * dt},
+                                        {h * s.kxx * dt, h * s.kyy * dt, h * s.kxy * dt}};
+  // Strain rate of the more strained surface fibre.
+  auto fibre_rate = [&](double sign) {
+    const double ex = d.membrane[0] + sign * d.bending[0], ey = d.membrane[1] + sign * d.bending[1];
+    const double g = d.membrane[2] + sign * d.bending[2];
+    return std::sqrt(2.0 / 3.0 * (ex * ex + ey * ey + (ex + ey) * (ex + ey) + 0.5 * g * g)) / dt;
+  };
+  const double rate = p.hardening.filtered_rate(std::max(fibre_rate(1.0), fibre_rate(-1.0)), state.eps_rate[first], dt);
+  state.eps_rate[first] = rate;
+  const auto r = materials::resultant_update(elastic, p.hardening, d, rate, state.eps_p[first], membrane, bending);
+  state.eps_p[first] += r.plastic_strain_increment;
+  if (r.plastic_strain_increment > 0.0 && p.physical_hourglass) {
+    const double slope = std::max(p.hardening.slope(state.eps_p[first], rate), 0.0);
+    u.tangent_ratio = slope / (p.young + slope);  // eq. S-12
   }
+  u.thickness_strain = r.thickness_strain;
+  if (p.failure_strain > 0.0 && state.eps_p[first] >= p.failure_strain) u.failed = true;
+  state.sxx[first] = membrane[0], state.syy[first] = membrane[1], state.sxy[first] = membrane[2];
+}
+
+// The stresses at the through-thickness points, updated over dt > 0 by the plane-stress return (eq. S-4).
+inline void update_points(const ShellGroupParameters& p, const materials::PlaneStressElastic& elastic,
+                          ShellState& state, std::size_t first, double t, const StrainRates& s, double dt, Update& u) {
+  const double E = p.young;
   for (int k = 0; k < p.points; ++k) {
     const std::size_t ip = first + static_cast<std::size_t>(k);
     const double z = p.zeta[k] * t;
-    const double wn = p.membrane_weight[k] * t, wm = p.bending_weight[k] * t * t;
     double sxx = state.sxx[ip], syy = state.syy[ip], sxy = state.sxy[ip];
-    u.old_n[0] += wn * sxx, u.old_n[1] += wn * syy, u.old_n[2] += wn * sxy;
-    u.old_m[0] += wm * sxx, u.old_m[1] += wm * syy, u.old_m[2] += wm * sxy;
-    if (dt > 0.0) {
-      const double ex = (s.dxx + z * s.kxx) * dt, ey = (s.dyy + z * s.kyy) * dt, g = (s.gxy + z * s.kxy) * dt;
-      const double increment_rate = std::sqrt(2.0 / 3.0 * (ex * ex + ey * ey + (ex + ey) * (ex + ey) + 0.5 * g * g)) / dt;
-      const double rate = p.hardening.filtered_rate(increment_rate, state.eps_rate[ip], dt);  // eq. RF
-      state.eps_rate[ip] = rate;
-      const auto return_to_yield = p.radial_return ? materials::plane_stress_radial_return : materials::plane_stress_update;
-      const auto r = return_to_yield(elastic, p.hardening, ex, ey, g, rate, state.eps_p[ip], sxx, syy, sxy,
-                                     &state.static_yield[ip]);
-      state.eps_p[ip] += r.plastic_strain_increment;
-      if (r.plastic_strain_increment > 0.0 && p.physical_hourglass) {
-        // Elastic-plastic tangent of the point, E H' / (E + H'), for the hourglass modes (eq. S-12).
-        const double slope = std::max(p.hardening.slope(state.eps_p[ip], rate), 0.0);
-        u.tangent_ratio -= p.membrane_weight[k] * E / (E + slope);
-      }
-      u.thickness_strain += p.membrane_weight[k] * r.thickness_strain;
-      if (p.failure_strain > 0.0 && state.eps_p[ip] >= p.failure_strain) u.failed = true;
-      state.sxx[ip] = sxx, state.syy[ip] = syy, state.sxy[ip] = sxy;
+    const double ex = (s.dxx + z * s.kxx) * dt, ey = (s.dyy + z * s.kyy) * dt, g = (s.gxy + z * s.kxy) * dt;
+    const double increment_rate = std::sqrt(2.0 / 3.0 * (ex * ex + ey * ey + (ex + ey) * (ex + ey) + 0.5 * g * g)) / dt;
+    const double rate = p.hardening.filtered_rate(increment_rate, state.eps_rate[ip], dt);  // eq. RF
+    state.eps_rate[ip] = rate;
+    const auto return_to_yield = p.radial_return ? materials::plane_stress_radial_return : materials::plane_stress_update;
+    const auto r = return_to_yield(elastic, p.hardening, ex, ey, g, rate, state.eps_p[ip], sxx, syy, sxy,
+                                   &state.static_yield[ip]);
+    state.eps_p[ip] += r.plastic_strain_increment;
+    if (r.plastic_strain_increment > 0.0 && p.physical_hourglass) {
+      // Elastic-plastic tangent of the point, E H' / (E + H'), for the hourglass modes (eq. S-12).
+      const double slope = std::max(p.hardening.slope(state.eps_p[ip], rate), 0.0);
+      u.tangent_ratio -= p.membrane_weight[k] * E / (E + slope);
     }
-    u.n[0] += wn * sxx, u.n[1] += wn * syy, u.n[2] += wn * sxy;
-    u.m[0] += wm * sxx, u.m[1] += wm * syy, u.m[2] += wm * sxy;
+    u.thickness_strain += p.membrane_weight[k] * r.thickness_strain;
+    if (p.failure_strain > 0.0 && state.eps_p[ip] >= p.failure_strain) u.failed = true;
+    state.sxx[ip] = sxx, state.syy[ip] = syy, state.sxy[ip] = sxy;
   }
+}
+
+// Updates the section's stresses over dt (dt = 0: no update) and returns its resultants before and after. `first`
+// is the ShellState index of its first point; `bending` its three outer-fibre bending stresses 6 M / t^2 when N = 0
+// (else unused).
+inline Update update(const ShellGroupParameters& p, const materials::PlaneStressElastic& elastic, ShellState& state,
+                     std::size_t first, double* bending, double t, const StrainRates& s, double dt) {
+  Update u;
+  const Resultants before = resultants(p, state, first, bending, t);
+  for (int c = 0; c < 3; ++c) u.old_n[c] = before.n[c], u.old_m[c] = before.m[c];
+  if (dt > 0.0 && p.resultant_plasticity) update_resultants(p, elastic, state, first, bending, t, s, dt, u);
+  else if (dt > 0.0) update_points(p, elastic, state, first, t, s, dt, u);
+  const Resultants after = resultants(p, state, first, bending, t);
+  for (int c = 0; c < 3; ++c) u.n[c] = after.n[c], u.m[c] = after.m[c];
   return u;
 }
 

@@ -1,6 +1,8 @@
 // NAME.h5 and NAME.xdmf: mesh, field frames and time histories (layout: docs/output-format.md).
 // Written with the HDF5 C API through a serial file driver: only the process that owns the file calls it.
 #include "crumple/output/results_file.hpp"
+
+#include "crumple/model/history_variables.hpp"
 #include "crumple/solver/element_status.hpp"
 #include "hdf5_support.hpp"
 #include "xml_text.hpp"
@@ -16,6 +18,8 @@
 #include <string_view>
 #include <system_error>
 #include <utility>
+
+#include "hdf5_support.hpp"
 
 namespace crumple {
 namespace {
@@ -45,11 +49,73 @@ struct Frame {
 
 // An extendible history dataset: `rows` (1-D) or `rows x columns` (2-D; columns may be 0).
 struct Series {
-  const char* name = "";
+  std::string path;  // "/history/time", "/history/th/NODE_2"
   bool two_d = false;
   hsize_t columns = 0;
   Handle dataset;
 };
+
+// The global history series (docs/output-format.md, "/history"): 1-D ones with their unit, then the 2-D ones.
+struct GlobalSeries {
+  const char* name;
+  const char* unit;  // 1-D: the dimension of the values; 2-D: "" (per column)
+  Dimension dimension;
+};
+constexpr std::array<GlobalSeries, 13> kGlobalSeries{{{"time", "T", {0, 0, 1}},
+                                                      {"dt", "T", {0, 0, 1}},
+                                                      {"internal", "E", {1, 2, -2}},
+                                                      {"kinetic_translational", "E", {1, 2, -2}},
+                                                      {"kinetic_rotational", "E", {1, 2, -2}},
+                                                      {"hourglass", "E", {1, 2, -2}},
+                                                      {"contact", "E", {1, 2, -2}},
+                                                      {"external_work", "E", {1, 2, -2}},
+                                                      {"total", "E", {1, 2, -2}},
+                                                      {"rigid_wall_force", "", {}},
+                                                      {"node_values", "", {}},
+                                                      {"rigid_body_values", "", {}},
+                                                      {"interface_values", "", {}}}};
+
+// The columns of one object in a global 2-D series: name, unit and dimension of each value.
+struct GlobalColumn {
+  const char* variable;
+  const char* unit;
+  Dimension dimension;
+};
+constexpr Dimension kForceDimension{1, 1, -2}, kEnergyDimension{1, 2, -2};
+constexpr std::array<GlobalColumn, 3> kWallColumns{{{"FX", "F", kForceDimension},
+                                                    {"FY", "F", kForceDimension},
+                                                    {"FZ", "F", kForceDimension}}};
+constexpr std::array<GlobalColumn, 9> kBodyColumns{{{"X", "L", {0, 1, 0}},
+                                                    {"Y", "L", {0, 1, 0}},
+                                                    {"Z", "L", {0, 1, 0}},
+                                                    {"VX", "L/T", {0, 1, -1}},
+                                                    {"VY", "L/T", {0, 1, -1}},
+                                                    {"VZ", "L/T", {0, 1, -1}},
+                                                    {"WX", "1/T", {0, 0, -1}},
+                                                    {"WY", "1/T", {0, 0, -1}},
+                                                    {"WZ", "1/T", {0, 0, -1}}}};
+constexpr std::array<GlobalColumn, 10> kInterfaceColumns{{{"FNX", "F", kForceDimension},
+                                                          {"FNY", "F", kForceDimension},
+                                                          {"FNZ", "F", kForceDimension},
+                                                          {"FTX", "F", kForceDimension},
+                                                          {"FTY", "F", kForceDimension},
+                                                          {"FTZ", "F", kForceDimension},
+                                                          {"ELASTIC_ENERGY", "E", kEnergyDimension},
+                                                          {"FRICTION_WORK", "E", kEnergyDimension},
+                                                          {"ABSORBED", "E", kEnergyDimension},
+                                                          {"ACTIVE_NODES", "-", {}}}};
+
+// Labelled columns of a global 2-D series: `columns` per object, objects in model order.
+template <class Object, std::size_t Count>
+std::vector<HistoryColumn> global_columns(const char* series, const std::vector<Object>& objects,
+                                          const std::array<GlobalColumn, Count>& columns, const double (&work)[3]) {
+  std::vector<HistoryColumn> out;
+  for (const Object& o : objects)
+    for (const GlobalColumn& c : columns)
+      out.push_back({o.user_id, o.title, c.variable, c.unit, si_factor(c.dimension, work),
+                     fmt::format("{}/{}/{}", series, o.user_id, c.variable)});
+  return out;
+}
 
 }  // namespace
 
@@ -65,12 +131,16 @@ struct ResultsFile::Impl {
   std::vector<Frame> frames;
   bool contact_field = false;  // frames carry contact_force (the model has contact interfaces)
 
-  // Histories: 9 scalar series, then rigid_wall_force, node_values, rigid_body_values, interface_values.
-  static constexpr std::size_t kScalars = 9, kWide = 4;
-  std::array<Series, kScalars + kWide> series;
+  // Histories: 9 scalar series, then rigid_wall_force, node_values, rigid_body_values, interface_values, then one
+  // series per /TH dataset (th, in the same order).
+  static constexpr std::size_t kScalars = 9, kWide = 4, kGlobal = kScalars + kWide;
+  std::vector<Series> series;
+  std::vector<HistoryDataset> th;
   bool widths_known = false;
-  std::array<std::size_t, kWide> widths{};        // values per row of the 2-D series
-  std::array<std::vector<double>, kScalars + kWide> pending;  // rows not yet appended, row-major
+  std::array<std::size_t, kWide> widths{};        // values per row of the global 2-D series
+  std::array<std::vector<HistoryColumn>, kWide> wide_columns;  // their labels, written when the first row fits them
+  double work_si[3] = {1.0, 1.0, 1.0};             // SI size of the working units
+  std::vector<std::vector<double>> pending;        // rows not yet appended, row-major, one per series
   std::size_t pending_rows = 0;
 
   [[noreturn]] void fail(const std::string& what) const {
@@ -90,6 +160,14 @@ struct ResultsFile::Impl {
 
   Handle group(hid_t location, const std::string& name) const {
     return {check(H5Gcreate2(location, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), "cannot create " + name),
+            H5Gclose};
+  }
+  // A group whose members a reader lists in the order they were written.
+  Handle ordered_group(hid_t location, const std::string& name) const {
+    Handle plist(check(H5Pcreate(H5P_GROUP_CREATE), "property list"), H5Pclose);
+    check_status(H5Pset_link_creation_order(plist.get(), H5P_CRT_ORDER_TRACKED | H5P_CRT_ORDER_INDEXED),
+                 "property list");
+    return {check(H5Gcreate2(location, name.c_str(), H5P_DEFAULT, plist.get(), H5P_DEFAULT), "cannot create " + name),
             H5Gclose};
   }
 
@@ -148,6 +226,19 @@ struct ResultsFile::Impl {
     check_status(H5Awrite(attr.get(), type.get(), &text), std::string("cannot write attribute ") + name);
   }
 
+  void string_array_attribute(hid_t location, const char* name, const std::vector<std::string>& values) const {
+    Handle type = utf8_string_type();
+    const hsize_t n = values.size();
+    Handle space(check(H5Screate_simple(1, &n, nullptr), "dataspace"), H5Sclose);
+    Handle attr(check(H5Acreate2(location, name, type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
+                      std::string("cannot create attribute ") + name),
+                H5Aclose);
+    std::vector<const char*> texts;
+    for (const std::string& v : values) texts.push_back(v.c_str());
+    if (n > 0)
+      check_status(H5Awrite(attr.get(), type.get(), texts.data()), std::string("cannot write attribute ") + name);
+  }
+
   void string_dataset(hid_t location, const std::string& name, const std::vector<std::string>& values) const {
     Handle type = utf8_string_type();
     const hsize_t n = values.size();
@@ -198,20 +289,61 @@ struct ResultsFile::Impl {
     element_groups = model.element_groups.size();
   }
 
-  void create_history() {
-    Handle history = group(file.get(), "history");
-    constexpr std::array<const char*, kScalars + kWide> names{
-        "time",    "dt",      "internal",      "kinetic_translational", "kinetic_rotational", "hourglass",
-        "contact", "external_work", "total", "rigid_wall_force",      "node_values",        "rigid_body_values",
-        "interface_values"};
-    for (std::size_t s = 0; s < series.size(); ++s) {
-      series[s].name = names[s];
+  void create_history(const Model& model) {
+    Handle history = ordered_group(file.get(), "history");
+    for (int i = 0; i < 3; ++i) work_si[i] = model.units.work[i];
+    series.resize(kGlobal + th.size());
+    pending.resize(series.size());
+    for (std::size_t s = 0; s < kGlobal; ++s) {
+      series[s].path = std::string("/history/") + kGlobalSeries[s].name;
       series[s].two_d = s >= kScalars;
     }
-    for (std::size_t s = 0; s < kScalars; ++s) create_series(history.get(), series[s]);
+    for (std::size_t s = 0; s < kScalars; ++s) {
+      create_series(series[s]);
+      const GlobalSeries& g = kGlobalSeries[s];
+      string_attribute(series[s].dataset.get(), "unit", g.unit);
+      attribute(series[s].dataset.get(), "si_scale", si_factor(g.dimension, work_si));
+      string_attribute(series[s].dataset.get(), "label", g.name);
+    }
+    wide_columns = {global_columns("rigid_wall_force", model.rigid_walls, kWallColumns, work_si), {},
+                    global_columns("rigid_body_values", model.rigid_bodies, kBodyColumns, work_si),
+                    global_columns("interface_values", model.type7_interfaces, kInterfaceColumns, work_si)};
+    Handle th_group = ordered_group(history.get(), "th");
+    for (std::size_t d = 0; d < th.size(); ++d) create_th_series(series[kGlobal + d], th[d]);
   }
 
-  void create_series(hid_t location, Series& s) const {
+  // /history/th/<name>: rows x columns, with the request and each column described in attributes.
+  void create_th_series(Series& s, const HistoryDataset& d) {
+    s.path = "/history/th/" + d.name;
+    s.two_d = true;
+    s.columns = d.columns.size();
+    create_series(s);
+    const hid_t set = s.dataset.get();
+    string_attribute(set, "kind", d.kind);
+    string_attribute(set, "keyword", d.keyword);
+    attribute(set, "id", d.id);
+    string_attribute(set, "title", d.title);
+    column_attributes(set, d.columns);
+  }
+
+  // Per column: object_ids, object_titles, variables, units, si_scale, labels.
+  void column_attributes(hid_t set, const std::vector<HistoryColumn>& columns) const {
+    std::vector<std::int64_t> ids;
+    std::vector<std::string> titles, variables, units, labels;
+    std::vector<double> scales;
+    for (const HistoryColumn& c : columns) {
+      ids.push_back(c.object_id), titles.push_back(c.object_title), variables.push_back(c.variable);
+      units.push_back(c.unit), labels.push_back(c.label), scales.push_back(c.si_scale);
+    }
+    array_attribute(set, "object_ids", ids);
+    string_array_attribute(set, "object_titles", titles);
+    string_array_attribute(set, "variables", variables);
+    string_array_attribute(set, "units", units);
+    array_attribute(set, "si_scale", scales);
+    string_array_attribute(set, "labels", labels);
+  }
+
+  void create_series(Series& s) const {
     const int rank = s.two_d ? 2 : 1;
     const std::array<hsize_t, 2> dims{0, s.columns};
     const std::array<hsize_t, 2> max{H5S_UNLIMITED, H5S_UNLIMITED};
@@ -219,22 +351,23 @@ struct ResultsFile::Impl {
         s.two_d ? std::max<hsize_t>(1, std::min<hsize_t>(kHistoryChunkRows, 8192 / std::max<hsize_t>(1, s.columns)))
                 : kHistoryChunkRows,
         std::max<hsize_t>(1, s.columns)};
-    Handle space(check(H5Screate_simple(rank, dims.data(), max.data()), std::string("dataspace ") + s.name), H5Sclose);
+    Handle space(check(H5Screate_simple(rank, dims.data(), max.data()), "dataspace " + s.path), H5Sclose);
     Handle plist(check(H5Pcreate(H5P_DATASET_CREATE), "property list"), H5Pclose);
-    check_status(H5Pset_chunk(plist.get(), rank, chunk.data()), std::string("chunks of ") + s.name);
-    s.dataset = Handle(check(H5Dcreate2(location, s.name, H5T_IEEE_F64LE, space.get(), H5P_DEFAULT, plist.get(),
-                                        H5P_DEFAULT),
-                             std::string("cannot create /history/") + s.name),
+    check_status(H5Pset_chunk(plist.get(), rank, chunk.data()), "chunks of " + s.path);
+    s.dataset = Handle(check(H5Dcreate2(file.get(), s.path.c_str(), H5T_IEEE_F64LE, space.get(), H5P_DEFAULT,
+                                        plist.get(), H5P_DEFAULT),
+                             "cannot create " + s.path),
                        H5Dclose);
   }
 
   // Creates the 2-D series once their widths are known (first row, or close() with no row: width 0).
+  // Their columns are labelled when the row has the model's walls, bodies and interfaces.
   void create_wide_series() {
-    Handle history(check(H5Gopen2(file.get(), "history", H5P_DEFAULT), "cannot open /history"), H5Gclose);
     for (std::size_t w = 0; w < kWide; ++w) {
       Series& s = series[kScalars + w];
       s.columns = widths[w];
-      create_series(history.get(), s);
+      create_series(s);
+      if (widths[w] > 0 && widths[w] == wide_columns[w].size()) column_attributes(s.dataset.get(), wide_columns[w]);
     }
     widths_known = true;
   }
@@ -243,7 +376,7 @@ struct ResultsFile::Impl {
     if (pending_rows == 0) return;
     for (std::size_t s = 0; s < series.size(); ++s) {
       Series& ser = series[s];
-      const std::string what = std::string("cannot append to /history/") + ser.name;
+      const std::string what = "cannot append to " + ser.path;
       Handle file_space(check(H5Dget_space(ser.dataset.get()), what), H5Sclose);
       std::array<hsize_t, 2> dims{};
       check(H5Sget_simple_extent_dims(file_space.get(), dims.data(), nullptr), what);
@@ -277,14 +410,25 @@ struct ResultsFile::Impl {
       if (wide[w]->size() != widths[w])
         throw std::runtime_error(fmt::format("results file {}: history row at time {} has {} {} values, the first row "
                                              "had {}",
-                                             path.string(), row.time, wide[w]->size(), series[kScalars + w].name,
+                                             path.string(), row.time, wide[w]->size(), series[kScalars + w].path,
                                              widths[w]));
+    if (row.th.size() != th.size())
+      throw std::runtime_error(fmt::format("results file {}: history row at time {} has {} /TH datasets, the file {}",
+                                           path.string(), row.time, row.th.size(), th.size()));
+    for (std::size_t d = 0; d < th.size(); ++d)
+      if (row.th[d].size() != th[d].columns.size())
+        throw std::runtime_error(fmt::format("results file {}: history row at time {} has {} values for {}, which has "
+                                             "{} columns",
+                                             path.string(), row.time, row.th[d].size(), series[kGlobal + d].path,
+                                             th[d].columns.size()));
     const std::array<double, kScalars> scalars{row.time,    row.dt,      row.internal,      row.kinetic_translational,
                                                row.kinetic_rotational, row.hourglass, row.contact,
                                                row.external_work,      row.total};
     for (std::size_t s = 0; s < kScalars; ++s) pending[s].push_back(scalars[s]);
     for (std::size_t w = 0; w < kWide; ++w)
       pending[kScalars + w].insert(pending[kScalars + w].end(), wide[w]->begin(), wide[w]->end());
+    for (std::size_t d = 0; d < th.size(); ++d)
+      pending[kGlobal + d].insert(pending[kGlobal + d].end(), row.th[d].begin(), row.th[d].end());
     ++pending_rows;
     if (pending_rows >= kHistoryBuffer) flush_history();
   }
@@ -540,7 +684,8 @@ struct ResultsFile::Impl {
   }
 };
 
-ResultsFile::ResultsFile(const std::filesystem::path& path, const Model& model) : impl_(std::make_unique<Impl>()) {
+ResultsFile::ResultsFile(const std::filesystem::path& path, const Model& model, std::vector<HistoryDataset> histories)
+    : impl_(std::make_unique<Impl>()) {
   QuietErrors quiet;
   Impl& d = *impl_;
   d.path = path;
@@ -550,6 +695,9 @@ ResultsFile::ResultsFile(const std::filesystem::path& path, const Model& model) 
   Handle fapl(d.check(H5Pcreate(H5P_FILE_ACCESS), "property list"), H5Pclose);
   // Strong close: H5Fclose closes every object still open, so the file is complete when close() returns.
   d.check_status(H5Pset_fclose_degree(fapl.get(), H5F_CLOSE_STRONG), "property list");
+  // The 1.8 object format stores large attributes densely: the column labels of a history with many columns do not
+  // fit the 64 KiB object header of the earliest format.
+  d.check_status(H5Pset_libver_bounds(fapl.get(), H5F_LIBVER_V18, H5F_LIBVER_LATEST), "property list");
   d.file = Handle(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl.get()), H5Fclose);
   if (!d.file.valid()) {
     const std::string detail = hdf5::last_error();
@@ -565,7 +713,8 @@ ResultsFile::ResultsFile(const std::filesystem::path& path, const Model& model) 
                     std::vector<double>{model.units.work[0], model.units.work[1], model.units.work[2]});
   d.write_mesh(model);
   d.group(root, "frames");
-  d.create_history();
+  d.th = std::move(histories);
+  d.create_history(model);
   d.check_status(H5Fflush(root, H5F_SCOPE_GLOBAL), "cannot flush");
   d.write_xdmf();
 }

@@ -141,8 +141,8 @@ RunStatus status_of(const StopReason& stop) {
 
 RunRecorder::RunRecorder(const Model& model, const std::filesystem::path& directory, const std::string& name,
                          bool write_results)
-    : model_(model), directory_(directory), name_(name), listing_(directory / (name + ".out")) {
-  if (write_results) results_.emplace(directory / (name + ".h5"), model);
+    : model_(model), directory_(directory), name_(name), listing_(directory / (name + ".out")), channels_(model) {
+  if (write_results) results_.emplace(directory / (name + ".h5"), model, channels_.datasets());
 }
 
 void RunRecorder::start(const SolverState& s, const RunStart& run, const std::vector<std::string>& notes,
@@ -246,7 +246,7 @@ void RunRecorder::frame(const SolverState& s) {
   last_frame_cycle_ = s.cycles_done + s.cycle;
 }
 
-void RunRecorder::history(const SolverState& s, double dt) {
+void RunRecorder::history(const SolverState& s, double dt, const VelocityChange& change) {
   if (!results_) return;
   const NodalState& n = s.nodes;
   HistoryRow row;
@@ -267,6 +267,7 @@ void RunRecorder::history(const SolverState& s, double dt) {
     for (double v : {r.elastic_energy, r.friction_work, r.absorbed, static_cast<double>(r.active_nodes)})
       row.interface_values.push_back(v);
   }
+  channels_.evaluate(s, change, row.th);
   results_->write_history(row);
 }
 

@@ -149,7 +149,7 @@ void apply_rigid_walls(const Model& m, SolverState& s, double dt_average, double
     }
     const bool exchange = moving && st.free_dofs != 0 && n.mass[static_cast<std::size_t>(w.node)] > 0.0;
     const V3 wall_velocity = exchange ? exchanged_velocity(w, st, n, dt_next) : st.velocity;
-    V3 impulse{};
+    V3 impulse{}, normal_impulse{};
     for (std::size_t i = 0; i < st.nodes.size(); ++i) {
       V3 normal{};
       double vn_new = 0.0;
@@ -174,6 +174,9 @@ void apply_rigid_walls(const Model& m, SolverState& s, double dt_average, double
       }
       n.vx[k] = v[0], n.vy[k] = v[1], n.vz[k] = v[2];
       for (std::size_t c = 0; c < 3; ++c) impulse[c] += n.mass[k] * (v[c] - before[c]);
+      // Its part along the wall's normal at the node, for the normal and tangential wall forces of the outputs.
+      const double along_normal = n.mass[k] * dot(sub(v, before), normal);
+      for (std::size_t c = 0; c < 3; ++c) normal_impulse[c] += along_normal * normal[c];
     }
     // A moving wall takes the opposite impulse in its free dofs (momentum is exchanged, not created).
     if (exchange) {
@@ -185,7 +188,10 @@ void apply_rigid_walls(const Model& m, SolverState& s, double dt_average, double
       st.velocity = node_velocity(n, k);
     }
     // Force of the wall on its nodes during the cycle (the listing reports it; the wall takes the opposite).
-    for (std::size_t c = 0; c < 3; ++c) st.force[c] = dt_average > 0.0 ? impulse[c] / dt_average : 0.0;
+    for (std::size_t c = 0; c < 3; ++c) {
+      st.force[c] = dt_average > 0.0 ? impulse[c] / dt_average : 0.0;
+      st.normal_force[c] = dt_average > 0.0 ? normal_impulse[c] / dt_average : 0.0;
+    }
   }
 }
 

@@ -106,7 +106,10 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunReco
     }
     if (due.frame) recorder.frame(s);
     if (due.history) {
-      recorder.history(s, dt_next);
+      VelocityChange change;
+      for (std::size_t d = 0; d < 6; ++d) change.before[d] = &scratch.before[d], change.free[d] = &scratch.free[d];
+      change.dt = dt_average;
+      recorder.history(s, dt_next, change);
       if (options.observer) options.observer(s);
     }
     advance_schedule(m, s, due, schedule);

@@ -1,6 +1,8 @@
 // NAME.h5 / NAME.xdmf (docs/output-format.md): written through ResultsFile, read back with ResultsReader.
 #include <gtest/gtest.h>
+#include <hdf5.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -9,6 +11,7 @@
 #include <vector>
 
 #include "crumple/output/results_file.hpp"
+#include "crumple/output/history_reader.hpp"
 #include "crumple/output/results_reader.hpp"
 #include "deck_files.hpp"
 
@@ -323,6 +326,110 @@ TEST(ResultsFile, HistoryRowsKeepTheWidthOfTheFirst) {
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("rigid_wall_force"), std::string::npos) << e.what();
   }
+}
+
+// Two /TH datasets laid out by hand, the second with 5000 columns: its labels are far above the 64 KiB that the
+// earliest HDF5 object format allows for attributes. Written, then read back through HistoryFile.
+std::vector<HistoryDataset> th_layout() {
+  HistoryDataset node{"NODE_2", "NODE", "/TH/NODE/2", 2, "nodes", {}};
+  node.columns = {{6, "corner", "DX", "L", 1e-3, "NODE_2/6/DX"}, {6, "corner", "VX", "L/T", 1.0, "NODE_2/6/VX"},
+                  {7, "", "DX", "L", 1e-3, "NODE_2/7/DX"}};
+  HistoryDataset wide{"SHEL_3", "SHEL", "/TH/SHELL/3", 3, "shells", {}};
+  for (int e = 1; e <= 5000; ++e)
+    wide.columns.push_back({e, "a rather long element name " + std::to_string(e), "F1", "F/L", 1.0,
+                            "SHEL_3/" + std::to_string(e) + "/F1"});
+  return {node, wide};
+}
+
+HistoryRow th_row(int k) {
+  HistoryRow r = history_row(k);
+  r.th = {{0.1 * k, 1.0 * k, -0.2 * k}, std::vector<double>(5000, 0.5 * k)};
+  r.th[1][4999] = 7.0 + k;
+  return r;
+}
+
+TEST(ResultsFile, ThDatasetsCarryTheirColumnsAndReadBack) {
+  test::TempDir dir;
+  const Deck d = read_deck(test::write_deck(dir));
+  const auto path = dir.path() / "TEST.h5";
+  {
+    ResultsFile file(path, d.model, th_layout());
+    for (int k = 0; k < 3; ++k) file.write_history(th_row(k));
+    file.close();
+  }
+  const ResultsReader h5(path);
+  EXPECT_EQ(h5.shape("/history/th/NODE_2"), (std::vector<std::size_t>{3, 3}));
+  EXPECT_EQ(h5.doubles("/history/th/NODE_2"), (std::vector<double>{0, 0, 0, 0.1, 1, -0.2, 0.2, 2, -0.4}));
+  EXPECT_EQ(h5.attribute<std::int64_t>("/history/th/NODE_2", "id"), 2);
+  EXPECT_EQ(h5.shape("/history/th/SHEL_3"), (std::vector<std::size_t>{3, 5000}));
+  EXPECT_EQ(h5.doubles("/history/th/SHEL_3")[2 * 5000 + 4999], 9.0);
+
+  const HistoryFile file(path);
+  EXPECT_EQ(file.rows(), 3u);
+  const auto& series = file.series();
+  ASSERT_GE(series.size(), 3u);
+  EXPECT_EQ(series[0].path, "/history/time");
+  EXPECT_EQ(series[0].columns.at(0).unit, "T");
+  const auto internal = std::find_if(series.begin(), series.end(),
+                                     [](const HistorySeries& s) { return s.path == "/history/internal"; });
+  ASSERT_NE(internal, series.end());
+  EXPECT_EQ(internal->kind, "global");
+  EXPECT_EQ(internal->columns.at(0).unit, "E");
+  EXPECT_EQ(internal->columns.at(0).label, "internal");
+  // The /TH datasets come last, in the order of the layout.
+  const HistorySeries& node = series[series.size() - 2];
+  const HistorySeries& shells = series.back();
+  EXPECT_EQ(node.path, "/history/th/NODE_2");
+  EXPECT_EQ(node.kind, "NODE");
+  EXPECT_EQ(node.keyword, "/TH/NODE/2");
+  EXPECT_EQ(node.id, 2);
+  EXPECT_EQ(node.title, "nodes");
+  ASSERT_EQ(node.columns.size(), 3u);
+  EXPECT_EQ(node.columns[1].label, "NODE_2/6/VX");
+  EXPECT_EQ(node.columns[1].unit, "L/T");
+  EXPECT_EQ(node.columns[1].object_title, "corner");
+  EXPECT_EQ(node.columns[2].object_id, 7);
+  EXPECT_EQ(node.columns[0].si_scale, 1e-3);
+  EXPECT_EQ(file.values(series.size() - 2), h5.doubles("/history/th/NODE_2"));
+  ASSERT_EQ(shells.columns.size(), 5000u);
+  EXPECT_EQ(shells.columns[4999].label, "SHEL_3/5000/F1");
+  EXPECT_EQ(shells.columns[4999].object_title, "a rather long element name 5000");
+}
+
+TEST(ResultsFile, ThRowsMustFitTheLayout) {
+  test::TempDir dir;
+  const Deck d = read_deck(test::write_deck(dir));
+  ResultsFile file(dir.path() / "TEST.h5", d.model, th_layout());
+  HistoryRow row = th_row(1);
+  row.th[0].pop_back();
+  try {
+    file.write_history(row);
+    FAIL() << "no exception";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("/history/th/NODE_2, which has 3 columns"), std::string::npos) << e.what();
+  }
+  row.th.pop_back();
+  EXPECT_THROW(file.write_history(row), std::runtime_error);
+}
+
+TEST(ResultsFile, HistoryFileRefusesOtherFiles) {
+  test::TempDir dir;
+  const auto text = dir.write("notes.h5", "not HDF5");
+  try {
+    const HistoryFile file(text);
+    FAIL() << "no exception";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("notes.h5: cannot open as an HDF5 file"), std::string::npos) << e.what();
+  }
+  const auto other = dir.path() / "other.h5";
+  H5Fclose(H5Fcreate(other.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT));
+  try {
+    const HistoryFile file(other);
+    FAIL() << "no exception";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("not a Crumple results file"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(HistoryFile(dir.path() / "missing.h5"), std::runtime_error);
 }
 
 TEST(ResultsFile, StateThatDoesNotMatchTheMeshIsRejected) {

@@ -82,6 +82,22 @@ GroupStepResult shell3_forces(const ElementTable& table, const ElementGroup& gro
 bool shell_switch_to_small_strain(const ElementTable& table, const ShellGroupParameters& p, const NodalState& nodes,
                                   ShellState& state, std::int32_t element);
 
+// What a shell element's state holds at the end of the last cycle, for output (docs/output-format.md,
+// "/history/th"): the stress resultants per unit length in the element's co-rotational frame (eq. S-4) - membrane
+// forces N (xx, yy, xy) [F/L], moments M (xx, yy, xy) [F L/L], transverse shears Q (x, z and y, z) [F/L] - and the
+// equivalent plastic strain at the lower (zeta = -1/2) and upper (+1/2) surface points and the mean filtered strain
+// rate of the points [1/T]. Ishell 12: the mean over the four Gauss points. N = 0 and N = 1: one point, both
+// surfaces.
+struct ShellElementOutput {
+  double n[3] = {0.0, 0.0, 0.0}, m[3] = {0.0, 0.0, 0.0}, q[2] = {0.0, 0.0};
+  double plastic_strain_lower = 0.0, plastic_strain_upper = 0.0;
+  double strain_rate = 0.0;
+};
+// `element` is an index of the kind's ElementTable within `group`, `p` and `state` the group's parameters and its
+// kind's ShellState.
+ShellElementOutput shell_element_output(const ShellGroupParameters& p, const ShellState& state,
+                                        const ElementGroup& group, std::int32_t element);
+
 // Lumped rotational inertia an element of mass `element_mass` gives each of its `nodes` nodes [M L^2]:
 // (m / n) (t^2 / 12 + A / 9) (docs/theory/shell4.md, eq. S-8), the reference solver's.
 inline double shell_node_rotational_inertia(double element_mass, double thickness, double area, int nodes) {

@@ -10,8 +10,9 @@ namespace crumple {
 
 enum class HistoryObject : std::uint8_t { Node, Part, RigidWall, Interface, Shell, Sh3n, Brick, Subset, Section, RigidBody };
 
-// Layouts and accepted variable names: docs/cards/loads-output-engine.md §6.1. Variables are kept as written
-// (upper case, each once, group names such as DEF not expanded); objects are kept once each, in deck order.
+// Layouts: docs/cards/loads-output-engine.md §6.1. Variables are kept as written (upper case, each once, group names
+// such as DEF not expanded: select_history_variables in history_variables.hpp expands them); objects are kept once
+// each, in deck order.
 struct TimeHistoryRequest {  // /TH/...
   SourceLocation where;
   std::string keyword;  // the card's keyword line, e.g. "/TH/SHELL/3", for messages

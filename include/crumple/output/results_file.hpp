@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "crumple/model/model.hpp"
+#include "crumple/output/history_channels.hpp"
 #include "crumple/solver/solver_state.hpp"
 
 namespace crumple {
@@ -23,12 +24,14 @@ struct HistoryRow {
   // per TYPE7 interface: normal force (3), tangential force (3) on the secondary nodes, elastic energy, friction
   // work, absorbed energy, active nodes (10 values)
   std::vector<double> interface_values;
+  std::vector<std::vector<double>> th;  // per /TH dataset of the file, its columns' values (HistoryChannels)
 };
 
 class ResultsFile {
  public:
-  // Creates the file and writes the mesh (coordinates, connectivity, user ids). Throws std::runtime_error.
-  ResultsFile(const std::filesystem::path& path, const Model& model);
+  // Creates the file and writes the mesh (coordinates, connectivity, user ids) and the empty history datasets, the
+  // /TH ones as `histories` lays them out. Throws std::runtime_error.
+  ResultsFile(const std::filesystem::path& path, const Model& model, std::vector<HistoryDataset> histories = {});
   ~ResultsFile();
   ResultsFile(const ResultsFile&) = delete;
   ResultsFile& operator=(const ResultsFile&) = delete;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "crumple/model/model.hpp"
+#include "crumple/output/history_channels.hpp"
 #include "crumple/output/listing.hpp"
 #include "crumple/output/progress.hpp"
 #include "crumple/output/results_file.hpp"
@@ -58,7 +59,9 @@ class RunRecorder {
   bool progress_due() { return progress_clock_.due(); }
   void progress(const SolverState& state, double dt, const StepControl& control);
   void frame(const SolverState& state);
-  void history(const SolverState& state, double dt);
+  // A history row: the energies, walls, bodies and interfaces, and every /TH dataset; `change` is the cycle's
+  // velocity update (accelerations and reactions).
+  void history(const SolverState& state, double dt, const VelocityChange& change = {});
   // The end of an engine deck: the listing's closing lines (termination, deletions, added mass, interfaces,
   // cycles, time profile); the progress line is cleared.
   void finish(const SolverState& state, const RunEvents& events, const PhaseTimes& phases, double wall_seconds);
@@ -80,6 +83,7 @@ class RunRecorder {
   std::string name_;
   std::ostream* console_ = nullptr;
   Listing listing_;
+  HistoryChannels channels_;
   std::optional<ResultsFile> results_;
   int engine_decks_ = 0;              // started so far
   long long last_row_cycle_ = -1;     // the cycle of the engine deck's last row

@@ -1,5 +1,6 @@
 #pragma once
 // The nodal state the solver advances every cycle, as structure of arrays indexed by dense node index.
+#include <array>
 #include <cstddef>
 #include <vector>
 
@@ -22,6 +23,17 @@ struct NodalState {
   void clear_forces() {
     for (auto* v : {&fx, &fy, &fz, &mx, &my, &mz}) std::fill(v->begin(), v->end(), 0.0);
   }
+};
+
+// The velocity update of the last cycle as the time loop leaves it, for outputs (docs/output-format.md,
+// "/history/th"): the accelerations a^n = (v^(n+1/2) - before) / dt and the reactions of the kinematic conditions
+// m (v^(n+1/2) - free) / dt.
+struct VelocityChange {
+  std::array<const std::vector<double>*, 6> before{};  // v^(n-1/2): x y z rx ry rz
+  // After the free update (CD-2), before the kinematic conditions; a rigid body's nodes: after the body's motion.
+  std::array<const std::vector<double>*, 6> free{};
+  double dt = 0.0;  // dt^n, the step of the update [T]
+  bool known() const { return dt > 0.0 && before[0] != nullptr && free[0] != nullptr; }
 };
 
 }  // namespace crumple

@@ -50,6 +50,7 @@ struct RigidWallState {
   std::vector<std::uint8_t> tied;    // tied walls: 1 once the node touched
   std::vector<std::uint8_t> active;  // scratch of the cycle: 1 when the node is held by the wall
   std::array<double, 3> force{};     // force of the wall on the nodes during the last cycle [F]
+  std::array<double, 3> normal_force{};  // its part along the wall's normal at each node it held [F]
   std::array<double, 3> velocity{};  // wall velocity v^(n+1/2) [L/T]
   std::array<double, 3> origin{};    // current point M [L]
   // Moving walls: translation dofs (bit 0 x, 1 y, 2 z) in which the wall node is free, i.e. neither fixed nor

@@ -9,6 +9,7 @@
 #include <span>
 
 #include "../context.hpp"
+#include "crumple/model/history_variables.hpp"
 
 namespace crumple::deck {
 namespace {
@@ -20,41 +21,10 @@ enum class ObjectLines : std::uint8_t {
   IdBlankName,  // one object per line: id 1-10, columns 11-20 blank, name 21-100
 };
 
-struct HistoryKind {
+struct HistoryCard {
   HistoryObject object;
   ObjectLines lines;
-  std::span<const std::string_view> variables;  // the manual's names for what Crumple computes (DEF... included)
-  std::span<const std::string_view> written;    // the names whose values NAME.h5 records
 };
-
-// Variable names Crumple can record, per object kind: the manual's variables for the quantities Crumple computes
-// (no thermal, user, fluid or per-integration-point values) and its group names. Anything else is an error, so
-// that a curve the user asked for is never silently missing from the results.
-constexpr std::array<std::string_view, 34> kNodeVariables{
-    "DEF",  "D",     "V",     "A",     "VR",     "AR",     "XYZ",    "DX",  "DY",  "DZ", "VX", "VY",
-    "VZ",   "AX",    "AY",    "AZ",    "VRX",    "VRY",    "VRZ",    "ARX", "ARY", "ARZ", "X", "Y",
-    "Z",    "DRX",   "DRY",   "DRZ",   "REACX",  "REACY",  "REACZ",  "REACXX", "REACYY", "REACZZ"};
-constexpr std::array<std::string_view, 24> kPartVariables{
-    "DEF", "IE",  "KE",  "XMOM", "YMOM", "ZMOM", "MASS", "HE",  "XCG", "YCG",   "ZCG",   "XXMOM",
-    "YYMOM", "ZZMOM", "IXX", "IYY", "IZZ", "IXY", "IYZ", "IZX", "RIE", "KERB", "RKERB", "RKE"};
-constexpr std::array<std::string_view, 27> kShellVariables{
-    "DEF", "STRESS", "STRAIN", "PLAS", "F1",   "F2",   "F12", "Q1",  "Q2",  "M1",  "M2",  "M12", "IEM", "IEB",
-    "OFF", "THIC",   "EMIN",   "EMAX", "EPSD", "E1",   "E2",  "E12", "SH1", "SH2", "K1",  "K2",  "K12"};
-constexpr std::array<std::string_view, 20> kBrickVariables{
-    "DEF",  "OFF", "SX",  "SY",   "SZ",    "SXY",   "SYZ",   "SXZ",   "IE",    "DENS",
-    "BULK", "VOL", "PLAS", "PLSR", "EPSXX", "EPSYY", "EPSZZ", "EPSXY", "EPSXZ", "EPSYZ"};
-constexpr std::array<std::string_view, 21> kInterfaceVariables{
-    "DEF",  "FNX",  "FNY",  "FNZ",   "FTX", "FTY", "FTZ", "|FNX|", "|FNY|",    "|FNZ|",   "||FN||",
-    "|FX|", "|FY|", "|FZ|", "||F||", "MX",  "MY",  "MZ",  "CE_ELAST", "CE_FRIC", "CE_DAMP"};
-constexpr std::array<std::string_view, 7> kWallVariables{"DEF", "FNX", "FNY", "FNZ", "FTX", "FTY", "FTZ"};
-constexpr std::array<std::string_view, 13> kRigidBodyVariables{"DEF", "F",  "M",  "R",  "FX", "FY", "FZ",
-                                                               "MX",  "MY", "MZ", "RX", "RY", "RZ"};
-// Interface values NAME.h5 records by these names (history/interface_values).
-constexpr std::array<std::string_view, 8> kInterfaceWritten{"FNX", "FNY", "FNZ", "FTX", "FTY", "FTZ", "CE_ELAST",
-                                                            "CE_FRIC"};
-constexpr std::array<std::string_view, 19> kSectionVariables{
-    "DEF", "FN", "FT", "M",  "CENTER", "FNX", "FNY", "FNZ", "FTX",  "FTY",
-    "FTZ", "M1", "M2", "M3", "CX",     "CY",  "CZ",  "WORK", "WORKR"};
 
 std::string upper(std::string_view s) {
   std::string out(s);
@@ -110,41 +80,31 @@ void read_variables(const Line& line, TimeHistoryRequest& th) {
   }
 }
 
-// What NAME.h5 records for each kind of /TH card (results_file.cpp, docs/output-format.md): the energies always,
-// and the rigid walls, rigid bodies and interfaces whatever the cards ask. A request for anything else is
-// output Crumple does not write: a named warning, never an error (it changes no result).
-void note_what_is_written(const TimeHistoryRequest& th, const HistoryKind& kind, DeckContext& context) {
-  std::vector<std::string> missing;
-  for (const std::string& v : th.variables)
-    if (std::find(kind.written.begin(), kind.written.end(), v) == kind.written.end()) missing.push_back(v);
-  if (missing.empty()) return;
-  const std::string variables = fmt::format("{}", fmt::join(missing, " "));
-  std::string what;
-  switch (th.object) {
-    case HistoryObject::RigidWall:
-      what = fmt::format("variables {} not written by name: NAME.h5 holds the total force of every rigid wall "
-                         "(history/rigid_wall_force)", variables);
-      break;
-    case HistoryObject::RigidBody:
-      what = fmt::format("variables {} not written: NAME.h5 holds the position, velocity and angular velocity of "
-                         "every rigid body (history/rigid_body_values)", variables);
-      break;
-    case HistoryObject::Interface:
-      what = fmt::format("variables {} not written: NAME.h5 holds the normal and friction forces, elastic energy, "
-                         "friction work and absorbed energy of every interface (history/interface_values)",
-                         variables);
-      break;
-    default:
-      what = "time history not written by Crumple (NAME.h5 holds the energies, rigid walls, rigid bodies and "
-             "interfaces only)";
+// What NAME.h5 does not record of a /TH card (docs/output-format.md, "/history/th"): the variables Crumple does
+// not compute and the names that are no variable of the kind in the manual. Output Crumple does not write is a
+// named warning, never an error (it changes no result).
+void note_what_is_written(const TimeHistoryRequest& th, DeckContext& context) {
+  const HistorySelection selection = select_history_variables(th.object, th.variables);
+  std::vector<std::string_view> missing;
+  std::size_t written = 0;
+  for (const HistoryVariable* v : selection.variables) {
+    if (v->written) ++written;
+    else missing.push_back(v->name);
   }
-  std::vector<std::string> unknown;
-  for (const std::string& v : missing)
-    if (std::find(kind.variables.begin(), kind.variables.end(), v) == kind.variables.end()) unknown.push_back(v);
-  if (!unknown.empty())
-    what += fmt::format(" ({} not among the variables of {} in the manual that Crumple computes)",
-                        fmt::join(unknown, " "), th.keyword);
-  context.note(th.where, th.keyword, "", "output-only: " + what, SkipKind::OutputOnly);
+  if (missing.empty() && selection.unknown.empty()) return;
+  std::vector<std::string> parts;
+  if (th.object == HistoryObject::Section)
+    parts.push_back("time history not written by Crumple (cut-section forces are not computed)");
+  else if (written == 0)
+    parts.push_back("time history not written by Crumple");
+  if (!missing.empty() && th.object != HistoryObject::Section)
+    parts.push_back(fmt::format("variables {} not written{}", fmt::join(missing, " "),
+                                written > 0 ? " (NAME.h5 records the others)" : ""));
+  if (!selection.unknown.empty())
+    parts.push_back(fmt::format("{} not among the variables of {} in the manual that Crumple computes",
+                                fmt::join(selection.unknown, " "), th.keyword));
+  context.note(th.where, th.keyword, "", fmt::format("output-only: {}", fmt::join(parts, "; ")),
+               SkipKind::OutputOnly);
 }
 
 // Adds one object (with its name for the one-per-line kinds); an object listed twice would record the same curve
@@ -159,7 +119,7 @@ void add_object(TimeHistoryRequest& th, const Line& line, std::int64_t id, std::
   if (name) th.object_names.push_back(std::move(*name));
 }
 
-void read_object_line(const Line& line, const HistoryKind& kind, TimeHistoryRequest& th, DeckContext& context) {
+void read_object_line(const Line& line, const HistoryCard& kind, TimeHistoryRequest& th, DeckContext& context) {
   if (kind.lines == ObjectLines::Ids) {
     check_width(line, "Obj_ID");
     for (int column = 1; column <= 91; column += 10) {
@@ -182,7 +142,7 @@ void read_object_line(const Line& line, const HistoryKind& kind, TimeHistoryRequ
   add_object(th, line, id, line.text(21, 80), context);
 }
 
-void read_history(CardReader& reader, DeckContext& context, const HistoryKind& kind) {
+void read_history(CardReader& reader, DeckContext& context, const HistoryCard& kind) {
   TimeHistoryRequest th;
   th.where = reader.card().where;
   th.keyword = reader.card().keyword;
@@ -198,7 +158,7 @@ void read_history(CardReader& reader, DeckContext& context, const HistoryKind& k
   }
   for (; line; line = reader.next_nonblank()) read_object_line(*line, kind, th, context);
   if (th.object_ids.empty()) context.warn(th.where, th.keyword, "no objects listed: the group records nothing");
-  note_what_is_written(th, kind, context);
+  note_what_is_written(th, context);
   context.model.histories.push_back(std::move(th));
 }
 
@@ -284,27 +244,23 @@ void read_section(CardReader& reader, DeckContext& context) {
 }  // namespace
 
 void register_output_keywords(KeywordTable& table) {
-  auto history = [](HistoryObject object, ObjectLines lines, std::span<const std::string_view> variables,
-                    std::span<const std::string_view> written = {}) {
-    return [kind = HistoryKind{object, lines, variables, written}](CardReader& r, DeckContext& c) {
-      read_history(r, c, kind);
-    };
+  auto history = [](HistoryObject object, ObjectLines lines) {
+    return [card = HistoryCard{object, lines}](CardReader& r, DeckContext& c) { read_history(r, c, card); };
   };
   using H = HistoryObject;
   using L = ObjectLines;
-  table.push_back({"/TH/NODE", DeckPart::Starter, history(H::Node, L::IdSkewName, kNodeVariables)});
-  table.push_back({"/TH/PART", DeckPart::Starter, history(H::Part, L::Ids, kPartVariables)});
-  table.push_back({"/TH/SUBS", DeckPart::Starter, history(H::Subset, L::Ids, kPartVariables)});
-  table.push_back({"/TH/RWALL", DeckPart::Starter, history(H::RigidWall, L::Ids, kWallVariables)});
-  table.push_back(
-      {"/TH/INTER", DeckPart::Starter, history(H::Interface, L::Ids, kInterfaceVariables, kInterfaceWritten)});
+  table.push_back({"/TH/NODE", DeckPart::Starter, history(H::Node, L::IdSkewName)});
+  table.push_back({"/TH/PART", DeckPart::Starter, history(H::Part, L::Ids)});
+  table.push_back({"/TH/SUBS", DeckPart::Starter, history(H::Subset, L::Ids)});
+  table.push_back({"/TH/RWALL", DeckPart::Starter, history(H::RigidWall, L::Ids)});
+  table.push_back({"/TH/INTER", DeckPart::Starter, history(H::Interface, L::Ids)});
   // /TH/SHELL is not in the manual but HyperCrash writes it (QA box_crush) and Radioss reads it as /TH/SHEL.
-  table.push_back({"/TH/SHEL", DeckPart::Starter, history(H::Shell, L::IdSkewName, kShellVariables)});
-  table.push_back({"/TH/SHELL", DeckPart::Starter, history(H::Shell, L::IdSkewName, kShellVariables)});
-  table.push_back({"/TH/SH3N", DeckPart::Starter, history(H::Sh3n, L::IdSkewName, kShellVariables)});
-  table.push_back({"/TH/BRIC", DeckPart::Starter, history(H::Brick, L::IdBlankName, kBrickVariables)});
-  table.push_back({"/TH/SECTIO", DeckPart::Starter, history(H::Section, L::Ids, kSectionVariables)});
-  table.push_back({"/TH/RBODY", DeckPart::Starter, history(H::RigidBody, L::Ids, kRigidBodyVariables)});
+  table.push_back({"/TH/SHEL", DeckPart::Starter, history(H::Shell, L::IdSkewName)});
+  table.push_back({"/TH/SHELL", DeckPart::Starter, history(H::Shell, L::IdSkewName)});
+  table.push_back({"/TH/SH3N", DeckPart::Starter, history(H::Sh3n, L::IdSkewName)});
+  table.push_back({"/TH/BRIC", DeckPart::Starter, history(H::Brick, L::IdBlankName)});
+  table.push_back({"/TH/SECTIO", DeckPart::Starter, history(H::Section, L::Ids)});
+  table.push_back({"/TH/RBODY", DeckPart::Starter, history(H::RigidBody, L::Ids)});
   table.push_back({"/SECT", DeckPart::Starter, read_section});
 }
 

@@ -1,0 +1,440 @@
+// The /TH datasets of NAME.h5 and their values (include/crumple/output/history_channels.hpp); what each variable
+// is: docs/output-format.md, "/history/th". Runs at history output times only.
+#include "crumple/output/history_channels.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <stdexcept>
+
+#include "crumple/elements/shell4.hpp"
+#include "crumple/model/geometry.hpp"
+#include "crumple/model/history_variables.hpp"
+#include "crumple/model/mass.hpp"
+#include "crumple/solver/element_status.hpp"
+
+namespace crumple {
+namespace {
+
+using V3 = std::array<double, 3>;
+constexpr double kUnknown = std::numeric_limits<double>::quiet_NaN();
+
+// ---- What one object gives, and the variables read from it.
+template <class Values>
+struct Evaluator {
+  std::string_view name;
+  double (*get)(const Values&);
+};
+template <class Values, V3 Values::*Member, int C>
+double component(const Values& v) {
+  return (v.*Member)[C];
+}
+template <class Values, double Values::*Member>
+double scalar(const Values& v) {
+  return v.*Member;
+}
+
+struct NodeValues {
+  V3 d, v, a, vr, ar, x, reaction, reaction_moment;
+};
+using N = NodeValues;
+constexpr Evaluator<N> kNode[] = {
+    {"DX", component<N, &N::d, 0>},  {"DY", component<N, &N::d, 1>},  {"DZ", component<N, &N::d, 2>},
+    {"VX", component<N, &N::v, 0>},  {"VY", component<N, &N::v, 1>},  {"VZ", component<N, &N::v, 2>},
+    {"AX", component<N, &N::a, 0>},  {"AY", component<N, &N::a, 1>},  {"AZ", component<N, &N::a, 2>},
+    {"VRX", component<N, &N::vr, 0>}, {"VRY", component<N, &N::vr, 1>}, {"VRZ", component<N, &N::vr, 2>},
+    {"ARX", component<N, &N::ar, 0>}, {"ARY", component<N, &N::ar, 1>}, {"ARZ", component<N, &N::ar, 2>},
+    {"X", component<N, &N::x, 0>},   {"Y", component<N, &N::x, 1>},   {"Z", component<N, &N::x, 2>},
+    {"REACX", component<N, &N::reaction, 0>}, {"REACY", component<N, &N::reaction, 1>},
+    {"REACZ", component<N, &N::reaction, 2>}, {"REACXX", component<N, &N::reaction_moment, 0>},
+    {"REACYY", component<N, &N::reaction_moment, 1>}, {"REACZZ", component<N, &N::reaction_moment, 2>}};
+
+struct PartValues {
+  double ie = 0.0, ke = 0.0, he = 0.0, rke = 0.0, mass = 0.0;
+  V3 momentum{}, cg{};
+};
+using P = PartValues;
+constexpr Evaluator<P> kPart[] = {
+    {"IE", scalar<P, &P::ie>},   {"KE", scalar<P, &P::ke>},   {"XMOM", component<P, &P::momentum, 0>},
+    {"YMOM", component<P, &P::momentum, 1>}, {"ZMOM", component<P, &P::momentum, 2>}, {"MASS", scalar<P, &P::mass>},
+    {"HE", scalar<P, &P::he>},   {"XCG", component<P, &P::cg, 0>}, {"YCG", component<P, &P::cg, 1>},
+    {"ZCG", component<P, &P::cg, 2>}, {"RKE", scalar<P, &P::rke>}};
+
+struct ShellValues {
+  V3 n, m;
+  double q1, q2, off, thickness, eps_lower, eps_upper, eps_rate;
+};
+using S = ShellValues;
+constexpr Evaluator<S> kShell[] = {
+    {"F1", component<S, &S::n, 0>}, {"F2", component<S, &S::n, 1>}, {"F12", component<S, &S::n, 2>},
+    {"Q1", scalar<S, &S::q1>},      {"Q2", scalar<S, &S::q2>},      {"M1", component<S, &S::m, 0>},
+    {"M2", component<S, &S::m, 1>}, {"M12", component<S, &S::m, 2>}, {"OFF", scalar<S, &S::off>},
+    {"THIC", scalar<S, &S::thickness>}, {"EMIN", scalar<S, &S::eps_lower>}, {"EMAX", scalar<S, &S::eps_upper>},
+    {"EPSD", scalar<S, &S::eps_rate>}};
+
+struct BrickValues {
+  std::array<double, 6> s;  // xx yy zz xy yz zx
+  double off, ie, density, volume, plastic_strain;
+};
+using B = BrickValues;
+template <int C>
+double brick_stress(const B& b) {
+  return b.s[C];
+}
+constexpr Evaluator<B> kBrick[] = {
+    {"OFF", scalar<B, &B::off>}, {"SX", brick_stress<0>}, {"SY", brick_stress<1>}, {"SZ", brick_stress<2>},
+    {"SXY", brick_stress<3>},    {"SYZ", brick_stress<4>}, {"SXZ", brick_stress<5>}, {"IE", scalar<B, &B::ie>},
+    {"DENS", scalar<B, &B::density>}, {"VOL", scalar<B, &B::volume>}, {"PLAS", scalar<B, &B::plastic_strain>}};
+
+struct ForceValues {  // interfaces and rigid walls: normal and tangential force, interface energies
+  V3 fn, ft;
+  double elastic = 0.0, friction = 0.0, damping = 0.0;
+};
+using F = ForceValues;
+constexpr Evaluator<F> kForces[] = {
+    {"FNX", component<F, &F::fn, 0>}, {"FNY", component<F, &F::fn, 1>}, {"FNZ", component<F, &F::fn, 2>},
+    {"FTX", component<F, &F::ft, 0>}, {"FTY", component<F, &F::ft, 1>}, {"FTZ", component<F, &F::ft, 2>},
+    {"CE_ELAST", scalar<F, &F::elastic>}, {"CE_FRIC", scalar<F, &F::friction>}, {"CE_DAMP", scalar<F, &F::damping>}};
+
+struct BodyValues {
+  V3 f, m, r;
+};
+using R = BodyValues;
+constexpr Evaluator<R> kBody[] = {
+    {"FX", component<R, &R::f, 0>}, {"FY", component<R, &R::f, 1>}, {"FZ", component<R, &R::f, 2>},
+    {"MX", component<R, &R::m, 0>}, {"MY", component<R, &R::m, 1>}, {"MZ", component<R, &R::m, 2>},
+    {"RX", component<R, &R::r, 0>}, {"RY", component<R, &R::r, 1>}, {"RZ", component<R, &R::r, 2>}};
+
+// The evaluator of `name` for a kind of object, or -1 when Crumple computes no such variable.
+template <class Values, std::size_t Count>
+int find(const Evaluator<Values> (&table)[Count], std::string_view name) {
+  for (std::size_t i = 0; i < Count; ++i)
+    if (table[i].name == name) return static_cast<int>(i);
+  return -1;
+}
+
+int evaluator_of(HistoryObject object, std::string_view name) {
+  switch (object) {
+    case HistoryObject::Node: return find(kNode, name);
+    case HistoryObject::Part:
+    case HistoryObject::Subset: return find(kPart, name);
+    case HistoryObject::Shell:
+    case HistoryObject::Sh3n: return find(kShell, name);
+    case HistoryObject::Brick: return find(kBrick, name);
+    case HistoryObject::Interface:
+    case HistoryObject::RigidWall: return find(kForces, name);
+    case HistoryObject::RigidBody: return find(kBody, name);
+    case HistoryObject::Section: return -1;
+  }
+  return -1;
+}
+
+template <class Values, std::size_t Count>
+void append(const Evaluator<Values> (&table)[Count], const Values& values, const std::vector<int>& getters,
+            std::vector<double>& row) {
+  for (int g : getters) row.push_back(table[static_cast<std::size_t>(g)].get(values));
+}
+
+// ---- Object titles.
+std::string object_title(const Model& m, const TimeHistoryRequest& th, std::size_t k) {
+  const auto at = static_cast<std::size_t>(th.objects[k]);
+  switch (th.object) {
+    case HistoryObject::Part: return m.parts[at].title;
+    case HistoryObject::Subset: return m.subsets[at].title;
+    case HistoryObject::RigidWall: return m.rigid_walls[at].title;
+    case HistoryObject::RigidBody: return m.rigid_bodies[at].title;
+    case HistoryObject::Interface: return m.type7_interfaces[at].title;
+    case HistoryObject::Section: return m.sections[at].title;
+    default: return k < th.object_names.size() ? th.object_names[k] : std::string();
+  }
+}
+
+// ---- Node values.
+V3 of(const std::vector<double>& x, const std::vector<double>& y, const std::vector<double>& z, std::size_t k) {
+  return {x[k], y[k], z[k]};
+}
+
+// The change of a velocity over the step, times `scale` / dt: NaN when the update is not known.
+V3 rate_of_change(const V3& now, const std::array<const std::vector<double>*, 6>& then, std::size_t first,
+                  std::size_t k, double scale, double dt) {
+  V3 out;
+  for (std::size_t c = 0; c < 3; ++c) out[c] = dt > 0.0 ? scale * (now[c] - (*then[first + c])[k]) / dt : kUnknown;
+  return out;
+}
+
+NodeValues node_values(const Model& m, const SolverState& s, const VelocityChange& change, std::size_t k) {
+  const NodalState& n = s.nodes;
+  NodeValues out;
+  out.x = of(n.x, n.y, n.z, k);
+  out.d = {out.x[0] - m.nodes.x[k], out.x[1] - m.nodes.y[k], out.x[2] - m.nodes.z[k]};
+  out.v = of(n.vx, n.vy, n.vz, k);
+  out.vr = of(n.wx, n.wy, n.wz, k);
+  const double dt = change.known() ? change.dt : 0.0;
+  out.a = rate_of_change(out.v, change.before, 0, k, 1.0, dt);
+  out.ar = rate_of_change(out.vr, change.before, 3, k, 1.0, dt);
+  // The reaction of the kinematic conditions: the impulse they gave the node over the step. A rigid body's nodes
+  // move with their body, whose driven motion is not split into nodal reactions.
+  const std::int32_t owner = k < s.rigid_owner.size() ? s.rigid_owner[k] : -1;
+  const bool in_body = owner >= 0 && s.bodies[static_cast<std::size_t>(owner)].active;
+  const double reaction_dt = in_body ? 0.0 : dt;
+  out.reaction = rate_of_change(out.v, change.free, 0, k, n.mass[k], reaction_dt);
+  out.reaction_moment = rate_of_change(out.vr, change.free, 3, k, n.inertia[k], reaction_dt);
+  return out;
+}
+
+// ---- Element values.
+ShellValues shell_values(const Model& m, const SolverState& s, ElementKind kind, std::size_t group, std::int32_t e) {
+  const ShellState& state = kind == ElementKind::Shell4 ? s.shells : s.shells3;
+  const ShellElementOutput o = shell_element_output(s.shell_groups[group], state, m.element_groups[group], e);
+  const auto ue = static_cast<std::size_t>(e);
+  return {{o.n[0], o.n[1], o.n[2]}, {o.m[0], o.m[1], o.m[2]}, o.q[0], o.q[1],
+          state.deleted[ue] == kElementDeleted ? 0.0 : 1.0, state.thickness[ue], o.plastic_strain_lower,
+          o.plastic_strain_upper, o.strain_rate};
+}
+
+BrickValues brick_values(const Model& m, const SolverState& s, std::size_t group, std::int32_t e) {
+  const BrickState& b = s.bricks;
+  const auto ue = static_cast<std::size_t>(e);
+  const auto np = static_cast<std::size_t>(b.points[group]);
+  const std::size_t first = b.point_offset[group] + static_cast<std::size_t>(e - m.element_groups[group].begin) * np;
+  BrickValues out{};
+  const std::vector<double>* components[6] = {&b.sxx, &b.syy, &b.szz, &b.sxy, &b.syz, &b.szx};
+  for (std::size_t k = 0; k < np; ++k) {  // the element's stress: the mean of its points
+    for (std::size_t c = 0; c < 6; ++c) out.s[c] += (*components[c])[first + k] / static_cast<double>(np);
+    out.plastic_strain += b.eps_p[first + k] / static_cast<double>(np);
+  }
+  std::array<geometry::Point, 8> x;
+  const std::int32_t* nodes = m.elements[static_cast<int>(ElementKind::Brick8)].nodes_of(ue);
+  for (std::size_t a = 0; a < 8; ++a) x[a] = of(s.nodes.x, s.nodes.y, s.nodes.z, static_cast<std::size_t>(nodes[a]));
+  out.volume = geometry::brick_volume(x);
+  out.density = s.brick_groups[group].density * b.volume0[ue] / out.volume;
+  out.ie = b.internal_energy[ue];
+  out.off = b.deleted[ue] == kElementDeleted ? 0.0 : 1.0;
+  return out;
+}
+
+// ---- Walls, interfaces, bodies.
+ForceValues wall_values(const RigidWallState& w) {
+  ForceValues out;
+  out.fn = w.normal_force;
+  for (std::size_t c = 0; c < 3; ++c) out.ft[c] = w.force[c] - w.normal_force[c];
+  return out;
+}
+
+ForceValues interface_values(const InterfaceResult& r) {
+  return {r.normal_force, r.tangential_force, r.elastic_energy, r.friction_work, r.damping_work};
+}
+
+// The rotation vector (axis times angle) of a rotation matrix, row-major.
+V3 rotation_vector(const std::array<double, 9>& r) {
+  const double c = std::clamp(0.5 * (r[0] + r[4] + r[8] - 1.0), -1.0, 1.0);
+  const double angle = std::acos(c);
+  const V3 skew{r[7] - r[5], r[2] - r[6], r[3] - r[1]};  // 2 sin(angle) axis
+  const double sine = 0.5 * std::sqrt(skew[0] * skew[0] + skew[1] * skew[1] + skew[2] * skew[2]);
+  if (angle < 1e-6) return {0.5 * skew[0], 0.5 * skew[1], 0.5 * skew[2]};
+  if (sine > 1e-6) return {angle * skew[0] / (2.0 * sine), angle * skew[1] / (2.0 * sine), angle * skew[2] / (2.0 * sine)};
+  // Near a half turn: the axis from the symmetric part, R = 2 a a^T - I, signed by its largest component.
+  V3 axis;
+  for (std::size_t i = 0; i < 3; ++i) axis[i] = std::sqrt(std::max(0.0, 0.5 * (r[4 * i] + 1.0)));
+  const std::size_t big = static_cast<std::size_t>(std::max_element(axis.begin(), axis.end()) - axis.begin());
+  for (std::size_t i = 0; i < 3; ++i)
+    if (i != big) axis[i] = 0.5 * (r[3 * big + i] + r[3 * i + big]) / (2.0 * axis[big]);
+  return {angle * axis[0], angle * axis[1], angle * axis[2]};
+}
+
+BodyValues body_values(const SolverState& s, const RigidBodyState& b) {
+  const NodalState& n = s.nodes;
+  const auto k = static_cast<std::size_t>(b.main_node);
+  return {of(n.fx, n.fy, n.fz, k), of(n.mx, n.my, n.mz, k), rotation_vector(b.rotation)};
+}
+
+}  // namespace
+
+// ---- Parts: sums over the nodes and the elements.
+struct HistoryChannels::PartSums {
+  std::vector<double> ie, he, ke, rke, mass;
+  std::vector<V3> momentum, first_moment;  // sum m v, sum m x
+  explicit PartSums(std::size_t parts)
+      : ie(parts), he(parts), ke(parts), rke(parts), mass(parts), momentum(parts), first_moment(parts) {}
+  PartValues of(const std::vector<std::int32_t>& parts) const {
+    PartValues out;
+    V3 moment{};
+    for (std::int32_t p : parts) {
+      const auto up = static_cast<std::size_t>(p);
+      out.ie += ie[up], out.he += he[up], out.ke += ke[up], out.rke += rke[up], out.mass += mass[up];
+      for (std::size_t c = 0; c < 3; ++c) out.momentum[c] += momentum[up][c], moment[c] += first_moment[up][c];
+    }
+    for (std::size_t c = 0; c < 3; ++c) out.cg[c] = out.mass > 0.0 ? moment[c] / out.mass : kUnknown;
+    return out;
+  }
+};
+
+HistoryChannels::HistoryChannels(const Model& model) : model_(model) {
+  for (const TimeHistoryRequest& th : model.histories) add_request(th);
+  for (int kind = 0; kind < kElementKinds; ++kind)
+    element_group_[static_cast<std::size_t>(kind)].assign(model.elements[static_cast<std::size_t>(kind)].size(), -1);
+  for (std::size_t g = 0; g < model.element_groups.size(); ++g) {
+    const ElementGroup& group = model.element_groups[g];
+    for (std::int32_t e = group.begin; e < group.end; ++e)
+      element_group_[static_cast<std::size_t>(group.kind)][static_cast<std::size_t>(e)] = static_cast<std::int32_t>(g);
+  }
+  if (needs_parts_) split_nodes_by_part(), gather_subsets();
+}
+
+void HistoryChannels::add_request(const TimeHistoryRequest& th) {
+  Request request{th.object, th.objects, {}};
+  HistoryDataset d;
+  d.kind = std::string(history_kind(th.object).name);
+  d.keyword = th.keyword, d.id = th.user_id, d.title = th.title;
+  d.name = fmt::format("{}_{}", d.kind, th.user_id);
+  const auto same = static_cast<std::size_t>(std::count_if(
+      datasets_.begin(), datasets_.end(), [&](const HistoryDataset& o) { return o.kind == d.kind && o.id == d.id; }));
+  if (same > 0) d.name += fmt::format("_{}", same + 1);
+  std::vector<const HistoryVariable*> written;
+  for (const HistoryVariable* v : select_history_variables(th.object, th.variables).variables) {
+    if (!v->written) continue;
+    const int getter = evaluator_of(th.object, v->name);
+    if (getter < 0) throw std::logic_error(fmt::format("{}: no evaluator for the written variable {}", th.keyword, v->name));
+    request.getters.push_back(getter), written.push_back(v);
+  }
+  if (written.empty() || th.objects.empty()) return;
+  for (std::size_t k = 0; k < th.objects.size(); ++k)
+    for (const HistoryVariable* v : written)
+      d.columns.push_back({th.object_ids[k], object_title(model_, th, k), std::string(v->name), std::string(v->unit),
+                           si_factor(v->dimension, model_.units.work),
+                           fmt::format("{}/{}/{}", d.name, th.object_ids[k], v->name)});
+  needs_parts_ = needs_parts_ || th.object == HistoryObject::Part || th.object == HistoryObject::Subset;
+  datasets_.push_back(std::move(d));
+  requests_.push_back(std::move(request));
+}
+
+// A node's mass, momentum and kinetic energy belong to the parts of the elements that use it, each in proportion to
+// the lumped mass the element gives the node (its mass over its node count).
+void HistoryChannels::split_nodes_by_part() {
+  const Model& m = model_;
+  struct Lumped {
+    std::int32_t node, part;
+    double mass;
+  };
+  std::vector<Lumped> lumped;  // one per element and node, then sorted by node and part
+  for (const ElementGroup& g : m.element_groups) {
+    const ElementTable& table = m.elements[static_cast<std::size_t>(g.kind)];
+    const int count = nodes_per_element(g.kind);
+    for (std::int32_t e = g.begin; e < g.end; ++e) {
+      const double share = element_mass(m, g.kind, static_cast<std::size_t>(e)) / count;
+      const std::int32_t* nodes = table.nodes_of(static_cast<std::size_t>(e));
+      for (int a = 0; a < count; ++a) lumped.push_back({nodes[a], g.part, share});
+    }
+  }
+  std::sort(lumped.begin(), lumped.end(),
+            [](const Lumped& a, const Lumped& b) { return a.node != b.node ? a.node < b.node : a.part < b.part; });
+  node_share_offset_.assign(m.nodes.size() + 1, 0);
+  for (std::size_t i = 0, node = 0; node < m.nodes.size(); ++node) {
+    const std::size_t first = node_share_.size();
+    double total = 0.0;
+    for (; i < lumped.size() && lumped[i].node == static_cast<std::int32_t>(node); ++i) {
+      total += lumped[i].mass;
+      if (node_share_.size() > first && node_share_.back().first == lumped[i].part) node_share_.back().second += lumped[i].mass;
+      else node_share_.emplace_back(lumped[i].part, lumped[i].mass);
+    }
+    const double parts = static_cast<double>(node_share_.size() - first);
+    for (std::size_t k = first; k < node_share_.size(); ++k)  // a node of massless elements only: equal shares
+      node_share_[k].second = total > 0.0 ? node_share_[k].second / total : 1.0 / parts;
+    node_share_offset_[node + 1] = node_share_.size();
+  }
+}
+
+// A subset holds the parts that name it and, recursively, its child subsets' parts; each part once.
+void HistoryChannels::gather_subsets() {
+  const Model& m = model_;
+  subset_parts_.assign(m.subsets.size(), {});
+  for (std::size_t s = 0; s < m.subsets.size(); ++s) {
+    std::vector<std::int64_t> pending{m.subsets[s].user_id}, seen;
+    while (!pending.empty()) {
+      const std::int64_t id = pending.back();
+      pending.pop_back();
+      if (std::find(seen.begin(), seen.end(), id) != seen.end()) continue;  // a cycle of subsets
+      seen.push_back(id);
+      for (std::size_t p = 0; p < m.parts.size(); ++p)
+        if (m.parts[p].subset_id == id) subset_parts_[s].push_back(static_cast<std::int32_t>(p));
+      if (const auto at = m.index.subsets.find(id); at != m.index.subsets.end())
+        for (std::int64_t child : m.subsets[static_cast<std::size_t>(at->second)].children) pending.push_back(child);
+    }
+    std::sort(subset_parts_[s].begin(), subset_parts_[s].end());
+    subset_parts_[s].erase(std::unique(subset_parts_[s].begin(), subset_parts_[s].end()), subset_parts_[s].end());
+  }
+}
+
+HistoryChannels::PartSums HistoryChannels::part_sums(const SolverState& s) const {
+  PartSums sums(model_.parts.size());
+  const NodalState& n = s.nodes;
+  for (std::size_t k = 0; k < n.size(); ++k) {
+    const V3 v = of(n.vx, n.vy, n.vz, k), w = of(n.wx, n.wy, n.wz, k), x = of(n.x, n.y, n.z, k);
+    const double ke = 0.5 * n.mass[k] * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    const double rke = 0.5 * n.inertia[k] * (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+    for (std::size_t i = node_share_offset_[k]; i < node_share_offset_[k + 1]; ++i) {
+      const auto [part, share] = node_share_[i];
+      const auto p = static_cast<std::size_t>(part);
+      const double mass = share * n.mass[k];
+      sums.mass[p] += mass, sums.ke[p] += share * ke, sums.rke[p] += share * rke;
+      for (std::size_t c = 0; c < 3; ++c) sums.momentum[p][c] += mass * v[c], sums.first_moment[p][c] += mass * x[c];
+    }
+  }
+  const std::array<const std::vector<double>*, kElementKinds> ie{&s.shells.internal_energy, &s.shells3.internal_energy,
+                                                                 &s.bricks.internal_energy};
+  const std::array<const std::vector<double>*, kElementKinds> he{&s.shells.hourglass_energy, &s.shells3.hourglass_energy,
+                                                                 &s.bricks.hourglass_energy};
+  for (std::size_t kind = 0; kind < static_cast<std::size_t>(kElementKinds); ++kind) {
+    const ElementTable& table = model_.elements[kind];
+    for (std::size_t e = 0; e < table.size(); ++e) {
+      const auto p = static_cast<std::size_t>(table.part[e]);
+      sums.ie[p] += (*ie[kind])[e], sums.he[p] += (*he[kind])[e];
+    }
+  }
+  return sums;
+}
+
+void HistoryChannels::evaluate(const SolverState& s, const VelocityChange& change,
+                               std::vector<std::vector<double>>& values) const {
+  values.resize(requests_.size());
+  std::optional<PartSums> parts;
+  if (needs_parts_) parts.emplace(part_sums(s));
+  for (std::size_t r = 0; r < requests_.size(); ++r) {
+    values[r].clear();
+    evaluate(requests_[r], s, change, parts ? &*parts : nullptr, values[r]);
+  }
+}
+
+void HistoryChannels::evaluate(const Request& r, const SolverState& s, const VelocityChange& change,
+                               const PartSums* parts, std::vector<double>& row) const {
+  const Model& m = model_;
+  for (std::int32_t object : r.objects) {
+    const auto o = static_cast<std::size_t>(object);
+    switch (r.object) {
+      case HistoryObject::Node: append(kNode, node_values(m, s, change, o), r.getters, row); break;
+      case HistoryObject::Part: append(kPart, parts->of({object}), r.getters, row); break;
+      case HistoryObject::Subset: append(kPart, parts->of(subset_parts_[o]), r.getters, row); break;
+      case HistoryObject::Shell:
+      case HistoryObject::Sh3n: {
+        const ElementKind kind = r.object == HistoryObject::Shell ? ElementKind::Shell4 : ElementKind::Shell3;
+        const auto g = static_cast<std::size_t>(element_group_[static_cast<std::size_t>(kind)][o]);
+        append(kShell, shell_values(m, s, kind, g, object), r.getters, row);
+        break;
+      }
+      case HistoryObject::Brick: {
+        const auto g = static_cast<std::size_t>(element_group_[static_cast<std::size_t>(ElementKind::Brick8)][o]);
+        append(kBrick, brick_values(m, s, g, object), r.getters, row);
+        break;
+      }
+      case HistoryObject::Interface: append(kForces, interface_values(s.contact.results[o]), r.getters, row); break;
+      case HistoryObject::RigidWall: append(kForces, wall_values(s.walls[o]), r.getters, row); break;
+      case HistoryObject::RigidBody: append(kBody, body_values(s, s.bodies[o]), r.getters, row); break;
+      case HistoryObject::Section: break;
+    }
+  }
+}
+
+}  // namespace crumple
