@@ -159,8 +159,12 @@ void RunRecorder::restart(SolverState& s, ResumeMarks& marks) {
                             restart_file().filename().string()));
 }
 
+// A state is written once: a continued run's first frame may be the last one of the run before it.
 void RunRecorder::frame(const SolverState& s) {
-  if (results_) results_->write_frame(s.time, s.cycle, model_, s);
+  const long long cycle = s.cycles_done + s.cycle;
+  if (!results_ || cycle == last_frame_cycle_) return;
+  results_->write_frame(s.time, s.cycle, model_, s);
+  last_frame_cycle_ = cycle;
 }
 
 void RunRecorder::history(const SolverState& s, double dt) {
@@ -190,6 +194,7 @@ void RunRecorder::history(const SolverState& s, double dt) {
 void RunRecorder::close(const SolverState& s, bool stopped_early) {
   if (!results_) return;
   if (stopped_early) results_->write_frame(s.time, s.cycle, model_, s);  // the last good state
+  else if (results_->frames() > 0) frame(s);  // the end time, also when it is not on the /ANIM/DT grid
   results_->close();
 }
 

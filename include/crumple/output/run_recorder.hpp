@@ -40,6 +40,7 @@ class RunRecorder {
   void row(const SolverState& state, double dt, const StepControl& control);
   // The events of the last cycles as listing lines (warnings also on the console); empties `events.pending`.
   void events(RunEvents& events);
+  // A field frame of the state, unless the frame of that cycle is written already.
   void frame(const SolverState& state);
   void history(const SolverState& state, double dt);
   // The end of an engine deck: the listing's closing lines (termination, deletions, added mass, interfaces,
@@ -48,7 +49,8 @@ class RunRecorder {
   // The snapshot to NAME.rst.h5 beside the listing (restart_file.hpp), with a listing line.
   void restart(SolverState& state, ResumeMarks& marks);
   std::filesystem::path restart_file() const { return directory_ / (name_ + ".rst.h5"); }
-  // The end of the whole run: the last good state as a frame when it stopped early, the results file closed.
+  // The end of the whole run: the last state as a frame (the last good one when it stopped early; at the end time
+  // when frames were written and the last was earlier), the results file closed.
   void close(const SolverState& state, bool stopped_early);
   const std::string& name() const { return name_; }
 
@@ -59,6 +61,7 @@ class RunRecorder {
   std::ostream* console_ = nullptr;
   Listing listing_;
   std::optional<ResultsFile> results_;
+  long long last_frame_cycle_ = -1;  // cycles_done + cycle of the last frame()
 };
 
 // The run summary of a finished run (README, "Run summary").
