@@ -306,7 +306,8 @@ void add_brick_fields(std::vector<FrameField>& out, const Model& m, const Solver
     vm[e] = von_mises(&stress[6 * e]);
     pressure[e] = -(stress[6 * e] + stress[6 * e + 1] + stress[6 * e + 2]) / 3.0;
   }
-  out.push_back(field("stress", k, 6, std::move(stress)));
+  // Not "stress": ParaView colours a field across the grids of a frame, and the shells' stress has 3 components.
+  out.push_back(field("stress_tensor", k, 6, std::move(stress)));
   out.push_back(field("plastic_strain", k, 1, std::move(eps)));
   if (want.von_mises) out.push_back(field("von_mises", k, 1, std::move(vm)));
   if (want.pressure) out.push_back(field("pressure", k, 1, std::move(pressure)));

@@ -197,8 +197,8 @@ TEST(FrameFields, EveryRequestedBrickFieldIsComputedFromThePoints) {
   write_every_field(w);
   const ResultsReader h5(w.h5);
   const std::string f = "/frames/0000/brick8/";
-  EXPECT_EQ(h5.shape(f + "stress"), (std::vector<std::size_t>{1, 6}));
-  EXPECT_EQ(h5.doubles(f + "stress"), (std::vector<double>{1e6, 2e6, -3e6, 4e5, 5e5, 6e5}));  // sxx syy szz sxy syz szx
+  EXPECT_EQ(h5.shape(f + "stress_tensor"), (std::vector<std::size_t>{1, 6}));
+  EXPECT_EQ(h5.doubles(f + "stress_tensor"), (std::vector<double>{1e6, 2e6, -3e6, 4e5, 5e5, 6e5}));  // sxx syy szz sxy syz szx
   // sqrt(((sx-sy)^2 + (sy-sz)^2 + (sz-sx)^2) / 2 + 3 (sxy^2 + syz^2 + szx^2)) = sqrt(21 + 2.31) MPa
   EXPECT_NEAR(h5.doubles(f + "von_mises")[0], std::sqrt(23.31) * 1e6, 1e-6);
   EXPECT_NEAR(h5.doubles(f + "pressure")[0], 0.0, 1e-9);  // -(1 + 2 - 3) / 3 MPa
@@ -239,9 +239,9 @@ TEST(FrameFields, XdmfDescribesEveryFieldOnItsGridWithTheGhostFlagsLast) {
   write_every_field(w);
   const std::string xdmf = read_text(w.dir.path() / "TEST.xdmf");
   const std::string bricks = last_grid(xdmf, "brick8"), shells = last_grid(xdmf, "shell4");
-  EXPECT_NE(bricks.find("Name=\"stress\" AttributeType=\"Matrix\" Center=\"Cell\""), std::string::npos) << bricks;
+  EXPECT_NE(bricks.find("Name=\"stress_tensor\" AttributeType=\"Matrix\" Center=\"Cell\""), std::string::npos) << bricks;
   EXPECT_NE(bricks.find("Dimensions=\"1 6\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">TEST.h5:/frames/0000/"
-                        "brick8/stress"),
+                        "brick8/stress_tensor"),
             std::string::npos);
   EXPECT_NE(shells.find("Name=\"bending_stress\" AttributeType=\"Vector\" Center=\"Cell\""), std::string::npos);
   for (const std::string* grid : {&bricks, &shells}) {
@@ -267,7 +267,7 @@ TEST(FrameFields, FieldsNobodyAskedForAreNotWritten) {
   }
   const ResultsReader h5(dir.path() / "TEST.h5");
   for (const char* every : {"displacement", "velocity", "shell4/stress", "shell4/plastic_strain", "shell4/thickness",
-                            "shell4/deleted", "shell4/vtkGhostType", "brick8/stress", "brick8/plastic_strain",
+                            "shell4/deleted", "shell4/vtkGhostType", "brick8/stress_tensor", "brick8/plastic_strain",
                             "brick8/deleted", "brick8/vtkGhostType"})
     EXPECT_TRUE(h5.exists(std::string("/frames/0000/") + every)) << every;
   for (const char* asked : {"contact_force", "acceleration", "internal_force", "external_force", "angular_velocity",
