@@ -104,6 +104,9 @@ def check_grid(where, grid, h5, frame):
     check(grid.GetNumberOfPoints() == h5["mesh/node_ids"].shape[0], f"{where}: point count")
     compare_arrays(f"{where} {kind} cells", grid.GetCellData(), h5, frame, kind, True)
     compare_arrays(f"{where} {kind} nodes", grid.GetPointData(), h5, frame, kind, False)
+    part_ids = set(h5["mesh/parts/ids"][:].tolist())
+    shown_ids = set(vtk_to_numpy(grid.GetCellData().GetArray("part_id")).tolist())
+    check(shown_ids <= part_ids, f"{where}: part ids {sorted(shown_ids)} not all in /mesh/parts/ids {sorted(part_ids)}")
     ghost = grid.GetCellGhostArray()
     if check(ghost is not None, f"{where}: {kind} has no ghost array ParaView recognises"):
         deleted = h5[f"frames/{frame}/{kind}/deleted"][:]
