@@ -194,7 +194,8 @@ void RunRecorder::history(const SolverState& s, double dt) {
 void RunRecorder::close(const SolverState& s, bool stopped_early) {
   if (!results_) return;
   if (stopped_early) results_->write_frame(s.time, s.cycle, model_, s);  // the last good state
-  else if (results_->frames() > 0) frame(s);  // the end time, also when it is not on the /ANIM/DT grid
+  else if (results_->frames() > 0 || (model_.run.anim_interval > 0.0 && s.time >= model_.run.anim_start))
+    frame(s);  // the end time, also when it is not on the /ANIM/DT grid (or a resumed run met none of it)
   results_->close();
 }
 

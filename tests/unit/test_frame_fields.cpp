@@ -12,6 +12,7 @@
 
 #include "crumple/output/results_file.hpp"
 #include "crumple/output/results_reader.hpp"
+#include "crumple/output/run_recorder.hpp"
 #include "crumple/solver/element_status.hpp"
 #include "crumple/solver/solver.hpp"
 #include "deck_files.hpp"
@@ -407,4 +408,26 @@ TEST(FrameFields, RecordedForcesAndAccelerationsOfARunAgree) {
     }
   }
   EXPECT_LT(largest_internal, 1e-9);  // rigid translation: the elements carry no force
+}
+
+// The end of a run writes its last state when frames are asked for, also when none was written before (a run
+// resumed past the last grid time), but not before Tstart; a state already written is not written again.
+TEST(FrameFields, TheEndOfARunWritesItsLastStateOnce) {
+  const auto frames_after_close = [](const std::string& anim, double time, bool write_before) {
+    test::TempDir dir;
+    const Model m = read_deck(test::write_deck(dir, "", "/RUN/TEST/1\n1e-3\n/ANIM/DT\n" + anim + "\n")).model;
+    std::vector<std::string> notes;
+    SolverState s = initial_state(m, notes);
+    s.time = time, s.cycle = 40;
+    {
+      RunRecorder recorder(m, dir.path(), "TEST", true);
+      if (write_before) recorder.frame(s);
+      recorder.close(s, false);
+    }
+    const ResultsReader h5(dir.path() / "TEST.h5");
+    return frame_count(h5);
+  };
+  EXPECT_EQ(frames_after_close("0 4e-4", 1e-3, false), 1u);
+  EXPECT_EQ(frames_after_close("2e-3 4e-4", 1e-3, false), 0u);  // Tstart past the end: no frame at all
+  EXPECT_EQ(frames_after_close("0 4e-4", 1e-3, true), 1u);      // that cycle's frame is there already
 }
