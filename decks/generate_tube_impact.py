@@ -128,8 +128,8 @@ def main(self_contact=False):
     here = Path(__file__).parent / ("tube_self_contact" if self_contact else "tube_impact")
     here.mkdir(exist_ok=True)
     (here / "TUBE_0000.rad").write_text("".join(out))
-    engine = ["/RUN/TUBE/1\n3.0\n", "/TFILE\n0.01\n", "/ANIM/DT\n0.0 0.5\n", "/PRINT/-1000\n", "/DT\n0.9 0.0\n",
-              "/STOP\n0.1 0.1 0.0 0 0 0\n"]
+    engine = ["/RUN/TUBE/1\n3.0\n", "/TFILE\n0.01\n", "/ANIM/DT\n0.0 0.5\n", "/ANIM/ELEM/VONM\n", "/ANIM/ELEM/ENER\n",
+              "/PRINT/-1000\n", "/DT\n0.9 0.0\n", "/STOP\n0.1 0.1 0.0 0 0 0\n"]
     (here / "TUBE_0001.rad").write_text("".join(engine))
 
 

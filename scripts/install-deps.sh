@@ -7,6 +7,7 @@ packages=(
   libeigen3-dev libhdf5-openmpi-dev libmetis-dev libopenmpi-dev openmpi-bin
   libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev libfmt-dev zlib1g-dev
   python3 python3-h5py python3-matplotlib python3-numpy
+  paraview python3-paraview xvfb xauth
 )
 missing=()
 for p in "${packages[@]}"; do

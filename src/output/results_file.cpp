@@ -4,6 +4,7 @@
 
 #include "crumple/model/history_variables.hpp"
 #include "crumple/solver/element_status.hpp"
+#include "frame_fields.hpp"
 #include "hdf5_support.hpp"
 #include "xml_text.hpp"
 
@@ -41,10 +42,19 @@ constexpr std::array<MeshKind, kElementKinds> kMeshKinds{{{ElementKind::Shell4, 
                                                           {ElementKind::Shell3, "shell3", "Triangle"},
                                                           {ElementKind::Brick8, "brick8", "Hexahedron"}}};
 
+// What NAME.xdmf says of a frame's field: its dataset and attribute name, where it lives, its width and type.
+struct FieldEntry {
+  std::string name;
+  int kind = -1;  // element kind of a cell field, -1 for a nodal field
+  std::size_t width = 1;
+  bool is_bytes = false;
+};
+
 struct Frame {
   std::string name;  // group name under /frames
   double time = 0.0;
   long long cycle = 0;
+  std::vector<FieldEntry> fields;
 };
 
 // An extendible history dataset: `rows` (1-D) or `rows x columns` (2-D; columns may be 0).
@@ -129,7 +139,7 @@ struct ResultsFile::Impl {
   std::array<std::size_t, kElementKinds> elements{};
   std::size_t element_groups = 0;
   std::vector<Frame> frames;
-  bool contact_field = false;  // frames carry contact_force (the model has contact interfaces)
+  std::vector<std::pair<std::int64_t, std::string>> part_table;  // deck id and title, for NAME.xdmf
 
   // Histories: 9 scalar series, then rigid_wall_force, node_values, rigid_body_values, interface_values, then one
   // series per /TH dataset (th, in the same order).
@@ -266,7 +276,10 @@ struct ResultsFile::Impl {
 
     std::vector<std::int64_t> part_ids;
     std::vector<std::string> part_titles;
-    for (const Part& p : model.parts) part_ids.push_back(p.user_id), part_titles.push_back(p.title);
+    for (const Part& p : model.parts) {
+      part_ids.push_back(p.user_id), part_titles.push_back(p.title);
+      part_table.emplace_back(p.user_id, p.title);
+    }
     Handle parts = group(mesh.get(), "parts");
     dataset(parts.get(), "ids", part_ids.data(), {part_ids.size()});
     string_dataset(parts.get(), "titles", part_titles);
@@ -433,15 +446,13 @@ struct ResultsFile::Impl {
     if (pending_rows >= kHistoryBuffer) flush_history();
   }
 
-  void check_state(const Model& model, const SolverState& state) const {
+  // The counts the mesh was written with; the arrays of the state are checked with the frame's fields.
+  void check_state(const Model& model) const {
     const auto mismatch = [&](const std::string& what) {
       throw std::runtime_error("results file " + path.string() + ": the solver state does not match the mesh: " + what);
     };
     if (model.nodes.size() != nodes)
       mismatch(fmt::format("the model has {} nodes, the mesh {}", model.nodes.size(), nodes));
-    const NodalState& n = state.nodes;
-    for (const auto* v : {&n.x, &n.y, &n.z, &n.vx, &n.vy, &n.vz})
-      if (v->size() != nodes) mismatch(fmt::format("nodal arrays of {} values for {} nodes", v->size(), nodes));
     for (const MeshKind& k : kMeshKinds)
       if (model.elements[static_cast<std::size_t>(k.kind)].size() != elements[static_cast<std::size_t>(k.kind)])
         mismatch(fmt::format("the model has {} {} elements, the mesh {}",
@@ -450,104 +461,42 @@ struct ResultsFile::Impl {
     if (model.element_groups.size() != element_groups)
       mismatch(fmt::format("the model has {} element groups, the mesh {}", model.element_groups.size(),
                            element_groups));
-    check_shells(model, ElementKind::Shell4, state.shells, mismatch);
-    check_shells(model, ElementKind::Shell3, state.shells3, mismatch);
   }
 
-  template <class Mismatch>
-  void check_shells(const Model& model, ElementKind kind, const ShellState& s, const Mismatch& mismatch) const {
-    const std::size_t shells = elements[static_cast<std::size_t>(kind)];
-    if (shells == 0) return;
-    const char* name = kind == ElementKind::Shell4 ? "shell4" : "shell3";
-    if (s.thickness.size() != shells || s.deleted.size() != shells)
-      mismatch(fmt::format("{} thickness and deleted arrays of {} and {} values for {} elements", name,
-                           s.thickness.size(), s.deleted.size(), shells));
-    if (s.point_offset.size() != element_groups || s.points.size() != element_groups)
-      mismatch(fmt::format("{} point offsets for {} groups, the model has {}", name, s.point_offset.size(),
-                           element_groups));
-    for (std::size_t g = 0; g < element_groups; ++g) {
-      const ElementGroup& group = model.element_groups[g];
-      if (group.kind != kind) continue;
-      if (s.points[g] < 1) mismatch(fmt::format("{} group {} has {} points", name, g, s.points[g]));
-      const std::size_t end = s.point_offset[g] + static_cast<std::size_t>(group.end - group.begin) *
-                                                      static_cast<std::size_t>(s.points[g]);
-      for (const auto* v : {&s.sxx, &s.syy, &s.sxy, &s.eps_p})
-        if (v->size() < end)
-          mismatch(fmt::format("{} point arrays of {} values, group {} needs {}", name, v->size(), g, end));
+  std::vector<FrameField> fields_of(const Model& model, const SolverState& state) const {
+    check_state(model);
+    try {
+      return frame_fields(model, state);
+    } catch (const std::runtime_error& e) {
+      throw std::runtime_error("results file " + path.string() + ": the solver state does not match the mesh: " +
+                               e.what());
     }
   }
 
-  // /frames/NNNN/<kind>: mid-surface stress, largest plastic strain, thickness and deleted flag per element.
-  void write_shells(hid_t frame, const Model& model, const SolverState& state, ElementKind kind) const {
-    const std::size_t n = elements[static_cast<std::size_t>(kind)];
-    if (n == 0) return;
-    const ShellState& s = kind == ElementKind::Shell4 ? state.shells : state.shells3;
-    std::vector<double> stress(3 * n, 0.0), eps(n, 0.0);
-    for (std::size_t g = 0; g < element_groups; ++g) {
-      const ElementGroup& group = model.element_groups[g];
-      if (group.kind != kind) continue;
-      const auto np = static_cast<std::size_t>(s.points[g]);
-      // Weighted by the group's membrane weights when the state carries them (membrane stress = N / t), else the
-      // plain mean of the points.
-      const double* weight = g < state.shell_groups.size() && state.shell_groups[g].points == s.points[g]
-                                 ? state.shell_groups[g].membrane_weight
-                                 : nullptr;
-      double weight_sum = 0.0;
-      if (weight != nullptr)
-        for (std::size_t k = 0; k < np; ++k) weight_sum += weight[k];
-      if (!(weight_sum > 0.0)) weight = nullptr;
-      for (std::int32_t e = group.begin; e < group.end; ++e) {
-        const auto ue = static_cast<std::size_t>(e);
-        const std::size_t first = s.point_offset[g] + static_cast<std::size_t>(e - group.begin) * np;
-        double sxx = 0.0, syy = 0.0, sxy = 0.0, eps_max = s.eps_p[first];
-        for (std::size_t k = 0; k < np; ++k) {
-          const double w = weight != nullptr ? weight[k] / weight_sum : 1.0 / static_cast<double>(np);
-          sxx += w * s.sxx[first + k], syy += w * s.syy[first + k], sxy += w * s.sxy[first + k];
-          eps_max = std::max(eps_max, s.eps_p[first + k]);
-        }
-        stress[3 * ue] = sxx, stress[3 * ue + 1] = syy, stress[3 * ue + 2] = sxy;
-        eps[ue] = eps_max;
-      }
-    }
-    Handle g = group(frame, kind == ElementKind::Shell4 ? "shell4" : "shell3");
-    dataset(g.get(), "stress", stress.data(), {n, 3});
-    dataset(g.get(), "plastic_strain", eps.data(), {n});
-    dataset(g.get(), "thickness", s.thickness.data(), {n});
-    // 1 for a deleted element; an element carried by a rigid body is there (it only is not computed).
-    std::vector<std::uint8_t> deleted(n);
-    for (std::size_t e = 0; e < n; ++e) deleted[e] = s.deleted[e] == kElementDeleted;
-    dataset(g.get(), "deleted", deleted.data(), {n});
-  }
-
+  // /frames/NNNN: the nodal fields in the group, the cell fields in a subgroup per element kind
+  // (docs/output-format.md). Every field is computed before anything is written, so a state that does not fit
+  // leaves no partial frame.
   void write_frame(double time, long long cycle, const Model& model, const SolverState& state) {
-    check_state(model, state);
-    Frame f{fmt::format("{:04}", frames.size()), time, cycle};
+    const std::vector<FrameField> fields = fields_of(model, state);
+    Frame f{fmt::format("{:04}", frames.size()), time, cycle, {}};
     Handle frames_group(check(H5Gopen2(file.get(), "frames", H5P_DEFAULT), "cannot open /frames"), H5Gclose);
     Handle frame = group(frames_group.get(), f.name);
     attribute(frame.get(), "time", time);
     attribute(frame.get(), "cycle", static_cast<std::int64_t>(cycle));
-
-    const NodalState& ns = state.nodes;
-    std::vector<double> buffer(3 * nodes);
-    for (std::size_t i = 0; i < nodes; ++i) {
-      buffer[3 * i] = ns.x[i] - model.nodes.x[i];
-      buffer[3 * i + 1] = ns.y[i] - model.nodes.y[i];
-      buffer[3 * i + 2] = ns.z[i] - model.nodes.z[i];
-    }
-    dataset(frame.get(), "displacement", buffer.data(), {nodes, 3});
-    for (std::size_t i = 0; i < nodes; ++i) {
-      buffer[3 * i] = ns.vx[i], buffer[3 * i + 1] = ns.vy[i], buffer[3 * i + 2] = ns.vz[i];
-    }
-    dataset(frame.get(), "velocity", buffer.data(), {nodes, 3});
-    if (!state.contact.interfaces.empty()) {  // only decks with contact pay for this field
-      for (std::size_t i = 0; i < nodes; ++i) {
-        buffer[3 * i] = state.contact.fx[i], buffer[3 * i + 1] = state.contact.fy[i], buffer[3 * i + 2] = state.contact.fz[i];
+    std::array<Handle, kElementKinds> kind_groups;
+    for (const FrameField& field : fields) {
+      hid_t at = frame.get();
+      std::size_t rows = nodes;
+      if (field.kind >= 0) {
+        const auto k = static_cast<std::size_t>(field.kind);
+        if (!kind_groups[k].valid()) kind_groups[k] = group(frame.get(), kMeshKinds[k].group);
+        at = kind_groups[k].get(), rows = elements[k];
       }
-      dataset(frame.get(), "contact_force", buffer.data(), {nodes, 3});
-      contact_field = true;
+      if (field.is_bytes) dataset(at, field.name, field.bytes.data(), {rows});
+      else if (field.width == 1) dataset(at, field.name, field.values.data(), {rows});
+      else dataset(at, field.name, field.values.data(), {rows, field.width});
+      f.fields.push_back({field.name, field.kind, field.width, field.is_bytes});
     }
-    write_shells(frame.get(), model, state, ElementKind::Shell4);
-    write_shells(frame.get(), model, state, ElementKind::Shell3);
     frames.push_back(std::move(f));
 
     flush_history();
@@ -562,15 +511,39 @@ struct ResultsFile::Impl {
                        xml_escaped(h5_name), h5_path);
   }
 
+  // 3 values are a vector (shell stresses sxx syy sxy too); 6 stay six components (sxx syy szz sxy syz szx, VTK's
+  // order of a symmetric tensor): XDMF's Tensor6 is read in another order by each of ParaView's readers.
+  static const char* attribute_type(std::size_t width) {
+    return width == 1 ? "Scalar" : width == 3 ? "Vector" : "Matrix";
+  }
+
+  static void attribute_xml(std::string& x, const std::string& in, const std::string& name, const char* type,
+                            const char* center, const std::string& data) {
+    x += fmt::format("{}<Attribute Name=\"{}\" AttributeType=\"{}\" Center=\"{}\">\n{}  {}\n{}</Attribute>\n", in,
+                     name, type, center, in, data, in);
+  }
+
+  // The frame's nodal fields and, for the grid of element kind `kind` (nullptr: the cloud of points), its cell
+  // fields, in the order written (the kind's vtkGhostType last: ParaView's XDMF reader takes the first scalar of
+  // a grid as its active one).
+  void xdmf_fields(std::string& x, const Frame& frame, const MeshKind* kind, const std::string& in) const {
+    for (const FieldEntry& field : frame.fields) {
+      const bool cell = field.kind >= 0;
+      if (cell && (kind == nullptr || field.kind != static_cast<int>(kind->kind))) continue;
+      const std::string at =
+          "/frames/" + frame.name + (cell ? std::string("/") + kind->group : std::string()) + "/" + field.name;
+      const std::size_t rows = cell ? elements[static_cast<std::size_t>(field.kind)] : nodes;
+      const std::string dims = field.width == 1 ? std::to_string(rows) : fmt::format("{} {}", rows, field.width);
+      attribute_xml(x, in, field.name, attribute_type(field.width), cell ? "Cell" : "Node",
+                    field.is_bytes ? item<std::uint8_t>(dims, at) : item<double>(dims, at));
+    }
+  }
+
   void xdmf_grid(std::string& x, const MeshKind& k, const Frame* frame, const std::string& indent) const {
     const std::size_t n = elements[static_cast<std::size_t>(k.kind)];
     const int npe = nodes_per_element(k.kind);
     const std::string mesh = std::string("/mesh/") + k.group;
     const std::string in = indent + "  ";
-    const auto attribute_xml = [&](const char* name, const char* type, const char* center, const std::string& data) {
-      x += fmt::format("{}<Attribute Name=\"{}\" AttributeType=\"{}\" Center=\"{}\">\n{}  {}\n{}</Attribute>\n", in,
-                       name, type, center, in, data, in);
-    };
     x += fmt::format("{}<Grid Name=\"{}\" GridType=\"Uniform\">\n", indent, k.group);
     if (frame != nullptr) x += fmt::format("{}<Time Value=\"{:.17g}\"/>\n", in, frame->time);
     x += fmt::format("{}<Topology TopologyType=\"{}\" NumberOfElements=\"{}\" NodesPerElement=\"{}\">\n{}  {}\n{}"
@@ -579,23 +552,10 @@ struct ResultsFile::Impl {
                      item<std::int32_t>(fmt::format("{} {}", n, npe), mesh + "/connectivity"), in);
     x += fmt::format("{}<Geometry GeometryType=\"XYZ\">\n{}  {}\n{}</Geometry>\n", in, in,
                      item<double>(fmt::format("{} 3", nodes), "/mesh/coordinates"), in);
-    attribute_xml("node_id", "Scalar", "Node", item<std::int64_t>(std::to_string(nodes), "/mesh/node_ids"));
-    attribute_xml("element_id", "Scalar", "Cell", item<std::int64_t>(std::to_string(n), mesh + "/ids"));
-    attribute_xml("part_id", "Scalar", "Cell", item<std::int64_t>(std::to_string(n), mesh + "/part_id"));
-    if (frame != nullptr) {
-      const std::string f = "/frames/" + frame->name;
-      attribute_xml("displacement", "Vector", "Node", item<double>(fmt::format("{} 3", nodes), f + "/displacement"));
-      attribute_xml("velocity", "Vector", "Node", item<double>(fmt::format("{} 3", nodes), f + "/velocity"));
-      if (contact_field)
-        attribute_xml("contact_force", "Vector", "Node", item<double>(fmt::format("{} 3", nodes), f + "/contact_force"));
-      if (k.kind == ElementKind::Shell4 || k.kind == ElementKind::Shell3) {
-        const std::string shell = f + "/" + k.group;
-        attribute_xml("stress", "Vector", "Cell", item<double>(fmt::format("{} 3", n), shell + "/stress"));
-        attribute_xml("plastic_strain", "Scalar", "Cell", item<double>(std::to_string(n), shell + "/plastic_strain"));
-        attribute_xml("thickness", "Scalar", "Cell", item<double>(std::to_string(n), shell + "/thickness"));
-        attribute_xml("deleted", "Scalar", "Cell", item<std::uint8_t>(std::to_string(n), shell + "/deleted"));
-      }
-    }
+    attribute_xml(x, in, "node_id", "Scalar", "Node", item<std::int64_t>(std::to_string(nodes), "/mesh/node_ids"));
+    attribute_xml(x, in, "element_id", "Scalar", "Cell", item<std::int64_t>(std::to_string(n), mesh + "/ids"));
+    attribute_xml(x, in, "part_id", "Scalar", "Cell", item<std::int64_t>(std::to_string(n), mesh + "/part_id"));
+    if (frame != nullptr) xdmf_fields(x, *frame, &k, in);
     x += indent + "</Grid>\n";
   }
 
@@ -608,11 +568,7 @@ struct ResultsFile::Impl {
                      nodes);
     x += fmt::format("{}<Geometry GeometryType=\"XYZ\">\n{}  {}\n{}</Geometry>\n", in, in,
                      item<double>(fmt::format("{} 3", nodes), "/mesh/coordinates"), in);
-    if (frame != nullptr)
-      for (const char* name : {"displacement", "velocity"})
-        x += fmt::format("{}<Attribute Name=\"{}\" AttributeType=\"Vector\" Center=\"Node\">\n{}  {}\n{}</Attribute>\n",
-                         in, name, in, item<double>(fmt::format("{} 3", nodes), "/frames/" + frame->name + "/" + name),
-                         in);
+    if (frame != nullptr) xdmf_fields(x, *frame, nullptr, in);
     x += indent + "</Grid>\n";
   }
 
@@ -633,6 +589,9 @@ struct ResultsFile::Impl {
   std::string xdmf_text() const {
     std::string x = "<?xml version=\"1.0\" ?>\n<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n<Xdmf Version=\"2.0\">\n"
                     "  <Domain>\n";
+    // The part table for readers of the XML; ParaView ignores Information and colours by the cell data part_id.
+    for (const auto& [id, title] : part_table)
+      x += fmt::format("    <Information Name=\"part {}\" Value=\"{}\"/>\n", id, xml_escaped(title));
     if (frames.empty()) {
       xdmf_instant(x, nullptr, "    ", "mesh");
     } else {

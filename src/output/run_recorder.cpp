@@ -227,6 +227,14 @@ void RunRecorder::progress(const SolverState& s, double dt, const StepControl& c
   console_->flush();
 }
 
+// A state is written once: a continued run's first frame may be the last one of the run before it.
+void RunRecorder::frame(const SolverState& s) {
+  const long long cycle = s.cycles_done + s.cycle;
+  if (!results_ || cycle == last_frame_cycle_) return;
+  results_->write_frame(s.time, s.cycle, model_, s);
+  last_frame_cycle_ = cycle;
+}
+
 void RunRecorder::console_line(const std::string& text) {
   if (console_ == nullptr) return;
   clear_progress();
@@ -238,12 +246,6 @@ void RunRecorder::clear_progress() {
   fmt::print(*console_, "\r\x1b[K");
   console_->flush();
   progress_shown_ = false;
-}
-
-void RunRecorder::frame(const SolverState& s) {
-  if (!results_) return;
-  results_->write_frame(s.time, s.cycle, model_, s);
-  last_frame_cycle_ = s.cycles_done + s.cycle;
 }
 
 void RunRecorder::history(const SolverState& s, double dt, const VelocityChange& change) {
@@ -273,7 +275,9 @@ void RunRecorder::history(const SolverState& s, double dt, const VelocityChange&
 
 void RunRecorder::close(const SolverState& s, bool stopped_early) {
   if (!results_) return;
-  if (stopped_early && s.cycles_done + s.cycle != last_frame_cycle_) frame(s);  // the last good state
+  if (stopped_early) frame(s);  // the last good state (once: frame() skips a cycle written already)
+  else if (results_->frames() > 0 || (model_.run.anim_interval > 0.0 && s.time >= model_.run.anim_start))
+    frame(s);  // the end time, also when it is not on the /ANIM/DT grid (or a resumed run met none of it)
   results_->close();
 }
 

@@ -188,6 +188,26 @@ void warn_energy_error(const SolverState& s, RunEvents& events) {
   events.pending.push_back(event);
 }
 
+// The elements' forces on the nodes, before contact and loads add theirs (field frames, /ANIM/VECT/FINT).
+void record_internal_forces(SolverState& s) {
+  std::vector<double>& out = s.recorded.internal_force;
+  if (out.empty()) return;
+  const NodalState& n = s.nodes;
+  for (std::size_t k = 0; k < n.size(); ++k) out[3 * k] = n.fx[k], out[3 * k + 1] = n.fy[k], out[3 * k + 2] = n.fz[k];
+}
+
+// a^n from the velocity change of the step, after the kinematic conditions (field frames, /ANIM/VECT/ACC).
+void record_acceleration(SolverState& s, const VelocityScratch& scratch, double dt_average) {
+  std::vector<double>& out = s.recorded.acceleration;
+  if (out.empty() || !(dt_average > 0.0)) return;
+  const NodalState& n = s.nodes;
+  for (std::size_t k = 0; k < n.size(); ++k) {
+    out[3 * k] = (n.vx[k] - scratch.before[0][k]) / dt_average;
+    out[3 * k + 1] = (n.vy[k] - scratch.before[1][k]) / dt_average;
+    out[3 * k + 2] = (n.vz[k] - scratch.before[2][k]) / dt_average;
+  }
+}
+
 }  // namespace
 
 double step_scale(const RunControl& run) { return run.dt.scale > 0.0 ? run.dt.scale : 0.9; }
@@ -212,6 +232,7 @@ StepBound compute_element_forces(const Model& m, SolverState& s, RunEvents& even
     if (r.controlling >= 0 && type_scale * r.min_dt < bound.dt)
       bound = {type_scale * r.min_dt, StepControl::element(group.kind, r.controlling)};
   }
+  record_internal_forces(s);
   return bound;
 }
 
@@ -234,6 +255,7 @@ void compute_contact_forces(const Model& m, SolverState& s, RunEvents& events, b
 
 void apply_loads(const Model& m, SolverState& s) {
   add_external_forces(m, s, s.time);
+  if (!s.recorded.external_force.empty()) record_external_forces(m, s, s.time);
   gather_rigid_body_forces(s);
 }
 
@@ -300,6 +322,7 @@ void apply_constraints(const Model& m, SolverState& s, VelocityScratch& scratch,
   s.energy.external_work += load_work(m, s, scratch, s.time, dt_average) + constraint_work(s, scratch) + body_work;
   if (!s.contact.interfaces.empty())
     s.energy.contact = contact::contact_work(s.contact, n, scratch.before.data(), dt_average);
+  record_acceleration(s, scratch, dt_average);
 }
 
 void advance_positions(SolverState& s, double dt_next) {
@@ -326,6 +349,18 @@ OutputSchedule::OutputSchedule(const RunControl& rc, double time, long long max)
   if (rc.history_interval > 0.0) next_history = time > 0.0 ? next_output_time(time, 0.0, rc.history_interval) : 0.0;
 }
 
+void keep_requested_results(const RunControl& rc, SolverState& s) {
+  const std::size_t values = 3 * s.nodes.size();
+  RecordedNodalResults& r = s.recorded;
+  r.acceleration.assign(rc.anim.acceleration ? values : 0, 0.0);
+  r.internal_force.assign(rc.anim.internal_force ? values : 0, 0.0);
+  r.external_force.assign(rc.anim.external_force ? values : 0, 0.0);
+}
+
+bool frame_due(const SolverState& s, const OutputSchedule& schedule) {
+  return s.time >= schedule.next_frame * (1.0 - 1e-12);
+}
+
 bool MonitorDue::energies() const { return print || frame || history || cycle % 64 == 0; }
 
 MonitorDue outputs_due(const Model& m, const SolverState& s, const OutputSchedule& schedule, double dt_next) {
@@ -334,7 +369,7 @@ MonitorDue outputs_due(const Model& m, const SolverState& s, const OutputSchedul
   due.finished = s.time >= m.run.end_time * (1.0 - 1e-12) || dt_next <= 0.0 ||
                  (schedule.max_cycles >= 0 && s.cycle >= schedule.max_cycles);
   due.print = s.cycle % schedule.print_every == 0 || due.finished;
-  due.frame = s.time >= schedule.next_frame * (1.0 - 1e-12);
+  due.frame = frame_due(s, schedule);
   due.history = s.time >= schedule.next_history * (1.0 - 1e-12);
   return due;
 }

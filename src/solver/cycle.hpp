@@ -57,6 +57,10 @@ void apply_constraints(const Model& model, SolverState& state, VelocityScratch& 
 // 6. Positions x^(n+1) = x^n + dt^(n+1/2) v^(n+1/2) (CD-3), time and cycle.
 void advance_positions(SolverState& state, double dt_next);
 
+// The nodal results the engine deck's /ANIM cards ask for that the cycle keeps only then (SolverState::recorded):
+// sized (zero) when asked for, emptied when not.
+void keep_requested_results(const RunControl& run, SolverState& state);
+
 // 7. Monitor: which outputs are due after a cycle, the energies they need, and the /STOP limits.
 struct OutputSchedule {
   double next_frame, next_history;  // /ANIM/DT and /TFILE times [T] (infinite: none)
@@ -71,6 +75,8 @@ struct MonitorDue {
   long long cycle;
 };
 MonitorDue outputs_due(const Model& model, const SolverState& state, const OutputSchedule& schedule, double dt_next);
+// A field frame is due at the state's time (also before the first cycle: the frame at t = 0).
+bool frame_due(const SolverState& state, const OutputSchedule& schedule);
 // Kinetic energies of v^(n+1/2) into the balance.
 void update_kinetic_energy(SolverState& state);
 // NaN in the balance, /STOP added-mass and energy-error limits: recorded in `events.stop`.

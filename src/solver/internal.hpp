@@ -34,6 +34,8 @@ std::pair<double, double> kinetic_energy(const SolverState& state);
 
 // Adds /CLOAD and /GRAV forces at time t; returns nothing (their work is counted with the velocity update).
 void add_external_forces(const Model& model, SolverState& state, double time);
+// The same forces into state.recorded.external_force (3 per node, moments left out), for the field frames.
+void record_external_forces(const Model& model, SolverState& state, double time);
 
 // Moves the secondary nodes' forces and moments to their rigid body's centre (after the element forces).
 void gather_rigid_body_forces(SolverState& state);

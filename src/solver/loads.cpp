@@ -33,22 +33,36 @@ std::vector<double>* force(NodalState& n, Dof dof) {
   return &n.fx;
 }
 
-}  // namespace
-
-void add_external_forces(const Model& m, SolverState& s, double t) {
+// Calls add(dof, node, value) for every /CLOAD and /GRAV force at time t, load by load in deck order.
+template <class Add>
+void for_each_external_force(const Model& m, const NodalState& n, double t, Add add) {
   for (const ImposedMotion& im : m.imposed) {
     if (im.kind != ImposedKind::Force || t < im.t_start || t > im.t_stop) continue;
     const double value = curve(m, im.function, im.scale_x, im.scale_y, t);
-    auto& f = *force(s.nodes, im.dof);
     for (std::int32_t node : m.node_groups[static_cast<std::size_t>(im.node_group)].nodes)
-      f[static_cast<std::size_t>(node)] += value;
+      add(im.dof, static_cast<std::size_t>(node), value);
   }
   for (const Gravity& g : m.gravity) {
     const double acceleration = curve(m, g.function, g.scale_x, g.scale_y, t);
-    auto& f = *force(s.nodes, g.dof);
     for (std::int32_t node : m.node_groups[static_cast<std::size_t>(g.node_group)].nodes)
-      f[static_cast<std::size_t>(node)] += s.nodes.mass[static_cast<std::size_t>(node)] * acceleration;
+      add(g.dof, static_cast<std::size_t>(node), n.mass[static_cast<std::size_t>(node)] * acceleration);
   }
+}
+
+}  // namespace
+
+void add_external_forces(const Model& m, SolverState& s, double t) {
+  for_each_external_force(m, s.nodes, t,
+                          [&](Dof dof, std::size_t node, double value) { (*force(s.nodes, dof))[node] += value; });
+}
+
+void record_external_forces(const Model& m, SolverState& s, double t) {
+  std::vector<double>& out = s.recorded.external_force;
+  std::fill(out.begin(), out.end(), 0.0);
+  for_each_external_force(m, s.nodes, t, [&](Dof dof, std::size_t node, double value) {
+    const auto d = static_cast<std::size_t>(dof);
+    if (d < 3) out[3 * node + d] += value;  // forces only; moments have no field
+  });
 }
 
 void impose_kinematics(const Model& m, SolverState& s, double t, double dt_next) {

@@ -50,6 +50,16 @@ void resume_monitor(const ResumeMarks& marks, RunEvents& events, solver::OutputS
   events.energy_error_warned = marks.energy_error_warned;
 }
 
+// The state an engine deck starts from, when a frame is due at its time (t = 0 for the first): written before the
+// first cycle, so that the frames are on the /ANIM/DT grid from Tstart on.
+void write_first_frame(const Model& m, const SolverState& s, RunRecorder& recorder, solver::OutputSchedule& schedule) {
+  if (!solver::frame_due(s, schedule)) return;
+  recorder.frame(s);
+  solver::MonitorDue written{};
+  written.frame = true;
+  solver::advance_schedule(m, s, written, schedule);
+}
+
 }  // namespace
 
 RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunRecorder& recorder, SolverState& s,
@@ -62,6 +72,8 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunReco
   RunEvents events;
   OutputSchedule schedule(m.run, s.time, options.max_cycles);
   if (options.resume != nullptr) resume_monitor(*options.resume, events, schedule);
+  keep_requested_results(m.run, s);
+  if (options.resume == nullptr) write_first_frame(m, s, recorder, schedule);
   VelocityScratch scratch(s.nodes.size());
   PhaseTimes phases;
   PhaseClock clock;

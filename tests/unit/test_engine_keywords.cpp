@@ -3,6 +3,8 @@
 // errors for malformed cards.
 #include <gtest/gtest.h>
 
+#include <map>
+
 #include "deck_files.hpp"
 
 using namespace crumple;
@@ -179,13 +181,64 @@ TEST(EngineKeywords, EveryRunControlCardReads) {
     return std::count_if(d.report.skipped_options.begin(), d.report.skipped_options.end(),
                          [&](const SkippedOption& o) { return o.keyword == keyword && o.kind == kind; });
   };
-  EXPECT_EQ(noted("/ANIM/ELEM/vonm", SkipKind::OutputOnly), 1);  // VONM is not written
-  EXPECT_EQ(noted("/ANIM/ELEM/EPSP", SkipKind::OutputOnly), 0);  // shell plastic strain is
-  EXPECT_EQ(noted("/ANIM/NODA/DMAS", SkipKind::OutputOnly), 1);
+  EXPECT_EQ(noted("/ANIM/ELEM/vonm", SkipKind::OutputOnly), 0);  // von Mises stress is written on request
+  EXPECT_EQ(noted("/ANIM/ELEM/EPSP", SkipKind::OutputOnly), 0);  // plastic strain is in every frame
+  EXPECT_EQ(noted("/ANIM/NODA/DMAS", SkipKind::OutputOnly), 0);
+  EXPECT_TRUE(run.anim.von_mises && run.anim.added_mass && run.anim.contact_force);
+  EXPECT_FALSE(run.anim.pressure || run.anim.acceleration);
   EXPECT_EQ(noted("/RFILE/5", SkipKind::OutputOnly), 1);
   EXPECT_EQ(noted("/STOP", SkipKind::OutputOnly), 1);  // NTH, NANIM: no extra output at a stop
   EXPECT_EQ(noted("/PARITH/OFF", SkipKind::PerformanceHint), 1);
   EXPECT_EQ(d.report.skipped_options.size(), d.report.warnings.size());
+}
+
+// Each /ANIM request either sets the frame field it asks for (docs/output-format.md) or is a named warning saying
+// what is not written; a field of every frame needs no flag and no warning.
+TEST(EngineKeywords, AnimRequestsSetTheirFrameFieldsOrNameWhatIsNotWritten) {
+  const std::string engine = kRun +
+                             "/ANIM/ELEM/P\n/ANIM/SHELL/VONM\n/ANIM/BRICK/ENER\n/ANIM/ELEM/HOURG\n/ANIM/ELEM/DT\n"
+                             "/ANIM/SHELL/TENS/STRESS/BEND\n/ANIM/TENS/STRESS/UPPER\n/ANIM/TENS/STRESS/MEMB\n"
+                             "/ANIM/BRICK/TENS/STRESS\n/ANIM/VECT/ACC\n/ANIM/VECT/FINT\n/ANIM/VECT/FEXT\n"
+                             "/ANIM/VECT/VROT\n/ANIM/MASS\n/ANIM/NODA/DMAS\n/ANIM/ELEM/THIC\n/ANIM/BRICK/SIGZ\n"
+                             // not written:
+                             "/ANIM/ELEM/DENS\n/ANIM/BRICK/THIC\n/ANIM/SHELL/SIGZ\n/ANIM/BRICK/TENS/STRESS/BEND\n"
+                             "/ANIM/SHELL/TENS/STRESS/3\n/ANIM/BRICK/TENS/STRESS/111\n/ANIM/TENS/STRAIN\n"
+                             "/ANIM/SHELL/TENS/STRESS/1/UPPER\n/ANIM/SHELL/EPSP/UPPER\n/ANIM/VECT/FREAC\n"
+                             "/ANIM/NODA/DT\n/ANIM/BEAM/EPSP\n";
+  test::TempDir dir;
+  const Deck d = read_deck(test::write_deck(dir, "", engine));
+  const FrameRequests& a = d.model.run.anim;
+  EXPECT_TRUE(a.pressure && a.von_mises && a.energy_density && a.hourglass_energy && a.time_step);
+  EXPECT_TRUE(a.bending_stress && a.surface_stress);
+  EXPECT_TRUE(a.acceleration && a.internal_force && a.external_force && a.angular_velocity);
+  EXPECT_TRUE(a.nodal_mass && a.added_mass);
+  EXPECT_FALSE(a.contact_force);
+  std::map<std::string, std::string> warned;
+  for (const SkippedOption& o : d.report.skipped_options)
+    if (o.kind == SkipKind::OutputOnly) warned[o.keyword] = o.text();
+  for (const char* written : {"/ANIM/ELEM/P", "/ANIM/SHELL/VONM", "/ANIM/BRICK/ENER", "/ANIM/SHELL/TENS/STRESS/BEND",
+                              "/ANIM/TENS/STRESS/UPPER", "/ANIM/TENS/STRESS/MEMB", "/ANIM/BRICK/TENS/STRESS",
+                              "/ANIM/VECT/FINT", "/ANIM/MASS", "/ANIM/NODA/DMAS", "/ANIM/ELEM/THIC", "/ANIM/BRICK/SIGZ"})
+    EXPECT_EQ(warned.count(written), 0u) << written << ": " << warned[written];
+  const std::pair<const char*, const char*> missing[] = {
+      {"/ANIM/ELEM/DENS", "result DENS is not written by Crumple (its frames hold EPSP OFF SIGX"},
+      {"/ANIM/BRICK/THIC", "result THIC is written for shells only"},
+      {"/ANIM/SHELL/SIGZ", "result SIGZ is written for bricks only"},
+      {"/ANIM/BRICK/TENS/STRESS/BEND", "stress BEND is written for shells only"},
+      {"/ANIM/SHELL/TENS/STRESS/3", "stress at integration point 3 is not written"},
+      {"/ANIM/BRICK/TENS/STRESS/111", "stress at integration point 111 is not written"},
+      {"/ANIM/TENS/STRAIN", "tensor STRAIN is not written"},
+      {"/ANIM/SHELL/TENS/STRESS/1/UPPER", "composite layer"},
+      {"/ANIM/SHELL/EPSP/UPPER", "result EPSP per layer or point is not written"},
+      {"/ANIM/VECT/FREAC", "result FREAC is not written by Crumple (its frames hold VEL DISP CONT ACC FINT FEXT VROT)"},
+      {"/ANIM/NODA/DT", "result DT is not written by Crumple (its frames hold DMAS)"},
+      {"/ANIM/BEAM/EPSP", "animation request not written by Crumple"}};
+  for (const auto& [keyword, text] : missing)
+    EXPECT_TRUE(contains(warned[keyword], text)) << keyword << ": " << warned[keyword];
+  EXPECT_EQ(warned.size(), std::size(missing));
+  // A tensor card needs its tensor's name; /ANIM/MASS takes nothing after it.
+  EXPECT_TRUE(contains(error_of(kRun + "/ANIM/SHELL/TENS\n"), "field restype"));
+  EXPECT_TRUE(contains(error_of(kRun + "/ANIM/MASS/2\n"), "nothing after /ANIM/MASS"));
 }
 
 // Physics limits of /STOP that the solver does not implement are errors naming the value.

@@ -21,6 +21,25 @@ struct TimeStepControl {  // /DT, /DT/NODA/CST, /DT/SHELL, /DT/BRICK, /DT/INTER/
   SourceLocation where;   // the card
 };
 
+// What the field frames hold beyond the fields every frame has (docs/output-format.md, "/frames/NNNN"): set by
+// the /ANIM cards that ask for them. A request for one element kind adds the field for every kind that has it.
+struct FrameRequests {
+  bool von_mises = false;         // /ANIM/ELEM/VONM (also /ANIM/SHELL/..., /ANIM/BRICK/...)
+  bool pressure = false;          // P
+  bool energy_density = false;    // ENER: internal energy over element mass
+  bool hourglass_energy = false;  // HOURG
+  bool time_step = false;         // DT: the element's critical step
+  bool bending_stress = false;    // /ANIM/[SHELL/]TENS/STRESS/BEND
+  bool surface_stress = false;    // /ANIM/[SHELL/]TENS/STRESS/UPPER or LOWER (both written)
+  bool contact_force = false;     // /ANIM/VECT/CONT: also written (zero) without contact interfaces
+  bool acceleration = false;      // /ANIM/VECT/ACC
+  bool internal_force = false;    // /ANIM/VECT/FINT
+  bool external_force = false;    // /ANIM/VECT/FEXT
+  bool angular_velocity = false;  // /ANIM/VECT/VROT
+  bool nodal_mass = false;        // /ANIM/MASS
+  bool added_mass = false;        // /ANIM/NODA/DMAS
+};
+
 struct RunControl {
   bool present = false;         // the engine part has its /RUN card
   SourceLocation where;         // its /RUN card
@@ -31,6 +50,7 @@ struct RunControl {
   int history_format = 0;          // /TFILE/type: 1 binary, 2 coded ASCII, 3 ASCII, 4 IEEE 32-bit (0: no /TFILE)
   double anim_start = 0.0, anim_interval = 0.0;  // /ANIM/DT [T] (interval 0: no field output)
   std::vector<std::string> anim_element_fields, anim_vector_fields, anim_nodal_fields;  // each once, upper case
+  FrameRequests anim;
   bool anim_gzip = false;
   int anim_version = 0;           // /ANIM/VERS/n
   std::int64_t print_every = 0;   // /PRINT/n: listing every |n| cycles (negative: also on screen)

@@ -36,8 +36,9 @@ class ResultsFile {
   ResultsFile(const ResultsFile&) = delete;
   ResultsFile& operator=(const ResultsFile&) = delete;
 
-  // Appends a field frame: displacements, velocities, shell stresses (mid-point), plastic strain, thickness,
-  // deleted flags, at time `time` of cycle `cycle`.
+  // Appends a field frame at time `time` of cycle `cycle`: the fields every frame has (displacement, velocity,
+  // element stress, plastic strain, shell thickness, deleted and VTK ghost flags) and those model.run.anim asks
+  // for (docs/output-format.md). Throws when the state does not fit the mesh, before anything is written.
   void write_frame(double time, long long cycle, const Model& model, const SolverState& state);
   // Appends a history row.
   void write_history(const HistoryRow& row);

@@ -58,6 +58,7 @@ class RunRecorder {
   // the kinetic energy up to date, then calls progress().
   bool progress_due() { return progress_clock_.due(); }
   void progress(const SolverState& state, double dt, const StepControl& control);
+  // A field frame of the state, unless the frame of that cycle is written already.
   void frame(const SolverState& state);
   // A history row: the energies, walls, bodies and interfaces, and every /TH dataset; `change` is the cycle's
   // velocity update (accelerations and reactions).

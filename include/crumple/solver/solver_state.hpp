@@ -58,6 +58,15 @@ struct RigidWallState {
   std::uint8_t free_dofs = 0;
 };
 
+// Nodal results a field frame asks for that the cycle would otherwise not keep (/ANIM/VECT/ACC, FINT, FEXT): 3 per
+// node (x y z), sized by the solver only when the engine deck asks for them, else empty. Output only: no phase of
+// the cycle reads them.
+struct RecordedNodalResults {
+  std::vector<double> acceleration;    // a^n = (v^(n+1/2) - v^(n-1/2)) / dt^n, after the kinematic conditions
+  std::vector<double> internal_force;  // the elements' forces on the node at x^n [M L T^-2]
+  std::vector<double> external_force;  // /CLOAD and /GRAV forces at t^n [M L T^-2]
+};
+
 struct SolverState {
   NodalState nodes;
   std::vector<double> x0, y0, z0;                  // initial coordinates
@@ -80,6 +89,7 @@ struct SolverState {
   double mass_initial = 0.0;
   double mass_added = 0.0;         // mass added by /DT/NODA/CST [M]
   std::vector<double> nodal_stiffness;  // scratch of the nodal time step: sum of element stiffness estimates
+  RecordedNodalResults recorded;
 };
 
 }  // namespace crumple

@@ -14,13 +14,30 @@
 namespace crumple::deck {
 namespace {
 
-// Result names whose values Crumple writes in every field frame of NAME.h5 (results_file.cpp): displacement,
-// velocity, contact force (decks with interfaces) and, for shells, mid-surface stress, plastic strain, thickness
-// and the deleted flag. Any other result is an output request Crumple does not write: a named warning.
-constexpr std::array<std::string_view, 6> kElementFields{"EPSP", "THIC", "OFF", "SIGX", "SIGY", "SIGXY"};
-constexpr std::array<std::string_view, 3> kVectorFields{"VEL", "DISP", "CONT"};
-constexpr std::array<std::string_view, 0> kNodalFields{};
-
+// What each /ANIM result name writes into the field frames of NAME.h5 (results_file.cpp, docs/output-format.md):
+// a field every frame has (flag nullptr) or the request flag that adds its field. `kinds` says which element
+// kinds have the value. Any other result is an output request Crumple does not write: a named warning.
+enum AnimKinds : unsigned { kShells = 1, kBricks = 2, kAllKinds = 3 };
+struct AnimResult {
+  std::string_view name;
+  bool FrameRequests::*flag;  // nullptr: in every frame
+  unsigned kinds = kAllKinds;
+};
+using F = FrameRequests;
+constexpr std::array<AnimResult, 14> kElementResults{{
+    {"EPSP", nullptr},  {"OFF", nullptr},   {"SIGX", nullptr},  {"SIGY", nullptr},
+    {"SIGXY", nullptr}, {"THIC", nullptr, kShells}, {"SIGZ", nullptr, kBricks}, {"SIGYZ", nullptr, kBricks},
+    {"SIGZX", nullptr, kBricks}, {"VONM", &F::von_mises}, {"P", &F::pressure}, {"ENER", &F::energy_density},
+    {"HOURG", &F::hourglass_energy}, {"DT", &F::time_step}}};
+constexpr std::array<AnimResult, 8> kVectorResults{{{"VEL", nullptr},
+                                                    {"DISP", nullptr},
+                                                    {"CONT", &F::contact_force},
+                                                    {"ACC", &F::acceleration},
+                                                    {"ACCEL", &F::acceleration},
+                                                    {"FINT", &F::internal_force},
+                                                    {"FEXT", &F::external_force},
+                                                    {"VROT", &F::angular_velocity}}};
+constexpr std::array<AnimResult, 1> kNodalResults{{{"DMAS", &F::added_mass}}};
 
 // Path part `index` of the keyword line as written (Card::path is upper-cased; a run name keeps its case).
 std::string written_part(const Card& card, std::size_t index) {
@@ -192,8 +209,34 @@ void read_anim_dt(CardReader& reader, DeckContext& context) {
   reader.finish();
 }
 
+// The names of a table, without the second name of a field (ACCEL for ACC).
+std::string result_names(std::span<const AnimResult> results) {
+  std::vector<std::string_view> names;
+  for (auto r = results.begin(); r != results.end(); ++r)
+    if (r->flag == nullptr || std::none_of(results.begin(), r, [&](const AnimResult& o) { return o.flag == r->flag; }))
+      names.push_back(r->name);
+  return fmt::format("{}", fmt::join(names, " "));
+}
+
+std::string_view kind_words(unsigned kinds) { return kinds == kShells ? "shells" : "bricks"; }
+
+// Result `name` of a table: its flag set, or a named warning when Crumple does not write it for `kinds`.
+void request_result(CardReader& reader, DeckContext& context, std::span<const AnimResult> results,
+                    std::string_view name, unsigned kinds) {
+  const auto found = std::find_if(results.begin(), results.end(), [&](const AnimResult& r) { return r.name == name; });
+  if (found == results.end())
+    return output_only(reader, context,
+                       fmt::format("result {} is not written by Crumple (its frames hold {})", name,
+                                   results.empty() ? std::string("no result of this kind") : result_names(results)));
+  if ((found->kinds & kinds) == 0)
+    return output_only(reader, context,
+                       fmt::format("result {} is written for {} only", name, kind_words(found->kinds)));
+  if (found->flag != nullptr) context.model.run.anim.*found->flag = true;
+}
+
+// /ANIM/ELEM/restype, /ANIM/VECT/restype, /ANIM/NODA/restype: each name kept once in `fields`.
 void read_anim_fields(CardReader& reader, DeckContext& context, std::vector<std::string>& fields,
-                      std::span<const std::string_view> written) {
+                      std::span<const AnimResult> results) {
   const Card& card = reader.card();
   if (card.path.size() < 3 || card.path[2].empty())
     reader.fail("restype", fmt::format("{}/<result name>", path_prefix(card, 2)), "no result name");
@@ -201,14 +244,56 @@ void read_anim_fields(CardReader& reader, DeckContext& context, std::vector<std:
   const std::string& name = card.path[2];
   reader.finish();
   if (std::find(fields.begin(), fields.end(), name) == fields.end()) fields.push_back(name);
-  if (std::find(written.begin(), written.end(), name) == written.end())
-    output_only(reader, context,
-                fmt::format("result {} is not written by Crumple (its frames hold {})", name,
-                            written.empty() ? std::string("no result of this kind")
-                                            : fmt::format("{}", fmt::join(written, " "))));
+  request_result(reader, context, results, name, kAllKinds);
 }
 
-// Any other /ANIM request (/ANIM/MASS, /ANIM/SHELL/TENS/..., /ANIM/BRICK/...): a named warning.
+// /ANIM/[SHELL/|BRICK/]TENS/restype[/location]: the tensor at path part `at`. Frames hold the stress tensor
+// (shell membrane stress, brick mean stress) and, on request, the shell bending and surface stresses.
+void read_anim_tensor(CardReader& reader, DeckContext& context, std::size_t at, unsigned kinds) {
+  const Card& card = reader.card();
+  if (card.path.size() <= at || card.path[at].empty())
+    reader.fail("restype", fmt::format("{}/<tensor name, e.g. STRESS>", path_prefix(card, at)), "no tensor name");
+  reader.finish();
+  const std::string& tensor = card.path[at];
+  const std::string location = card.path.size() > at + 1 ? card.path[at + 1] : "";
+  FrameRequests& anim = context.model.run.anim;
+  std::string missing;
+  if (tensor != "STRESS")
+    missing = fmt::format("tensor {} is not written by Crumple (its frames hold the stress tensors)", tensor);
+  else if (card.path.size() > at + 2)
+    missing = "stress per composite layer point is not written by Crumple";
+  else if (location == "BEND" || location == "UPPER" || location == "LOWER") {
+    if ((kinds & kShells) == 0) missing = fmt::format("stress {} is written for shells only", location);
+    else (location == "BEND" ? anim.bending_stress : anim.surface_stress) = true;
+  } else if (location == "MEMB" && (kinds & kShells) == 0)
+    missing = "stress MEMB is written for shells only";
+  else if (!location.empty() && location != "0" && location != "MEMB")
+    missing = fmt::format("stress at integration point {} is not written by Crumple (its frames hold the shell "
+                          "membrane, bending, upper and lower stresses and the brick mean stress)",
+                          location);
+  if (!missing.empty()) output_only(reader, context, missing);
+}
+
+// /ANIM/SHELL/..., /ANIM/BRICK/...: the element results of one kind, or its tensors (/ANIM/SHELL/TENS/...).
+void read_anim_kind(CardReader& reader, DeckContext& context, unsigned kinds) {
+  const Card& card = reader.card();
+  if (card.path.size() > 2 && card.path[2] == "TENS") return read_anim_tensor(reader, context, 3, kinds);
+  if (card.path.size() < 3 || card.path[2].empty())
+    reader.fail("restype", fmt::format("{}/<result name>", path_prefix(card, 2)), "no result name");
+  reader.finish();
+  if (card.path.size() > 3)
+    return output_only(reader, context,
+                       fmt::format("result {} per layer or point is not written by Crumple", card.path[2]));
+  request_result(reader, context, kElementResults, card.path[2], kinds);
+}
+
+void read_anim_mass(CardReader& reader, DeckContext& context) {
+  path_at_most(reader, 2);
+  reader.finish();
+  context.model.run.anim.nodal_mass = true;
+}
+
+// Any other /ANIM request (/ANIM/BEAM/..., /ANIM/GPS/..., /ANIM/SENSOR, ...): a named warning.
 void read_anim_other(CardReader& reader, DeckContext& context) {
   while (reader.next_nonblank()) {
   }
@@ -416,8 +501,8 @@ void read_dtix(CardReader& reader, DeckContext& context) {
 }  // namespace
 
 void register_engine_keywords(KeywordTable& table) {
-  auto fields = [](std::vector<std::string> RunControl::*member, std::span<const std::string_view> written) {
-    return [member, written](CardReader& r, DeckContext& c) { read_anim_fields(r, c, c.model.run.*member, written); };
+  auto fields = [](std::vector<std::string> RunControl::*member, std::span<const AnimResult> results) {
+    return [member, results](CardReader& r, DeckContext& c) { read_anim_fields(r, c, c.model.run.*member, results); };
   };
   const DeckPart E = DeckPart::Engine;
   table.push_back({"/RUN", E, read_run});
@@ -426,9 +511,13 @@ void register_engine_keywords(KeywordTable& table) {
   table.push_back({"/VERS", E, read_engine_version});
   table.push_back({"/TITLE", E, read_engine_title});
   table.push_back({"/ANIM/DT", E, read_anim_dt});
-  table.push_back({"/ANIM/ELEM", E, fields(&RunControl::anim_element_fields, kElementFields)});
-  table.push_back({"/ANIM/VECT", E, fields(&RunControl::anim_vector_fields, kVectorFields)});
-  table.push_back({"/ANIM/NODA", E, fields(&RunControl::anim_nodal_fields, kNodalFields)});
+  table.push_back({"/ANIM/ELEM", E, fields(&RunControl::anim_element_fields, kElementResults)});
+  table.push_back({"/ANIM/VECT", E, fields(&RunControl::anim_vector_fields, kVectorResults)});
+  table.push_back({"/ANIM/NODA", E, fields(&RunControl::anim_nodal_fields, kNodalResults)});
+  table.push_back({"/ANIM/SHELL", E, [](CardReader& r, DeckContext& c) { read_anim_kind(r, c, kShells); }});
+  table.push_back({"/ANIM/BRICK", E, [](CardReader& r, DeckContext& c) { read_anim_kind(r, c, kBricks); }});
+  table.push_back({"/ANIM/TENS", E, [](CardReader& r, DeckContext& c) { read_anim_tensor(r, c, 2, kAllKinds); }});
+  table.push_back({"/ANIM/MASS", E, read_anim_mass});
   table.push_back({"/ANIM/GZIP", E, read_anim_gzip});
   table.push_back({"/ANIM/VERS", E, read_anim_version});
   table.push_back({"/ANIM", E, read_anim_other});
