@@ -130,16 +130,16 @@ double load_work(const Model& m, const SolverState& s, const VelocityScratch& sc
   };
   for (const ImposedMotion& im : m.imposed) {
     if (im.kind != ImposedKind::Force || t < im.t_start || t > im.t_stop) continue;
-    const double value = im.scale_y * m.functions[static_cast<std::size_t>(im.function)](t / im.scale_x);
+    const double value = load_curve(m, im.function, im.scale_x, im.scale_y, t);
     for (std::int32_t node : m.node_groups[static_cast<std::size_t>(im.node_group)].nodes)
       work += value * mean_velocity(im.dof, static_cast<std::size_t>(node)) * dt_average;
   }
   for (const Gravity& g : m.gravity) {
-    const double a = g.scale_y * m.functions[static_cast<std::size_t>(g.function)](t / g.scale_x);
-    for (std::int32_t node : m.node_groups[static_cast<std::size_t>(g.node_group)].nodes) {
+    const double a = load_curve(m, g.function, g.scale_x, g.scale_y, t);
+    for_each_load_node(m, g.node_group, [&](std::int32_t node) {
       const auto k = static_cast<std::size_t>(node);
       work += n.mass[k] * a * mean_velocity(g.dof, k) * dt_average;
-    }
+    });
   }
   return work;
 }

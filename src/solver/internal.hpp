@@ -10,6 +10,23 @@
 
 namespace crumple::solver {
 
+// Value of a load's time function, scale_y * f(t / scale_x); a load without a function (funct_IDT blank, as /GRAV
+// allows) is constant, scale_y.
+inline double load_curve(const Model& m, std::int32_t function, double scale_x, double scale_y, double t) {
+  return function < 0 ? scale_y : scale_y * m.functions[static_cast<std::size_t>(function)](t / scale_x);
+}
+
+// Calls f(node) for every node of a load's node group; a load without a group (grnod_ID blank, as /GRAV allows)
+// acts on every node of the model.
+template <class F>
+void for_each_load_node(const Model& m, std::int32_t group, F f) {
+  if (group < 0) {
+    for (std::size_t k = 0; k < m.nodes.size(); ++k) f(static_cast<std::int32_t>(k));
+    return;
+  }
+  for (std::int32_t node : m.node_groups[static_cast<std::size_t>(group)].nodes) f(node);
+}
+
 // Start state of a run; `notes` receives start-up remarks for the listing and the console.
 SolverState make_state(const Model& model, std::vector<std::string>& notes);
 void setup_rigid_bodies(const Model& model, SolverState& state);

@@ -4,9 +4,8 @@
 namespace crumple::solver {
 namespace {
 
-// Value of a time function card: scale_y * f(t / scale_x).
 double curve(const Model& m, std::int32_t function, double scale_x, double scale_y, double t) {
-  return scale_y * m.functions[static_cast<std::size_t>(function)](t / scale_x);
+  return load_curve(m, function, scale_x, scale_y, t);
 }
 
 std::vector<double>* translation(NodalState& n, Dof dof) {
@@ -44,8 +43,9 @@ void for_each_external_force(const Model& m, const NodalState& n, double t, Add 
   }
   for (const Gravity& g : m.gravity) {
     const double acceleration = curve(m, g.function, g.scale_x, g.scale_y, t);
-    for (std::int32_t node : m.node_groups[static_cast<std::size_t>(g.node_group)].nodes)
+    for_each_load_node(m, g.node_group, [&](std::int32_t node) {
       add(g.dof, static_cast<std::size_t>(node), n.mass[static_cast<std::size_t>(node)] * acceleration);
+    });
   }
 }
 
