@@ -9,6 +9,7 @@
 #include "app/console.hpp"
 #include "app/exit_codes.hpp"
 #include "app/plot.hpp"
+#include "crumple/output/build_info.hpp"
 #include "app/regress.hpp"
 #include "app/run.hpp"
 #include "app/th.hpp"
@@ -29,7 +30,7 @@ int report_deck_errors(const std::vector<crumple::DeckError>& errors) {
 int main(int argc, char** argv) {
   using namespace crumple;
   CLI::App cli{"Crumple - explicit finite-element crash solver for Radioss block-format decks"};
-  cli.set_version_flag("--version", std::string("crumple ") + CRUMPLE_VERSION);
+  cli.set_version_flag("--version", std::string("crumple ") + build::version() + " (" + build::commit() + ")");
   cli.require_subcommand(1);
 
   std::string deck_path;

@@ -167,7 +167,7 @@ void RunRecorder::start(const SolverState& s, const RunStart& run, const std::ve
 void RunRecorder::header(const RunStart& run) {
   const Model& m = model_;
   const auto count = [&m](ElementKind k) { return m.elements[static_cast<int>(k)].size(); };
-  listing_.line(fmt::format("Crumple {} explicit run {}  ({})", CRUMPLE_VERSION, name_, m.title));
+  listing_.line(fmt::format("Crumple {} ({}) explicit run {}  ({})", build::version(), build::commit(), name_, m.title));
   listing_.line(fmt::format("STARTED {:%Y-%m-%d %H:%M:%S}", fmt::localtime(std::time(nullptr))));
   if (!run.deck.empty()) listing_.line("DECK " + run.deck.string());
   listing_.line(fmt::format("WORKING UNITS (SI size of one unit): mass {:g} kg  length {:g} m  time {:g} s",

@@ -116,7 +116,10 @@ TEST(RunListing, HeaderNamesTheVersionDeckUnitsAndModel) {
   const PlateRun run = run_plate(dir, test::engine_cards(1e-4));
   ASSERT_EQ(run.summary.status, RunStatus::Normal) << run.summary.message;
   const std::string& l = run.listing;
-  EXPECT_TRUE(std::regex_search(l, std::regex(R"(^Crumple \d+\.\d+\.\d+ explicit run TEST)"))) << l;
+  // The version and the commit it was built from (build_info.hpp).
+  EXPECT_TRUE(std::regex_search(
+      l, std::regex(R"(^Crumple \d+\.\d+\.\d+ \(([0-9a-f]{12}(-modified)?|unknown)\) explicit run TEST)")))
+      << l;
   EXPECT_TRUE(std::regex_search(l, std::regex(R"(\nSTARTED \d{4}-\d\d-\d\d \d\d:\d\d:\d\d\n)"))) << l;
   EXPECT_NE(l.find("\nDECK " + (dir.path() / "TEST_0000.rad").string() + "\n"), std::string::npos) << l;
   EXPECT_NE(l.find("\nWORKING UNITS (SI size of one unit): mass 1 kg  length 1 m  time 1 s\n"), std::string::npos) << l;
