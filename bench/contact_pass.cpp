@@ -51,10 +51,8 @@ struct Scene {
     in.segment_stiffness.assign(segments, 100.0), in.segment_active.assign(segments, 1);
     in.segment_owner.assign(segments, -1), in.segment_owner_kind.assign(segments, 0);
     for (std::size_t k = 0; k < plate_nodes; ++k) in.main_nodes.push_back(static_cast<std::int32_t>(k));
-    for (auto* v : {&in.node_gap, &in.gap_reduction, &in.gap_clearance, &in.node_element_stiffness,
-                    &in.node_tangent_sum})
-      v->assign(secondary, 0.0);
-    in.node_active.assign(secondary, 1), in.node_touched.assign(secondary, 0), in.node_impacted.assign(secondary, 0);
+    in.node_gap.assign(secondary, 0.0), in.node_element_stiffness.assign(secondary, 0.0);
+    in.size_node_arrays();
     in.largest_gap = gap, in.margin = gap;
     contact.interfaces.push_back(in);
     contact.results.resize(1);

@@ -5,19 +5,15 @@
 #include <array>
 
 #include "crumple/contact/contact.hpp"
-#include "crumple/model/geometry.hpp"
+#include "crumple/core/geometry.hpp"
 
 namespace crumple::contact {
 
-using geometry::Point;
 using geometry::quad_area;
 
 std::vector<double> node_surface_areas(const Model& m) {
   std::vector<double> area(m.nodes.size(), 0.0);
-  auto X = [&](std::int32_t n) {
-    const auto k = static_cast<std::size_t>(n);
-    return Point{m.nodes.x[k], m.nodes.y[k], m.nodes.z[k]};
-  };
+  auto X = [&](std::int32_t n) { return m.nodes.position(n); };
   for (ElementKind kind : {ElementKind::Shell4, ElementKind::Shell3}) {
     const ElementTable& table = m.elements[static_cast<int>(kind)];
     const int count = nodes_per_element(kind);

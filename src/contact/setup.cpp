@@ -6,7 +6,8 @@
 
 #include "crumple/contact/contact.hpp"
 #include "crumple/contact/kernels.hpp"
-#include "crumple/model/geometry.hpp"
+#include "crumple/core/deck_error.hpp"
+#include "crumple/core/geometry.hpp"
 
 namespace crumple::contact {
 namespace {
@@ -19,19 +20,11 @@ struct ElementFacts {  // what a segment or a node needs of an element
 
 double brick_volume(const Model& m, std::int32_t e) {
   const std::int32_t* c = m.elements[static_cast<int>(ElementKind::Brick8)].nodes_of(static_cast<std::size_t>(e));
-  std::array<geometry::Point, 8> x;
-  for (std::size_t a = 0; a < 8; ++a) {
-    const auto k = static_cast<std::size_t>(c[a]);
-    x[a] = {m.nodes.x[k], m.nodes.y[k], m.nodes.z[k]};
-  }
-  return std::abs(geometry::brick_volume(x));
+  return std::abs(geometry::brick_volume(m.nodes.x, m.nodes.y, m.nodes.z, c));
 }
 
 double segment_area(const Model& m, const std::array<std::int32_t, 4>& s) {
-  auto X = [&](int a) {
-    const auto k = static_cast<std::size_t>(s[static_cast<std::size_t>(a)]);
-    return geometry::Point{m.nodes.x[k], m.nodes.y[k], m.nodes.z[k]};
-  };
+  auto X = [&](int a) { return m.nodes.position(s[static_cast<std::size_t>(a)]); };
   return s[2] == s[3] ? geometry::triangle_area(X(0), X(1), X(2)) : geometry::quad_area(X(0), X(1), X(2), X(3));
 }
 
@@ -184,15 +177,7 @@ ContactState setup_contact(const Model& m, NodalState& nodes, std::vector<std::s
     for (double g : in.node_gap) largest_node = std::max(largest_node, g);
     in.largest_gap = std::min(std::max(largest_segment + largest_node, in.gap_min), in.gap_max) * in.gap_scale;
     in.margin = in.largest_gap;  // re-sort after the nodes have moved by a gap (eq. C-12)
-    in.gap_reduction.assign(in.secondary_nodes.size(), 0.0);
-    if (in.friction_filter > 0) {  // eq. C-9d: no node has a filtered coefficient yet
-      in.friction_mu.assign(in.secondary_nodes.size(), 0.0);
-      in.friction_mu_pass.assign(in.secondary_nodes.size(), -2);
-    }
-    in.gap_clearance.assign(in.secondary_nodes.size(), 0.0);
-    in.node_active.assign(in.secondary_nodes.size(), 1);
-    in.node_touched.assign(in.secondary_nodes.size(), 0);
-    in.node_impacted.assign(in.secondary_nodes.size(), 0);
+    in.size_node_arrays();
     if (in.idel > 0) {
       // Idel: a secondary node leaves the interface once none of its elements is left (type7.md §2).
       std::vector<std::int32_t> slot(nodes.size(), -1);
@@ -213,9 +198,6 @@ ContactState setup_contact(const Model& m, NodalState& nodes, std::vector<std::s
         if (attached[i].empty()) in.node_active[i] = 0;  // a node of no element is never a secondary node
       }
     }
-    in.node_tangent_sum.assign(in.secondary_nodes.size(), 0.0);
-    in.node_reach_stiffness.assign(in.secondary_nodes.size(), 0.0);
-    in.node_friction_viscosity.assign(in.secondary_nodes.size(), 0.0);
     if (!(in.largest_gap > 0.0))
       throw DeckError(card.where, fmt::format("/INTER/TYPE7/{}", card.user_id), "Gapmin",
                       "a positive gap (the main surface gives none: no thickness and no side length)", "0");

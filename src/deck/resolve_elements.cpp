@@ -6,27 +6,22 @@
 #include <cmath>
 #include <numeric>
 
-#include "crumple/model/geometry.hpp"
+#include "crumple/core/geometry.hpp"
 #include "resolve.hpp"
 
 namespace crumple::deck {
 namespace {
 
-geometry::Point point(const Nodes& nodes, std::int32_t i) {
-  const auto k = static_cast<std::size_t>(i);
-  return {nodes.x[k], nodes.y[k], nodes.z[k]};
-}
-
 // Area (shells) or exact volume (bricks) of an element given by dense node indices.
 double measure(const Nodes& nodes, ElementKind kind, const std::int32_t* n) {
   switch (kind) {
     case ElementKind::Shell4:
-      return geometry::quad_area(point(nodes, n[0]), point(nodes, n[1]), point(nodes, n[2]), point(nodes, n[3]));
+      return geometry::quad_area(nodes.position(n[0]), nodes.position(n[1]), nodes.position(n[2]), nodes.position(n[3]));
     case ElementKind::Shell3:
-      return geometry::triangle_area(point(nodes, n[0]), point(nodes, n[1]), point(nodes, n[2]));
+      return geometry::triangle_area(nodes.position(n[0]), nodes.position(n[1]), nodes.position(n[2]));
     case ElementKind::Brick8: {
-      std::array<geometry::Point, 8> p;
-      for (int a = 0; a < 8; ++a) p[static_cast<std::size_t>(a)] = point(nodes, n[a]);
+      std::array<Vec3, 8> p;
+      for (int a = 0; a < 8; ++a) p[static_cast<std::size_t>(a)] = nodes.position(n[a]);
       return geometry::brick_volume(p);
     }
   }

@@ -147,8 +147,7 @@ void warn_main_nodes_in_elements(Resolver& r) {
 // Distance of `x` from the wall on its outer side, as D_search measures it; negative when behind or inside the
 // wall, or (parallelogram) beside it.
 double wall_distance(const RigidWall& w, const Vec3& x) {
-  using geometry::dot, geometry::norm, geometry::sub;
-  const Vec3 d = sub(x, w.point);
+  const Vec3 d = x - w.point;
   switch (w.shape) {
     case RigidWallShape::Plane: return dot(d, w.direction);
     case RigidWallShape::Sphere: return norm(d) - 0.5 * w.diameter;
@@ -159,7 +158,7 @@ double wall_distance(const RigidWall& w, const Vec3& x) {
     }
     case RigidWallShape::Parallelogram: {
       // In-plane coordinates (a, b) of x along the edges e1 = M1 - M, e2 = M2 - M: inside when both in [0, 1].
-      const Vec3 e1 = sub(w.point1, w.point), e2 = sub(w.point2, w.point);
+      const Vec3 e1 = w.point1 - w.point, e2 = w.point2 - w.point;
       const double g11 = dot(e1, e1), g12 = dot(e1, e2), g22 = dot(e2, e2);
       const double det = g11 * g22 - g12 * g12;
       const double a = (g22 * dot(d, e1) - g12 * dot(d, e2)) / det;

@@ -58,12 +58,4 @@ std::optional<double> parse_unit(const std::string& field, int base) {
   return std::nullopt;
 }
 
-double UnitSystem::factor(Dimension d) const {
-  const int exponents[3] = {d.mass, d.length, d.time};
-  double f = 1.0;
-  for (int i = 0; i < 3; ++i)
-    if (exponents[i] != 0) f *= std::pow(input[i] / work[i], exponents[i]);
-  return f;
-}
-
 }  // namespace crumple

@@ -9,7 +9,7 @@
 #include <limits>
 
 #include "crumple/materials/solid_update.hpp"
-#include "crumple/model/geometry.hpp"
+#include "crumple/core/geometry.hpp"
 
 namespace crumple {
 namespace {

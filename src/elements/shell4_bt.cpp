@@ -11,11 +11,6 @@
 namespace crumple {
 namespace {
 
-using shell_section::cross;
-using shell_section::dot;
-using shell_section::scaled;
-using shell_section::unit;
-using shell_section::Vec;
 
 }  // namespace
 
@@ -69,7 +64,7 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
     const auto ue = static_cast<std::size_t>(e);
     if (state.deleted[ue]) continue;
     const std::int32_t* n = table.nodes_of(ue);
-    Vec x[NN], v[NN], w[NN];
+    Vec3 x[NN], v[NN], w[NN];
     for (int a = 0; a < NN; ++a) {
       const auto k = static_cast<std::size_t>(n[a]);
       x[a] = {nodes.x[k], nodes.y[k], nodes.z[k]};
@@ -82,10 +77,10 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
       result.inverted = e;
       continue;
     }
-    const Vec e1 = frame.e1, e2 = frame.e2, e3 = frame.e3, centre = frame.centre;
+    const Vec3 e1 = frame.e1, e2 = frame.e2, e3 = frame.e3, centre = frame.centre;
     double lx[NN], ly[NN], vx[NN], vy[NN], vz[NN], tx[NN], ty[NN];
     for (int a = 0; a < NN; ++a) {
-      const Vec r = x[a] - centre;
+      const Vec3 r = x[a] - centre;
       lx[a] = dot(r, e1);
       ly[a] = dot(r, e2);
       vx[a] = dot(v[a], e1);

@@ -12,11 +12,6 @@
 namespace crumple {
 namespace {
 
-using shell_section::cross;
-using shell_section::dot;
-using shell_section::scaled;
-using shell_section::unit;
-using shell_section::Vec;
 
 constexpr double kNodeXi[4] = {-1.0, 1.0, 1.0, -1.0};
 constexpr double kNodeEta[4] = {-1.0, -1.0, 1.0, 1.0};
@@ -26,13 +21,13 @@ constexpr double kGaussEta[4] = {-kGauss, -kGauss, kGauss, kGauss};
 
 // Tangents of the bilinear surface x(xi, eta) = sum N_I x_I (eq. Q-1): d x / d xi on the line eta, d x / d eta on
 // the line xi.
-Vec tangent_xi(const Vec (&x)[4], double eta) {
-  Vec a{0.0, 0.0, 0.0};
+Vec3 tangent_xi(const Vec3 (&x)[4], double eta) {
+  Vec3 a{0.0, 0.0, 0.0};
   for (int i = 0; i < 4; ++i) a = a + scaled(x[i], 0.25 * kNodeXi[i] * (1.0 + kNodeEta[i] * eta));
   return a;
 }
-Vec tangent_eta(const Vec (&x)[4], double xi) {
-  Vec a{0.0, 0.0, 0.0};
+Vec3 tangent_eta(const Vec3 (&x)[4], double xi) {
+  Vec3 a{0.0, 0.0, 0.0};
   for (int i = 0; i < 4; ++i) a = a + scaled(x[i], 0.25 * kNodeEta[i] * (1.0 + kNodeXi[i] * xi));
   return a;
 }
@@ -40,19 +35,19 @@ Vec tangent_eta(const Vec (&x)[4], double xi) {
 // A Gauss point's tangent frame (r3 the surface normal, r1 the element's e1 projected on the tangent plane) and
 // its gradient operator (eq. Q-2); all vectors in element-frame components.
 struct GaussPoint {
-  Vec r1, r2, r3;
+  Vec3 r1, r2, r3;
   double x_xi, x_eta, y_xi, y_eta;  // Jacobian d(x, y) / d(xi, eta) in the point's frame
   double det;                       // surface area per unit xi eta [L^2]
   double dndx[4], dndy[4];          // shape function derivatives [1/L]
 };
 
 // False when the surface Jacobian at the point is not positive: the element is inverted there.
-bool gauss_point(const Vec (&x)[4], double xi, double eta, GaussPoint& g) {
-  const Vec a = tangent_xi(x, eta), b = tangent_eta(x, xi);
-  const Vec normal = cross(a, b);
+bool gauss_point(const Vec3 (&x)[4], double xi, double eta, GaussPoint& g) {
+  const Vec3 a = tangent_xi(x, eta), b = tangent_eta(x, xi);
+  const Vec3 normal = cross(a, b);
   if (!(normal.z > 0.0)) return false;
   g.r3 = unit(normal);
-  g.r1 = unit(Vec{1.0, 0.0, 0.0} - scaled(g.r3, g.r3.x));
+  g.r1 = unit(Vec3{1.0, 0.0, 0.0} - scaled(g.r3, g.r3.x));
   g.r2 = cross(g.r3, g.r1);
   g.x_xi = dot(a, g.r1), g.y_xi = dot(a, g.r2), g.x_eta = dot(b, g.r1), g.y_eta = dot(b, g.r2);
   g.det = g.x_xi * g.y_eta - g.x_eta * g.y_xi;
@@ -72,8 +67,8 @@ bool gauss_point(const Vec (&x)[4], double xi, double eta, GaussPoint& g) {
 //   gamma = d . (v_j - v_i) / 2 + t . (w_i x n_i + w_j x n_j) / 2.
 constexpr int kTyingFrom[4] = {0, 1, 3, 0}, kTyingTo[4] = {1, 2, 2, 3};
 struct TyingPoint {
-  Vec director;         // (n_i + n_j) / 2
-  Vec lever_i, lever_j;  // n_i x t and n_j x t: the rotations' share, w . (n x t) = t . (w x n)
+  Vec3 director;         // (n_i + n_j) / 2
+  Vec3 lever_i, lever_j;  // n_i x t and n_j x t: the rotations' share, w . (n x t) = t . (w x n)
 };
 
 // The element in its co-rotational frame: node positions from the centroid (z is the warp), velocities, angular
@@ -81,7 +76,7 @@ struct TyingPoint {
 // in element-frame components.
 struct LocalElement {
   shell_section::Frame frame;
-  Vec x[4], v[4], w[4], n[4];
+  Vec3 x[4], v[4], w[4], n[4];
 };
 
 // Gathers the element; with small strain (Ismstr 1, 3, or Ismstr 2 after the switch) the reference shape
@@ -89,7 +84,7 @@ struct LocalElement {
 bool local_element(const ElementTable& table, std::size_t e, const NodalState& nodes, ShellState& state,
                    bool small_strain, LocalElement& l) {
   const std::int32_t* n = table.nodes_of(e);
-  Vec x[4], v[4], w[4];
+  Vec3 x[4], v[4], w[4];
   for (int a = 0; a < 4; ++a) {
     const auto k = static_cast<std::size_t>(n[a]);
     x[a] = {nodes.x[k], nodes.y[k], nodes.z[k]};
@@ -99,7 +94,7 @@ bool local_element(const ElementTable& table, std::size_t e, const NodalState& n
   if (!shell_section::corotational_frame<4>(x, l.frame)) return false;
   const shell_section::Frame& f = l.frame;
   for (int a = 0; a < 4; ++a) {
-    const Vec r = x[a] - f.centre;
+    const Vec3 r = x[a] - f.centre;
     l.x[a] = {dot(r, f.e1), dot(r, f.e2), dot(r, f.e3)};
     l.v[a] = {dot(v[a], f.e1), dot(v[a], f.e2), dot(v[a], f.e3)};
     l.w[a] = {dot(w[a], f.e1), dot(w[a], f.e2), dot(w[a], f.e3)};
@@ -111,7 +106,7 @@ bool local_element(const ElementTable& table, std::size_t e, const NodalState& n
     for (int a = 0; a < 4; ++a) l.x[a] = {shape[a], shape[4 + a], 0.0};
   }
   for (int a = 0; a < 4; ++a) {
-    const Vec normal = cross(tangent_xi(l.x, kNodeEta[a]), tangent_eta(l.x, kNodeXi[a]));
+    const Vec3 normal = cross(tangent_xi(l.x, kNodeEta[a]), tangent_eta(l.x, kNodeXi[a]));
     if (!(normal.z > 0.0)) return false;
     l.n[a] = unit(normal);
   }
@@ -121,7 +116,7 @@ bool local_element(const ElementTable& table, std::size_t e, const NodalState& n
 void tying_points(const LocalElement& l, TyingPoint (&tying)[4]) {
   for (int k = 0; k < 4; ++k) {
     const int i = kTyingFrom[k], j = kTyingTo[k];
-    const Vec tangent = scaled(l.x[j] - l.x[i], 0.5);
+    const Vec3 tangent = scaled(l.x[j] - l.x[i], 0.5);
     tying[k].director = scaled(l.n[i] + l.n[j], 0.5);
     tying[k].lever_i = cross(l.n[i], tangent);
     tying[k].lever_j = cross(l.n[j], tangent);
@@ -138,19 +133,19 @@ struct Elastic {
 
 // Generalised nodal forces and moments of one element in its frame, accumulated over the Gauss points.
 struct NodalLoads {
-  Vec f[4] = {}, m[4] = {};
+  Vec3 f[4] = {}, m[4] = {};
   double in_plane_shear = 0.0;  // sum over the points of det N_xy: the work conjugate of the centre shear rate
   double tying[4] = {};         // work conjugates of the four tying shear rates (eq. Q-7)
 };
 
 // Gradients at a Gauss point of the velocity, the director d = sum N_I n_I and its rate sum N_I (w_I x n_I).
 struct PointGradients {
-  Vec v_x, v_y, d_x, d_y, rate_x, rate_y;
+  Vec3 v_x, v_y, d_x, d_y, rate_x, rate_y;
 };
 PointGradients point_gradients(const LocalElement& l, const GaussPoint& g) {
   PointGradients q{};
   for (int a = 0; a < 4; ++a) {
-    const Vec rate = cross(l.w[a], l.n[a]);
+    const Vec3 rate = cross(l.w[a], l.n[a]);
     q.v_x = q.v_x + scaled(l.v[a], g.dndx[a]), q.v_y = q.v_y + scaled(l.v[a], g.dndy[a]);
     q.d_x = q.d_x + scaled(l.n[a], g.dndx[a]), q.d_y = q.d_y + scaled(l.n[a], g.dndy[a]);
     q.rate_x = q.rate_x + scaled(rate, g.dndx[a]), q.rate_y = q.rate_y + scaled(rate, g.dndy[a]);
@@ -173,13 +168,13 @@ shell_section::StrainRates point_rates(const GaussPoint& g, const PointGradients
 void add_point_loads(const LocalElement& l, const GaussPoint& g, const PointGradients& q, int point,
                      const double (&n)[3], const double (&m)[3], double qx, double qy, NodalLoads& loads) {
   // Director gradients paired with the moments, for the velocity part of the curvature rate.
-  const Vec mx = scaled(q.d_x, m[0]) + scaled(q.d_y, m[2]), my = scaled(q.d_y, m[1]) + scaled(q.d_x, m[2]);
+  const Vec3 mx = scaled(q.d_x, m[0]) + scaled(q.d_y, m[2]), my = scaled(q.d_y, m[1]) + scaled(q.d_x, m[2]);
   for (int a = 0; a < 4; ++a) {
     const double nx = g.dndx[a], ny = g.dndy[a];
     loads.f[a] = loads.f[a] + scaled(g.r1, g.det * nx * n[0]) + scaled(g.r2, g.det * ny * n[1]) +
                  scaled(mx, g.det * nx) + scaled(my, g.det * ny);
     // d kappa / d w_I: r_b . (w_I x n_I) N_I,a = w_I . (n_I x r_b) N_I,a.
-    const Vec along_x = scaled(g.r1, nx * m[0] + ny * m[2]), along_y = scaled(g.r2, ny * m[1] + nx * m[2]);
+    const Vec3 along_x = scaled(g.r1, nx * m[0] + ny * m[2]), along_y = scaled(g.r2, ny * m[1] + nx * m[2]);
     loads.m[a] = loads.m[a] + scaled(cross(l.n[a], along_x + along_y), g.det);
   }
   loads.in_plane_shear += g.det * n[2];
@@ -209,8 +204,8 @@ void apply_loads(const LocalElement& l, const double (&b1)[4], const double (&b2
   }
   const shell_section::Frame& f = l.frame;
   for (int a = 0; a < 4; ++a) {
-    const Vec force = scaled(f.e1, loads.f[a].x) + scaled(f.e2, loads.f[a].y) + scaled(f.e3, loads.f[a].z);
-    const Vec moment = scaled(f.e1, loads.m[a].x) + scaled(f.e2, loads.m[a].y) + scaled(f.e3, loads.m[a].z);
+    const Vec3 force = scaled(f.e1, loads.f[a].x) + scaled(f.e2, loads.f[a].y) + scaled(f.e3, loads.f[a].z);
+    const Vec3 moment = scaled(f.e1, loads.m[a].x) + scaled(f.e2, loads.m[a].y) + scaled(f.e3, loads.m[a].z);
     const auto k = static_cast<std::size_t>(n[a]);
     nodes.fx[k] -= force.x, nodes.fy[k] -= force.y, nodes.fz[k] -= force.z;
     nodes.mx[k] -= moment.x, nodes.my[k] -= moment.y, nodes.mz[k] -= moment.z;

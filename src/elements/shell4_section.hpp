@@ -1,7 +1,7 @@
 #pragma once
-// Pieces shared by the shell kernels (docs/theory/shell4.md): the small 3-vector of the element frames and the
-// stress update of one section (the through-thickness points of one in-plane integration point, eq. S-4, or the
-// stress resultants of N = 0, eqs. RP-1 to RP-3). Plain inline functions, used inside the element loops.
+// Pieces shared by the shell kernels (docs/theory/shell4.md): the element frames and the stress update of one
+// section (the through-thickness points of one in-plane integration point, eq. S-4, or the stress resultants of
+// N = 0, eqs. RP-1 to RP-3). Plain inline functions, used inside the element loops.
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -9,29 +9,20 @@
 #include "crumple/elements/shell4.hpp"
 #include "crumple/materials/plane_stress.hpp"
 #include "crumple/materials/resultant_plasticity.hpp"
-#include "crumple/model/geometry.hpp"
+#include "crumple/core/geometry.hpp"
+#include "crumple/core/vec3.hpp"
 
 namespace crumple::shell_section {
-
-struct Vec {
-  double x, y, z;
-};
-inline Vec operator-(Vec a, Vec b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-inline Vec operator+(Vec a, Vec b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-inline double dot(Vec a, Vec b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-inline Vec cross(Vec a, Vec b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
-inline Vec scaled(Vec a, double s) { return {a.x * s, a.y * s, a.z * s}; }
-inline Vec unit(Vec a) { return scaled(a, 1.0 / std::sqrt(dot(a, a))); }
 
 // Co-rotational frame of an element (eq. S-1) from its current node positions. Quadrilateral: normal from the
 // diagonals, e1 along the mean of the sides 1-2 and 4-3. Triangle: normal from two sides, e1 along the side 1-2.
 // Returns false (frame unset) when the normal vanishes.
 struct Frame {
-  Vec e1, e2, e3, centre;
+  Vec3 e1, e2, e3, centre;
 };
 template <int NN>
-inline bool corotational_frame(const Vec (&x)[NN], Frame& f) {
-  Vec normal, side;
+inline bool corotational_frame(const Vec3 (&x)[NN], Frame& f) {
+  Vec3 normal, side;
   if constexpr (NN == 4) {
     normal = cross(x[2] - x[0], x[3] - x[1]);
     side = (x[1] - x[0]) + (x[2] - x[3]);
@@ -45,7 +36,7 @@ inline bool corotational_frame(const Vec (&x)[NN], Frame& f) {
   f.e1 = unit(side - scaled(f.e3, dot(side, f.e3)));
   f.e2 = cross(f.e3, f.e1);
   constexpr double mean = 1.0 / NN;
-  f.centre = Vec{0.0, 0.0, 0.0};
+  f.centre = Vec3{0.0, 0.0, 0.0};
   for (int a = 0; a < NN; ++a) f.centre = f.centre + scaled(x[a], mean);
   return true;
 }

@@ -5,8 +5,6 @@
 namespace crumple {
 namespace {
 
-using shell_section::dot;
-using shell_section::Vec;
 
 // The element's current shape in its current co-rotational frame becomes its reference shape (the local
 // coordinates the kernels use for the gradient operator, the area and the critical step).
@@ -14,7 +12,7 @@ template <int NN>
 bool freeze_shape(const ElementTable& table, const ShellGroupParameters& p, const NodalState& nodes, ShellState& state,
                   std::size_t element) {
   const std::int32_t* n = table.nodes_of(element);
-  Vec x[NN];
+  Vec3 x[NN];
   for (int a = 0; a < NN; ++a) {
     const auto k = static_cast<std::size_t>(n[a]);
     x[a] = {nodes.x[k], nodes.y[k], nodes.z[k]};
@@ -23,7 +21,7 @@ bool freeze_shape(const ElementTable& table, const ShellGroupParameters& p, cons
   if (!shell_section::corotational_frame<NN>(x, frame)) return false;
   double lx[NN], ly[NN];
   for (int a = 0; a < NN; ++a) {
-    const Vec r = x[a] - frame.centre;
+    const Vec3 r = x[a] - frame.centre;
     lx[a] = dot(r, frame.e1);
     ly[a] = dot(r, frame.e2);
   }

@@ -1,14 +1,9 @@
 #include "crumple/model/mass.hpp"
 
-#include "crumple/model/geometry.hpp"
+#include "crumple/core/geometry.hpp"
 
 namespace crumple {
 namespace {
-
-geometry::Point point(const Nodes& nodes, std::int32_t i) {
-  const auto k = static_cast<std::size_t>(i);
-  return {nodes.x[k], nodes.y[k], nodes.z[k]};
-}
 
 const Part& part_of(const Model& model, ElementKind kind, std::size_t element) {
   return model.parts[static_cast<std::size_t>(model.elements[static_cast<int>(kind)].part[element])];
@@ -25,13 +20,13 @@ double element_mass(const Model& model, ElementKind kind, std::size_t element) {
   switch (kind) {
     case ElementKind::Shell4:
       return material.density * property.shell.thickness *
-             geometry::quad_area(point(x, n[0]), point(x, n[1]), point(x, n[2]), point(x, n[3]));
+             geometry::quad_area(x.position(n[0]), x.position(n[1]), x.position(n[2]), x.position(n[3]));
     case ElementKind::Shell3:
       return material.density * property.shell.thickness *
-             geometry::triangle_area(point(x, n[0]), point(x, n[1]), point(x, n[2]));
+             geometry::triangle_area(x.position(n[0]), x.position(n[1]), x.position(n[2]));
     case ElementKind::Brick8: {
-      std::array<geometry::Point, 8> p;
-      for (int a = 0; a < 8; ++a) p[static_cast<std::size_t>(a)] = point(x, n[a]);
+      std::array<Vec3, 8> p;
+      for (int a = 0; a < 8; ++a) p[static_cast<std::size_t>(a)] = x.position(n[a]);
       return material.density * geometry::brick_volume(p);
     }
   }

@@ -4,18 +4,9 @@
 #include <cmath>
 #include <limits>
 
-#include "crumple/model/geometry.hpp"
+#include "crumple/core/geometry.hpp"
 
 namespace crumple {
-namespace {
-
-geometry::Point point(const Nodes& nodes, std::int32_t i) {
-  const auto k = static_cast<std::size_t>(i);
-  return {nodes.x[k], nodes.y[k], nodes.z[k]};
-}
-
-}  // namespace
-
 double initial_element_time_step(const Model& model, ElementKind kind, std::size_t element) {
   const ElementTable& table = model.elements[static_cast<int>(kind)];
   const Part& part = model.parts[static_cast<std::size_t>(table.part[element])];
@@ -26,19 +17,19 @@ double initial_element_time_step(const Model& model, ElementKind kind, std::size
     case ElementKind::Shell4: {
       // Ishell 1 to 4: the bar speed over eq. T-1b's length (T-1a); QBAT and QEPH: the plate speed over T-1's.
       const int ishell = model.formulations[static_cast<std::size_t>(part.property)].ishell;
-      const geometry::Point a = point(x, n[0]), b = point(x, n[1]), c = point(x, n[2]), d = point(x, n[3]);
+      const Vec3 a = x.position(n[0]), b = x.position(n[1]), c = x.position(n[2]), d = x.position(n[3]);
       if (ishell == 12 || ishell == 24)
         return geometry::quad_characteristic_length(a, b, c, d) /
                std::sqrt(mat.young / (mat.density * (1.0 - mat.poisson * mat.poisson)));
       return geometry::belytschko_tsay_length(a, b, c, d) / std::sqrt(mat.young / mat.density);
     }
     case ElementKind::Shell3:  // the bar speed (T-1a)
-      return geometry::triangle_characteristic_length(point(x, n[0]), point(x, n[1]), point(x, n[2])) /
+      return geometry::triangle_characteristic_length(x.position(n[0]), x.position(n[1]), x.position(n[2])) /
              std::sqrt(mat.young / mat.density);
     case ElementKind::Brick8: {
       const double c = std::sqrt((mat.bulk_modulus() + 4.0 / 3.0 * mat.shear_modulus()) / mat.density);
-      std::array<geometry::Point, 8> p;
-      for (int a = 0; a < 8; ++a) p[static_cast<std::size_t>(a)] = point(x, n[a]);
+      std::array<Vec3, 8> p;
+      for (int a = 0; a < 8; ++a) p[static_cast<std::size_t>(a)] = x.position(n[a]);
       return geometry::brick_characteristic_length(p) / c;
     }
   }

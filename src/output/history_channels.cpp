@@ -11,7 +11,7 @@
 #include <stdexcept>
 
 #include "crumple/elements/shell4.hpp"
-#include "crumple/model/geometry.hpp"
+#include "crumple/core/geometry.hpp"
 #include "crumple/model/history_variables.hpp"
 #include "crumple/model/mass.hpp"
 #include "crumple/solver/element_status.hpp"
@@ -19,7 +19,7 @@
 namespace crumple {
 namespace {
 
-using V3 = std::array<double, 3>;
+
 constexpr double kUnknown = std::numeric_limits<double>::quiet_NaN();
 
 // ---- What one object gives, and the variables read from it.
@@ -28,7 +28,7 @@ struct Evaluator {
   std::string_view name;
   double (*get)(const Values&);
 };
-template <class Values, V3 Values::*Member, int C>
+template <class Values, Vec3 Values::*Member, int C>
 double component(const Values& v) {
   return (v.*Member)[C];
 }
@@ -38,7 +38,7 @@ double scalar(const Values& v) {
 }
 
 struct NodeValues {
-  V3 d, v, a, vr, ar, x, reaction, reaction_moment;
+  Vec3 d, v, a, vr, ar, x, reaction, reaction_moment;
 };
 using N = NodeValues;
 constexpr Evaluator<N> kNode[] = {
@@ -54,7 +54,7 @@ constexpr Evaluator<N> kNode[] = {
 
 struct PartValues {
   double ie = 0.0, ke = 0.0, he = 0.0, rke = 0.0, mass = 0.0;
-  V3 momentum{}, cg{};
+  Vec3 momentum{}, cg{};
 };
 using P = PartValues;
 constexpr Evaluator<P> kPart[] = {
@@ -64,7 +64,7 @@ constexpr Evaluator<P> kPart[] = {
     {"ZCG", component<P, &P::cg, 2>}, {"RKE", scalar<P, &P::rke>}};
 
 struct ShellValues {
-  V3 n, m;
+  Vec3 n, m;
   double q1, q2, off, thickness, eps_lower, eps_upper, eps_rate;
 };
 using S = ShellValues;
@@ -90,7 +90,7 @@ constexpr Evaluator<B> kBrick[] = {
     {"DENS", scalar<B, &B::density>}, {"VOL", scalar<B, &B::volume>}, {"PLAS", scalar<B, &B::plastic_strain>}};
 
 struct ForceValues {  // interfaces and rigid walls: normal and tangential force, interface energies
-  V3 fn, ft;
+  Vec3 fn, ft;
   double elastic = 0.0, friction = 0.0, damping = 0.0;
 };
 using F = ForceValues;
@@ -100,7 +100,7 @@ constexpr Evaluator<F> kForces[] = {
     {"CE_ELAST", scalar<F, &F::elastic>}, {"CE_FRIC", scalar<F, &F::friction>}, {"CE_DAMP", scalar<F, &F::damping>}};
 
 struct BodyValues {
-  V3 f, m, r;
+  Vec3 f, m, r;
 };
 using R = BodyValues;
 constexpr Evaluator<R> kBody[] = {
@@ -153,14 +153,14 @@ std::string object_title(const Model& m, const TimeHistoryRequest& th, std::size
 }
 
 // ---- Node values.
-V3 of(const std::vector<double>& x, const std::vector<double>& y, const std::vector<double>& z, std::size_t k) {
+Vec3 of(const std::vector<double>& x, const std::vector<double>& y, const std::vector<double>& z, std::size_t k) {
   return {x[k], y[k], z[k]};
 }
 
 // The change of a velocity over the step, times `scale` / dt: NaN when the update is not known.
-V3 rate_of_change(const V3& now, const std::array<const std::vector<double>*, 6>& then, std::size_t first,
+Vec3 rate_of_change(const Vec3& now, const std::array<const std::vector<double>*, 6>& then, std::size_t first,
                   std::size_t k, double scale, double dt) {
-  V3 out;
+  Vec3 out;
   for (std::size_t c = 0; c < 3; ++c) out[c] = dt > 0.0 ? scale * (now[c] - (*then[first + c])[k]) / dt : kUnknown;
   return out;
 }
@@ -206,10 +206,8 @@ BrickValues brick_values(const Model& m, const SolverState& s, std::size_t group
     for (std::size_t c = 0; c < 6; ++c) out.s[c] += (*components[c])[first + k] / static_cast<double>(np);
     out.plastic_strain += b.eps_p[first + k] / static_cast<double>(np);
   }
-  std::array<geometry::Point, 8> x;
   const std::int32_t* nodes = m.elements[static_cast<int>(ElementKind::Brick8)].nodes_of(ue);
-  for (std::size_t a = 0; a < 8; ++a) x[a] = of(s.nodes.x, s.nodes.y, s.nodes.z, static_cast<std::size_t>(nodes[a]));
-  out.volume = geometry::brick_volume(x);
+  out.volume = geometry::brick_volume(s.nodes.x, s.nodes.y, s.nodes.z, nodes);
   out.density = s.brick_groups[group].density * b.volume0[ue] / out.volume;
   out.ie = b.internal_energy[ue];
   out.off = b.deleted[ue] == kElementDeleted ? 0.0 : 1.0;
@@ -229,17 +227,17 @@ ForceValues interface_values(const InterfaceResult& r) {
 }
 
 // The rotation vector (axis times angle) of a rotation matrix, row-major.
-V3 rotation_vector(const std::array<double, 9>& r) {
+Vec3 rotation_vector(const std::array<double, 9>& r) {
   const double c = std::clamp(0.5 * (r[0] + r[4] + r[8] - 1.0), -1.0, 1.0);
   const double angle = std::acos(c);
-  const V3 skew{r[7] - r[5], r[2] - r[6], r[3] - r[1]};  // 2 sin(angle) axis
+  const Vec3 skew{r[7] - r[5], r[2] - r[6], r[3] - r[1]};  // 2 sin(angle) axis
   const double sine = 0.5 * std::sqrt(skew[0] * skew[0] + skew[1] * skew[1] + skew[2] * skew[2]);
   if (angle < 1e-6) return {0.5 * skew[0], 0.5 * skew[1], 0.5 * skew[2]};
   if (sine > 1e-6) return {angle * skew[0] / (2.0 * sine), angle * skew[1] / (2.0 * sine), angle * skew[2] / (2.0 * sine)};
   // Near a half turn: the axis from the symmetric part, R = 2 a a^T - I, signed by its largest component.
-  V3 axis;
+  Vec3 axis{};
   for (std::size_t i = 0; i < 3; ++i) axis[i] = std::sqrt(std::max(0.0, 0.5 * (r[4 * i] + 1.0)));
-  const std::size_t big = static_cast<std::size_t>(std::max_element(axis.begin(), axis.end()) - axis.begin());
+  const std::size_t big = axis.x >= axis.y && axis.x >= axis.z ? 0 : axis.y >= axis.z ? 1 : 2;
   for (std::size_t i = 0; i < 3; ++i)
     if (i != big) axis[i] = 0.5 * (r[3 * big + i] + r[3 * i + big]) / (2.0 * axis[big]);
   return {angle * axis[0], angle * axis[1], angle * axis[2]};
@@ -256,12 +254,12 @@ BodyValues body_values(const SolverState& s, const RigidBodyState& b) {
 // ---- Parts: sums over the nodes and the elements.
 struct HistoryChannels::PartSums {
   std::vector<double> ie, he, ke, rke, mass;
-  std::vector<V3> momentum, first_moment;  // sum m v, sum m x
+  std::vector<Vec3> momentum, first_moment;  // sum m v, sum m x
   explicit PartSums(std::size_t parts)
       : ie(parts), he(parts), ke(parts), rke(parts), mass(parts), momentum(parts), first_moment(parts) {}
   PartValues of(const std::vector<std::int32_t>& parts) const {
     PartValues out;
-    V3 moment{};
+    Vec3 moment{};
     for (std::int32_t p : parts) {
       const auto up = static_cast<std::size_t>(p);
       out.ie += ie[up], out.he += he[up], out.ke += ke[up], out.rke += rke[up], out.mass += mass[up];
@@ -372,7 +370,7 @@ HistoryChannels::PartSums HistoryChannels::part_sums(const SolverState& s) const
   PartSums sums(model_.parts.size());
   const NodalState& n = s.nodes;
   for (std::size_t k = 0; k < n.size(); ++k) {
-    const V3 v = of(n.vx, n.vy, n.vz, k), w = of(n.wx, n.wy, n.wz, k), x = of(n.x, n.y, n.z, k);
+    const Vec3 v = of(n.vx, n.vy, n.vz, k), w = of(n.wx, n.wy, n.wz, k), x = of(n.x, n.y, n.z, k);
     const double ke = 0.5 * n.mass[k] * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
     const double rke = 0.5 * n.inertia[k] * (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
     for (std::size_t i = node_share_offset_[k]; i < node_share_offset_[k + 1]; ++i) {

@@ -44,6 +44,10 @@ class Writer {
   void operator()(const std::string& name, std::array<T, N>& values) {
     write(name, values.data(), N);
   }
+  void operator()(const std::string& name, Vec3& v) {  // as three doubles x y z
+    const double xyz[3] = {v.x, v.y, v.z};
+    write(name, xyz, 3);
+  }
   template <class T>
   void operator()(const std::string& name, T& value) {
     const Stored<T> stored = static_cast<Stored<T>>(value);
@@ -77,6 +81,11 @@ class Reader {
   void operator()(const std::string& name, std::array<T, N>& values) {
     if (size_of(name) != N) fail(name, fmt::format("{} values expected, {} found", N, size_of(name)));
     read(name, values.data(), N);
+  }
+  void operator()(const std::string& name, Vec3& v) {
+    std::array<double, 3> xyz{};
+    (*this)(name, xyz);
+    v = {xyz[0], xyz[1], xyz[2]};
   }
   template <class T>
   void operator()(const std::string& name, T& value) {

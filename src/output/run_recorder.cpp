@@ -257,15 +257,15 @@ void RunRecorder::history(const SolverState& s, double dt, const VelocityChange&
   row.kinetic_rotational = s.energy.kinetic_rotational, row.hourglass = s.energy.hourglass;
   row.contact = s.energy.contact, row.external_work = s.energy.external_work;
   row.total = row.internal + row.kinetic_translational + row.kinetic_rotational + row.hourglass + row.contact;
-  for (const auto& w : s.walls) row.rigid_wall_force.insert(row.rigid_wall_force.end(), w.force.begin(), w.force.end());
+  for (const auto& w : s.walls) row.rigid_wall_force.insert(row.rigid_wall_force.end(), {w.force.x, w.force.y, w.force.z});
   for (const auto& b : s.bodies) {
     const auto k = static_cast<std::size_t>(b.main_node);
     for (double v : {n.x[k], n.y[k], n.z[k], n.vx[k], n.vy[k], n.vz[k], b.omega[0], b.omega[1], b.omega[2]})
       row.rigid_body_values.push_back(v);
   }
   for (const InterfaceResult& r : s.contact.results) {
-    row.interface_values.insert(row.interface_values.end(), r.normal_force.begin(), r.normal_force.end());
-    row.interface_values.insert(row.interface_values.end(), r.tangential_force.begin(), r.tangential_force.end());
+    const Vec3 &fn = r.normal_force, &ft = r.tangential_force;
+    row.interface_values.insert(row.interface_values.end(), {fn.x, fn.y, fn.z, ft.x, ft.y, ft.z});
     for (double v : {r.elastic_energy, r.friction_work, r.absorbed, static_cast<double>(r.active_nodes)})
       row.interface_values.push_back(v);
   }

@@ -10,9 +10,8 @@ namespace crumple::solver {
 namespace {
 
 using Mat3 = std::array<double, 9>;
-using V3 = std::array<double, 3>;
 
-V3 mul(const Mat3& a, const V3& v) {
+Vec3 mul(const Mat3& a, const Vec3& v) {
   return {a[0] * v[0] + a[1] * v[1] + a[2] * v[2], a[3] * v[0] + a[4] * v[1] + a[5] * v[2],
           a[6] * v[0] + a[7] * v[1] + a[8] * v[2]};
 }
@@ -24,12 +23,9 @@ Mat3 mul(const Mat3& a, const Mat3& b) {
   return c;
 }
 Mat3 transpose(const Mat3& a) { return {a[0], a[3], a[6], a[1], a[4], a[7], a[2], a[5], a[8]}; }
-V3 cross(const V3& a, const V3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
 
 // Solves I w = L for a symmetric positive semi-definite I; directions of zero inertia get no rotation.
-V3 solve(const Mat3& I, const V3& L) {
+Vec3 solve(const Mat3& I, const Vec3& L) {
   const double det = I[0] * (I[4] * I[8] - I[5] * I[7]) - I[1] * (I[3] * I[8] - I[5] * I[6]) +
                      I[2] * (I[3] * I[7] - I[4] * I[6]);
   const double scale = std::abs(I[0]) + std::abs(I[4]) + std::abs(I[8]);
@@ -41,17 +37,17 @@ V3 solve(const Mat3& I, const V3& L) {
 }
 
 // Rotation by the vector phi (Rodrigues): exp([phi]x).
-Mat3 rotation_of(const V3& phi) {
+Mat3 rotation_of(const Vec3& phi) {
   const double angle = std::sqrt(phi[0] * phi[0] + phi[1] * phi[1] + phi[2] * phi[2]);
   if (angle < 1e-300) return {1, 0, 0, 0, 1, 0, 0, 0, 1};
-  const V3 k{phi[0] / angle, phi[1] / angle, phi[2] / angle};
+  const Vec3 k{phi[0] / angle, phi[1] / angle, phi[2] / angle};
   const double c = std::cos(angle), s = std::sin(angle), t = 1.0 - c;
   return {t * k[0] * k[0] + c,        t * k[0] * k[1] - s * k[2], t * k[0] * k[2] + s * k[1],
           t * k[0] * k[1] + s * k[2], t * k[1] * k[1] + c,        t * k[1] * k[2] - s * k[0],
           t * k[0] * k[2] - s * k[1], t * k[1] * k[2] + s * k[0], t * k[2] * k[2] + c};
 }
 
-V3 position(const NodalState& n, std::int32_t i) {
+Vec3 position(const NodalState& n, std::int32_t i) {
   const auto k = static_cast<std::size_t>(i);
   return {n.x[k], n.y[k], n.z[k]};
 }
@@ -83,12 +79,12 @@ void form_body(const RigidBody& rb, const Model& m, SolverState& s, std::int32_t
     if (node != rb.main_node) b.secondary.push_back(node);
   const auto main = static_cast<std::size_t>(rb.main_node);
   double mass = n.mass[main];
-  V3 cog = position(n, rb.main_node), momentum{};
+  Vec3 cog = position(n, rb.main_node), momentum{};
   for (int d = 0; d < 3; ++d) cog[static_cast<std::size_t>(d)] *= mass;
   momentum = {mass * n.vx[main], mass * n.vy[main], mass * n.vz[main]};
   for (std::int32_t node : b.secondary) {
     const auto k = static_cast<std::size_t>(node);
-    const V3 p = position(n, node);
+    const Vec3 p = position(n, node);
     for (int d = 0; d < 3; ++d) cog[static_cast<std::size_t>(d)] += n.mass[k] * p[static_cast<std::size_t>(d)];
     momentum[0] += n.mass[k] * n.vx[k], momentum[1] += n.mass[k] * n.vy[k], momentum[2] += n.mass[k] * n.vz[k];
     mass += n.mass[k];
@@ -98,7 +94,7 @@ void form_body(const RigidBody& rb, const Model& m, SolverState& s, std::int32_t
   s.rigid_owner[main] = index;
   // A body without mass (inertia from the card only) keeps its main node where it is and the velocity it has.
   if (mass > 0.0) {
-    for (auto& c : cog) c /= mass;
+    cog = {cog.x / mass, cog.y / mass, cog.z / mass};
   } else {
     cog = position(n, rb.main_node), momentum = {n.vx[main], n.vy[main], n.vz[main]};
   }
@@ -107,17 +103,17 @@ void form_body(const RigidBody& rb, const Model& m, SolverState& s, std::int32_t
   Mat3 I{rb.inertia[0], rb.inertia[3], rb.inertia[5], rb.inertia[3], rb.inertia[1], rb.inertia[4],
          rb.inertia[5], rb.inertia[4], rb.inertia[2]};
   b.inertia_added = I;
-  V3 angular{};
+  Vec3 angular{};
   for (std::int32_t node : b.secondary) {
     const auto k = static_cast<std::size_t>(node);
-    const V3 p = position(n, node);
-    const V3 r{p[0] - cog[0], p[1] - cog[1], p[2] - cog[2]};
+    const Vec3 p = position(n, node);
+    const Vec3 r{p[0] - cog[0], p[1] - cog[1], p[2] - cog[2]};
     b.rx.push_back(r[0]), b.ry.push_back(r[1]), b.rz.push_back(r[2]);
     const double mk = n.mass[k], rr = r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j)
         I[static_cast<std::size_t>(3 * i + j)] += mk * ((i == j ? rr : 0.0) - r[static_cast<std::size_t>(i)] * r[static_cast<std::size_t>(j)]);
-    const V3 h = cross(r, {n.vx[k], n.vy[k], n.vz[k]});
+    const Vec3 h = cross(r, {n.vx[k], n.vy[k], n.vz[k]});
     for (int d = 0; d < 3; ++d) angular[static_cast<std::size_t>(d)] += mk * h[static_cast<std::size_t>(d)];
   }
   // Ispher 1: the inertia made spherical, its largest principal moment about every axis (RB-0d); the part of
@@ -135,10 +131,10 @@ void form_body(const RigidBody& rb, const Model& m, SolverState& s, std::int32_t
   // The body starts with one velocity field (RB-0c): the main node's velocity when the start gives it one (an
   // /INIVEL on the main node moves the whole body, as in the reference, whatever the main node's mass), else the
   // nodes' mean translation and their angular momentum.
-  V3 velocity{momentum[0] / (mass > 0.0 ? mass : 1.0), momentum[1] / (mass > 0.0 ? mass : 1.0),
+  Vec3 velocity{momentum[0] / (mass > 0.0 ? mass : 1.0), momentum[1] / (mass > 0.0 ? mass : 1.0),
               momentum[2] / (mass > 0.0 ? mass : 1.0)};
-  const V3 main_velocity{n.vx[main], n.vy[main], n.vz[main]}, main_spin{n.wx[main], n.wy[main], n.wz[main]};
-  const bool driven_by_main = at_start && (main_velocity != V3{} || main_spin != V3{});
+  const Vec3 main_velocity{n.vx[main], n.vy[main], n.vz[main]}, main_spin{n.wx[main], n.wy[main], n.wz[main]};
+  const bool driven_by_main = at_start && (main_velocity != Vec3{} || main_spin != Vec3{});
   if (driven_by_main) {
     velocity = main_velocity;
     angular = mul(I, main_spin);
@@ -150,7 +146,7 @@ void form_body(const RigidBody& rb, const Model& m, SolverState& s, std::int32_t
   n.wx[main] = b.omega[0], n.wy[main] = b.omega[1], n.wz[main] = b.omega[2];
   for (std::size_t i = 0; i < b.secondary.size(); ++i) {
     const auto k = static_cast<std::size_t>(b.secondary[i]);
-    const V3 spin = cross(b.omega, {b.rx[i], b.ry[i], b.rz[i]});
+    const Vec3 spin = cross(b.omega, {b.rx[i], b.ry[i], b.rz[i]});
     n.vx[k] = velocity[0] + spin[0], n.vy[k] = velocity[1] + spin[1], n.vz[k] = velocity[2] + spin[2];
   }
   b.active = true;
@@ -159,8 +155,8 @@ void form_body(const RigidBody& rb, const Model& m, SolverState& s, std::int32_t
 // Fixed dofs (/BCS) and /IMPVEL, /IMPDISP cards of the main node act on the whole body (eq. RB-4): they replace
 // the free velocity or angular velocity in those dofs (the angular momentum follows, L = I w). Returns their
 // work, the change of momentum times the mid-step velocity, like any other kinematic condition (energy.md).
-double drive_body(const Model& m, const SolverState& s, RigidBodyState& b, const V3& velocity_before,
-                  const V3& omega_before, const Mat3& inertia, double dt_next) {
+double drive_body(const Model& m, const SolverState& s, RigidBodyState& b, const Vec3& velocity_before,
+                  const Vec3& omega_before, const Mat3& inertia, double dt_next) {
   const auto main = static_cast<std::size_t>(b.main_node);
   std::uint8_t driven = s.fixed[main];
   std::array<double, 6> v{b.velocity[0], b.velocity[1], b.velocity[2], b.omega[0], b.omega[1], b.omega[2]};
@@ -174,7 +170,7 @@ double drive_body(const Model& m, const SolverState& s, RigidBodyState& b, const
     }
   }
   if (driven == 0) return 0.0;
-  const V3 momentum_free = b.momentum_angular;
+  const Vec3 momentum_free = b.momentum_angular;
   double work = 0.0;
   for (std::size_t d = 0; d < 3; ++d) {
     work += b.mass * (v[d] - b.velocity[d]) * 0.5 * (v[d] + velocity_before[d]);
@@ -258,12 +254,12 @@ void gather_rigid_body_forces(SolverState& s) {
   for (RigidBodyState& b : s.bodies) {
     if (!b.active) continue;
     const auto main = static_cast<std::size_t>(b.main_node);
-    const V3 cog = position(n, b.main_node);
+    const Vec3 cog = position(n, b.main_node);
     for (std::int32_t node : b.secondary) {
       const auto k = static_cast<std::size_t>(node);
-      const V3 r{n.x[k] - cog[0], n.y[k] - cog[1], n.z[k] - cog[2]};
-      const V3 f{n.fx[k], n.fy[k], n.fz[k]};
-      const V3 t = cross(r, f);
+      const Vec3 r{n.x[k] - cog[0], n.y[k] - cog[1], n.z[k] - cog[2]};
+      const Vec3 f{n.fx[k], n.fy[k], n.fz[k]};
+      const Vec3 t = cross(r, f);
       n.fx[main] += f[0], n.fy[main] += f[1], n.fz[main] += f[2];
       n.mx[main] += t[0] + n.mx[k], n.my[main] += t[1] + n.my[k], n.mz[main] += t[2] + n.mz[k];
       n.fx[k] = n.fy[k] = n.fz[k] = n.mx[k] = n.my[k] = n.mz[k] = 0.0;
@@ -277,7 +273,7 @@ double update_rigid_bodies(const Model& m, SolverState& s, double dt_average, do
   for (RigidBodyState& b : s.bodies) {
     if (!b.active) continue;
     const auto main = static_cast<std::size_t>(b.main_node);
-    const V3 velocity_before = b.velocity, omega_before = b.omega;
+    const Vec3 velocity_before = b.velocity, omega_before = b.omega;
     // Newton for the whole body (eq. RB-1): the gathered force over the total mass.
     if (b.mass > 0.0)
       for (int d = 0; d < 3; ++d)
@@ -290,21 +286,21 @@ double update_rigid_bodies(const Model& m, SolverState& s, double dt_average, do
     // with the attitude-of-t^n omega. The explicit Lie-Euler step (omega at t^n) lets the kinetic energy of a
     // tumbling body drift at first order in dt; the mid-step attitude makes the update second order.
     auto inertia_at = [&](const Mat3& attitude) { return mul(mul(attitude, b.inertia_body), transpose(attitude)); };
-    const V3 omega_start = solve(inertia_at(b.rotation), b.momentum_angular);
+    const Vec3 omega_start = solve(inertia_at(b.rotation), b.momentum_angular);
     const double half = 0.5 * dt_next;
     const Mat3 inertia_mid = inertia_at(mul(rotation_of({omega_start[0] * half, omega_start[1] * half, omega_start[2] * half}), b.rotation));
     b.omega = solve(inertia_mid, b.momentum_angular);
     work += drive_body(m, s, b, velocity_before, omega_before, inertia_mid, dt_next);
-    const V3 velocity = b.velocity;
+    const Vec3 velocity = b.velocity;
     n.vx[main] = velocity[0], n.vy[main] = velocity[1], n.vz[main] = velocity[2];
     n.wx[main] = b.omega[0], n.wy[main] = b.omega[1], n.wz[main] = b.omega[2];
     // Secondary nodes: velocities that land them exactly on the rigid placement at t^(n+1) (eq. RB-3).
     const Mat3 next = mul(rotation_of({b.omega[0] * dt_next, b.omega[1] * dt_next, b.omega[2] * dt_next}), b.rotation);
-    const V3 cog_next{n.x[main] + velocity[0] * dt_next, n.y[main] + velocity[1] * dt_next,
+    const Vec3 cog_next{n.x[main] + velocity[0] * dt_next, n.y[main] + velocity[1] * dt_next,
                       n.z[main] + velocity[2] * dt_next};
     for (std::size_t i = 0; i < b.secondary.size(); ++i) {
       const auto k = static_cast<std::size_t>(b.secondary[i]);
-      const V3 r = mul(next, V3{b.rx[i], b.ry[i], b.rz[i]});
+      const Vec3 r = mul(next, Vec3{b.rx[i], b.ry[i], b.rz[i]});
       if (dt_next > 0.0) {
         n.vx[k] = (cog_next[0] + r[0] - n.x[k]) / dt_next;
         n.vy[k] = (cog_next[1] + r[1] - n.y[k]) / dt_next;

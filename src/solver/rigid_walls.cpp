@@ -4,26 +4,25 @@
 #include <algorithm>
 #include <cmath>
 
-#include "crumple/model/geometry.hpp"
+#include "crumple/core/geometry.hpp"
 #include "solver/internal.hpp"
 
 namespace crumple::solver {
 namespace {
 
-using V3 = geometry::Point;
-using geometry::dot, geometry::scaled, geometry::sub;
+
 
 // Signed distance of p from the wall and the outward normal there; false when p is beside a finite wall.
 // The model build gives the unit normal or axis (RigidWall::direction).
-bool distance(const RigidWall& w, const V3& origin, const V3& p, double& d, V3& normal) {
-  const V3 r = sub(p, origin);
+bool distance(const RigidWall& w, const Vec3& origin, const Vec3& p, double& d, Vec3& normal) {
+  const Vec3 r = p - origin;
   switch (w.shape) {
     case RigidWallShape::Plane:
       normal = w.direction;
       d = dot(r, normal);
       return true;
     case RigidWallShape::Cylinder: {
-      const V3 radial = sub(r, scaled(w.direction, dot(r, w.direction)));
+      const Vec3 radial = r - scaled(w.direction, dot(r, w.direction));
       const double rho = std::sqrt(dot(radial, radial));
       if (rho <= 0.0) return false;
       normal = scaled(radial, 1.0 / rho);
@@ -38,7 +37,7 @@ bool distance(const RigidWall& w, const V3& origin, const V3& p, double& d, V3& 
       return true;
     }
     case RigidWallShape::Parallelogram: {
-      const V3 a = sub(w.point1, w.point), b = sub(w.point2, w.point);
+      const Vec3 a = w.point1 - w.point, b = w.point2 - w.point;
       const double u = dot(r, a) / dot(a, a), v = dot(r, b) / dot(b, b);
       if (u < 0.0 || u > 1.0 || v < 0.0 || v > 1.0) return false;
       normal = w.direction;
@@ -62,16 +61,16 @@ std::uint8_t free_translation_dofs(const Model& m, const SolverState& s, std::in
   return free;
 }
 
-V3 node_velocity(const NodalState& n, std::size_t k) { return {n.vx[k], n.vy[k], n.vz[k]}; }
+Vec3 node_velocity(const NodalState& n, std::size_t k) { return {n.vx[k], n.vy[k], n.vz[k]}; }
 
 // Whether the wall moving at `wall_velocity` holds node k over the step (eq. RW-1): it would cross the wall, or
 // it already touches a tied wall. Gives the normal and the normal velocity relative to the wall it ends with.
-bool holds(const RigidWall& w, const RigidWallState& st, std::size_t i, const NodalState& n, const V3& wall_velocity,
-           double dt_next, V3& normal, double& vn_new) {
+bool holds(const RigidWall& w, const RigidWallState& st, std::size_t i, const NodalState& n, const Vec3& wall_velocity,
+           double dt_next, Vec3& normal, double& vn_new) {
   const auto k = static_cast<std::size_t>(st.nodes[i]);
   double d = 0.0;
   if (!distance(w, st.origin, {n.x[k], n.y[k], n.z[k]}, d, normal)) return st.tied[i] != 0;
-  const double vn = dot(sub(node_velocity(n, k), wall_velocity), normal);
+  const double vn = dot(node_velocity(n, k) - wall_velocity, normal);
   // Impenetrability at the end of the step: d + vn dt >= 0, without pulling a node that starts inside the wall
   // back out in one step.
   vn_new = d > 0.0 ? -d / dt_next : std::max(vn, 0.0);
@@ -82,16 +81,16 @@ bool holds(const RigidWall& w, const RigidWallState& st, std::size_t i, const No
 // mass, (M I + sum m_i n_i n_i^T) V' = M V + sum m_i (v_i . n_i - vn_i') n_i over the held nodes (m_i I and
 // m_i v_i for tied ones), which conserves momentum and leaves every held node on the wall. Dofs in which the
 // wall node is driven keep V. The set of held nodes depends on V': a few passes settle it.
-V3 exchanged_velocity(const RigidWall& w, RigidWallState& st, const NodalState& n, double dt_next) {
+Vec3 exchanged_velocity(const RigidWall& w, RigidWallState& st, const NodalState& n, double dt_next) {
   const double wall_mass = n.mass[static_cast<std::size_t>(w.node)];
-  V3 velocity = st.velocity;
+  Vec3 velocity = st.velocity;
   std::fill(st.active.begin(), st.active.end(), 0);
   for (int pass = 0; pass < 4; ++pass) {
     Eigen::Matrix3d a = wall_mass * Eigen::Matrix3d::Identity();
     Eigen::Vector3d b = wall_mass * Eigen::Vector3d(st.velocity[0], st.velocity[1], st.velocity[2]);
     bool changed = false;
     for (std::size_t i = 0; i < st.nodes.size(); ++i) {
-      V3 normal{};
+      Vec3 normal{};
       double vn_new = 0.0;
       const bool held = holds(w, st, i, n, velocity, dt_next, normal, vn_new);
       changed = changed || held != (st.active[i] != 0);
@@ -148,20 +147,20 @@ void apply_rigid_walls(const Model& m, SolverState& s, double dt_average, double
       st.origin = {n.x[k], n.y[k], n.z[k]};
     }
     const bool exchange = moving && st.free_dofs != 0 && n.mass[static_cast<std::size_t>(w.node)] > 0.0;
-    const V3 wall_velocity = exchange ? exchanged_velocity(w, st, n, dt_next) : st.velocity;
-    V3 impulse{}, normal_impulse{};
+    const Vec3 wall_velocity = exchange ? exchanged_velocity(w, st, n, dt_next) : st.velocity;
+    Vec3 impulse{}, normal_impulse{};
     for (std::size_t i = 0; i < st.nodes.size(); ++i) {
-      V3 normal{};
+      Vec3 normal{};
       double vn_new = 0.0;
       if (!holds(w, st, i, n, wall_velocity, dt_next, normal, vn_new)) continue;
       const auto k = static_cast<std::size_t>(st.nodes[i]);
-      const V3 before = node_velocity(n, k);
-      const V3 rel = sub(before, wall_velocity);
-      V3 v = wall_velocity;  // tied
+      const Vec3 before = node_velocity(n, k);
+      const Vec3 rel = before - wall_velocity;
+      Vec3 v = wall_velocity;  // tied
       if (st.tied[i] == 0) {
         const double vn = dot(rel, normal);
         const double dvn = vn_new - vn;
-        V3 tangential = sub(rel, scaled(normal, vn));
+        Vec3 tangential = rel - scaled(normal, vn);
         if (w.slide == WallSliding::Tied) {
           st.tied[i] = 1;
           tangential = {0.0, 0.0, 0.0};
@@ -175,7 +174,7 @@ void apply_rigid_walls(const Model& m, SolverState& s, double dt_average, double
       n.vx[k] = v[0], n.vy[k] = v[1], n.vz[k] = v[2];
       for (std::size_t c = 0; c < 3; ++c) impulse[c] += n.mass[k] * (v[c] - before[c]);
       // Its part along the wall's normal at the node, for the normal and tangential wall forces of the outputs.
-      const double along_normal = n.mass[k] * dot(sub(v, before), normal);
+      const double along_normal = n.mass[k] * dot(v - before, normal);
       for (std::size_t c = 0; c < 3; ++c) normal_impulse[c] += along_normal * normal[c];
     }
     // A moving wall takes the opposite impulse in its free dofs (momentum is exchanged, not created).

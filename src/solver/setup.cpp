@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "crumple/contact/contact.hpp"
-#include "crumple/model/geometry.hpp"
+#include "crumple/core/geometry.hpp"
 #include "crumple/model/mass.hpp"
 #include "solver/internal.hpp"
 

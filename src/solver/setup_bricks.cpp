@@ -1,7 +1,7 @@
 // Solver state of the 8-node bricks (docs/theory/brick8.md): per-group parameters from the part's property
 // (/PROP/SOLID) and material, zero initial stresses, initial volumes for the current density.
 #include "crumple/elements/brick8.hpp"
-#include "crumple/model/geometry.hpp"
+#include "crumple/core/geometry.hpp"
 #include "crumple/model/mass.hpp"
 #include "solver/internal.hpp"
 
@@ -49,12 +49,7 @@ void setup_bricks(const Model& m, SolverState& s) {
     total_points += static_cast<std::size_t>(group.end - group.begin) * static_cast<std::size_t>(p.points);
     for (std::int32_t e = group.begin; e < group.end; ++e) {
       const std::int32_t* nodes = table.nodes_of(static_cast<std::size_t>(e));
-      std::array<geometry::Point, 8> x;
-      for (std::size_t a = 0; a < 8; ++a) {
-        const auto k = static_cast<std::size_t>(nodes[a]);
-        x[a] = {m.nodes.x[k], m.nodes.y[k], m.nodes.z[k]};
-      }
-      st.volume0[static_cast<std::size_t>(e)] = geometry::brick_volume(x);
+      st.volume0[static_cast<std::size_t>(e)] = geometry::brick_volume(m.nodes.x, m.nodes.y, m.nodes.z, nodes);
       st.mass[static_cast<std::size_t>(e)] = element_mass(m, ElementKind::Brick8, static_cast<std::size_t>(e));
       if (p.ismstr == 1 || p.ismstr == 3) brick8_switch_to_small_strain(table, e, s.nodes, st);  // from t = 0
     }

@@ -14,7 +14,7 @@
 #include "crumple/deck/reader.hpp"
 #include "crumple/elements/brick8.hpp"
 #include "crumple/materials/solid_update.hpp"
-#include "crumple/model/geometry.hpp"
+#include "crumple/core/geometry.hpp"
 #include "crumple/solver/solver.hpp"
 #include "crumple/solver/solver_state.hpp"
 #include "deck_files.hpp"

@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "crumple/model/geometry.hpp"
+#include "crumple/core/geometry.hpp"
 
 namespace crumple::geometry {
 namespace {
@@ -21,9 +21,9 @@ TEST(Geometry, BelytschkoTsayLengthIsTheReferences) {
   // Isosceles trapezoid: parallel sides 0.29289 and 0.63638, legs 0.58057.
   const double a = 0.29289255414802967, b = 0.6363798942491131, leg = 0.5805703875893862;
   const double h = std::sqrt(leg * leg - 0.25 * (b - a) * (b - a));
-  const Point p1{-0.5 * b, 0, 0}, p2{0.5 * b, 0, 0}, p3{0.5 * a, h, 0}, p4{-0.5 * a, h, 0};
+  const Vec3 p1{-0.5 * b, 0, 0}, p2{0.5 * b, 0, 0}, p3{0.5 * a, h, 0}, p4{-0.5 * a, h, 0};
   const double area = 0.5 * (a + b) * h;
-  const double diagonal = norm(sub(p3, p1));
+  const double diagonal = norm(p3 - p1);
   EXPECT_NEAR(belytschko_tsay_length(p1, p2, p3, p4), area / diagonal, 1e-14);
   EXPECT_NEAR(area / diagonal, 7.0335676261312e-05 * std::sqrt(200000.0 / 0.0078), 1e-5 * area / diagonal);
   EXPECT_LT(belytschko_tsay_length(p1, p2, p3, p4), quad_characteristic_length(p1, p2, p3, p4));
@@ -33,7 +33,7 @@ TEST(Geometry, BelytschkoTsayLengthIsTheReferences) {
 // the area over the longest side, which is that height.
 TEST(Geometry, BelytschkoTsayLengthOfASkewedElementIsItsHeight) {
   const double a = 1.0, s = std::sin(M_PI / 6.0), c = std::cos(M_PI / 6.0);
-  const Point p1{0, 0, 0}, p2{a, 0, 0}, p3{a + a * c, a * s, 0}, p4{a * c, a * s, 0};
+  const Vec3 p1{0, 0, 0}, p2{a, 0, 0}, p3{a + a * c, a * s, 0}, p4{a * c, a * s, 0};
   EXPECT_NEAR(belytschko_tsay_length(p1, p2, p3, p4), 0.5 * a, 1e-14);
 }
 

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "crumple/model/geometry.hpp"
+#include "crumple/core/geometry.hpp"
 #include "crumple/model/history_variables.hpp"
 #include "crumple/output/history_channels.hpp"
 #include "crumple/solver/element_status.hpp"

@@ -9,7 +9,7 @@
 #include <map>
 
 #include "crumple/elements/shell4.hpp"
-#include "crumple/model/geometry.hpp"
+#include "crumple/core/geometry.hpp"
 #include "crumple/output/history_reader.hpp"
 #include "verification_support.hpp"
 
@@ -64,7 +64,7 @@ struct Snapshot {
   std::vector<double> x, y, z, vx, fx, mass;
   std::vector<double> sxx, syy, sxy, thickness;  // shells
   std::array<double, 6> brick_stress;
-  std::array<geometry::Point, 8> brick_nodes;
+  std::array<Vec3, 8> brick_nodes;
   double brick_volume0;
 };
 

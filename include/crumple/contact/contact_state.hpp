@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "crumple/core/vec3.hpp"
 #include "crumple/contact/kernels.hpp"
 
 namespace crumple {
@@ -20,8 +21,8 @@ struct InitialPenetration {
 // Per interface, in the order of Model::type7_interfaces. Forces are those the interface applied during the last
 // cycle; energies accumulate from the start.
 struct InterfaceResult {
-  std::array<double, 3> normal_force{};      // sum of the normal (penalty + damping) forces ON the secondary nodes [F]
-  std::array<double, 3> tangential_force{};  // sum of the friction forces on the secondary nodes [F]
+  Vec3 normal_force{};      // sum of the normal (penalty + damping) forces ON the secondary nodes [F]
+  Vec3 tangential_force{};  // sum of the friction forces on the secondary nodes [F]
   double elastic_energy = 0.0;  // stored penalty energy now, sum of K0 g (-p - g ln((g - p) / g)) (eq. C-4) [E]
   double damping_work = 0.0;    // energy dissipated by the normal damping so far (>= 0) [E]
   double friction_work = 0.0;   // energy dissipated by friction so far (>= 0) [E]
@@ -109,6 +110,16 @@ struct ContactInterface {
     std::vector<double> fx, fy, fz;             // and their friction history
     std::vector<std::pair<std::uint64_t, std::size_t>> before, after;  // history matching
   } scratch;
+
+  // Sizes the per-secondary-node state and scratch for `secondary_nodes`, every node active, nothing impacted, no
+  // gap reduction and (Ifiltr > 0, eq. C-9d) no filtered coefficient yet.
+  void size_node_arrays() {
+    const std::size_t n = secondary_nodes.size();
+    for (auto* v : {&gap_reduction, &gap_clearance, &node_tangent_sum, &node_reach_stiffness, &node_friction_viscosity})
+      v->assign(n, 0.0);
+    node_active.assign(n, 1), node_touched.assign(n, 0), node_impacted.assign(n, 0);
+    if (friction_filter > 0) friction_mu.assign(n, 0.0), friction_mu_pass.assign(n, -2);
+  }
 
   // Gap of the pair (secondary node i, segment s), before the Inacti reduction (eq. C-2).
   double pair_gap(std::size_t i, std::size_t s) const {

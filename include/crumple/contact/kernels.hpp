@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include "crumple/core/vec3.hpp"
+
 namespace crumple::contact {
 
 // Penetration p = g - d of a node at distance d from a segment with gap g (0 < p < g in contact) [L].
@@ -132,11 +134,6 @@ struct SegmentPoint {
 //   r_k = (p - c).e_k,  q_k = e_k.e_k,  m_k = e_k.e_(k+1),  |p - c|^2.
 // Values only (small structs by value, selects on comparisons of doubles instead of std::max / std::clamp, which
 // return references), so that the compiler keeps everything in registers and if-converts the selects.
-struct Vec3 {
-  double x, y, z;
-};
-inline Vec3 operator-(Vec3 a, Vec3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-inline double dot(Vec3 a, Vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 struct FanPoint {
   double w0, w1, w2, w3;  // weights of the closest point on the corners (sum 1)
   double distance2;       // squared distance [L^2]

@@ -8,7 +8,7 @@
 #include <string_view>
 #include <vector>
 
-#include "crumple/deck/error.hpp"
+#include "crumple/core/deck_error.hpp"
 #include "crumple/deck/source.hpp"
 #include "crumple/deck/units.hpp"
 

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "crumple/deck/error.hpp"
+#include "crumple/core/deck_error.hpp"
 #include "crumple/model/model.hpp"
 
 namespace crumple {

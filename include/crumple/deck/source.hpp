@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "crumple/deck/error.hpp"
+#include "crumple/core/deck_error.hpp"
 
 namespace crumple {
 

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "crumple/deck/error.hpp"
+#include "crumple/core/source_location.hpp"
 
 namespace crumple {
 

@@ -8,7 +8,7 @@
 #include <string_view>
 #include <vector>
 
-#include "crumple/deck/units.hpp"
+#include "crumple/core/units.hpp"
 #include "crumple/model/output_requests.hpp"
 
 namespace crumple {

@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <string>
 
-#include "crumple/deck/error.hpp"
+#include "crumple/core/source_location.hpp"
 
 namespace crumple {
 

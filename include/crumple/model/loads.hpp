@@ -7,11 +7,10 @@
 #include <string>
 #include <vector>
 
-#include "crumple/deck/error.hpp"
+#include "crumple/core/source_location.hpp"
+#include "crumple/core/vec3.hpp"
 
 namespace crumple {
-
-using Vec3 = std::array<double, 3>;
 
 // Degree of freedom addressed by a load or imposed motion: X, Y, Z translations, XX, YY, ZZ rotations.
 enum class Dof : std::uint8_t { X, Y, Z, XX, YY, ZZ };

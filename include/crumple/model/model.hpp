@@ -7,7 +7,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "crumple/deck/units.hpp"
+#include "crumple/core/units.hpp"
 #include "crumple/model/elements.hpp"
 #include "crumple/model/functions.hpp"
 #include "crumple/model/interfaces.hpp"

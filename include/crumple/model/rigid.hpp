@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "crumple/deck/error.hpp"
-#include "crumple/model/geometry.hpp"
+#include "crumple/core/source_location.hpp"
+#include "crumple/core/geometry.hpp"
 #include "crumple/model/loads.hpp"
 
 namespace crumple {
@@ -55,16 +55,15 @@ struct RigidWall {
 // on M or on the line M M1. "On" means closer than 1e-10 times the size of the coordinates, so that the result
 // does not depend on the length unit.
 inline std::optional<Vec3> wall_direction(RigidWallShape shape, const Vec3& m, const Vec3& m1, const Vec3& m2) {
-  using geometry::cross, geometry::norm, geometry::sub;
   if (shape == RigidWallShape::Sphere) return Vec3{};
   const double size = std::max({norm(m), norm(m1), norm(m2)});
-  const Vec3 edge1 = sub(m1, m);
+  const Vec3 edge1 = m1 - m;
   const double length1 = norm(edge1);
   if (!(length1 > 1e-10 * size)) return std::nullopt;
   Vec3 direction = edge1;
   double length = length1;
   if (shape == RigidWallShape::Parallelogram) {
-    const Vec3 edge2 = sub(m2, m);
+    const Vec3 edge2 = m2 - m;
     direction = cross(edge1, edge2);
     length = norm(direction);
     // |e1 x e2| = |e1| |e2| sin(angle): a zero or tiny angle (or edge) leaves no plane.

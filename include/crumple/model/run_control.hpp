@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "crumple/deck/error.hpp"
+#include "crumple/core/source_location.hpp"
 
 namespace crumple {
 

@@ -3,6 +3,7 @@
 #include <array>
 #include <cstdint>
 
+#include "crumple/core/vec3.hpp"
 #include "crumple/model/model.hpp"
 
 namespace crumple {
@@ -21,8 +22,8 @@ struct ControllingElement {
 ControllingElement smallest_element_time_step(const Model& model);
 
 struct BoundingBox {
-  std::array<double, 3> min{0, 0, 0};
-  std::array<double, 3> max{0, 0, 0};
+  Vec3 min{0, 0, 0};
+  Vec3 max{0, 0, 0};
 };
 BoundingBox bounding_box(const Nodes& nodes);
 

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "crumple/core/vec3.hpp"
 #include "crumple/contact/contact_state.hpp"
 #include "crumple/elements/brick8.hpp"
 #include "crumple/elements/shell4.hpp"
@@ -37,9 +38,9 @@ struct RigidBodyState {
   std::array<double, 9> inertia_body{};  // inertia tensor about the centre of mass in the body frame [M L^2]
   std::array<double, 9> inertia_added{}; // the card's Jxx..Jxz part of it (not carried by nodal masses)
   std::array<double, 9> rotation{1, 0, 0, 0, 1, 0, 0, 0, 1};  // body frame -> global
-  std::array<double, 3> velocity{};          // velocity of the centre of mass at t^(n-1/2)
-  std::array<double, 3> momentum_angular{};  // angular momentum about the centre of mass (global) at t^(n-1/2)
-  std::array<double, 3> omega{};             // angular velocity (global) at t^(n-1/2)
+  Vec3 velocity{};          // velocity of the centre of mass at t^(n-1/2)
+  Vec3 momentum_angular{};  // angular momentum about the centre of mass (global) at t^(n-1/2)
+  Vec3 omega{};             // angular velocity (global) at t^(n-1/2)
   bool active = true;                        // /RBODY/OFF sets it off: the secondary nodes move on their own
   // /IMPVEL and /IMPDISP cards (indices into Model::imposed) acting on the main node: they drive the body.
   std::vector<std::int32_t> main_node_conditions;
@@ -49,10 +50,10 @@ struct RigidWallState {
   std::vector<std::int32_t> nodes;   // candidate secondary nodes
   std::vector<std::uint8_t> tied;    // tied walls: 1 once the node touched
   std::vector<std::uint8_t> active;  // scratch of the cycle: 1 when the node is held by the wall
-  std::array<double, 3> force{};     // force of the wall on the nodes during the last cycle [F]
-  std::array<double, 3> normal_force{};  // its part along the wall's normal at each node it held [F]
-  std::array<double, 3> velocity{};  // wall velocity v^(n+1/2) [L/T]
-  std::array<double, 3> origin{};    // current point M [L]
+  Vec3 force{};     // force of the wall on the nodes during the last cycle [F]
+  Vec3 normal_force{};  // its part along the wall's normal at each node it held [F]
+  Vec3 velocity{};  // wall velocity v^(n+1/2) [L/T]
+  Vec3 origin{};    // current point M [L]
   // Moving walls: translation dofs (bit 0 x, 1 y, 2 z) in which the wall node is free, i.e. neither fixed nor
   // imposed; in those the wall takes the nodes' reaction (eq. RW-2), in the others it is driven.
   std::uint8_t free_dofs = 0;

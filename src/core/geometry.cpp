@@ -1,6 +1,6 @@
 // Exact brick volume (docs/theory/brick8.md, eq. B-2): one definition for the reader's checks, the mass, the
 // time-step estimate, the contact stiffness and the brick kernels.
-#include "crumple/model/geometry.hpp"
+#include "crumple/core/geometry.hpp"
 
 namespace crumple::geometry {
 namespace {
@@ -46,10 +46,20 @@ double brick_volume_gradient(const double* x, const double* y, const double* z, 
   return volume / 3.0;
 }
 
-double brick_volume(const std::array<Point, 8>& p) {
+double brick_volume(const std::array<Vec3, 8>& p) {
   double x[8], y[8], z[8], bx[8], by[8], bz[8];
-  for (std::size_t a = 0; a < 8; ++a) x[a] = p[a][0], y[a] = p[a][1], z[a] = p[a][2];
+  for (std::size_t a = 0; a < 8; ++a) x[a] = p[a].x, y[a] = p[a].y, z[a] = p[a].z;
   return brick_volume_gradient(x, y, z, bx, by, bz);
+}
+
+double brick_volume(const std::vector<double>& x, const std::vector<double>& y, const std::vector<double>& z,
+                    const std::int32_t* corners) {
+  std::array<Vec3, 8> p;
+  for (std::size_t a = 0; a < 8; ++a) {
+    const auto k = static_cast<std::size_t>(corners[a]);
+    p[a] = {x[k], y[k], z[k]};
+  }
+  return brick_volume(p);
 }
 
 }  // namespace crumple::geometry

@@ -1,16 +1,14 @@
 #pragma once
-// Errors and warnings of the deck reader. Every message names the file, the line, the keyword and the field,
+// Errors and warnings about a deck, raised by the reader and by any later stage that finds a problem in the
+// model (a contact surface without a gap...). Every message names the file, the line, the keyword and the field,
 // and says what was expected and what was found, so a crash engineer can fix the deck without a debugger.
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-namespace crumple {
+#include "crumple/core/source_location.hpp"
 
-struct SourceLocation {
-  std::string file;  // path as the user gave it (or as resolved relative to the including file)
-  int line = 0;      // 1-based; 0 when the problem concerns the whole file
-};
+namespace crumple {
 
 class DeckError : public std::runtime_error {
  public:

@@ -1,4 +1,4 @@
-#include "crumple/deck/error.hpp"
+#include "crumple/core/deck_error.hpp"
 
 #include <fmt/format.h>
 
