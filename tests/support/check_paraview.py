@@ -2,7 +2,10 @@
 
 Run with ParaView's Python (under a virtual display where there is none):
 
-    xvfb-run -a pvpython check_paraview.py OUT/NAME.xdmf PICTURE.png [--color FIELD] [--title TEXT]
+    xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" pvpython check_paraview.py OUT/NAME.xdmf PICTURE.png \
+        [--color FIELD] [--title TEXT]
+
+(-noreset: see start_xvfb in run_paraview_check.py, which starts the server for the ctest.)
 
 For each of ParaView's three XDMF readers it opens NAME.xdmf and steps through every frame. At each frame it
 checks against NAME.h5, read with h5py:
