@@ -9,7 +9,7 @@
 #include <string>
 
 #include "crumple/deck/reader.hpp"
-#include "crumple/solver/solver.hpp"
+#include "crumple/output/run.hpp"
 
 namespace {
 
@@ -22,7 +22,7 @@ void run_profile(benchmark::State& state, const std::string& deck) {
   RunSummary summary;
   for (auto _ : state) {
     const Model model = read_deck(path).model;
-    SolverOptions options;
+    SimulationOptions options;
     options.name = "TUBE";
     options.output_directory = out;
     options.write_results = false;

@@ -33,7 +33,7 @@ std::string output_directory_problem(const std::filesystem::path& dir) {
   return {};
 }
 
-RunSummary run_engine_decks(Deck& deck, const SolverOptions& options, std::ostream& console,
+RunSummary run_engine_decks(Deck& deck, const SimulationOptions& options, std::ostream& console,
                             const std::filesystem::path& restart) {
   Model& m = deck.model;
   const RunControl first = m.run;
@@ -52,16 +52,16 @@ RunSummary run_engine_decks(Deck& deck, const SolverOptions& options, std::ostre
   }
   const int start = marks ? marks->engine_deck : 1;
   RunRecorder recorder(m, options.output_directory, options.name.empty() ? m.run_name : options.name,
-                       options.write_results);
+                       options.write_results, {options.deck, options.approximations, options.progress}, &console);
   RunSummary summary;
   for (int k = start; k <= static_cast<int>(controls.size()); ++k) {
     m.run = controls[static_cast<std::size_t>(k - 1)];
-    SolverOptions engine = options;
+    SolverOptions engine = options;  // the solver's part
     engine.engine_deck = k;
     engine.resume = k == start && marks ? &*marks : nullptr;
     if (k > start) continue_from(state);
     const int decks_before = k > start ? summary.engine_decks : 0;
-    summary = run_engine_deck(m, engine, recorder, state, k == start ? notes : std::vector<std::string>{}, console);
+    summary = run_engine_deck(m, engine, recorder, state, k == start ? notes : std::vector<std::string>{});
     summary.engine_decks = decks_before + 1;
     if (summary.status != RunStatus::Normal) break;
   }
@@ -96,7 +96,7 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
     return kExitBadInput;
   }
   const std::string started = utc_now_iso8601();
-  SolverOptions solver;
+  SimulationOptions solver;
   solver.name = deck.model.run.run_name.empty() ? deck.model.run_name : deck.model.run.run_name;
   solver.output_directory = options.output_directory;
   for (const SkippedOption& o : deck.report.skipped_options) solver.approximations.push_back(o.text());

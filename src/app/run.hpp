@@ -3,8 +3,8 @@
 #include <iosfwd>
 
 #include "crumple/deck/reader.hpp"
+#include "crumple/output/run.hpp"
 #include "crumple/output/run_summary.hpp"
-#include "crumple/solver/solver.hpp"
 
 namespace crumple::app {
 
@@ -21,7 +21,7 @@ struct RunOptions {
 // normally. `deck.model.run` is the run control of the deck being run while it runs. Returns the last deck's
 // summary with the total cycle count. With `restart`, the state and the engine deck to resume come from that
 // restart file (docs/theory/time-loop.md, "Restart"); throws RestartError when it does not fit the deck.
-RunSummary run_engine_decks(Deck& deck, const SolverOptions& options, std::ostream& console,
+RunSummary run_engine_decks(Deck& deck, const SimulationOptions& options, std::ostream& console,
                             const std::filesystem::path& restart = {});
 
 // `crumple run`: reads the deck and runs it, writing NAME.h5, NAME.out and NAME.summary.json into the output

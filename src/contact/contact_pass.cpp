@@ -6,7 +6,7 @@
 #include <limits>
 
 #include "crumple/contact/contact.hpp"
-#include "crumple/solver/element_status.hpp"
+#include "crumple/state/element_status.hpp"
 #include "crumple/contact/kernels.hpp"
 
 namespace crumple::contact {

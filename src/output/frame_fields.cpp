@@ -9,7 +9,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "crumple/solver/element_status.hpp"
+#include "crumple/state/element_status.hpp"
 
 namespace crumple {
 namespace {

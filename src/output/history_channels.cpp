@@ -14,7 +14,7 @@
 #include "crumple/core/geometry.hpp"
 #include "crumple/model/history_variables.hpp"
 #include "crumple/model/mass.hpp"
-#include "crumple/solver/element_status.hpp"
+#include "crumple/state/element_status.hpp"
 
 namespace crumple {
 namespace {

@@ -3,7 +3,7 @@
 #include "crumple/output/results_file.hpp"
 
 #include "crumple/model/history_variables.hpp"
-#include "crumple/solver/element_status.hpp"
+#include "crumple/state/element_status.hpp"
 #include "frame_fields.hpp"
 #include "hdf5_support.hpp"
 #include "xml_text.hpp"

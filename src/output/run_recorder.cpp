@@ -11,7 +11,7 @@
 
 #include "crumple/output/build_info.hpp"
 #include "crumple/output/restart_file.hpp"
-#include "crumple/solver/element_status.hpp"
+#include "crumple/state/element_status.hpp"
 
 namespace crumple {
 namespace {
@@ -140,19 +140,14 @@ RunStatus status_of(const StopReason& stop) {
 }
 
 RunRecorder::RunRecorder(const Model& model, const std::filesystem::path& directory, const std::string& name,
-                         bool write_results)
-    : model_(model), directory_(directory), name_(name), listing_(directory / (name + ".out")), channels_(model) {
+                         bool write_results, RunStart run, std::ostream* console)
+    : model_(model), directory_(directory), name_(name), console_(console), run_(std::move(run)),
+      listing_(directory / (name + ".out")), channels_(model), progress_clock_(run_.progress) {
   if (write_results) results_.emplace(directory / (name + ".h5"), model, channels_.datasets());
 }
 
-void RunRecorder::start(const SolverState& s, const RunStart& run, const std::vector<std::string>& notes,
-                        std::ostream& console) {
-  console_ = &console;
-  if (engine_decks_ == 0) {
-    header(run);
-    progress_options_ = run.progress;
-    progress_clock_ = ProgressClock(run.progress);
-  }
+void RunRecorder::start(const SolverState& s, const std::vector<std::string>& notes) {
+  if (engine_decks_ == 0) header(run_);
   ++engine_decks_;
   listing_.line(fmt::format("ENGINE DECK {}: end time {:g}", engine_decks_, model_.run.end_time));
   for (const auto& note : notes) listing_.line("NOTE: " + note);
@@ -216,10 +211,10 @@ void RunRecorder::progress(const SolverState& s, double dt, const StepControl& c
   v.elapsed_seconds = progress_clock_.elapsed_seconds();
   v.remaining_seconds = remaining_seconds(deck_start_time_, s.time, v.end_time, v.elapsed_seconds - deck_start_wall_);
   std::string text = progress_line(v);
-  if (progress_options_.mode == ProgressOptions::Mode::Lines) {
+  if (run_.progress.mode == ProgressOptions::Mode::Lines) {
     fmt::print(*console_, "{}\n", text);
   } else {
-    if (const int width = progress_options_.width; width > 1 && text.size() >= static_cast<std::size_t>(width))
+    if (const int width = run_.progress.width; width > 1 && text.size() >= static_cast<std::size_t>(width))
       text.resize(static_cast<std::size_t>(width - 1));  // one row: a wrapped line would not be rewritten in place
     fmt::print(*console_, "\r{}\x1b[K", text);
     progress_shown_ = true;
@@ -281,7 +276,8 @@ void RunRecorder::close(const SolverState& s, bool stopped_early) {
   results_->close();
 }
 
-void RunRecorder::finish(const SolverState& s, const RunEvents& events, const PhaseTimes& phases, double wall) {
+RunSummary RunRecorder::finish(const SolverState& s, const RunEvents& events, const PhaseTimes& phases, double dt,
+                               double wall) {
   clear_progress();
   listing_.line(termination(events.stop, model_));
   if (events.deleted_below_minimum_step > 0)
@@ -308,6 +304,9 @@ void RunRecorder::finish(const SolverState& s, const RunEvents& events, const Ph
                             phases.elements, share(phases.elements), phases.contact, share(phases.contact),
                             phases.contact_passes, phases.loads, share(phases.loads), phases.update,
                             share(phases.update), phases.output, share(phases.output)));
+  RunSummary summary = summarize_run(model_, name_, s, events, phases, dt, wall);
+  summary.approximations = run_.approximations;
+  return summary;
 }
 
 RunSummary summarize_run(const Model& m, const std::string& name, const SolverState& s, const RunEvents& events,

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "crumple/solver/element_status.hpp"
+#include "crumple/state/element_status.hpp"
 #include "solver/internal.hpp"
 
 namespace crumple::solver {

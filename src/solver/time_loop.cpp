@@ -1,7 +1,6 @@
 // The explicit time loop (docs/theory/time-loop.md): one cycle is the named phases of solver/cycle.hpp, in order.
 #include <chrono>
 
-#include "crumple/output/run_recorder.hpp"
 #include "crumple/solver/snapshot.hpp"
 #include "crumple/solver/solver.hpp"
 #include "solver/cycle.hpp"
@@ -29,7 +28,7 @@ bool restart_due(const Model& m, const SolverState& s) {
 }
 
 // The snapshot at the end of a cycle, with the monitor's marks (solver/snapshot.hpp).
-void write_snapshot(RunRecorder& recorder, SolverState& s, const SolverOptions& options, const RunEvents& events,
+void write_snapshot(RunObserver& observer, SolverState& s, const SolverOptions& options, const RunEvents& events,
                     const solver::OutputSchedule& schedule) {
   ResumeMarks marks;
   marks.engine_deck = options.engine_deck;
@@ -38,7 +37,7 @@ void write_snapshot(RunRecorder& recorder, SolverState& s, const SolverOptions& 
   marks.switched_to_small_strain = events.switched_to_small_strain;
   marks.hourglass_warned = events.hourglass_warned;
   marks.energy_error_warned = events.energy_error_warned;
-  recorder.restart(s, marks);
+  observer.restart(s, marks);
 }
 
 // A resumed run's monitor carries on from the snapshot's marks: the same output times, no warning twice.
@@ -52,9 +51,9 @@ void resume_monitor(const ResumeMarks& marks, RunEvents& events, solver::OutputS
 
 // The state an engine deck starts from, when a frame is due at its time (t = 0 for the first): written before the
 // first cycle, so that the frames are on the /ANIM/DT grid from Tstart on.
-void write_first_frame(const Model& m, const SolverState& s, RunRecorder& recorder, solver::OutputSchedule& schedule) {
+void write_first_frame(const Model& m, const SolverState& s, RunObserver& observer, solver::OutputSchedule& schedule) {
   if (!solver::frame_due(s, schedule)) return;
-  recorder.frame(s);
+  observer.frame(s);
   solver::MonitorDue written{};
   written.frame = true;
   solver::advance_schedule(m, s, written, schedule);
@@ -62,18 +61,18 @@ void write_first_frame(const Model& m, const SolverState& s, RunRecorder& record
 
 }  // namespace
 
-RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunRecorder& recorder, SolverState& s,
-                           const std::vector<std::string>& notes, std::ostream& console) {
+RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunObserver& observer, SolverState& s,
+                           const std::vector<std::string>& notes) {
   using namespace solver;
   const auto started = std::chrono::steady_clock::now();
   if (options.resume == nullptr) switch_rigid_bodies(m, s);  // a resumed state has them switched already
   update_kinetic_energy(s);  // for the listing's row of cycle 0
-  recorder.start(s, {options.deck, options.approximations, options.progress}, notes, console);
+  observer.start(s, notes);
   RunEvents events;
   OutputSchedule schedule(m.run, s.time, options.max_cycles);
   if (options.resume != nullptr) resume_monitor(*options.resume, events, schedule);
   keep_requested_results(m.run, s);
-  if (options.resume == nullptr) write_first_frame(m, s, recorder, schedule);
+  if (options.resume == nullptr) write_first_frame(m, s, observer, schedule);
   VelocityScratch scratch(s.nodes.size());
   PhaseTimes phases;
   PhaseClock clock;
@@ -108,51 +107,38 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunReco
     clock.lap(phases.update);
 
     const MonitorDue due = outputs_due(m, s, schedule, dt_next);
-    const bool show_progress = recorder.progress_due();
+    const bool show_progress = observer.progress_due();
     if (due.energies() || show_progress) update_kinetic_energy(s);
     if (due.energies()) {
-      if (due.print) recorder.row(s, dt_next, control);
+      if (due.print) observer.row(s, dt_next, control);
       check_run_limits(m, s, events);
-      if (!events.pending.empty()) recorder.events(events);
+      if (!events.pending.empty()) observer.events(events);
       if (events.stop.stopped()) break;
     }
-    if (due.frame) recorder.frame(s);
+    if (due.frame) observer.frame(s);
     if (due.history) {
       VelocityChange change;
       for (std::size_t d = 0; d < 6; ++d) change.before[d] = &scratch.before[d], change.free[d] = &scratch.free[d];
       change.dt = dt_average;
-      recorder.history(s, dt_next, change);
-      if (options.observer) options.observer(s);
+      observer.history(s, dt_next, change);
+      if (options.on_history_row) options.on_history_row(s);
     }
     advance_schedule(m, s, due, schedule);
-    if (restart_due(m, s) && !due.finished) write_snapshot(recorder, s, options, events, schedule);
-    if (show_progress) recorder.progress(s, dt_next, control);
+    if (restart_due(m, s) && !due.finished) write_snapshot(observer, s, options, events, schedule);
+    if (show_progress) observer.progress(s, dt_next, control);
     clock.lap(phases.output);
     if (due.finished || stop_requested(options.stop_request, s, events)) break;
   }
   update_kinetic_energy(s);
-  recorder.events(events);
-  recorder.row(s, dt_next, control);  // the cycle the run ended at, unless its row is printed already
+  observer.events(events);
+  observer.row(s, dt_next, control);  // the cycle the run ended at, unless its row is printed already
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   // A snapshot at the end with /RFILE, and always when the run was asked to stop (it can go on from there); never
   // after a failure (NaN, inverted element), whose state is not worth resuming.
   const bool resumable = !events.stop.stopped() || events.stop.requested() || events.stop.is_limit();
   if (resumable && (m.run.restart_every > 0 || events.stop.requested()))
-    write_snapshot(recorder, s, options, events, schedule);
-  recorder.finish(s, events, phases, wall);
-  RunSummary summary = summarize_run(m, recorder.name(), s, events, phases, dt_next, wall);
-  summary.approximations = options.approximations;
-  return summary;
-}
-
-RunSummary run_simulation(const Model& m, const SolverOptions& options, std::ostream& console) {
-  std::vector<std::string> notes;
-  SolverState s = solver::make_state(m, notes);
-  RunRecorder recorder(m, options.output_directory, options.name.empty() ? m.run_name : options.name,
-                       options.write_results);
-  RunSummary summary = run_engine_deck(m, options, recorder, s, notes, console);
-  recorder.close(s, summary.status != RunStatus::Normal);
-  return summary;
+    write_snapshot(observer, s, options, events, schedule);
+  return observer.finish(s, events, phases, dt_next, wall);
 }
 
 SolverState initial_state(const Model& m, std::vector<std::string>& notes) { return solver::make_state(m, notes); }

@@ -36,7 +36,7 @@ TEST_P(QaDeck, MatchesTheReferenceAtItsTime) {
   const ReferencePoint ref = read_reference(folder / "ref.extract");
   Deck deck = read_deck(folder / (std::string(c.deck) + "_0000.rad"));
   TempDir dir;
-  SolverOptions options;
+  SimulationOptions options;
   options.name = c.deck;
   options.output_directory = dir.path();
   std::ostringstream console;

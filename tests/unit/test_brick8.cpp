@@ -15,7 +15,7 @@
 #include "crumple/elements/brick8.hpp"
 #include "crumple/materials/solid_update.hpp"
 #include "crumple/core/geometry.hpp"
-#include "crumple/solver/solver.hpp"
+#include "crumple/output/run.hpp"
 #include "crumple/solver/solver_state.hpp"
 #include "deck_files.hpp"
 
@@ -1080,10 +1080,10 @@ TEST(Brick8, WaveCrossesABarAtTheDilatationalSpeed) {
     const Model model = read_deck(starter).model;
     const auto& right = model.node_groups[static_cast<std::size_t>(model.index.node_groups.at(20))].nodes;
     std::vector<double> times, speeds;  // time t^(n+1) and right-end velocity v^(n+1/2)
-    SolverOptions options;
+    SimulationOptions options;
     options.output_directory = dir.path();
     options.write_results = false;
-    options.observer = [&](const SolverState& s) {
+    options.on_history_row = [&](const SolverState& s) {
       double v = 0.0;
       for (std::int32_t node : right) v += s.nodes.vx[static_cast<std::size_t>(node)];
       times.push_back(s.time);
@@ -1126,7 +1126,7 @@ TEST(Brick8, NegativeVolumeStopsTheRun) {
     const auto starter = dir.write("WAVE_0000.rad", bar_starter(2, 0.01, isolid, 210e9, 0.3, funct + impvel + clamp));
     const Model model = read_deck(starter).model;
     std::ostringstream console;
-    SolverOptions options;
+    SimulationOptions options;
     options.output_directory = dir.path();
     options.write_results = false;
     const RunSummary summary = run_simulation(model, options, console);

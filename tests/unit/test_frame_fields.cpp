@@ -13,8 +13,8 @@
 #include "crumple/output/results_file.hpp"
 #include "crumple/output/results_reader.hpp"
 #include "crumple/output/run_recorder.hpp"
-#include "crumple/solver/element_status.hpp"
-#include "crumple/solver/solver.hpp"
+#include "crumple/state/element_status.hpp"
+#include "crumple/output/run.hpp"
 #include "deck_files.hpp"
 
 using namespace crumple;
@@ -312,7 +312,7 @@ RunSummary run_plate(const test::TempDir& dir, const std::string& anim, const st
   const std::string engine = "/RUN/TEST/1\n1e-3\n/ANIM/DT\n" + anim + "\n" + engine_extra;
   const std::string motion = kAllNodes + "/INIVEL/TRA/1\nup\n" + R(0.0) + R(0.0) + R(1.0) + I(11) + I(0) + "\n";
   const Deck d = read_deck(test::write_deck(dir, motion + starter_extra, engine));
-  SolverOptions options;
+  SimulationOptions options;
   options.output_directory = dir.path();
   std::ostringstream console;
   return run_simulation(d.model, options, console);

@@ -7,7 +7,7 @@
 #include "crumple/core/geometry.hpp"
 #include "crumple/model/history_variables.hpp"
 #include "crumple/output/history_channels.hpp"
-#include "crumple/solver/element_status.hpp"
+#include "crumple/state/element_status.hpp"
 #include "crumple/solver/solver.hpp"
 #include "deck_files.hpp"
 

@@ -194,7 +194,7 @@ TEST(RunPoint, ReadsTheHistoriesAndTheListingOfARun) {
   using test::I, test::R;
   const std::string end = "/GRNOD/NODE/1\nfree end\n" + I(3) + I(6) + "\n";  // pulled: the plate stretches
   Deck deck = read_deck(test::write_deck(dir, end + "/INIVEL/TRA/1\npull\n" + R(1.0) + R(0.0) + R(0.0) + I(1) + "\n"));
-  SolverOptions options;
+  SimulationOptions options;
   options.name = "TEST";
   options.output_directory = dir.path();
   std::ostringstream console;

@@ -13,7 +13,7 @@
 #include <sstream>
 
 #include "crumple/output/progress.hpp"
-#include "crumple/solver/solver.hpp"
+#include "crumple/output/run.hpp"
 #include "crumple/solver/solver_state.hpp"
 #include "deck_files.hpp"
 #include "crumple/output/results_reader.hpp"
@@ -100,11 +100,11 @@ struct PlateRun {
 PlateRun run_plate(const test::TempDir& dir, const std::string& engine, const std::function<void(const SolverState&)>&
               observer = {}, const std::atomic<int>* stop = nullptr) {
   const Model model = read_deck(test::write_deck(dir, moving_plate(), engine)).model;
-  SolverOptions options;
+  SimulationOptions options;
   options.name = "TEST";
   options.output_directory = dir.path();
   options.deck = dir.path() / "TEST_0000.rad";
-  options.observer = observer;
+  options.on_history_row = observer;
   options.stop_request = stop;
   std::ostringstream console;
   const RunSummary summary = run_simulation(model, options, console);

@@ -50,12 +50,12 @@ struct Final {
 
 Final run(const test::TempDir& dir) {
   Deck deck = read_deck(dir.write("VERIF_0000.rad", test::begin_card("VERIF") + bar_starter() + "/END\n"));
-  SolverOptions options;
+  SimulationOptions options;
   options.name = "VERIF";
   options.output_directory = dir.path();
   options.write_results = false;
   Final f;
-  options.observer = [&f](const SolverState& s) { f.state = s; };
+  options.on_history_row = [&f](const SolverState& s) { f.state = s; };
   std::ostringstream console;
   f.summary = app::run_engine_decks(deck, options, console);
   return f;
@@ -116,10 +116,10 @@ TEST(ContinuedRun, DtixSetsTheFirstAndTheLargestStep) {
   dir.write("VERIF_0001.rad", e.str());
   std::vector<double> steps;
   Deck deck = read_deck(dir.write("VERIF_0000.rad", test::begin_card("VERIF") + bar_starter() + "/END\n"));
-  SolverOptions options;
+  SimulationOptions options;
   options.output_directory = dir.path();
   options.write_results = false;
-  options.observer = [&steps](const SolverState& s) { steps.push_back(s.dt); };
+  options.on_history_row = [&steps](const SolverState& s) { steps.push_back(s.dt); };
   std::ostringstream console;
   const RunSummary r = app::run_engine_decks(deck, options, console);
   ASSERT_EQ(r.status, RunStatus::Normal) << r.message;

@@ -53,7 +53,7 @@ RunSummary run(const std::filesystem::path& starter, const TempDir& dir, long lo
   deck.model.run.restart_every = 1LL << 60;  // no snapshot on the way: only the one at the end
   for (RunControl& r : deck.continued_runs) r.restart_every = 1LL << 60;
   if (max_cycles >= 0) deck.continued_runs.clear();
-  SolverOptions options;
+  SimulationOptions options;
   options.name = "RUN";
   options.output_directory = dir.path();
   options.max_cycles = max_cycles;

@@ -114,10 +114,10 @@ TEST(TimeHistories, TheFileHoldsTheStateAtEveryRowAndThePartsSumToTheModel) {
   const auto path = dir.write("VERIF_0000.rad", test::begin_card("VERIF") + starter() + "/END\n");
   Model model = read_deck(path).model;
   std::vector<Snapshot> rows;
-  SolverOptions options;
+  SimulationOptions options;
   options.name = "VERIF";
   options.output_directory = dir.path();
-  options.observer = [&](const SolverState& s) { rows.push_back(snapshot(model, s)); };
+  options.on_history_row = [&](const SolverState& s) { rows.push_back(snapshot(model, s)); };
   std::ostringstream console;
   ASSERT_EQ(run_simulation(model, options, console).status, RunStatus::Normal);
 

@@ -1,7 +1,7 @@
 #pragma once
 // Verification tests (docs/verification.md): decks generated card by card into a TempDir, a run helper that
 // reads the deck, runs the solver without result files and hands the solver state to a callback at every
-// time-history output time (SolverOptions::observer), and a few numerical helpers.
+// time-history output time (SolverOptions::on_history_row), and a few numerical helpers.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "crumple/deck/reader.hpp"
-#include "crumple/solver/solver.hpp"
+#include "crumple/output/run.hpp"
 #include "crumple/solver/solver_state.hpp"
 #include "deck_files.hpp"
 
@@ -182,12 +182,12 @@ inline RunResult run_deck(const test::TempDir& dir, const std::string& starter, 
   dir.write("VERIF_0001.rad", engine.str());
   const auto path = dir.write("VERIF_0000.rad", test::begin_card("VERIF") + starter + "/END\n");
   RunResult result{read_deck(path).model, {}};
-  SolverOptions options;
+  SimulationOptions options;
   options.name = "VERIF";
   options.output_directory = dir.path();
   options.write_results = false;
   const Model& model = result.model;
-  if (observer) options.observer = [&](const SolverState& s) { observer(model, s); };
+  if (observer) options.on_history_row = [&](const SolverState& s) { observer(model, s); };
   std::ostringstream console;
   result.summary = run_simulation(result.model, options, console);
   return result;

@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "crumple/contact/contact_state.hpp"
+#include "crumple/state/contact_state.hpp"
 #include "crumple/model/model.hpp"
-#include "crumple/solver/nodal_state.hpp"
+#include "crumple/state/nodal_state.hpp"
 
 namespace crumple::contact {
 

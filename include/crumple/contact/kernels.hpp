@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "crumple/core/vec3.hpp"
+#include "crumple/state/contact_state.hpp"
 
 namespace crumple::contact {
 
@@ -68,12 +69,7 @@ inline bool friction_cone(double trial[3], double limit) {
   return true;
 }
 
-// Friction laws (eq. C-9a..C-9c): the coefficient for the contact pressure p [P] and the sliding speed v [L/T].
-struct FrictionLaw {
-  int kind = 0;             // Ifric: 0 Coulomb, 1 generalized viscous, 2 Darmstad, 3 Renard
-  double fric = 0.0;        // Fric: Coulomb coefficient, the constant term of Ifric 1
-  double c[6] = {0, 0, 0, 0, 0, 0};  // C1..C6 (dimensions in model/interfaces.hpp)
-};
+// The coefficient of a friction law (eq. C-9a..C-9c) for the contact pressure p [P] and the sliding speed v [L/T].
 inline double friction_coefficient(const FrictionLaw& law, double p, double v) {
   const double* c = law.c;
   double mu = law.fric;
@@ -203,17 +199,7 @@ inline SegmentPoint closest_point_on_segment(const double node[3], const double 
   return s;
 }
 
-// A batch of candidate pairs gathered as structures of arrays (eq. C-1 over pairs): node positions and segment
-// corners in, distance, weights and contact point out. closest_points runs the fan over the batch in one loop
-// without branches, which the compiler vectorises.
-struct PairBatch {
-  static constexpr int kSize = 64;
-  double node[3][kSize];
-  double corner[4][3][kSize];
-  double distance[kSize];
-  double weight[4][kSize];
-  double point[3][kSize];
-};
+// The closest points of a batch of gathered pairs (state/contact_state.hpp, PairBatch), in one vectorised loop.
 void closest_points(PairBatch& batch, int count);
 
 }  // namespace crumple::contact

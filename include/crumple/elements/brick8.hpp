@@ -5,11 +5,11 @@
 // order: 1-4 one face, 5-8 the opposite face (node k + 4 above node k).
 #include <cstddef>
 
-#include "crumple/elements/shell4.hpp"  // GroupStepResult
+#include "crumple/elements/group_result.hpp"
 #include "crumple/materials/hardening.hpp"
 #include "crumple/model/elements.hpp"
-#include "crumple/solver/brick_state.hpp"
-#include "crumple/solver/nodal_state.hpp"
+#include "crumple/state/brick_state.hpp"
+#include "crumple/state/nodal_state.hpp"
 
 namespace crumple {
 

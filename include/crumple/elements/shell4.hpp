@@ -3,11 +3,11 @@
 // integrated Batoz shell (Ishell 12); the 3-node C0 triangle (docs/theory/shell4.md).
 #include <cstdint>
 
+#include "crumple/elements/group_result.hpp"
 #include "crumple/materials/hardening.hpp"
 #include "crumple/model/elements.hpp"
-#include "crumple/solver/nodal_state.hpp"
-#include "crumple/solver/element_status.hpp"
-#include "crumple/solver/shell_state.hpp"
+#include "crumple/state/nodal_state.hpp"
+#include "crumple/state/shell_state.hpp"
 
 namespace crumple {
 
@@ -36,29 +36,6 @@ struct ShellGroupParameters {
   bool thickness_update = false;           // Ithick = 1
   double failure_strain = 0.0;             // plastic strain that deletes the element (0: none)
 };
-
-struct GroupStepResult {
-  double min_dt = 1e300;           // smallest critical step of the group's active elements [T]
-  std::int32_t controlling = -1;   // element (ElementTable index) with that step
-  double internal_energy = 0.0;    // increment of the cycle [M L^2 T^-2]
-  double hourglass_energy = 0.0;   // increment of the cycle
-  std::int32_t failed = 0;         // elements deleted during the cycle
-  std::int32_t inverted = -1;      // an element whose area became zero or negative (-1: none)
-  std::int32_t non_finite = -1;    // an element whose forces became NaN or infinite (-1: none)
-};
-
-// The end of one element's cycle in a kernel: its critical step into the state and the group's result (the
-// smallest and its element), and its deletion when it failed (every kernel closes its elements this way).
-template <class State>
-inline void close_element(State& state, GroupStepResult& result, std::int32_t e, double step, bool failed) {
-  const auto ue = static_cast<std::size_t>(e);
-  state.critical_dt[ue] = step;
-  if (step < result.min_dt) result.min_dt = step, result.controlling = e;
-  if (failed) {
-    state.deleted[ue] = kElementDeleted;
-    ++result.failed;
-  }
-}
 
 // Updates the stresses of the group's elements over the step dt (the velocities of `nodes` act over dt), then
 // adds their internal forces and moments (with a minus sign) to the nodal force and moment accumulators.

@@ -13,9 +13,7 @@
 #include "crumple/output/progress.hpp"
 #include "crumple/output/results_file.hpp"
 #include "crumple/output/run_summary.hpp"
-#include "crumple/solver/run_events.hpp"
-#include "crumple/solver/snapshot.hpp"
-#include "crumple/solver/solver_state.hpp"
+#include "crumple/solver/run_observer.hpp"
 
 namespace crumple {
 
@@ -28,7 +26,7 @@ std::string describe(const RunEvent& event, const Model& model);
 // The status a stop reason gives the run.
 RunStatus status_of(const StopReason& stop);
 
-// What the caller says about the run (from SolverOptions): the listing header and the console progress.
+// What the caller says about the run: the listing header and the console progress.
 struct RunStart {
   std::filesystem::path deck;  // the starter deck (empty: not named)
   // Options of the deck that were skipped or approximated (--skip-unknown, output-only and performance-hint
@@ -37,37 +35,39 @@ struct RunStart {
   ProgressOptions progress;
 };
 
-class RunRecorder {
+// The run's observer that writes it: NAME.out, NAME.h5, NAME.rst and the console's notes, warnings and progress.
+class RunRecorder final : public RunObserver {
  public:
-  // Opens NAME.out and, when `write_results`, NAME.h5 in `directory`. Throws std::runtime_error.
+  // Opens NAME.out and, when `write_results`, NAME.h5 in `directory`; notes, warnings and progress go to `console`
+  // (none: nullptr). Throws std::runtime_error.
   RunRecorder(const Model& model, const std::filesystem::path& directory, const std::string& name,
-              bool write_results);
+              bool write_results, RunStart run = {}, std::ostream* console = nullptr);
 
   // The start of an engine deck from `state`, its kinetic energy up to date. The first time, the listing's run
   // header: the Crumple version, the date, the deck, the working units, the model's counts and the options the
-  // deck reader skipped or approximated; the console progress starts. Then for every engine deck its number and
-  // end time, its start-up notes (also on the console), the table header and the row of cycle 0.
-  void start(const SolverState& state, const RunStart& run, const std::vector<std::string>& notes,
-             std::ostream& console);
+  // deck reader skipped or approximated. Then for every engine deck its number and end time, its start-up notes
+  // (also on the console), the table header and the row of cycle 0.
+  void start(const SolverState& state, const std::vector<std::string>& notes) override;
   // One row of the energy table with the step dt^(n+1/2) of the cycle and what bounds it; nothing when the row of
   // this cycle is printed already (the last cycle of a run is often a /PRINT cycle too).
-  void row(const SolverState& state, double dt, const StepControl& control);
+  void row(const SolverState& state, double dt, const StepControl& control) override;
   // The events of the last cycles as listing lines (warnings also on the console); empties `events.pending`.
-  void events(RunEvents& events);
+  void events(RunEvents& events) override;
   // True when a console progress update is due: one clock read, none while progress is off. The caller brings
   // the kinetic energy up to date, then calls progress().
-  bool progress_due() { return progress_clock_.due(); }
-  void progress(const SolverState& state, double dt, const StepControl& control);
+  bool progress_due() override { return progress_clock_.due(); }
+  void progress(const SolverState& state, double dt, const StepControl& control) override;
   // A field frame of the state, unless the frame of that cycle is written already.
-  void frame(const SolverState& state);
+  void frame(const SolverState& state) override;
   // A history row: the energies, walls, bodies and interfaces, and every /TH dataset; `change` is the cycle's
   // velocity update (accelerations and reactions).
-  void history(const SolverState& state, double dt, const VelocityChange& change = {});
+  void history(const SolverState& state, double dt, const VelocityChange& change) override;
   // The end of an engine deck: the listing's closing lines (termination, deletions, added mass, interfaces,
-  // cycles, time profile); the progress line is cleared.
-  void finish(const SolverState& state, const RunEvents& events, const PhaseTimes& phases, double wall_seconds);
+  // cycles, time profile); the progress line is cleared. Returns the engine deck's summary.
+  RunSummary finish(const SolverState& state, const RunEvents& events, const PhaseTimes& phases, double dt,
+                    double wall_seconds) override;
   // The snapshot to NAME.rst beside the listing (restart_file.hpp), with a listing line.
-  void restart(SolverState& state, ResumeMarks& marks);
+  void restart(SolverState& state, ResumeMarks& marks) override;
   std::filesystem::path restart_file() const { return directory_ / (name_ + ".rst"); }
   // The end of the whole run: the last good state as a frame when it stopped early (unless that cycle's frame is
   // written already), the results file closed.
@@ -83,13 +83,13 @@ class RunRecorder {
   std::filesystem::path directory_;
   std::string name_;
   std::ostream* console_ = nullptr;
+  RunStart run_;
   Listing listing_;
   HistoryChannels channels_;
   std::optional<ResultsFile> results_;
   int engine_decks_ = 0;              // started so far
   long long last_row_cycle_ = -1;     // the cycle of the engine deck's last row
   long long last_frame_cycle_ = -1;   // the last frame's cycle counted over the whole run (cycles_done + cycle)
-  ProgressOptions progress_options_;
   ProgressClock progress_clock_;
   double deck_start_time_ = 0.0;      // simulation time [T] and progress clock [s] when the engine deck started
   double deck_start_wall_ = 0.0;

@@ -5,12 +5,12 @@
 #include <vector>
 
 #include "crumple/core/vec3.hpp"
-#include "crumple/contact/contact_state.hpp"
+#include "crumple/state/contact_state.hpp"
 #include "crumple/elements/brick8.hpp"
 #include "crumple/elements/shell4.hpp"
 #include "crumple/model/model.hpp"
-#include "crumple/solver/nodal_state.hpp"
-#include "crumple/solver/shell_state.hpp"
+#include "crumple/state/nodal_state.hpp"
+#include "crumple/state/shell_state.hpp"
 
 namespace crumple {
 

@@ -8,7 +8,29 @@
 #include <vector>
 
 #include "crumple/core/vec3.hpp"
-#include "crumple/contact/kernels.hpp"
+
+namespace crumple::contact {
+
+// The friction law of an interface (eq. C-9a..C-9c; its coefficient: contact/kernels.hpp, friction_coefficient).
+struct FrictionLaw {
+  int kind = 0;             // Ifric: 0 Coulomb, 1 generalized viscous, 2 Darmstad, 3 Renard
+  double fric = 0.0;        // Fric: Coulomb coefficient, the constant term of Ifric 1
+  double c[6] = {0, 0, 0, 0, 0, 0};  // C1..C6 (dimensions in model/interfaces.hpp)
+};
+
+// A batch of candidate pairs gathered as structures of arrays (eq. C-1 over pairs): node positions and segment
+// corners in, distance, weights and contact point out. closest_points runs the fan over the batch in one loop
+// without branches, which the compiler vectorises. Scratch of the contact pass.
+struct PairBatch {
+  static constexpr int kSize = 64;
+  double node[3][kSize];
+  double corner[4][3][kSize];
+  double distance[kSize];
+  double weight[4][kSize];
+  double point[3][kSize];
+};
+
+}  // namespace crumple::contact
 
 namespace crumple {
 

@@ -1,0 +1,32 @@
+#pragma once
+// What an element kernel returns for one group, and how every kernel closes an element's cycle.
+#include <cstdint>
+
+#include "crumple/state/element_status.hpp"
+
+namespace crumple {
+
+struct GroupStepResult {
+  double min_dt = 1e300;           // smallest critical step of the group's active elements [T]
+  std::int32_t controlling = -1;   // element (ElementTable index) with that step
+  double internal_energy = 0.0;    // increment of the cycle [M L^2 T^-2]
+  double hourglass_energy = 0.0;   // increment of the cycle
+  std::int32_t failed = 0;         // elements deleted during the cycle
+  std::int32_t inverted = -1;      // an element whose area became zero or negative (-1: none)
+  std::int32_t non_finite = -1;    // an element whose forces became NaN or infinite (-1: none)
+};
+
+// The end of one element's cycle in a kernel: its critical step into the state and the group's result (the
+// smallest and its element), and its deletion when it failed (every kernel closes its elements this way).
+template <class State>
+inline void close_element(State& state, GroupStepResult& result, std::int32_t e, double step, bool failed) {
+  const auto ue = static_cast<std::size_t>(e);
+  state.critical_dt[ue] = step;
+  if (step < result.min_dt) result.min_dt = step, result.controlling = e;
+  if (failed) {
+    state.deleted[ue] = kElementDeleted;
+    ++result.failed;
+  }
+}
+
+}  // namespace crumple
