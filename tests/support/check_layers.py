@@ -4,6 +4,7 @@ headers of its own layer and of the layers below it, never of a layer above or b
 
     core -> model -> state -> materials -> elements -> solver -> output -> app
                           \\-> contact ------------/
+                          \\-> parallel -----------/
     core -> model -> deck -> app
 
 Usage: check_layers.py SOURCE_DIR. Prints every include that breaks the order (file, line, include) and exits 1
@@ -21,10 +22,11 @@ BELOW = {
     "materials": {"core", "model", "state"},
     "elements": {"core", "model", "state", "materials"},
     "contact": {"core", "model", "state"},
+    "parallel": {"core", "model", "state"},
     "deck": {"core", "model"},
-    "solver": {"core", "model", "state", "materials", "elements", "contact"},
-    "output": {"core", "model", "state", "materials", "elements", "contact", "solver"},
-    "app": {"core", "model", "state", "materials", "elements", "contact", "solver", "output", "deck"},
+    "solver": {"core", "model", "state", "materials", "elements", "contact", "parallel"},
+    "output": {"core", "model", "state", "materials", "elements", "contact", "parallel", "solver"},
+    "app": {"core", "model", "state", "materials", "elements", "contact", "parallel", "solver", "output", "deck"},
 }
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"')
 
