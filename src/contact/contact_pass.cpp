@@ -279,7 +279,7 @@ double contact_work(ContactState& c, const NodalState& n, const std::vector<doub
 void remove_deleted_elements(ContactState& c, const std::array<const std::vector<std::uint8_t>*, kElementKinds>& deleted) {
   auto is_deleted = [&](std::uint8_t kind, std::int32_t element) {
     const std::vector<std::uint8_t>* flags = deleted[kind];
-    return flags != nullptr && element >= 0 && (*flags)[static_cast<std::size_t>(element)] == kElementDeleted;
+    return flags != nullptr && element >= 0 && element_condition((*flags)[static_cast<std::size_t>(element)]) == kElementDeleted;
   };
   for (ContactInterface& in : c.interfaces) {
     if (in.idel == 0) continue;

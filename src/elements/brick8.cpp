@@ -493,9 +493,11 @@ GroupStepResult brick8_one_point_forces(const ElementTable& table, const Element
   const double G = elastic.shear(), K = elastic.bulk();
   const double wave_modulus = K + 4.0 / 3.0 * G;  // rho c^2 of the dilatational wave
   const bool physical = p.isolid == 24;
+  const bool recording = state.records.on();
 
   for (std::int32_t e = group.begin; e < group.end; ++e) {
     const auto ue = static_cast<std::size_t>(e);
+    if (recording) state.records.clear(ue);  // what the element hands the nodes if it computes nothing
     if (state.deleted[ue]) continue;
     const std::int32_t* n = table.nodes_of(ue);
     Element el;
@@ -572,10 +574,9 @@ GroupStepResult brick8_one_point_forces(const ElementTable& table, const Element
       }
     double check = internal + hourglass_work + stabilisation_work + damping_work;
     for (int a = 0; a < 8; ++a) {
-      const auto k = static_cast<std::size_t>(n[a]);
-      nodes.fx[k] -= fx[a];
-      nodes.fy[k] -= fy[a];
-      nodes.fz[k] -= fz[a];
+      const Vec3 force{fx[a], fy[a], fz[a]};
+      subtract_internal(nodes, static_cast<std::size_t>(n[a]), force);
+      if (recording) record_load(state.records.load_at(ue, a), force);
       check += fx[a] + fy[a] + fz[a];
     }
     if (!std::isfinite(check)) result.non_finite = e;  // a NaN or an infinity stops the run at once
@@ -587,6 +588,7 @@ GroupStepResult brick8_one_point_forces(const ElementTable& table, const Element
     state.hourglass_energy[ue] += viscous_work;
     result.internal_energy += strain_work;
     result.hourglass_energy += viscous_work;
+    if (recording) state.records.internal[ue] = strain_work, state.records.hourglass[ue] = viscous_work;
 
     // Critical step L / (Q + sqrt(Q^2 + c^2)) (eq. B-12), where Q carries the bulk viscosity, and the hourglass
     // damper's own bound 2 m / lambda_max (eq. B-13): hourglass modes carry no stiffness in Isolid 1.
@@ -603,9 +605,11 @@ GroupStepResult brick8_full_forces(const ElementTable& table, const ElementGroup
   GroupStepResult result;
   const materials::SolidElastic elastic{p.young, p.poisson};
   const double wave_modulus = elastic.bulk() + 4.0 / 3.0 * elastic.shear();
+  const bool recording = state.records.on();
 
   for (std::int32_t e = group.begin; e < group.end; ++e) {
     const auto ue = static_cast<std::size_t>(e);
+    if (recording) state.records.clear(ue);  // what the element hands the nodes if it computes nothing
     if (state.deleted[ue]) continue;
     const std::int32_t* n = table.nodes_of(ue);
     Element el;
@@ -677,15 +681,15 @@ GroupStepResult brick8_full_forces(const ElementTable& table, const ElementGroup
     // Pressure forces (sum det J p) B_bar - q V B_bar with B_bar = dV/dx / V (eq. B-10).
     double check = internal + mean_stress;
     for (int a = 0; a < 8; ++a) {
-      const auto k = static_cast<std::size_t>(n[a]);
-      nodes.fx[k] -= fx[a] + mean_stress * bx[a];
-      nodes.fy[k] -= fy[a] + mean_stress * by[a];
-      nodes.fz[k] -= fz[a] + mean_stress * bz[a];
+      const Vec3 force{fx[a] + mean_stress * bx[a], fy[a] + mean_stress * by[a], fz[a] + mean_stress * bz[a]};
+      subtract_internal(nodes, static_cast<std::size_t>(n[a]), force);
+      if (recording) record_load(state.records.load_at(ue, a), force);
       check += fx[a] + fy[a] + fz[a];
     }
     if (!std::isfinite(check)) result.non_finite = e;  // a NaN or an infinity stops the run at once
     state.internal_energy[ue] += internal;
     result.internal_energy += internal;
+    if (recording) state.records.internal[ue] = internal;
 
     const double step = length / (visc.speed + std::sqrt(visc.speed * visc.speed + c * c));
     close_element(state, result, e, step, failed);

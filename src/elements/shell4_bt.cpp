@@ -60,8 +60,10 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
   const int np = p.points;
   constexpr double mean = 1.0 / NN;  // shape function value at the element centre
 
+  const bool recording = state.records.on();
   for (std::int32_t e = group.begin; e < group.end; ++e) {
     const auto ue = static_cast<std::size_t>(e);
+    if (recording) state.records.clear(ue);  // what the element hands the nodes if it computes nothing
     if (state.deleted[ue]) continue;
     const std::int32_t* n = table.nodes_of(ue);
     Vec3 x[NN], v[NN], w[NN];
@@ -277,13 +279,11 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
         mx += gamma[a] * q[3] + shear_moment_x[a] * q[2] + rotation_damping_x[a];
         my += gamma[a] * q[4] + shear_moment_y[a] * q[2] + rotation_damping_y[a];
       }
-      const auto k = static_cast<std::size_t>(n[a]);
-      nodes.fx[k] -= fx * e1.x + fy * e2.x + fz * e3.x;
-      nodes.fy[k] -= fx * e1.y + fy * e2.y + fz * e3.y;
-      nodes.fz[k] -= fx * e1.z + fy * e2.z + fz * e3.z;
-      nodes.mx[k] -= mx * e1.x + my * e2.x;
-      nodes.my[k] -= mx * e1.y + my * e2.y;
-      nodes.mz[k] -= mx * e1.z + my * e2.z;
+      const Vec3 force{fx * e1.x + fy * e2.x + fz * e3.x, fx * e1.y + fy * e2.y + fz * e3.y,
+                       fx * e1.z + fy * e2.z + fz * e3.z};
+      const Vec3 moment{mx * e1.x + my * e2.x, mx * e1.y + my * e2.y, mx * e1.z + my * e2.z};
+      subtract_internal(nodes, static_cast<std::size_t>(n[a]), force, moment);
+      if (recording) record_load(state.records.load_at(ue, a), force, moment);
     }
     // A NaN or an infinity anywhere in the element shows in the sum of its resultants: the run stops at once.
     if (!std::isfinite(nxx + nyy + nxy + mxx + myy + mxy + qx + qy + work)) result.non_finite = e;
@@ -292,6 +292,7 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
     state.hourglass_energy[ue] += hourglass_work;
     result.internal_energy += internal;
     result.hourglass_energy += hourglass_work;
+    if (recording) state.records.internal[ue] = internal, state.records.hourglass[ue] = hourglass_work;
 
     close_element(state, result, e, step, failed);
   }

@@ -187,9 +187,10 @@ void add_point_loads(const LocalElement& l, const GaussPoint& g, const PointGrad
   loads.tying[1] += 0.5 * (1.0 + xi) * q_eta;
 }
 
-// Centre shear (B1, B2 of eq. S-2) and tying loads to the nodes, then everything to global, subtracted.
+// Centre shear (B1, B2 of eq. S-2) and tying loads to the nodes, then everything to global, subtracted (and kept in
+// `record`, 6 values per node, when the run records element loads).
 void apply_loads(const LocalElement& l, const double (&b1)[4], const double (&b2)[4], const TyingPoint (&tying)[4],
-                 NodalLoads& loads, const std::int32_t* n, NodalState& nodes) {
+                 NodalLoads& loads, const std::int32_t* n, NodalState& nodes, double* record) {
   for (int a = 0; a < 4; ++a) {
     loads.f[a].x += loads.in_plane_shear * b2[a];
     loads.f[a].y += loads.in_plane_shear * b1[a];
@@ -206,9 +207,8 @@ void apply_loads(const LocalElement& l, const double (&b1)[4], const double (&b2
   for (int a = 0; a < 4; ++a) {
     const Vec3 force = scaled(f.e1, loads.f[a].x) + scaled(f.e2, loads.f[a].y) + scaled(f.e3, loads.f[a].z);
     const Vec3 moment = scaled(f.e1, loads.m[a].x) + scaled(f.e2, loads.m[a].y) + scaled(f.e3, loads.m[a].z);
-    const auto k = static_cast<std::size_t>(n[a]);
-    nodes.fx[k] -= force.x, nodes.fy[k] -= force.y, nodes.fz[k] -= force.z;
-    nodes.mx[k] -= moment.x, nodes.my[k] -= moment.y, nodes.mz[k] -= moment.z;
+    subtract_internal(nodes, static_cast<std::size_t>(n[a]), force, moment);
+    if (record != nullptr) record_load(record + 6 * a, force, moment);
   }
 }
 
@@ -223,8 +223,10 @@ GroupStepResult shell4_qbat_forces(const ElementTable& table, const ElementGroup
   const Elastic viscous{E / (1.0 - nu * nu), nu};
   const int np = p.points;
 
+  const bool recording = state.records.on();
   for (std::int32_t e = group.begin; e < group.end; ++e) {
     const auto ue = static_cast<std::size_t>(e);
+    if (recording) state.records.clear(ue);  // what the element hands the nodes if it computes nothing
     if (state.deleted[ue]) continue;
     const bool small_strain = p.small_strain || state.small_strain[ue] != 0;
     LocalElement l;
@@ -310,10 +312,11 @@ GroupStepResult shell4_qbat_forces(const ElementTable& table, const ElementGroup
       if (!std::isfinite(u.n[0] + u.n[1] + u.n[2] + u.m[0] + u.m[1] + u.m[2] + q[0] + q[1])) result.non_finite = e;
     }
     if (p.thickness_update && dt > 0.0) state.thickness[ue] = t * std::exp(thickness_strain / weight);
-    apply_loads(l, b1, b2, tying, loads, table.nodes_of(ue), nodes);
+    apply_loads(l, b1, b2, tying, loads, table.nodes_of(ue), nodes, recording ? state.records.load_at(ue, 0) : nullptr);
     if (!std::isfinite(work)) result.non_finite = e;
     state.internal_energy[ue] += work;
     result.internal_energy += work;
+    if (recording) state.records.internal[ue] = work;
     close_element(state, result, e, step, failed);
   }
   return result;

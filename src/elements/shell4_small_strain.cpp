@@ -40,7 +40,8 @@ bool freeze_shape(const ElementTable& table, const ShellGroupParameters& p, cons
 bool shell_switch_to_small_strain(const ElementTable& table, const ShellGroupParameters& p, const NodalState& nodes,
                                   ShellState& state, std::int32_t element) {
   const auto ue = static_cast<std::size_t>(element);
-  if (!p.small_strain_switchable || state.deleted[ue] != 0 || state.small_strain[ue] != 0) return false;
+  if (!p.small_strain_switchable || element_condition(state.deleted[ue]) != kElementActive || state.small_strain[ue] != 0)
+    return false;
   if (table.kind == ElementKind::Shell3) return freeze_shape<3>(table, p, nodes, state, ue);
   return freeze_shape<4>(table, p, nodes, state, ue);
 }

@@ -77,8 +77,8 @@ void add_status_fields(std::vector<FrameField>& out, ElementKind kind, const std
   deleted.name = "deleted", ghost.name = "vtkGhostType";
   for (FrameField* f : {&deleted, &ghost}) f->kind = static_cast<int>(kind), f->is_bytes = true;
   for (std::uint8_t st : status) {
-    deleted.bytes.push_back(st == kElementDeleted ? 1 : 0);
-    ghost.bytes.push_back(st == kElementDeleted ? kHiddenCell : 0);
+    deleted.bytes.push_back(element_condition(st) == kElementDeleted ? 1 : 0);
+    ghost.bytes.push_back(element_condition(st) == kElementDeleted ? kHiddenCell : 0);
   }
   out.push_back(std::move(deleted));
   out.push_back(std::move(ghost));

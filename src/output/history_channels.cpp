@@ -191,7 +191,7 @@ ShellValues shell_values(const Model& m, const SolverState& s, ElementKind kind,
   const ShellElementOutput o = shell_element_output(s.shell_groups[group], state, m.element_groups[group], e);
   const auto ue = static_cast<std::size_t>(e);
   return {{o.n[0], o.n[1], o.n[2]}, {o.m[0], o.m[1], o.m[2]}, o.q[0], o.q[1],
-          state.deleted[ue] == kElementDeleted ? 0.0 : 1.0, state.thickness[ue], o.plastic_strain_lower,
+          element_condition(state.deleted[ue]) == kElementDeleted ? 0.0 : 1.0, state.thickness[ue], o.plastic_strain_lower,
           o.plastic_strain_upper, o.strain_rate};
 }
 
@@ -210,7 +210,7 @@ BrickValues brick_values(const Model& m, const SolverState& s, std::size_t group
   out.volume = geometry::brick_volume(s.nodes.x, s.nodes.y, s.nodes.z, nodes);
   out.density = s.brick_groups[group].density * b.volume0[ue] / out.volume;
   out.ie = b.internal_energy[ue];
-  out.off = b.deleted[ue] == kElementDeleted ? 0.0 : 1.0;
+  out.off = element_condition(b.deleted[ue]) == kElementDeleted ? 0.0 : 1.0;
   return out;
 }
 

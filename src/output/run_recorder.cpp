@@ -27,7 +27,8 @@ std::int64_t part_id_of(const Model& m, ElementKind kind, std::int32_t index) {
 }
 
 long long deleted_count(const std::vector<std::uint8_t>& status) {
-  return std::count(status.begin(), status.end(), kElementDeleted);
+  return std::count_if(status.begin(), status.end(),
+                       [](std::uint8_t st) { return element_condition(st) == kElementDeleted; });
 }
 
 double total_mass(const SolverState& s) {
@@ -132,11 +133,6 @@ std::string describe(const RunEvent& e, const Model& m) {
                          when, e.value);
   }
   return when;
-}
-
-RunStatus status_of(const StopReason& stop) {
-  if (!stop.stopped()) return RunStatus::Normal;
-  return stop.is_limit() || stop.requested() ? RunStatus::Stopped : RunStatus::Error;
 }
 
 RunRecorder::RunRecorder(const Model& model, const std::filesystem::path& directory, const std::string& name,

@@ -48,9 +48,9 @@ long long delete_below_minimum(const ElementGroup& group, SolverState& s, RunEve
   long long count = 0;
   for (std::int32_t e = group.begin; e < group.end; ++e) {
     const auto ue = static_cast<std::size_t>(e);
-    if (deleted[ue]) continue;
+    if (element_condition(deleted[ue]) != kElementActive) continue;
     if (type_scale * critical_dt[ue] < minimum) {
-      deleted[ue] = 1;
+      deleted[ue] = static_cast<std::uint8_t>((deleted[ue] & kElementElsewhere) | kElementDeleted);
       ++count;
       RunEvent event{RunEvent::Kind::ElementDeletedBelowMinimumStep, s.cycle, s.time, group.kind, e};
       event.value = type_scale * critical_dt[ue];
@@ -89,7 +89,7 @@ void switch_below_minimum(const Model& m, std::size_t g, SolverState& s, RunEven
   const auto& critical_dt = brick ? s.bricks.critical_dt : shells.critical_dt;
   for (std::int32_t e = group.begin; e < group.end; ++e) {
     const auto ue = static_cast<std::size_t>(e);
-    if (status[ue] || !(type_scale * critical_dt[ue] < minimum)) continue;
+    if (element_condition(status[ue]) != kElementActive || !(type_scale * critical_dt[ue] < minimum)) continue;
     if (!switch_element(m, g, s, e)) continue;
     ++events.switched_to_small_strain;
     RunEvent event{RunEvent::Kind::ElementSwitchedToSmallStrain, s.cycle, s.time, group.kind, e};
@@ -212,13 +212,73 @@ void record_acceleration(SolverState& s, const VelocityScratch& scratch, double 
 
 double step_scale(const RunControl& run) { return run.dt.scale > 0.0 ? run.dt.scale : 0.9; }
 
-StepBound compute_element_forces(const Model& m, SolverState& s, RunEvents& events, bool& elements_deleted) {
+namespace {
+
+// The groups' results as one domain finds them (GroupStepResult over all of a group's elements): the smallest step
+// with the first element that has it, the last inverted and the last non-finite element, the failed count, and
+// the energies summed in element order from the records (an element that computed nothing recorded zero).
+void share_group_results(const Model& m, SolverState& s, Exchange& exchange) {
+  SolverState::GroupShare& w = s.group_share;
+  const std::size_t groups = m.element_groups.size();
+  for (auto* v : {&w.controlling, &w.last_inverted, &w.last_non_finite, &w.failed}) v->resize(groups);
+  w.min_dt.resize(groups);
+  for (std::size_t g = 0; g < groups; ++g) {
+    const GroupStepResult& r = s.group_results[g];
+    w.min_dt[g] = r.min_dt, w.controlling[g] = r.controlling;
+    w.last_inverted[g] = r.inverted, w.last_non_finite[g] = r.non_finite, w.failed[g] = r.failed;
+  }
+  exchange.min_with_index(w.min_dt, w.controlling);
+  exchange.max(w.last_inverted);
+  exchange.max(w.last_non_finite);
+  exchange.sum(w.failed);
+  for (std::size_t g = 0; g < groups; ++g) {
+    const ElementGroup& group = m.element_groups[g];
+    const ElementRecords& records = element_view(s, group.kind).records;
+    GroupStepResult r;
+    if (w.controlling[g] >= 0) r.min_dt = w.min_dt[g], r.controlling = w.controlling[g];
+    r.inverted = w.last_inverted[g], r.non_finite = w.last_non_finite[g], r.failed = w.failed[g];
+    for (std::int32_t e = group.begin; e < group.end; ++e) {
+      r.internal_energy += records.internal[static_cast<std::size_t>(e)];
+      r.hourglass_energy += records.hourglass[static_cast<std::size_t>(e)];
+    }
+    s.group_results[g] = r;
+  }
+}
+
+}  // namespace
+
+// What one domain computed of its own elements reaches every domain (docs/parallel.md, "Assembly"): their
+// records, critical steps and conditions, then the groups' results as one domain finds them, then every node's sum.
+void share_element_results(const Model& m, SolverState& s, Exchange& exchange) {
+  const Domain& d = s.domain;
+  ElementStateView views[kElementKinds] = {element_view(s, ElementKind::Shell4), element_view(s, ElementKind::Shell3),
+                                           element_view(s, ElementKind::Brick8)};
+  for (int k = 0; k < kElementKinds; ++k) {
+    const std::vector<std::int32_t>& owner = d.owner[static_cast<std::size_t>(k)];
+    ElementStateView& v = views[k];
+    exchange.share(v.records.load, v.records.nodes_per_element * v.records.values_per_node, owner);
+    exchange.share(v.records.internal, 1, owner);
+    exchange.share(v.records.hourglass, 1, owner);
+    exchange.share(v.critical_dt, 1, owner);
+    exchange.share(v.status, 1, owner);  // the owner's condition, without the flag
+    for (std::size_t e = 0; e < owner.size(); ++e)
+      if (owner[e] != d.index) v.status[e] = static_cast<std::uint8_t>(v.status[e] | kElementElsewhere);
+  }
+  share_group_results(m, s, exchange);
+  assemble_element_loads(d, s.shells, s.shells3, s.bricks, s.nodes);
+}
+
+void run_element_kernels(const Model& m, SolverState& s) {
   s.nodes.clear_forces();
+  for (std::size_t g = 0; g < m.element_groups.size(); ++g) s.group_results[g] = group_forces(m, s, g);
+}
+
+StepBound combine_group_results(const Model& m, SolverState& s, RunEvents& events, bool& elements_deleted) {
   StepBound bound;
   const double scale = step_scale(m.run);
   for (std::size_t g = 0; g < m.element_groups.size(); ++g) {
     const ElementGroup& group = m.element_groups[g];
-    GroupStepResult r = group_forces(m, s, g);  // r.min_dt: the unscaled critical step
+    GroupStepResult& r = s.group_results[g];  // r.min_dt: the unscaled critical step
     s.energy.internal += r.internal_energy;
     elements_deleted = elements_deleted || r.failed > 0;
     s.energy.hourglass += r.hourglass_energy;
@@ -234,6 +294,13 @@ StepBound compute_element_forces(const Model& m, SolverState& s, RunEvents& even
   }
   record_internal_forces(s);
   return bound;
+}
+
+StepBound compute_element_forces(const Model& m, SolverState& s, RunEvents& events, bool& elements_deleted,
+                                  Exchange* exchange) {
+  run_element_kernels(m, s);
+  if (s.domain.several()) share_element_results(m, s, *exchange);
+  return combine_group_results(m, s, events, elements_deleted);
 }
 
 void compute_contact_forces(const Model& m, SolverState& s, RunEvents& events, bool elements_deleted,

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "crumple/model/model.hpp"
+#include "crumple/parallel/exchange.hpp"
 #include "crumple/solver/run_events.hpp"
 #include "crumple/solver/solver_state.hpp"
 
@@ -33,7 +34,16 @@ double step_scale(const RunControl& run);
 // 1. Element internal forces at x^n and the element critical steps; per-type step control (/DT/<type>): elements
 // below their minimum are deleted, switched to small strain, or stop the run. Returns the scaled bound; sets
 // `elements_deleted` when an element failed or was deleted this cycle.
-StepBound compute_element_forces(const Model& model, SolverState& state, RunEvents& events, bool& elements_deleted);
+StepBound compute_element_forces(const Model& model, SolverState& state, RunEvents& events, bool& elements_deleted,
+                                  Exchange* exchange);
+// Its two halves: every group's kernel (SolverState::group_results, the nodal sums), then the groups' results in
+// model order: energies, stops, the per-type step control and the bound. A group's step control touches only its
+// own elements, so the halves give what one pass group by group gives.
+void run_element_kernels(const Model& model, SolverState& state);
+// Between them in a run of several domains (docs/parallel.md, "Assembly"): what each domain computed of its own
+// elements reaches every domain, and every node's sum is assembled in the model's order.
+void share_element_results(const Model& model, SolverState& state, Exchange& exchange);
+StepBound combine_group_results(const Model& model, SolverState& state, RunEvents& events, bool& elements_deleted);
 
 // 1b. Contact at x^n with v^(n-1/2), when the model has interfaces: the interface step joins `bound`.
 void compute_contact_forces(const Model& model, SolverState& state, RunEvents& events, bool elements_deleted,

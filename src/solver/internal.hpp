@@ -28,7 +28,7 @@ void for_each_load_node(const Model& m, std::int32_t group, F f) {
 }
 
 // Start state of a run; `notes` receives start-up remarks for the listing and the console.
-SolverState make_state(const Model& model, std::vector<std::string>& notes);
+SolverState make_state(const Model& model, std::vector<std::string>& notes, Domain domain);
 void setup_rigid_bodies(const Model& model, SolverState& state);
 // Brick groups' parameters and state (setup_bricks.cpp, docs/theory/brick8.md).
 void setup_bricks(const Model& model, SolverState& state);

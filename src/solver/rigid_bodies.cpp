@@ -192,12 +192,12 @@ void mark_elements_in_rigid_bodies(const Model& m, SolverState& s) {
                                                                             : s.shells3.deleted;
     const int n = nodes_per_element(table.kind);
     for (std::size_t e = 0; e < table.size(); ++e) {
-      if (status[e] == kElementDeleted) continue;
+      if (element_condition(status[e]) == kElementDeleted) continue;
       const std::int32_t* nodes = table.nodes_of(e);
       const std::int32_t owner = s.rigid_owner[static_cast<std::size_t>(nodes[0])];
       bool inside = owner >= 0 && s.bodies[static_cast<std::size_t>(owner)].active;
       for (int a = 1; a < n && inside; ++a) inside = s.rigid_owner[static_cast<std::size_t>(nodes[a])] == owner;
-      status[e] = inside ? kElementInRigidBody : kElementActive;
+      status[e] = static_cast<std::uint8_t>((status[e] & kElementElsewhere) | (inside ? kElementInRigidBody : kElementActive));
     }
   }
 }

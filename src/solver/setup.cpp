@@ -129,7 +129,25 @@ void setup_through_thickness_rules(SolverState& s) {
 
 }  // namespace
 
-SolverState make_state(const Model& m, std::vector<std::string>& notes) {
+// One domain of a run of several (docs/parallel.md): the elements of the other domains are marked as computed
+// elsewhere (the kernels skip them), and every element's loads and energies are recorded for the assembly.
+void take_domain(const Model& m, SolverState& s, Domain domain) {
+  s.domain = std::move(domain);
+  if (!s.domain.several()) return;
+  std::array<ShellState*, 2> shells{&s.shells, &s.shells3};
+  for (int k = 0; k < kElementKinds; ++k) {
+    const auto kind = static_cast<ElementKind>(k);
+    const std::size_t n = m.elements[static_cast<std::size_t>(k)].size();
+    const bool brick = kind == ElementKind::Brick8;
+    std::vector<std::uint8_t>& status = brick ? s.bricks.deleted : shells[static_cast<std::size_t>(k)]->deleted;
+    ElementRecords& records = brick ? s.bricks.records : shells[static_cast<std::size_t>(k)]->records;
+    records.start(n, nodes_per_element(kind), brick ? 3 : 6);
+    for (std::size_t e = 0; e < n; ++e)
+      if (!s.domain.mine(kind, e)) status[e] |= kElementElsewhere;
+  }
+}
+
+SolverState make_state(const Model& m, std::vector<std::string>& notes, Domain domain) {
   SolverState s;
   setup_nodes(m, s);
   if (!m.type7_interfaces.empty()) {
@@ -142,6 +160,8 @@ SolverState make_state(const Model& m, std::vector<std::string>& notes) {
   setup_shells(m, s, ElementKind::Shell4);
   setup_shells(m, s, ElementKind::Shell3);
   setup_bricks(m, s);
+  s.group_results.assign(m.element_groups.size(), GroupStepResult{});
+  take_domain(m, s, std::move(domain));
   setup_rigid_bodies(m, s);
   setup_rigid_walls(m, s);
   s.mass_initial = 0.0;

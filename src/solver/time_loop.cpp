@@ -83,7 +83,7 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunObse
   };
   for (;;) {
     bool elements_deleted = false;
-    StepBound bound = compute_element_forces(m, s, events, elements_deleted);
+    StepBound bound = compute_element_forces(m, s, events, elements_deleted, options.exchange);
     keep(bound);
     clock.lap(phases.elements);
     if (events.stop.stopped()) break;
@@ -141,7 +141,13 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunObse
   return observer.finish(s, events, phases, dt_next, wall);
 }
 
-SolverState initial_state(const Model& m, std::vector<std::string>& notes) { return solver::make_state(m, notes); }
+SolverState initial_state(const Model& m, std::vector<std::string>& notes) {
+  return solver::make_state(m, notes, single_domain(m));
+}
+
+SolverState initial_state(const Model& m, std::vector<std::string>& notes, Domain domain) {
+  return solver::make_state(m, notes, std::move(domain));
+}
 
 void continue_from(SolverState& s) {
   s.cycles_done += s.cycle;

@@ -14,7 +14,7 @@ template <class State>
 void add_element_stiffness(const ElementTable& table, const State& st, std::vector<double>& k) {
   const int n = nodes_per_element(table.kind);
   for (std::size_t e = 0; e < table.size(); ++e) {
-    if (st.deleted[e] || !(st.critical_dt[e] > 0.0)) continue;
+    if (element_condition(st.deleted[e]) != kElementActive || !(st.critical_dt[e] > 0.0)) continue;
     const double share = 2.0 * st.mass[e] / n / (st.critical_dt[e] * st.critical_dt[e]);
     const std::int32_t* nodes = table.nodes_of(e);
     for (int a = 0; a < n; ++a) k[static_cast<std::size_t>(nodes[a])] += share;

@@ -2,7 +2,7 @@
 // is left leave the secondary set; with Idel 0 nothing leaves.
 #include "contact_cards.hpp"
 #include "crumple/contact/contact.hpp"
-#include "solver/internal.hpp"  // solver::make_state (the start state of a run)
+#include "crumple/solver/solver.hpp"  // initial_state (the start state of a run)
 
 namespace crumple::verification {
 namespace {
@@ -22,7 +22,7 @@ SolverState start(int idel, Model& model) {
   test::TempDir dir;
   model = read_deck(dir.write("I_0000.rad", test::begin_card("I") + starter + "/END\n")).model;
   std::vector<std::string> notes;
-  return solver::make_state(model, notes);
+  return initial_state(model, notes);
 }
 
 std::size_t active(const std::vector<std::uint8_t>& flags) {

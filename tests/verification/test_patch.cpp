@@ -14,7 +14,7 @@
 #include <cmath>
 
 #include "crumple/elements/shell4.hpp"
-#include "solver/internal.hpp"  // solver::make_state (the start state of a run)
+#include "crumple/solver/solver.hpp"  // initial_state (the start state of a run)
 #include "verification_support.hpp"
 
 namespace crumple::verification {
@@ -61,7 +61,7 @@ std::array<double, 3> to_global(const std::array<double, 3>& t, double c, double
           c * s * (t[0] - t[1]) + (c * c - s * s) * t[2]};
 }
 
-// The patch read from a generated deck, with the solver's own start state (solver::make_state) so that the
+// The patch read from a generated deck, with the solver's own start state (initial_state) so that the
 // kernel sees exactly what the time loop gives it.
 struct Patch {
   Model model;
@@ -83,7 +83,7 @@ struct Patch {
   }
   static SolverState start(const Model& m) {
     std::vector<std::string> notes;
-    return solver::make_state(m, notes);
+    return initial_state(m, notes);
   }
   std::size_t node(long long id) const { return node_index(model, id); }
   void step(double dt) {

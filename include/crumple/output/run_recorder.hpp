@@ -23,8 +23,6 @@ std::string describe(const StepControl& control, const Model& model);
 std::string describe(const StopReason& stop, const Model& model);
 // The listing line of an event.
 std::string describe(const RunEvent& event, const Model& model);
-// The status a stop reason gives the run.
-RunStatus status_of(const StopReason& stop);
 
 // What the caller says about the run: the listing header and the console progress.
 struct RunStart {

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "crumple/solver/run_events.hpp"
+
 namespace crumple {
 
 enum class RunStatus { Normal, Error, Stopped };
@@ -64,5 +66,12 @@ struct RunSummary {
   // options skipped on --skip-unknown), one line each; "approximations" in the JSON. Filled by the app.
   std::vector<std::string> approximations;
 };
+
+// The status a stop reason gives the run: a /STOP limit or a stop on request ends it "stopped", anything else
+// that stops it (NaN, an inverted element, a step below its minimum) is an error.
+inline RunStatus status_of(const StopReason& stop) {
+  if (!stop.stopped()) return RunStatus::Normal;
+  return stop.is_limit() || stop.requested() ? RunStatus::Stopped : RunStatus::Error;
+}
 
 }  // namespace crumple

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "crumple/model/model.hpp"
+#include "crumple/parallel/exchange.hpp"
 #include "crumple/solver/run_observer.hpp"
 
 namespace crumple {
@@ -23,10 +24,15 @@ struct SolverOptions {
   // Optional: the run stops at the end of the first cycle that finds it nonzero (status stopped, the last state
   // written); the value is kept as the reason, a signal number. The app points it at its SIGINT and SIGTERM flag.
   const std::atomic<int>* stop_request = nullptr;
+  // A run of several domains: how this domain talks to the others (parallel/exchange.hpp); none for one domain.
+  Exchange* exchange = nullptr;
 };
 
 // The state of a model before its first cycle; `notes` receives the start-up remarks for the listing.
 SolverState initial_state(const Model& model, std::vector<std::string>& notes);
+// The same for one domain of a run of several (docs/parallel.md): it computes its own elements only, and its
+// options' exchange shares them with the other domains every cycle.
+SolverState initial_state(const Model& model, std::vector<std::string>& notes, Domain domain);
 
 // One engine deck from `state` (a fresh state, or the state a previous engine deck left: the snapshot a
 // continued run carries on) to the end time of `model.run`, reported to `observer`. `state` is left at the end of

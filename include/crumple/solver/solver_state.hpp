@@ -9,6 +9,7 @@
 #include "crumple/elements/brick8.hpp"
 #include "crumple/elements/shell4.hpp"
 #include "crumple/model/model.hpp"
+#include "crumple/parallel/domain.hpp"
 #include "crumple/state/nodal_state.hpp"
 #include "crumple/state/shell_state.hpp"
 
@@ -90,7 +91,28 @@ struct SolverState {
   double mass_initial = 0.0;
   double mass_added = 0.0;         // mass added by /DT/NODA/CST [M]
   std::vector<double> nodal_stiffness;  // scratch of the nodal time step: sum of element stiffness estimates
+  std::vector<GroupStepResult> group_results;  // scratch of the element phase: per element group of the model
+  Domain domain;  // the elements this state computes: all of them, or one domain's of a run of several
+  // Scratch of the element phase's exchange (several domains only): per element group, its smallest step and the
+  // element that has it, the last element that inverted and the last with NaN forces, and the failed count.
+  struct GroupShare {
+    std::vector<double> min_dt;
+    std::vector<std::int32_t> controlling, last_inverted, last_non_finite, failed;
+  } group_share;
   RecordedNodalResults recorded;
 };
+
+// What every element kind has per element, for code that treats the kinds alike: the status byte
+// (state/element_status.hpp), the critical step of the last cycle and the records of a run of several domains.
+struct ElementStateView {
+  std::vector<std::uint8_t>& status;
+  std::vector<double>& critical_dt;
+  ElementRecords& records;
+};
+inline ElementStateView element_view(SolverState& s, ElementKind kind) {
+  if (kind == ElementKind::Brick8) return {s.bricks.deleted, s.bricks.critical_dt, s.bricks.records};
+  ShellState& shells = kind == ElementKind::Shell4 ? s.shells : s.shells3;
+  return {shells.deleted, shells.critical_dt, shells.records};
+}
 
 }  // namespace crumple

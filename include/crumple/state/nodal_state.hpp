@@ -4,6 +4,8 @@
 #include <cstddef>
 #include <vector>
 
+#include "crumple/core/vec3.hpp"
+
 namespace crumple {
 
 struct NodalState {
@@ -24,6 +26,16 @@ struct NodalState {
     for (auto* v : {&fx, &fy, &fz, &mx, &my, &mz}) std::fill(v->begin(), v->end(), 0.0);
   }
 };
+
+// The one place element kernels hand node k its share of the element's internal force f (and moment m): the nodal
+// sums take it with a minus sign (external minus internal).
+inline void subtract_internal(NodalState& n, std::size_t k, const Vec3& f) {
+  n.fx[k] -= f.x, n.fy[k] -= f.y, n.fz[k] -= f.z;
+}
+inline void subtract_internal(NodalState& n, std::size_t k, const Vec3& f, const Vec3& m) {
+  n.fx[k] -= f.x, n.fy[k] -= f.y, n.fz[k] -= f.z;
+  n.mx[k] -= m.x, n.my[k] -= m.y, n.mz[k] -= m.z;
+}
 
 // The velocity update of the last cycle as the time loop leaves it, for outputs (docs/output-format.md,
 // "/history/th"): the accelerations a^n = (v^(n+1/2) - before) / dt and the reactions of the kinematic conditions

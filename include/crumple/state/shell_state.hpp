@@ -7,6 +7,8 @@
 #include <limits>
 #include <vector>
 
+#include "crumple/state/element_records.hpp"
+
 namespace crumple {
 
 struct ShellState {
@@ -35,6 +37,7 @@ struct ShellState {
   std::vector<double> mass;             // element mass [M] (nodal stiffness estimate of the nodal time step)
   std::vector<double> hourglass_energy; // [M L^2 T^-2]
   std::vector<std::uint8_t> deleted;    // 1 once the element has failed
+  ElementRecords records;               // the last cycle's loads and energies per element (several domains only)
 
   // Sizes the per-element arrays for n elements of the given thickness, every other value zero.
   void resize_elements(std::size_t n, double initial_thickness) {

@@ -1,0 +1,29 @@
+#pragma once
+// How domains talk (docs/parallel.md, "Exchange"): the time loop calls it at one point of the cycle, after the
+// element kernels, to share what each domain computed of its own elements, and to reduce the element groups'
+// results. Two transports: threads in one process (ThreadExchange, the tests of the seams) and MPI ranks
+// (MpiExchange). A run of one domain has none.
+#include <cstdint>
+#include <vector>
+
+namespace crumple {
+
+class Exchange {
+ public:
+  virtual ~Exchange() = default;
+  virtual int domain() const = 0;
+  virtual int domains() const = 0;
+
+  // Element values: `values` holds `width` values per element of one kind; `owner` the domain of each element.
+  // Each domain fills the slots of its own elements; after the call every domain holds every owner's slots.
+  virtual void share(std::vector<double>& values, int width, const std::vector<std::int32_t>& owner) = 0;
+  virtual void share(std::vector<std::uint8_t>& values, int width, const std::vector<std::int32_t>& owner) = 0;
+
+  // Slot-wise reductions over the domains, in place (the same length in every domain): the smallest value with
+  // the smallest index among equal values (index -1: no value, +infinity); the largest; the sum.
+  virtual void min_with_index(std::vector<double>& value, std::vector<std::int32_t>& index) = 0;
+  virtual void max(std::vector<std::int32_t>& values) = 0;
+  virtual void sum(std::vector<std::int32_t>& values) = 0;
+};
+
+}  // namespace crumple

@@ -1,0 +1,46 @@
+#pragma once
+// What each element handed its nodes and the energy balance in the last cycle, kept only when a run has several
+// domains: every node's sum is then assembled from these records in one fixed order, the same for any partition
+// (docs/parallel.md, "Assembly"). In a run of one domain the records are empty and the kernels add their forces to
+// the nodes directly, in the same order.
+#include <cstddef>
+#include <vector>
+
+#include "crumple/core/vec3.hpp"
+
+namespace crumple {
+
+struct ElementRecords {
+  int nodes_per_element = 4;
+  int values_per_node = 6;  // shells: force x y z, moment x y z; bricks: force x y z
+  // Per element, node and value: what the kernel subtracted from the node's sums [F], [F L].
+  std::vector<double> load;
+  // Per element: this cycle's increments of its internal and hourglass energy [E].
+  std::vector<double> internal, hourglass;
+
+  bool on() const { return !load.empty(); }
+  void start(std::size_t elements, int nodes, int values) {
+    nodes_per_element = nodes, values_per_node = values;
+    load.assign(elements * static_cast<std::size_t>(nodes * values), 0.0);
+    internal.assign(elements, 0.0), hourglass.assign(elements, 0.0);
+  }
+  double* load_at(std::size_t element, int node) {
+    return load.data() + (element * static_cast<std::size_t>(nodes_per_element) + static_cast<std::size_t>(node)) *
+                             static_cast<std::size_t>(values_per_node);
+  }
+  // An element that computed nothing this cycle (deleted, carried by a rigid body) hands the nodes nothing.
+  void clear(std::size_t element) {
+    double* v = load_at(element, 0);
+    for (int i = 0; i < nodes_per_element * values_per_node; ++i) v[i] = 0.0;
+    internal[element] = hourglass[element] = 0.0;
+  }
+};
+
+// Keeps a node's load in its record (`at`: ElementRecords::load_at).
+inline void record_load(double* at, const Vec3& force) { at[0] = force.x, at[1] = force.y, at[2] = force.z; }
+inline void record_load(double* at, const Vec3& force, const Vec3& moment) {
+  record_load(at, force);
+  at[3] = moment.x, at[4] = moment.y, at[5] = moment.z;
+}
+
+}  // namespace crumple

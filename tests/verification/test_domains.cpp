@@ -1,0 +1,142 @@
+// The seams of the parallel solver (docs/parallel.md): a deck run as one domain and as two and three domains,
+// each a thread of this process with its own state, exchanging through ThreadExchange. Every domain must end with
+// the one domain's nodes, energies, time and cycles bit for bit, and each element's state must be its owner's.
+// The partitions are the hardest there are for the assembly: elements dealt round-robin, so that nearly every node
+// is shared, and in blocks.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <thread>
+
+#include "crumple/deck/reader.hpp"
+#include "crumple/parallel/thread_exchange.hpp"
+#include "crumple/solver/quiet_observer.hpp"
+#include "crumple/solver/solver.hpp"
+#include "deck_files.hpp"
+
+namespace crumple {
+namespace {
+
+const std::filesystem::path kQa = CRUMPLE_QA_DIR;
+
+// Element e of each kind to domain e % domains (round-robin) or to e * domains / n (blocks).
+Partition test_partition(const Model& m, int domains, bool round_robin) {
+  Partition p;
+  p.domains = domains;
+  for (int k = 0; k < kElementKinds; ++k) {
+    const std::size_t n = m.elements[static_cast<std::size_t>(k)].size();
+    auto& owner = p.domain_of_element[static_cast<std::size_t>(k)];
+    owner.resize(n);
+    for (std::size_t e = 0; e < n; ++e)
+      owner[e] = static_cast<std::int32_t>(round_robin ? e % static_cast<std::size_t>(domains)
+                                                       : e * static_cast<std::size_t>(domains) / n);
+  }
+  return p;
+}
+
+struct DomainRun {
+  SolverState state;
+  RunSummary summary;
+};
+
+DomainRun run_domain(const Model& m, Domain domain, Exchange* exchange) {
+  std::vector<std::string> notes;
+  DomainRun r{initial_state(m, notes, std::move(domain)), {}};
+  SolverOptions options;
+  options.exchange = exchange;
+  QuietObserver quiet;
+  r.summary = run_engine_deck(m, options, quiet, r.state, notes);
+  return r;
+}
+
+std::vector<DomainRun> run_domains(const Model& m, const Partition& p) {
+  ThreadBoard board(p.domains);
+  std::vector<ThreadExchange> exchanges;
+  for (int d = 0; d < p.domains; ++d) exchanges.emplace_back(board, d);
+  std::vector<DomainRun> runs(static_cast<std::size_t>(p.domains));
+  std::vector<std::thread> threads;
+  for (int d = 0; d < p.domains; ++d)
+    threads.emplace_back([&, d] {
+      runs[static_cast<std::size_t>(d)] = run_domain(m, make_domain(m, p, d), &exchanges[static_cast<std::size_t>(d)]);
+    });
+  for (std::thread& t : threads) t.join();
+  return runs;
+}
+
+bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
+  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0);
+}
+bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+void expect_same_nodes_and_energies(const DomainRun& one, const DomainRun& domain, int d) {
+  const NodalState &a = one.state.nodes, &b = domain.state.nodes;
+  const std::pair<const char*, const std::vector<double>*> fields[][2] = {
+      {{"x", &a.x}, {"x", &b.x}}, {{"y", &a.y}, {"y", &b.y}}, {{"z", &a.z}, {"z", &b.z}},
+      {{"vx", &a.vx}, {"vx", &b.vx}}, {{"vy", &a.vy}, {"vy", &b.vy}}, {{"vz", &a.vz}, {"vz", &b.vz}},
+      {{"wx", &a.wx}, {"wx", &b.wx}}, {{"wy", &a.wy}, {"wy", &b.wy}}, {{"wz", &a.wz}, {"wz", &b.wz}},
+      {{"fx", &a.fx}, {"fx", &b.fx}}, {{"mx", &a.mx}, {"mx", &b.mx}}, {{"mass", &a.mass}, {"mass", &b.mass}}};
+  for (const auto& f : fields) EXPECT_TRUE(same_bits(*f[0].second, *f[1].second)) << "domain " << d << ": nodes " << f[0].first;
+  const EnergyBalanceState &ea = one.state.energy, &eb = domain.state.energy;
+  EXPECT_TRUE(same_bits(ea.internal, eb.internal)) << "domain " << d << ": " << ea.internal << " " << eb.internal;
+  EXPECT_TRUE(same_bits(ea.hourglass, eb.hourglass)) << "domain " << d;
+  EXPECT_TRUE(same_bits(ea.kinetic_translational, eb.kinetic_translational)) << "domain " << d;
+  EXPECT_TRUE(same_bits(ea.kinetic_rotational, eb.kinetic_rotational)) << "domain " << d;
+  EXPECT_TRUE(same_bits(ea.contact, eb.contact)) << "domain " << d;
+  EXPECT_TRUE(same_bits(ea.external_work, eb.external_work)) << "domain " << d;
+  EXPECT_TRUE(same_bits(one.state.time, domain.state.time)) << "domain " << d;
+  EXPECT_EQ(one.state.cycle, domain.state.cycle) << "domain " << d;
+  EXPECT_EQ(one.summary.status, domain.summary.status) << "domain " << d;
+}
+
+// Each element's energy and condition in the domain that computes it.
+void expect_own_elements(const Model& m, const DomainRun& one, const DomainRun& domain, const Domain& d) {
+  auto check = [&](ElementKind kind, const std::vector<double>& ie_one, const std::vector<double>& ie_domain,
+                   const std::vector<std::uint8_t>& status_one, const std::vector<std::uint8_t>& status_domain) {
+    for (std::size_t e = 0; e < m.elements[static_cast<std::size_t>(kind)].size(); ++e) {
+      EXPECT_EQ(element_condition(status_one[e]), element_condition(status_domain[e])) << "element " << e;
+      if (d.mine(kind, e)) {
+        EXPECT_TRUE(same_bits(ie_one[e], ie_domain[e])) << "domain " << d.index << " element " << e;
+      }
+    }
+  };
+  check(ElementKind::Shell4, one.state.shells.internal_energy, domain.state.shells.internal_energy,
+        one.state.shells.deleted, domain.state.shells.deleted);
+  check(ElementKind::Shell3, one.state.shells3.internal_energy, domain.state.shells3.internal_energy,
+        one.state.shells3.deleted, domain.state.shells3.deleted);
+  check(ElementKind::Brick8, one.state.bricks.internal_energy, domain.state.bricks.internal_energy,
+        one.state.bricks.deleted, domain.state.bricks.deleted);
+}
+
+struct DomainCase {
+  const char* folder;
+  const char* deck;
+};
+
+class Domains : public ::testing::TestWithParam<DomainCase> {};
+
+TEST_P(Domains, TwoAndThreeDomainsEndBitForBitWhereOneEnds) {
+  const DomainCase& c = GetParam();
+  const Model m = read_deck(kQa / c.folder / (std::string(c.deck) + "_0000.rad")).model;
+  const DomainRun one = run_domain(m, single_domain(m), nullptr);
+  ASSERT_GT(one.state.cycle, 10);
+  for (const auto& [domains, round_robin] : {std::pair{2, true}, std::pair{3, false}, std::pair{3, true}}) {
+    SCOPED_TRACE(testing::Message() << domains << " domains, " << (round_robin ? "round-robin" : "blocks"));
+    const Partition p = test_partition(m, domains, round_robin);
+    const std::vector<DomainRun> runs = run_domains(m, p);
+    for (int d = 0; d < domains; ++d) {
+      const DomainRun& r = runs[static_cast<std::size_t>(d)];
+      expect_same_nodes_and_energies(one, r, d);
+      expect_own_elements(m, one, r, make_domain(m, p, d));
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Shared, Domains,
+                         ::testing::Values(DomainCase{"box_crush", "BOX1BL"}, DomainCase{"crash_triangles", "TRITUBV4"},
+                                           DomainCase{"brick_bending_isolid24", "CONV_ELS"},
+                                           DomainCase{"twisted_beam", "TWISBEAM"}, DomainCase{"contact_idel", "IDEL8"},
+                                           DomainCase{"ball_on_wall", "BOULE1V4"}),
+                         [](const testing::TestParamInfo<DomainCase>& c) { return std::string(c.param.folder); });
+
+}  // namespace
+}  // namespace crumple
