@@ -133,11 +133,21 @@ constexpr std::array<S, 3> kSectionFN{"FNX", "FNY", "FNZ"}, kSectionFT{"FTX", "F
 constexpr std::array<G, 5> kSectionGroups{
     {{"DEF", kSectionDef}, {"FN", kSectionFN}, {"FT", kSectionFT}, {"M", kSectionM}, {"CENTER", kSectionCenter}}};
 
+// ---- /TH/ACCEL: the accelerometer's filtered acceleration and the integral of its raw acceleration. The manual's
+// groups table reads "DEF W"; the reference starter lists DEF as AX AY AZ (its listing of the QA deck
+// rbody_rotation: "3 VAR ... AX AY AZ"), so W is the integrals.
+constexpr std::array<V, 6> kAccelerometer{{
+    {"AX", "L/T^2", kAcceleration, true}, {"AY", "L/T^2", kAcceleration, true}, {"AZ", "L/T^2", kAcceleration, true},
+    {"WX", "L/T", kVelocity, true},       {"WY", "L/T", kVelocity, true},       {"WZ", "L/T", kVelocity, true}}};
+constexpr std::array<S, 3> kAccelerometerDef{"AX", "AY", "AZ"}, kAccelerometerW{"WX", "WY", "WZ"};
+constexpr std::array<G, 2> kAccelerometerGroups{{{"DEF", kAccelerometerDef}, {"W", kAccelerometerW}}};
+
 constexpr HistoryKind kNodeKind{"NODE", kNode, kNodeGroups}, kPartKind{"PART", kPart, kPartGroups},
     kSubsetKind{"SUBS", kPart, kPartGroups}, kShellKind{"SHEL", kShell, kShellGroups},
     kSh3nKind{"SH3N", kShell, kShellGroups}, kBrickKind{"BRIC", kBrick, kBrickGroups},
     kInterfaceKind{"INTER", kInterface, kInterfaceGroups}, kWallKind{"RWALL", kWall, kWallGroups},
-    kBodyKind{"RBODY", kBody, kBodyGroups}, kSectionKind{"SECTIO", kSection, kSectionGroups};
+    kBodyKind{"RBODY", kBody, kBodyGroups}, kSectionKind{"SECTIO", kSection, kSectionGroups},
+    kAccelerometerKind{"ACCEL", kAccelerometer, kAccelerometerGroups};
 
 const HistoryVariable* find_variable(const HistoryKind& kind, std::string_view name) {
   for (const HistoryVariable& v : kind.variables)
@@ -159,6 +169,7 @@ const HistoryKind& history_kind(HistoryObject object) {
     case HistoryObject::RigidWall: return kWallKind;
     case HistoryObject::RigidBody: return kBodyKind;
     case HistoryObject::Section: return kSectionKind;
+    case HistoryObject::Accelerometer: return kAccelerometerKind;
   }
   return kNodeKind;
 }

@@ -108,6 +108,14 @@ constexpr Evaluator<R> kBody[] = {
     {"MX", component<R, &R::m, 0>}, {"MY", component<R, &R::m, 1>}, {"MZ", component<R, &R::m, 2>},
     {"RX", component<R, &R::r, 0>}, {"RY", component<R, &R::r, 1>}, {"RZ", component<R, &R::r, 2>}};
 
+struct AccelerometerValues {
+  V3 a, w;  // filtered acceleration [L/T^2], integral of the raw acceleration [L/T]
+};
+using A = AccelerometerValues;
+constexpr Evaluator<A> kAccelerometer[] = {
+    {"AX", component<A, &A::a, 0>}, {"AY", component<A, &A::a, 1>}, {"AZ", component<A, &A::a, 2>},
+    {"WX", component<A, &A::w, 0>}, {"WY", component<A, &A::w, 1>}, {"WZ", component<A, &A::w, 2>}};
+
 // The evaluator of `name` for a kind of object, or -1 when Crumple computes no such variable.
 template <class Values, std::size_t Count>
 int find(const Evaluator<Values> (&table)[Count], std::string_view name) {
@@ -127,6 +135,7 @@ int evaluator_of(HistoryObject object, std::string_view name) {
     case HistoryObject::Interface:
     case HistoryObject::RigidWall: return find(kForces, name);
     case HistoryObject::RigidBody: return find(kBody, name);
+    case HistoryObject::Accelerometer: return find(kAccelerometer, name);
     case HistoryObject::Section: return -1;
   }
   return -1;
@@ -148,6 +157,7 @@ std::string object_title(const Model& m, const TimeHistoryRequest& th, std::size
     case HistoryObject::RigidBody: return m.rigid_bodies[at].title;
     case HistoryObject::Interface: return m.type7_interfaces[at].title;
     case HistoryObject::Section: return m.sections[at].title;
+    case HistoryObject::Accelerometer: return m.accelerometers[at].title;
     default: return k < th.object_names.size() ? th.object_names[k] : std::string();
   }
 }
@@ -156,6 +166,8 @@ std::string object_title(const Model& m, const TimeHistoryRequest& th, std::size
 V3 of(const std::vector<double>& x, const std::vector<double>& y, const std::vector<double>& z, std::size_t k) {
   return {x[k], y[k], z[k]};
 }
+
+V3 of(const std::vector<double>& xyz, std::size_t first) { return {xyz[first], xyz[first + 1], xyz[first + 2]}; }
 
 // The change of a velocity over the step, times `scale` / dt: NaN when the update is not known.
 V3 rate_of_change(const V3& now, const std::array<const std::vector<double>*, 6>& then, std::size_t first,
@@ -249,6 +261,13 @@ BodyValues body_values(const SolverState& s, const RigidBodyState& b) {
   const NodalState& n = s.nodes;
   const auto k = static_cast<std::size_t>(b.main_node);
   return {of(n.fx, n.fy, n.fz, k), of(n.mx, n.my, n.mz, k), rotation_vector(b.rotation)};
+}
+
+// What the cycle integrated for accelerometer `k` (solver/accelerometers.hpp).
+AccelerometerValues accelerometer_values(const HistoryIntegrals& h, std::size_t k) {
+  if (3 * k + 2 >= h.accel_filtered.size() || 3 * k + 2 >= h.accel_velocity.size())
+    throw std::runtime_error(fmt::format("history: the solver state has no values for accelerometer {}", k));
+  return {of(h.accel_filtered, 3 * k), of(h.accel_velocity, 3 * k)};
 }
 
 }  // namespace
@@ -432,6 +451,9 @@ void HistoryChannels::evaluate(const Request& r, const SolverState& s, const Vel
       case HistoryObject::Interface: append(kForces, interface_values(s.contact.results[o]), r.getters, row); break;
       case HistoryObject::RigidWall: append(kForces, wall_values(s.walls[o]), r.getters, row); break;
       case HistoryObject::RigidBody: append(kBody, body_values(s, s.bodies[o]), r.getters, row); break;
+      case HistoryObject::Accelerometer:
+        append(kAccelerometer, accelerometer_values(s.histories, o), r.getters, row);
+        break;
       case HistoryObject::Section: break;
     }
   }

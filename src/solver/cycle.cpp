@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "crumple/contact/contact.hpp"
+#include "crumple/solver/accelerometers.hpp"
 #include "solver/internal.hpp"
 
 namespace crumple::solver {
@@ -323,6 +324,9 @@ void apply_constraints(const Model& m, SolverState& s, VelocityScratch& scratch,
   if (!s.contact.interfaces.empty())
     s.energy.contact = contact::contact_work(s.contact, n, scratch.before.data(), dt_average);
   record_acceleration(s, scratch, dt_average);
+  // /ACCEL: only a deck with accelerometers has any (a loop over them, not over the nodes).
+  update_accelerometers(m.accelerometers, n, {&scratch.before[0], &scratch.before[1], &scratch.before[2]}, dt_average,
+                        s.histories);
 }
 
 void advance_positions(SolverState& s, double dt_next) {

@@ -3,7 +3,8 @@
 // the snapshot (positions, velocities, stresses, plastic strains, hourglass stresses, contact pairs and their
 // friction history, rigid bodies, walls, energies, cycle count) and every history row written after the restart.
 // The decks cover shells with a rigid body and a rigid wall (the example tube), TYPE7 contact with friction and a
-// rigid body of bricks (contact_idel), and a continued run (ball_two_runs, stopped in its first engine deck).
+// rigid body of bricks (contact_idel), a continued run (ball_two_runs, stopped in its first engine deck), and
+// accelerometers, whose filters and integrals carry over (accel_strip).
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -106,12 +107,14 @@ TEST_P(Restart, ResumedRunEndsBitwiseWhereTheUninterruptedRunEnds) {
 
 const std::filesystem::path kQa = CRUMPLE_QA_DIR;
 const std::filesystem::path kDecks = std::filesystem::path(CRUMPLE_SOURCE_DIR) / "decks";
+const std::filesystem::path kTestDecks = std::filesystem::path(CRUMPLE_SOURCE_DIR) / "tests" / "regression" / "decks";
 
 INSTANTIATE_TEST_SUITE_P(
     Decks, Restart,
     ::testing::Values(RestartCase{"tube", kDecks / "tube_impact" / "TUBE_0000.rad", 3000},
                       RestartCase{"contact_idel", kQa / "contact_idel" / "IDEL8_0000.rad", 333},
-                      RestartCase{"ball_two_runs", kQa / "ball_two_runs" / "BOULE1V4_0000.rad", 777}),
+                      RestartCase{"ball_two_runs", kQa / "ball_two_runs" / "BOULE1V4_0000.rad", 777},
+                      RestartCase{"accel_strip", kTestDecks / "accel_strip" / "ACCEL_0000.rad", 300}),
     [](const auto& p) { return std::string(p.param.name); });
 
 TEST(Restart, FileOfAnotherModelIsRefusedWithItsCounts) {

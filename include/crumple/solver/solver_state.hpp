@@ -67,6 +67,18 @@ struct RecordedNodalResults {
   std::vector<double> external_force;  // /CLOAD and /GRAV forces at t^n [M L T^-2]
 };
 
+// What the /TH outputs need integrated over every cycle and the cycle would otherwise not keep (docs/output-format.md,
+// "ACCEL"): sized by the solver at the start only when the deck asks for it, else empty, so that a deck without
+// accelerometers pays nothing. Output only: no phase of the cycle reads it.
+struct HistoryIntegrals {
+  // /ACCEL, in the order of Model::accelerometers; 3 values (x y z, global) per accelerometer.
+  std::vector<double> accel_filtered;  // the filtered acceleration AX AY AZ [L/T^2]
+  std::vector<double> accel_velocity;  // WX WY WZ: the sum of the raw accelerations a^n dt^n since the start [L/T]
+  // 18 per accelerometer, 6 per component: the filter's last two inputs and the last two outputs of each of its
+  // two sections (x1 x2 y1 y2 z1 z2), zero at the start.
+  std::vector<double> accel_memory;
+};
+
 struct SolverState {
   NodalState nodes;
   std::vector<double> x0, y0, z0;                  // initial coordinates
@@ -90,6 +102,7 @@ struct SolverState {
   double mass_added = 0.0;         // mass added by /DT/NODA/CST [M]
   std::vector<double> nodal_stiffness;  // scratch of the nodal time step: sum of element stiffness estimates
   RecordedNodalResults recorded;
+  HistoryIntegrals histories;
 };
 
 }  // namespace crumple
