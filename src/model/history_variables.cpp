@@ -3,6 +3,8 @@
 // Crumple: docs/output-format.md, "/history/th".
 #include "crumple/model/history_variables.hpp"
 
+#include "crumple/model/model.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -97,15 +99,19 @@ constexpr std::array<G, 3> kBrickGroups{{{"DEF", kBrickDef}, {"STRESS", kBrickSt
 constexpr std::array<V, 20> kInterface{{
     {"FNX", "F", kForce, true},      {"FNY", "F", kForce, true},      {"FNZ", "F", kForce, true},
     {"FTX", "F", kForce, true},      {"FTY", "F", kForce, true},      {"FTZ", "F", kForce, true},
-    // Sums of magnitudes and moments need the nodal contact forces of each interface, which are summed as they
-    // are made and not kept.
-    {"|FNX|", "F", kForce, false},   {"|FNY|", "F", kForce, false},   {"|FNZ|", "F", kForce, false},
-    {"||FN||", "F", kForce, false},  {"|FX|", "F", kForce, false},    {"|FY|", "F", kForce, false},
-    {"|FZ|", "F", kForce, false},    {"||F||", "F", kForce, false},   {"MX", "F L", kMoment, false},
-    {"MY", "F L", kMoment, false},   {"MZ", "F L", kMoment, false},
+    // Sums over the contact pairs (the pass adds them up for the interfaces asked: kInterfacePairSums).
+    {"|FNX|", "F", kForce, true},    {"|FNY|", "F", kForce, true},    {"|FNZ|", "F", kForce, true},
+    {"||FN||", "F", kForce, true},   {"|FX|", "F", kForce, true},     {"|FY|", "F", kForce, true},
+    {"|FZ|", "F", kForce, true},     {"||F||", "F", kForce, true},
+    // The moments: the manual does not say about which point, nor where on the pair the force acts.
+    {"MX", "F L", kMoment, false},   {"MY", "F L", kMoment, false},   {"MZ", "F L", kMoment, false},
     {"CE_ELAST", "E", kMoment, true}, {"CE_FRIC", "E", kMoment, true}, {"CE_DAMP", "E", kMoment, true}}};
 constexpr std::array<S, 6> kForcesDef{"FNX", "FNY", "FNZ", "FTX", "FTY", "FTZ"};
-constexpr std::array<G, 1> kInterfaceGroups{{{"DEF", kForcesDef}}};
+constexpr std::array<S, 3> kForcesFN{"FNX", "FNY", "FNZ"}, kForcesFT{"FTX", "FTY", "FTZ"};
+constexpr std::array<S, 4> kInterfaceAbsFN{"|FNX|", "|FNY|", "|FNZ|", "||FN||"},
+    kInterfaceAbsF{"|FX|", "|FY|", "|FZ|", "||F||"};
+constexpr std::array<G, 5> kInterfaceGroups{
+    {{"DEF", kForcesDef}, {"FN", kForcesFN}, {"FT", kForcesFT}, {"|FN|", kInterfaceAbsFN}, {"|F|", kInterfaceAbsF}}};
 
 // ---- /TH/RWALL
 constexpr std::array<V, 6> kWall{{{"FNX", "F", kForce, true}, {"FNY", "F", kForce, true}, {"FNZ", "F", kForce, true},
@@ -195,6 +201,22 @@ HistorySelection select_history_variables(HistoryObject object, const std::vecto
     for (std::string_view member : group->members) add(find_variable(kind, member));
   }
   return selection;
+}
+
+std::vector<std::int32_t> objects_with_history(const Model& m, HistoryObject object,
+                                               std::span<const std::string_view> variables) {
+  std::vector<std::int32_t> objects;
+  for (const TimeHistoryRequest& th : m.histories) {
+    if (th.object != object) continue;
+    const HistorySelection selection = select_history_variables(object, th.variables);
+    const bool asks = std::any_of(selection.variables.begin(), selection.variables.end(), [&](const HistoryVariable* v) {
+      return std::find(variables.begin(), variables.end(), v->name) != variables.end();
+    });
+    if (asks) objects.insert(objects.end(), th.objects.begin(), th.objects.end());
+  }
+  std::sort(objects.begin(), objects.end());
+  objects.erase(std::unique(objects.begin(), objects.end()), objects.end());
+  return objects;
 }
 
 double si_factor(const Dimension& d, const double (&work_si)[3]) {

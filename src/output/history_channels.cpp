@@ -92,12 +92,18 @@ constexpr Evaluator<B> kBrick[] = {
 struct ForceValues {  // interfaces and rigid walls: normal and tangential force, interface energies
   V3 fn, ft;
   double elastic = 0.0, friction = 0.0, damping = 0.0;
+  V3 pair_normal_abs{}, pair_force_abs{};  // interfaces: sums over the pairs of |fn n_k| and |f_k|
+  double pair_normal_norm = 0.0, pair_force_norm = 0.0;
 };
 using F = ForceValues;
 constexpr Evaluator<F> kForces[] = {
     {"FNX", component<F, &F::fn, 0>}, {"FNY", component<F, &F::fn, 1>}, {"FNZ", component<F, &F::fn, 2>},
     {"FTX", component<F, &F::ft, 0>}, {"FTY", component<F, &F::ft, 1>}, {"FTZ", component<F, &F::ft, 2>},
-    {"CE_ELAST", scalar<F, &F::elastic>}, {"CE_FRIC", scalar<F, &F::friction>}, {"CE_DAMP", scalar<F, &F::damping>}};
+    {"CE_ELAST", scalar<F, &F::elastic>}, {"CE_FRIC", scalar<F, &F::friction>}, {"CE_DAMP", scalar<F, &F::damping>},
+    {"|FNX|", component<F, &F::pair_normal_abs, 0>}, {"|FNY|", component<F, &F::pair_normal_abs, 1>},
+    {"|FNZ|", component<F, &F::pair_normal_abs, 2>}, {"||FN||", scalar<F, &F::pair_normal_norm>},
+    {"|FX|", component<F, &F::pair_force_abs, 0>},    {"|FY|", component<F, &F::pair_force_abs, 1>},
+    {"|FZ|", component<F, &F::pair_force_abs, 2>},    {"||F||", scalar<F, &F::pair_force_norm>}};
 
 struct BodyValues {
   V3 f, m, r;
@@ -237,7 +243,8 @@ ForceValues wall_values(const RigidWallState& w) {
 }
 
 ForceValues interface_values(const InterfaceResult& r) {
-  return {r.normal_force, r.tangential_force, r.elastic_energy, r.friction_work, r.damping_work};
+  return {r.normal_force,    r.tangential_force, r.elastic_energy,   r.friction_work,  r.damping_work,
+          r.pair_normal_abs, r.pair_force_abs,   r.pair_normal_norm, r.pair_force_norm};
 }
 
 // The rotation vector (axis times angle) of a rotation matrix, row-major.

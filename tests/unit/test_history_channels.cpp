@@ -66,7 +66,8 @@ std::string requests() {
             I(1) + I(0) + "\n" + I(2) + I(0) + "\n") +
          th("/TH/BRIC/5", var("DEF") + var("VOL"), I(1) + blank(10) + "cube\n") +
          th("/TH/RWALL/6", var("DEF"), I(1) + "\n") + th("/TH/RBODY/7", var("DEF"), I(7) + "\n") +
-         th("/TH/INTER/8", var("DEF") + var("CE_ELAST") + var("CE_FRIC") + var("CE_DAMP"), I(5) + "\n");
+         th("/TH/INTER/8", var("DEF") + var("CE_ELAST") + var("CE_FRIC") + var("CE_DAMP") + var("|FN|") + var("|F|"),
+            I(5) + "\n");
 }
 
 struct Fixture {
@@ -322,6 +323,7 @@ TEST(HistoryChannels, BrickWallBodyAndInterfaceValues) {
   InterfaceResult& r = s.contact.results.at(0);
   r.normal_force = {0.0, 0.0, 9.0}, r.tangential_force = {1.0, 0.0, 0.0};
   r.elastic_energy = 0.5, r.friction_work = 0.25, r.damping_work = 0.125;
+  r.pair_normal_abs = {1.5, 0.0, 11.0}, r.pair_normal_norm = 12.0, r.pair_force_abs = {2.5, 0.5, 11.0}, r.pair_force_norm = 13.0;
   const HistoryChannels channels(m);
   Row row = evaluate(channels, s);
   EXPECT_EQ(row("BRIC_5/1/SX"), 1.0);
@@ -344,6 +346,12 @@ TEST(HistoryChannels, BrickWallBodyAndInterfaceValues) {
   EXPECT_EQ(row("INTER_8/5/CE_ELAST"), 0.5);
   EXPECT_EQ(row("INTER_8/5/CE_FRIC"), 0.25);
   EXPECT_EQ(row("INTER_8/5/CE_DAMP"), 0.125);
+  EXPECT_EQ(row("INTER_8/5/|FNX|"), 1.5);
+  EXPECT_EQ(row("INTER_8/5/|FNZ|"), 11.0);
+  EXPECT_EQ(row("INTER_8/5/||FN||"), 12.0);
+  EXPECT_EQ(row("INTER_8/5/|FY|"), 0.5);
+  EXPECT_EQ(row("INTER_8/5/||F||"), 13.0);
+  EXPECT_TRUE(s.contact.interfaces.at(0).sum_pair_forces);  // asked by /TH/INTER/8: the pass sums them
   // The rotation vector of a large turn about a slanted axis, and of a half turn.
   const double a = 1.0 / std::sqrt(2.0);
   body.rotation = rotation({a, a, 0.0}, 3.0);

@@ -198,6 +198,10 @@ TEST(OutputKeywords, HistoriesCrumpleDoesNotWriteAreNamedWarnings) {
                                   "/TH/PART/1: output-only: time history not written by Crumple; variables IXX XXMOM "
                                   "not written; FOO not among the variables of /TH/PART/1 in the manual that Crumple "
                                   "computes"}));
+  // An interface's moments: the manual does not say about which point.
+  const Deck moments = read(th("/TH/INTER/5", var("|FNX|") + var("MX"), I(5) + "\n"));
+  EXPECT_EQ(skipped(moments), (std::vector<std::string>{"/TH/INTER/5: output-only: variables MX not written (NAME.h5 "
+                                                        "records the others)"}));
   const Deck sections = read(section(11) + th("/TH/SECTIO/6", var("DEF"), I(11) + "\n"));
   ASSERT_EQ(skipped(sections).size(), 2u);  // the /SECT card's note, then the history's
   EXPECT_EQ(skipped(sections)[1],
@@ -207,7 +211,8 @@ TEST(OutputKeywords, HistoriesCrumpleDoesNotWriteAreNamedWarnings) {
                                   th("/TH/SUBS/8", var("DEF"), I(30) + "\n") +
                                   th("/TH/RWALL/3", var("DEF"), I(1) + "\n") +
                                   th("/TH/RBODY/4", var("DEF"), I(7) + "\n") +
-                                  th("/TH/INTER/5", var("DEF") + var("CE_ELAST") + var("CE_FRIC") + var("CE_DAMP"),
+                                  th("/TH/INTER/5", var("DEF") + var("CE_ELAST") + var("CE_FRIC") + var("CE_DAMP") +
+                                                        var("|FN|") + var("|F|") + var("FN") + var("FT"),
                                      I(5) + "\n") +
                                   th("/TH/NODE/2", var("XYZ") + var("A") + var("VR") + var("AR") + var("REACX"),
                                      I(1) + "\n") +
