@@ -33,8 +33,8 @@ constexpr std::array<V, 27> kNode{{
     {"X", "L", kLength, true},          {"Y", "L", kLength, true},          {"Z", "L", kLength, true},
     {"REACX", "F", kForce, true},       {"REACY", "F", kForce, true},       {"REACZ", "F", kForce, true},
     {"REACXX", "F L", kMoment, true},   {"REACYY", "F L", kMoment, true},   {"REACZZ", "F L", kMoment, true},
-    // Nodal rotation angles: Crumple integrates the angular velocities of shell nodes, not their angles.
-    {"DRX", "-", kNone, false},         {"DRY", "-", kNone, false},         {"DRZ", "-", kNone, false}}};
+    // The integral of the angular velocity, kept by the cycle for the nodes asked (solver/node_rotations.hpp).
+    {"DRX", "-", kNone, true},          {"DRY", "-", kNone, true},          {"DRZ", "-", kNone, true}}};
 constexpr std::array<S, 6> kNodeDef{"DX", "DY", "DZ", "VX", "VY", "VZ"};
 constexpr std::array<S, 3> kNodeD{"DX", "DY", "DZ"}, kNodeV{"VX", "VY", "VZ"}, kNodeA{"AX", "AY", "AZ"},
     kNodeVR{"VRX", "VRY", "VRZ"}, kNodeAR{"ARX", "ARY", "ARZ"}, kNodeXYZ{"X", "Y", "Z"};

@@ -38,7 +38,7 @@ double scalar(const Values& v) {
 }
 
 struct NodeValues {
-  V3 d, v, a, vr, ar, x, reaction, reaction_moment;
+  V3 d, v, a, vr, ar, x, reaction, reaction_moment, dr;
 };
 using N = NodeValues;
 constexpr Evaluator<N> kNode[] = {
@@ -50,7 +50,8 @@ constexpr Evaluator<N> kNode[] = {
     {"X", component<N, &N::x, 0>},   {"Y", component<N, &N::x, 1>},   {"Z", component<N, &N::x, 2>},
     {"REACX", component<N, &N::reaction, 0>}, {"REACY", component<N, &N::reaction, 1>},
     {"REACZ", component<N, &N::reaction, 2>}, {"REACXX", component<N, &N::reaction_moment, 0>},
-    {"REACYY", component<N, &N::reaction_moment, 1>}, {"REACZZ", component<N, &N::reaction_moment, 2>}};
+    {"REACYY", component<N, &N::reaction_moment, 1>}, {"REACZZ", component<N, &N::reaction_moment, 2>},
+    {"DRX", component<N, &N::dr, 0>}, {"DRY", component<N, &N::dr, 1>}, {"DRZ", component<N, &N::dr, 2>}};
 
 struct PartValues {
   double ie = 0.0, ke = 0.0, he = 0.0, rke = 0.0, mass = 0.0;
@@ -183,6 +184,15 @@ V3 rate_of_change(const V3& now, const std::array<const std::vector<double>*, 6>
   return out;
 }
 
+// The integral of node k's angular velocity (solver/node_rotations.hpp): NaN for a node the cycle does not keep it
+// for (no request asked DRX, DRY or DRZ of it).
+V3 node_rotation(const HistoryIntegrals& h, std::size_t k) {
+  const auto at = std::lower_bound(h.rotation_nodes.begin(), h.rotation_nodes.end(), static_cast<std::int32_t>(k));
+  if (at == h.rotation_nodes.end() || *at != static_cast<std::int32_t>(k) || h.rotation.size() != 3 * h.rotation_nodes.size())
+    return {kUnknown, kUnknown, kUnknown};
+  return of(h.rotation, 3 * static_cast<std::size_t>(at - h.rotation_nodes.begin()));
+}
+
 NodeValues node_values(const Model& m, const SolverState& s, const VelocityChange& change, std::size_t k) {
   const NodalState& n = s.nodes;
   NodeValues out;
@@ -200,6 +210,7 @@ NodeValues node_values(const Model& m, const SolverState& s, const VelocityChang
   const double reaction_dt = in_body ? 0.0 : dt;
   out.reaction = rate_of_change(out.v, change.free, 0, k, n.mass[k], reaction_dt);
   out.reaction_moment = rate_of_change(out.vr, change.free, 3, k, n.inertia[k], reaction_dt);
+  out.dr = node_rotation(s.histories, k);
   return out;
 }
 

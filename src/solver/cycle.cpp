@@ -6,6 +6,7 @@
 
 #include "crumple/contact/contact.hpp"
 #include "crumple/solver/accelerometers.hpp"
+#include "crumple/solver/node_rotations.hpp"
 #include "solver/internal.hpp"
 
 namespace crumple::solver {
@@ -336,6 +337,8 @@ void advance_positions(SolverState& s, double dt_next) {
     n.y[k] += dt_next * n.vy[k];
     n.z[k] += dt_next * n.vz[k];
   }
+  // /TH/NODE DRX DRY DRZ: only the nodes a request asks them of (none: no loop).
+  integrate_node_rotations(n, dt_next, s.histories);
   s.time += dt_next;
   s.dt = dt_next;
   ++s.cycle;

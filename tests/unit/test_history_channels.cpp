@@ -9,6 +9,7 @@
 #include "crumple/model/history_variables.hpp"
 #include "crumple/output/history_channels.hpp"
 #include "crumple/solver/accelerometers.hpp"
+#include "crumple/solver/node_rotations.hpp"
 #include "crumple/solver/element_status.hpp"
 #include "crumple/solver/solver.hpp"
 #include "deck_files.hpp"
@@ -396,4 +397,29 @@ TEST(HistoryChannels, AccelerometerValuesAfterAVelocityUpdate) {
   EXPECT_NEAR(row("ACCEL_9/6/AZ"), 0.09398085143379448 * 2.0 / dt, 1e-12 * 2.0 / dt);
   EXPECT_EQ(row("ACCEL_9/6/AX"), 0.0);
   EXPECT_DOUBLE_EQ(row("ACCEL_9/6/WZ"), 2.0);
+}
+
+// /TH/NODE DRX DRY DRZ: the cycle integrates the angular velocity of the nodes a request asks them of, and only
+// theirs: two steps with w = (0.1, 0.2, 0.3) for dt = 1e-3 then w = (-0.5, 0, 1) for dt = 2e-3 give
+// DRX = 1e-4 - 1e-3 = -9e-4, DRY = 2e-4, DRZ = 3e-4 + 2e-3 = 2.3e-3 (hand values).
+TEST(HistoryChannels, NodeRotationIsTheIntegralOfTheAngularVelocity) {
+  Fixture f(requests() + th("/TH/NODE/9", var("DRX") + var("DRY") + var("DRZ"), I(5) + I(0) + "\n" + I(2) + I(0) + "\n"));
+  SolverState& s = f.state;
+  NodalState& n = s.nodes;
+  const std::size_t k = f.node(2), other = f.node(5);
+  ASSERT_EQ(s.histories.rotation_nodes.size(), 2u);  // nodes 2 and 5, and not the nodes of /TH/NODE/1 without DR
+  n.wx[k] = 0.1, n.wy[k] = 0.2, n.wz[k] = 0.3, n.wz[other] = 7.0;
+  n.wx[f.node(7)] = 9.0;  // a node no request asks DR of: not integrated
+  integrate_node_rotations(n, 1e-3, s.histories);
+  n.wx[k] = -0.5, n.wy[k] = 0.0, n.wz[k] = 1.0;
+  integrate_node_rotations(n, 2e-3, s.histories);
+  const HistoryChannels channels(f.model());
+  const Row row = evaluate(channels, s);
+  EXPECT_NEAR(row("NODE_9/2/DRX"), -9e-4, 1e-18);
+  EXPECT_NEAR(row("NODE_9/2/DRY"), 2e-4, 1e-18);
+  EXPECT_NEAR(row("NODE_9/2/DRZ"), 2.3e-3, 1e-18);
+  EXPECT_NEAR(row("NODE_9/5/DRZ"), 7.0 * 3e-3, 1e-15);
+  EXPECT_EQ(row("NODE_9/5/DRX"), 0.0);
+  EXPECT_EQ(channels.datasets().back().columns[0].unit, "-");
+  EXPECT_EQ(channels.datasets().back().columns[0].label, "NODE_9/5/DRX");
 }
