@@ -209,9 +209,10 @@ std::vector<std::int32_t> objects_with_history(const Model& m, HistoryObject obj
   for (const TimeHistoryRequest& th : m.histories) {
     if (th.object != object) continue;
     const HistorySelection selection = select_history_variables(object, th.variables);
-    const bool asks = std::any_of(selection.variables.begin(), selection.variables.end(), [&](const HistoryVariable* v) {
+    const auto named = [&](const HistoryVariable* v) {
       return std::find(variables.begin(), variables.end(), v->name) != variables.end();
-    });
+    };
+    const bool asks = std::any_of(selection.variables.begin(), selection.variables.end(), named);
     if (asks) objects.insert(objects.end(), th.objects.begin(), th.objects.end());
   }
   std::sort(objects.begin(), objects.end());

@@ -188,7 +188,9 @@ V3 rate_of_change(const V3& now, const std::array<const std::vector<double>*, 6>
 // for (no request asked DRX, DRY or DRZ of it).
 V3 node_rotation(const HistoryIntegrals& h, std::size_t k) {
   const auto at = std::lower_bound(h.rotation_nodes.begin(), h.rotation_nodes.end(), static_cast<std::int32_t>(k));
-  if (at == h.rotation_nodes.end() || *at != static_cast<std::int32_t>(k) || h.rotation.size() != 3 * h.rotation_nodes.size())
+  const bool kept = at != h.rotation_nodes.end() && *at == static_cast<std::int32_t>(k) &&
+                    h.rotation.size() == 3 * h.rotation_nodes.size();
+  if (!kept)
     return {kUnknown, kUnknown, kUnknown};
   return of(h.rotation, 3 * static_cast<std::size_t>(at - h.rotation_nodes.begin()));
 }

@@ -59,7 +59,7 @@ void update_accelerometers(const std::vector<Accelerometer>& accelerometers, con
     const Accelerometer& meter = accelerometers[a];
     const auto k = static_cast<std::size_t>(meter.node);
     const bool filtered = meter.cutoff > 0.0;
-    const std::array<FilterSection, 2> filter = filtered ? butterworth4(meter.cutoff, dt) : std::array<FilterSection, 2>{};
+    const auto filter = filtered ? butterworth4(meter.cutoff, dt) : std::array<FilterSection, 2>{};
     for (std::size_t c = 0; c < 3; ++c) {
       const double change = (*now[c])[k] - (*before[c])[k];  // a^n dt^n [L/T]
       const double raw = change / dt;                         // a^n [L/T^2]

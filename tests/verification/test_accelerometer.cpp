@@ -84,7 +84,8 @@ TEST(Accelerometer, RawAndFilteredAccelerationOfARampAndItsIntegral) {
   const Columns h(file);
   const double dt = rows.front().dt;
   const double x = kPi * kCutoff * dt;
-  const double tau = (2.0 * std::sin(kPi / 8.0) + 2.0 * std::sin(3.0 * kPi / 8.0)) / (2.0 * kPi * kCutoff) * x / std::tan(x);
+  const double analog_delay = (2.0 * std::sin(kPi / 8.0) + 2.0 * std::sin(3.0 * kPi / 8.0)) / (2.0 * kPi * kCutoff);
+  const double tau = analog_delay * x / std::tan(x);
   std::size_t settled = 0;
   double worst_raw = 0.0, worst_filtered = 0.0;
   for (std::size_t r = 0; r < rows.size(); ++r) {
@@ -105,8 +106,8 @@ TEST(Accelerometer, RawAndFilteredAccelerationOfARampAndItsIntegral) {
     worst_filtered = std::max(worst_filtered, std::abs(h("ACCEL_5/2/AX", r) - kRamp * (tn - tau)) / (kRamp * tau));
   }
   EXPECT_GE(settled, 5u);
-  std::printf("[accelerometer] dt %.4g s, fc dt %.3g, delay %.6g s; raw AX %.2g (of c t), filtered AX %.2g (of c tau)\n",
-              dt, kCutoff * dt, tau, worst_raw, worst_filtered);
+  std::printf("[accelerometer] dt %.4g s, fc dt %.3g, delay %.6g s; raw AX %.2g (of c t), filtered AX %.2g (of c "
+              "tau)\n", dt, kCutoff * dt, tau, worst_raw, worst_filtered);
 }
 
 }  // namespace crumple::verification

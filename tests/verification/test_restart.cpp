@@ -1,7 +1,8 @@
 // Restart (docs/theory/time-loop.md, "Restart"): a run stopped after k cycles with its snapshot written
 // (NAME.rst), then resumed with `--restart`, must end bitwise where the uninterrupted run ends: every field of
 // the snapshot (positions, velocities, stresses, plastic strains, hourglass stresses, contact pairs and their
-// friction history, rigid bodies, walls, energies, cycle count) and every history row written after the restart.
+// friction history, rigid bodies, walls, energies, cycle count) and every history row written after the restart,
+// the /TH datasets' included.
 // The decks cover shells with a rigid body and a rigid wall (the example tube), TYPE7 contact with friction and a
 // rigid body of bricks (contact_idel), a continued run (ball_two_runs, stopped in its first engine deck), and
 // accelerometers, whose filters and integrals carry over (accel_strip).
@@ -16,6 +17,7 @@
 #include "crumple/solver/snapshot.hpp"
 #include "crumple/solver/solver_state.hpp"
 #include "deck_files.hpp"
+#include "crumple/output/history_reader.hpp"
 #include "crumple/output/results_reader.hpp"
 
 namespace crumple::test {
@@ -102,6 +104,15 @@ TEST_P(Restart, ResumedRunEndsBitwiseWhereTheUninterruptedRunEnds) {
                              "external_work"}) {
     const std::vector<double> ya = a.doubles(std::string("/history/") + series), yb = b.doubles(std::string("/history/") + series);
     EXPECT_EQ(0, std::memcmp(ya.data() + offset, yb.data(), yb.size() * sizeof(double))) << series;
+  }
+  // So are the /TH datasets' rows: what the cycle integrates for them (accelerometers, nodal rotations) carries over.
+  const HistoryFile listing(whole.path() / "RUN.h5");
+  for (const HistorySeries& th : listing.series()) {
+    if (th.path.rfind("/history/th/", 0) != 0) continue;
+    const std::size_t width = th.columns.size();
+    const std::vector<double> ya = a.doubles(th.path), yb = b.doubles(th.path);
+    ASSERT_EQ(yb.size(), (ta.size() - offset) * width) << th.path;
+    EXPECT_EQ(0, std::memcmp(ya.data() + offset * width, yb.data(), yb.size() * sizeof(double))) << th.path;
   }
 }
 

@@ -106,8 +106,8 @@ void visit_interface(V& v, const std::string& at, ContactInterface& c, Interface
   v(at + "result/released", r.released);
 }
 
-// The /TH integrals (accelerometers, nodal rotations): only those the deck asks for exist, so a restart file of a deck without them
-// has none, as before they existed.
+// The /TH integrals (accelerometers, nodal rotations): only those the deck asks for exist, so a restart file of a
+// deck without them has none, as before they existed.
 template <class V>
 void visit_histories(V& v, HistoryIntegrals& h) {
   for (auto [name, field] : {std::pair{"accel_filtered", &h.accel_filtered}, {"accel_velocity", &h.accel_velocity},
