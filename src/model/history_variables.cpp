@@ -47,7 +47,8 @@ constexpr std::array<V, 23> kPart{{
     {"YMOM", "M L/T", kMomentum, true},   {"ZMOM", "M L/T", kMomentum, true},  {"MASS", "M", kMass, true},
     {"HE", "E", kMoment, true},           {"XCG", "L", kLength, true},         {"YCG", "L", kLength, true},
     {"ZCG", "L", kLength, true},          {"RKE", "E", kMoment, true},
-    // Angular momenta, inertia tensors and the rigid-body split of the energies are not computed per part.
+    // Angular momenta, inertia tensors and the rigid-body energies: the manual gives no reference point, sign of
+    // the products of inertia nor content of RIE, KERB, RKERB (docs/output-format.md, "PART").
     {"XXMOM", "M L^2/T", kAngularMomentum, false}, {"YYMOM", "M L^2/T", kAngularMomentum, false},
     {"ZZMOM", "M L^2/T", kAngularMomentum, false}, {"IXX", "M L^2", kInertia, false},
     {"IYY", "M L^2", kInertia, false},    {"IZZ", "M L^2", kInertia, false},   {"IXY", "M L^2", kInertia, false},
