@@ -24,6 +24,16 @@ double largest_speed(const ContactInterface& in, const NodalState& n) {
   return std::sqrt(v2);
 }
 
+// /TH/INTER |FNX| .. ||F||: one pair's normal force fn n and whole force into the interface's sums.
+void add_pair_forces(InterfaceResult& res, double fn, const double (&normal)[3], const double (&force)[3]) {
+  for (std::size_t k = 0; k < 3; ++k) {
+    res.pair_normal_abs[k] += std::abs(fn * normal[k]);
+    res.pair_force_abs[k] += std::abs(force[k]);
+  }
+  res.pair_normal_norm += std::abs(fn);
+  res.pair_force_norm += std::sqrt(force[0] * force[0] + force[1] * force[1] + force[2] * force[2]);
+}
+
 }  // namespace
 
 ContactStep contact_forces(const Model& m, ContactState& c, NodalState& nodes, double time, double dt_previous,
@@ -39,6 +49,8 @@ ContactStep contact_forces(const Model& m, ContactState& c, NodalState& nodes, d
     ContactInterface& in = c.interfaces[f];
     InterfaceResult& res = c.results[f];
     res.normal_force = {0.0, 0.0, 0.0}, res.tangential_force = {0.0, 0.0, 0.0};
+    res.pair_normal_abs = {0.0, 0.0, 0.0}, res.pair_force_abs = {0.0, 0.0, 0.0};
+    res.pair_normal_norm = res.pair_force_norm = 0.0;
     res.elastic_energy = 0.0, res.active_nodes = 0, res.dt = std::numeric_limits<double>::infinity(), res.dt_node = -1;
     in.applied_node.clear(), in.applied_x.clear(), in.applied_y.clear(), in.applied_z.clear();
     if (time < in.t_start || time > in.t_stop) continue;
@@ -206,6 +218,7 @@ ContactStep contact_forces(const Model& m, ContactState& c, NodalState& nodes, d
         const double force[3] = {fn * normal[0] + ft[0], fn * normal[1] + ft[1], fn * normal[2] + ft[2]};
         for (int k = 0; k < 3; ++k) res.normal_force[static_cast<std::size_t>(k)] += fn * normal[k];
         for (int k = 0; k < 3; ++k) res.tangential_force[static_cast<std::size_t>(k)] += ft[k];
+        if (in.sum_pair_forces) add_pair_forces(res, fn, normal, force);
         if (in.node_touched[i] == 0) in.touched_list.push_back(static_cast<std::int32_t>(i));
         if (in.node_touched[i] != 2) in.node_touched[i] = 2, ++res.active_nodes;
         if (in.release_bc != 0 && !in.node_impacted[i]) c.bc_releases.emplace_back(static_cast<std::int32_t>(n), in.release_bc);

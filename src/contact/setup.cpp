@@ -8,6 +8,7 @@
 #include "crumple/contact/kernels.hpp"
 #include "crumple/core/deck_error.hpp"
 #include "crumple/core/geometry.hpp"
+#include "crumple/model/history_variables.hpp"
 
 namespace crumple::contact {
 namespace {
@@ -80,9 +81,12 @@ ContactState setup_contact(const Model& m, NodalState& nodes, std::vector<std::s
     }
   }
   std::vector<double> surface_area;  // per node, computed once when some interface has a friction law
+  const std::vector<std::int32_t> summed = objects_with_history(m, HistoryObject::Interface, kInterfacePairSums);
   for (const Type7Interface& card : m.type7_interfaces) {
     ContactInterface in;
     InterfaceResult result;
+    in.sum_pair_forces =
+        std::binary_search(summed.begin(), summed.end(), static_cast<std::int32_t>(state.interfaces.size()));
     // Fields the reader accepts but the module does not implement yet: said by name, never silently dropped.
     const std::string label = fmt::format("INTER {}", card.user_id);
     if (card.ifric > 1 && card.fric > 0.0)

@@ -35,6 +35,7 @@ const IdMap* history_map(const Model::Index& ix, HistoryObject object, std::stri
     case HistoryObject::Subset: what = "subset"; return &ix.subsets;
     case HistoryObject::Section: what = "section"; return &ix.sections;
     case HistoryObject::RigidBody: what = "rigid body"; return &ix.rigid_bodies;
+    case HistoryObject::Accelerometer: what = "accelerometer"; return &ix.accelerometers;
   }
   return nullptr;
 }
@@ -73,6 +74,7 @@ void resolve_output_references(Resolver& r, std::vector<RunControl>& continued_r
   Model& m = r.model;
   r.index(m.type7_interfaces, m.index.interfaces, "/INTER");
   r.index(m.sections, m.index.sections, "/SECT");
+  r.index(m.accelerometers, m.index.accelerometers, "/ACCEL");
   const auto& ix = m.index;
   // Unsupported TYPE7 options (sensors, friction functions, /FRICTION...) are rejected by the card reader.
   for (Type7Interface& i : m.type7_interfaces) {
@@ -91,6 +93,8 @@ void resolve_output_references(Resolver& r, std::vector<RunControl>& continued_r
       s.interfaces.push_back(
           r.find(ix.interfaces, s.interface_ids[k], s.where, kw, fmt::format("int_ID{}", k + 1), "interface"));
   }
+  for (Accelerometer& a : m.accelerometers)
+    a.node = r.find(ix.nodes, a.node_id, a.where, fmt::format("/ACCEL/{}", a.user_id), "node_ID", "node");
   for (TimeHistoryRequest& th : m.histories) {
     std::string_view what;
     const IdMap* map = history_map(ix, th.object, what);

@@ -3,6 +3,8 @@
 // Crumple: docs/output-format.md, "/history/th".
 #include "crumple/model/history_variables.hpp"
 
+#include "crumple/model/model.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -31,8 +33,8 @@ constexpr std::array<V, 27> kNode{{
     {"X", "L", kLength, true},          {"Y", "L", kLength, true},          {"Z", "L", kLength, true},
     {"REACX", "F", kForce, true},       {"REACY", "F", kForce, true},       {"REACZ", "F", kForce, true},
     {"REACXX", "F L", kMoment, true},   {"REACYY", "F L", kMoment, true},   {"REACZZ", "F L", kMoment, true},
-    // Nodal rotation angles: Crumple integrates the angular velocities of shell nodes, not their angles.
-    {"DRX", "-", kNone, false},         {"DRY", "-", kNone, false},         {"DRZ", "-", kNone, false}}};
+    // The integral of the angular velocity, kept by the cycle for the nodes asked (solver/node_rotations.hpp).
+    {"DRX", "-", kNone, true},          {"DRY", "-", kNone, true},          {"DRZ", "-", kNone, true}}};
 constexpr std::array<S, 6> kNodeDef{"DX", "DY", "DZ", "VX", "VY", "VZ"};
 constexpr std::array<S, 3> kNodeD{"DX", "DY", "DZ"}, kNodeV{"VX", "VY", "VZ"}, kNodeA{"AX", "AY", "AZ"},
     kNodeVR{"VRX", "VRY", "VRZ"}, kNodeAR{"ARX", "ARY", "ARZ"}, kNodeXYZ{"X", "Y", "Z"};
@@ -45,7 +47,8 @@ constexpr std::array<V, 23> kPart{{
     {"YMOM", "M L/T", kMomentum, true},   {"ZMOM", "M L/T", kMomentum, true},  {"MASS", "M", kMass, true},
     {"HE", "E", kMoment, true},           {"XCG", "L", kLength, true},         {"YCG", "L", kLength, true},
     {"ZCG", "L", kLength, true},          {"RKE", "E", kMoment, true},
-    // Angular momenta, inertia tensors and the rigid-body split of the energies are not computed per part.
+    // Angular momenta, inertia tensors and the rigid-body energies: the manual gives no reference point, sign of
+    // the products of inertia nor content of RIE, KERB, RKERB (docs/output-format.md, "PART").
     {"XXMOM", "M L^2/T", kAngularMomentum, false}, {"YYMOM", "M L^2/T", kAngularMomentum, false},
     {"ZZMOM", "M L^2/T", kAngularMomentum, false}, {"IXX", "M L^2", kInertia, false},
     {"IYY", "M L^2", kInertia, false},    {"IZZ", "M L^2", kInertia, false},   {"IXY", "M L^2", kInertia, false},
@@ -97,15 +100,19 @@ constexpr std::array<G, 3> kBrickGroups{{{"DEF", kBrickDef}, {"STRESS", kBrickSt
 constexpr std::array<V, 20> kInterface{{
     {"FNX", "F", kForce, true},      {"FNY", "F", kForce, true},      {"FNZ", "F", kForce, true},
     {"FTX", "F", kForce, true},      {"FTY", "F", kForce, true},      {"FTZ", "F", kForce, true},
-    // Sums of magnitudes and moments need the nodal contact forces of each interface, which are summed as they
-    // are made and not kept.
-    {"|FNX|", "F", kForce, false},   {"|FNY|", "F", kForce, false},   {"|FNZ|", "F", kForce, false},
-    {"||FN||", "F", kForce, false},  {"|FX|", "F", kForce, false},    {"|FY|", "F", kForce, false},
-    {"|FZ|", "F", kForce, false},    {"||F||", "F", kForce, false},   {"MX", "F L", kMoment, false},
-    {"MY", "F L", kMoment, false},   {"MZ", "F L", kMoment, false},
+    // Sums over the contact pairs (the pass adds them up for the interfaces asked: kInterfacePairSums).
+    {"|FNX|", "F", kForce, true},    {"|FNY|", "F", kForce, true},    {"|FNZ|", "F", kForce, true},
+    {"||FN||", "F", kForce, true},   {"|FX|", "F", kForce, true},     {"|FY|", "F", kForce, true},
+    {"|FZ|", "F", kForce, true},     {"||F||", "F", kForce, true},
+    // The moments: the manual does not say about which point, nor where on the pair the force acts.
+    {"MX", "F L", kMoment, false},   {"MY", "F L", kMoment, false},   {"MZ", "F L", kMoment, false},
     {"CE_ELAST", "E", kMoment, true}, {"CE_FRIC", "E", kMoment, true}, {"CE_DAMP", "E", kMoment, true}}};
 constexpr std::array<S, 6> kForcesDef{"FNX", "FNY", "FNZ", "FTX", "FTY", "FTZ"};
-constexpr std::array<G, 1> kInterfaceGroups{{{"DEF", kForcesDef}}};
+constexpr std::array<S, 3> kForcesFN{"FNX", "FNY", "FNZ"}, kForcesFT{"FTX", "FTY", "FTZ"};
+constexpr std::array<S, 4> kInterfaceAbsFN{"|FNX|", "|FNY|", "|FNZ|", "||FN||"},
+    kInterfaceAbsF{"|FX|", "|FY|", "|FZ|", "||F||"};
+constexpr std::array<G, 5> kInterfaceGroups{
+    {{"DEF", kForcesDef}, {"FN", kForcesFN}, {"FT", kForcesFT}, {"|FN|", kInterfaceAbsFN}, {"|F|", kInterfaceAbsF}}};
 
 // ---- /TH/RWALL
 constexpr std::array<V, 6> kWall{{{"FNX", "F", kForce, true}, {"FNY", "F", kForce, true}, {"FNZ", "F", kForce, true},
@@ -133,11 +140,21 @@ constexpr std::array<S, 3> kSectionFN{"FNX", "FNY", "FNZ"}, kSectionFT{"FTX", "F
 constexpr std::array<G, 5> kSectionGroups{
     {{"DEF", kSectionDef}, {"FN", kSectionFN}, {"FT", kSectionFT}, {"M", kSectionM}, {"CENTER", kSectionCenter}}};
 
+// ---- /TH/ACCEL: the accelerometer's filtered acceleration and the integral of its raw acceleration. The manual's
+// groups table reads "DEF W"; the reference starter lists DEF as AX AY AZ (its listing of the QA deck
+// rbody_rotation: "3 VAR ... AX AY AZ"), so W is the integrals.
+constexpr std::array<V, 6> kAccelerometer{{
+    {"AX", "L/T^2", kAcceleration, true}, {"AY", "L/T^2", kAcceleration, true}, {"AZ", "L/T^2", kAcceleration, true},
+    {"WX", "L/T", kVelocity, true},       {"WY", "L/T", kVelocity, true},       {"WZ", "L/T", kVelocity, true}}};
+constexpr std::array<S, 3> kAccelerometerDef{"AX", "AY", "AZ"}, kAccelerometerW{"WX", "WY", "WZ"};
+constexpr std::array<G, 2> kAccelerometerGroups{{{"DEF", kAccelerometerDef}, {"W", kAccelerometerW}}};
+
 constexpr HistoryKind kNodeKind{"NODE", kNode, kNodeGroups}, kPartKind{"PART", kPart, kPartGroups},
     kSubsetKind{"SUBS", kPart, kPartGroups}, kShellKind{"SHEL", kShell, kShellGroups},
     kSh3nKind{"SH3N", kShell, kShellGroups}, kBrickKind{"BRIC", kBrick, kBrickGroups},
     kInterfaceKind{"INTER", kInterface, kInterfaceGroups}, kWallKind{"RWALL", kWall, kWallGroups},
-    kBodyKind{"RBODY", kBody, kBodyGroups}, kSectionKind{"SECTIO", kSection, kSectionGroups};
+    kBodyKind{"RBODY", kBody, kBodyGroups}, kSectionKind{"SECTIO", kSection, kSectionGroups},
+    kAccelerometerKind{"ACCEL", kAccelerometer, kAccelerometerGroups};
 
 const HistoryVariable* find_variable(const HistoryKind& kind, std::string_view name) {
   for (const HistoryVariable& v : kind.variables)
@@ -159,6 +176,7 @@ const HistoryKind& history_kind(HistoryObject object) {
     case HistoryObject::RigidWall: return kWallKind;
     case HistoryObject::RigidBody: return kBodyKind;
     case HistoryObject::Section: return kSectionKind;
+    case HistoryObject::Accelerometer: return kAccelerometerKind;
   }
   return kNodeKind;
 }
@@ -184,6 +202,23 @@ HistorySelection select_history_variables(HistoryObject object, const std::vecto
     for (std::string_view member : group->members) add(find_variable(kind, member));
   }
   return selection;
+}
+
+std::vector<std::int32_t> objects_with_history(const Model& m, HistoryObject object,
+                                               std::span<const std::string_view> variables) {
+  std::vector<std::int32_t> objects;
+  for (const TimeHistoryRequest& th : m.histories) {
+    if (th.object != object) continue;
+    const HistorySelection selection = select_history_variables(object, th.variables);
+    const auto named = [&](const HistoryVariable* v) {
+      return std::find(variables.begin(), variables.end(), v->name) != variables.end();
+    };
+    const bool asks = std::any_of(selection.variables.begin(), selection.variables.end(), named);
+    if (asks) objects.insert(objects.end(), th.objects.begin(), th.objects.end());
+  }
+  std::sort(objects.begin(), objects.end());
+  objects.erase(std::unique(objects.begin(), objects.end()), objects.end());
+  return objects;
 }
 
 double si_factor(const Dimension& d, const double (&work_si)[3]) {

@@ -38,7 +38,7 @@ double scalar(const Values& v) {
 }
 
 struct NodeValues {
-  Vec3 d, v, a, vr, ar, x, reaction, reaction_moment;
+  Vec3 d, v, a, vr, ar, x, reaction, reaction_moment, dr;
 };
 using N = NodeValues;
 constexpr Evaluator<N> kNode[] = {
@@ -50,7 +50,8 @@ constexpr Evaluator<N> kNode[] = {
     {"X", component<N, &N::x, 0>},   {"Y", component<N, &N::x, 1>},   {"Z", component<N, &N::x, 2>},
     {"REACX", component<N, &N::reaction, 0>}, {"REACY", component<N, &N::reaction, 1>},
     {"REACZ", component<N, &N::reaction, 2>}, {"REACXX", component<N, &N::reaction_moment, 0>},
-    {"REACYY", component<N, &N::reaction_moment, 1>}, {"REACZZ", component<N, &N::reaction_moment, 2>}};
+    {"REACYY", component<N, &N::reaction_moment, 1>}, {"REACZZ", component<N, &N::reaction_moment, 2>},
+    {"DRX", component<N, &N::dr, 0>}, {"DRY", component<N, &N::dr, 1>}, {"DRZ", component<N, &N::dr, 2>}};
 
 struct PartValues {
   double ie = 0.0, ke = 0.0, he = 0.0, rke = 0.0, mass = 0.0;
@@ -92,12 +93,18 @@ constexpr Evaluator<B> kBrick[] = {
 struct ForceValues {  // interfaces and rigid walls: normal and tangential force, interface energies
   Vec3 fn, ft;
   double elastic = 0.0, friction = 0.0, damping = 0.0;
+  Vec3 pair_normal_abs{}, pair_force_abs{};  // interfaces: sums over the pairs of |fn n_k| and |f_k|
+  double pair_normal_norm = 0.0, pair_force_norm = 0.0;
 };
 using F = ForceValues;
 constexpr Evaluator<F> kForces[] = {
     {"FNX", component<F, &F::fn, 0>}, {"FNY", component<F, &F::fn, 1>}, {"FNZ", component<F, &F::fn, 2>},
     {"FTX", component<F, &F::ft, 0>}, {"FTY", component<F, &F::ft, 1>}, {"FTZ", component<F, &F::ft, 2>},
-    {"CE_ELAST", scalar<F, &F::elastic>}, {"CE_FRIC", scalar<F, &F::friction>}, {"CE_DAMP", scalar<F, &F::damping>}};
+    {"CE_ELAST", scalar<F, &F::elastic>}, {"CE_FRIC", scalar<F, &F::friction>}, {"CE_DAMP", scalar<F, &F::damping>},
+    {"|FNX|", component<F, &F::pair_normal_abs, 0>}, {"|FNY|", component<F, &F::pair_normal_abs, 1>},
+    {"|FNZ|", component<F, &F::pair_normal_abs, 2>}, {"||FN||", scalar<F, &F::pair_normal_norm>},
+    {"|FX|", component<F, &F::pair_force_abs, 0>},    {"|FY|", component<F, &F::pair_force_abs, 1>},
+    {"|FZ|", component<F, &F::pair_force_abs, 2>},    {"||F||", scalar<F, &F::pair_force_norm>}};
 
 struct BodyValues {
   Vec3 f, m, r;
@@ -107,6 +114,14 @@ constexpr Evaluator<R> kBody[] = {
     {"FX", component<R, &R::f, 0>}, {"FY", component<R, &R::f, 1>}, {"FZ", component<R, &R::f, 2>},
     {"MX", component<R, &R::m, 0>}, {"MY", component<R, &R::m, 1>}, {"MZ", component<R, &R::m, 2>},
     {"RX", component<R, &R::r, 0>}, {"RY", component<R, &R::r, 1>}, {"RZ", component<R, &R::r, 2>}};
+
+struct AccelerometerValues {
+  Vec3 a, w;  // filtered acceleration [L/T^2], integral of the raw acceleration [L/T]
+};
+using A = AccelerometerValues;
+constexpr Evaluator<A> kAccelerometer[] = {
+    {"AX", component<A, &A::a, 0>}, {"AY", component<A, &A::a, 1>}, {"AZ", component<A, &A::a, 2>},
+    {"WX", component<A, &A::w, 0>}, {"WY", component<A, &A::w, 1>}, {"WZ", component<A, &A::w, 2>}};
 
 // The evaluator of `name` for a kind of object, or -1 when Crumple computes no such variable.
 template <class Values, std::size_t Count>
@@ -127,6 +142,7 @@ int evaluator_of(HistoryObject object, std::string_view name) {
     case HistoryObject::Interface:
     case HistoryObject::RigidWall: return find(kForces, name);
     case HistoryObject::RigidBody: return find(kBody, name);
+    case HistoryObject::Accelerometer: return find(kAccelerometer, name);
     case HistoryObject::Section: return -1;
   }
   return -1;
@@ -148,6 +164,7 @@ std::string object_title(const Model& m, const TimeHistoryRequest& th, std::size
     case HistoryObject::RigidBody: return m.rigid_bodies[at].title;
     case HistoryObject::Interface: return m.type7_interfaces[at].title;
     case HistoryObject::Section: return m.sections[at].title;
+    case HistoryObject::Accelerometer: return m.accelerometers[at].title;
     default: return k < th.object_names.size() ? th.object_names[k] : std::string();
   }
 }
@@ -157,12 +174,25 @@ Vec3 of(const std::vector<double>& x, const std::vector<double>& y, const std::v
   return {x[k], y[k], z[k]};
 }
 
+Vec3 of(const std::vector<double>& xyz, std::size_t first) { return {xyz[first], xyz[first + 1], xyz[first + 2]}; }
+
 // The change of a velocity over the step, times `scale` / dt: NaN when the update is not known.
 Vec3 rate_of_change(const Vec3& now, const std::array<const std::vector<double>*, 6>& then, std::size_t first,
                   std::size_t k, double scale, double dt) {
   Vec3 out;
   for (std::size_t c = 0; c < 3; ++c) out[c] = dt > 0.0 ? scale * (now[c] - (*then[first + c])[k]) / dt : kUnknown;
   return out;
+}
+
+// The integral of node k's angular velocity (solver/node_rotations.hpp): NaN for a node the cycle does not keep it
+// for (no request asked DRX, DRY or DRZ of it).
+Vec3 node_rotation(const HistoryIntegrals& h, std::size_t k) {
+  const auto at = std::lower_bound(h.rotation_nodes.begin(), h.rotation_nodes.end(), static_cast<std::int32_t>(k));
+  const bool kept = at != h.rotation_nodes.end() && *at == static_cast<std::int32_t>(k) &&
+                    h.rotation.size() == 3 * h.rotation_nodes.size();
+  if (!kept)
+    return {kUnknown, kUnknown, kUnknown};
+  return of(h.rotation, 3 * static_cast<std::size_t>(at - h.rotation_nodes.begin()));
 }
 
 NodeValues node_values(const Model& m, const SolverState& s, const VelocityChange& change, std::size_t k) {
@@ -182,6 +212,7 @@ NodeValues node_values(const Model& m, const SolverState& s, const VelocityChang
   const double reaction_dt = in_body ? 0.0 : dt;
   out.reaction = rate_of_change(out.v, change.free, 0, k, n.mass[k], reaction_dt);
   out.reaction_moment = rate_of_change(out.vr, change.free, 3, k, n.inertia[k], reaction_dt);
+  out.dr = node_rotation(s.histories, k);
   return out;
 }
 
@@ -223,7 +254,8 @@ ForceValues wall_values(const RigidWallState& w) {
 }
 
 ForceValues interface_values(const InterfaceResult& r) {
-  return {r.normal_force, r.tangential_force, r.elastic_energy, r.friction_work, r.damping_work};
+  return {r.normal_force,    r.tangential_force, r.elastic_energy,   r.friction_work,  r.damping_work,
+          r.pair_normal_abs, r.pair_force_abs,   r.pair_normal_norm, r.pair_force_norm};
 }
 
 // The rotation vector (axis times angle) of a rotation matrix, row-major.
@@ -247,6 +279,13 @@ BodyValues body_values(const SolverState& s, const RigidBodyState& b) {
   const NodalState& n = s.nodes;
   const auto k = static_cast<std::size_t>(b.main_node);
   return {of(n.fx, n.fy, n.fz, k), of(n.mx, n.my, n.mz, k), rotation_vector(b.rotation)};
+}
+
+// What the cycle integrated for accelerometer `k` (solver/accelerometers.hpp).
+AccelerometerValues accelerometer_values(const HistoryIntegrals& h, std::size_t k) {
+  if (3 * k + 2 >= h.accel_filtered.size() || 3 * k + 2 >= h.accel_velocity.size())
+    throw std::runtime_error(fmt::format("history: the solver state has no values for accelerometer {}", k));
+  return {of(h.accel_filtered, 3 * k), of(h.accel_velocity, 3 * k)};
 }
 
 }  // namespace
@@ -430,6 +469,9 @@ void HistoryChannels::evaluate(const Request& r, const SolverState& s, const Vel
       case HistoryObject::Interface: append(kForces, interface_values(s.contact.results[o]), r.getters, row); break;
       case HistoryObject::RigidWall: append(kForces, wall_values(s.walls[o]), r.getters, row); break;
       case HistoryObject::RigidBody: append(kBody, body_values(s, s.bodies[o]), r.getters, row); break;
+      case HistoryObject::Accelerometer:
+        append(kAccelerometer, accelerometer_values(s.histories, o), r.getters, row);
+        break;
       case HistoryObject::Section: break;
     }
   }

@@ -5,6 +5,8 @@
 #include <cmath>
 
 #include "crumple/contact/contact.hpp"
+#include "crumple/solver/accelerometers.hpp"
+#include "crumple/solver/node_rotations.hpp"
 #include "solver/internal.hpp"
 
 namespace crumple::solver {
@@ -390,6 +392,9 @@ void apply_constraints(const Model& m, SolverState& s, VelocityScratch& scratch,
   if (!s.contact.interfaces.empty())
     s.energy.contact = contact::contact_work(s.contact, n, scratch.before.data(), dt_average);
   record_acceleration(s, scratch, dt_average);
+  // /ACCEL: only a deck with accelerometers has any (a loop over them, not over the nodes).
+  update_accelerometers(m.accelerometers, n, {&scratch.before[0], &scratch.before[1], &scratch.before[2]}, dt_average,
+                        s.histories);
 }
 
 void advance_positions(SolverState& s, double dt_next) {
@@ -399,6 +404,8 @@ void advance_positions(SolverState& s, double dt_next) {
     n.y[k] += dt_next * n.vy[k];
     n.z[k] += dt_next * n.vz[k];
   }
+  // /TH/NODE DRX DRY DRZ: only the nodes a request asks them of (none: no loop).
+  integrate_node_rotations(n, dt_next, s.histories);
   s.time += dt_next;
   s.dt = dt_next;
   ++s.cycle;

@@ -7,6 +7,8 @@
 #include "crumple/contact/contact.hpp"
 #include "crumple/core/geometry.hpp"
 #include "crumple/model/mass.hpp"
+#include "crumple/solver/accelerometers.hpp"
+#include "crumple/solver/node_rotations.hpp"
 #include "solver/internal.hpp"
 
 namespace crumple::solver {
@@ -164,6 +166,8 @@ SolverState make_state(const Model& m, std::vector<std::string>& notes, Domain d
   take_domain(m, s, std::move(domain));
   setup_rigid_bodies(m, s);
   setup_rigid_walls(m, s);
+  setup_accelerometers(m.accelerometers.size(), s.histories);
+  setup_node_rotations(m, s.histories);
   s.mass_initial = 0.0;
   for (double mass : s.nodes.mass) s.mass_initial += mass;
   const auto [translational, rotational] = kinetic_energy(s);  // a rigid body's initial spin is rotational (RB-7)

@@ -269,6 +269,61 @@ TEST(ContactPass, ViscousFrictionDashpotShortensTheNodeStep) {
   }
 }
 
+// /TH/INTER |FNX| .. ||F|| (docs/output-format.md, "INTER"): per pair the absolute components and the magnitude of
+// its normal force and of its whole force, summed over the pairs in contact, only when a request asks them.
+// Beside the free edge x = 2 (as above): the normal (0.06, 0, 0.0529) / 0.08 carries f = K0 penalty at p = 0.02.
+TEST(ContactPass, PairSumsOfAbsoluteForcesOnlyWhenAsked) {
+  TwoSegments unasked(2.06, 0.5, std::sqrt(0.08 * 0.08 - 0.06 * 0.06));
+  unasked.run();
+  EXPECT_EQ(unasked.contact.results[0].pair_normal_norm, 0.0);
+  EXPECT_EQ(unasked.contact.results[0].pair_normal_abs[0], 0.0);
+  TwoSegments s(2.06, 0.5, std::sqrt(0.08 * 0.08 - 0.06 * 0.06));
+  s.contact.interfaces[0].sum_pair_forces = true;
+  s.run();
+  const InterfaceResult& r = s.contact.results[0];
+  const double f = penalty_force(1000.0, 0.1, 0.02), nz = std::sqrt(0.08 * 0.08 - 0.06 * 0.06) / 0.08;
+  EXPECT_NEAR(r.pair_normal_abs[0], 0.75 * f, 1e-9);
+  EXPECT_NEAR(r.pair_normal_abs[1], 0.0, 1e-12);
+  EXPECT_NEAR(r.pair_normal_abs[2], nz * f, 1e-9);
+  EXPECT_NEAR(r.pair_normal_norm, f, 1e-9);
+  EXPECT_NEAR(r.pair_force_norm, f, 1e-9);  // no friction: the whole force is the normal one
+  EXPECT_NEAR(r.pair_force_abs[0], 0.75 * f, 1e-9);
+}
+
+// Two secondary nodes pushed opposite ways through the plate (z = +0.04 over the first square, z = -0.04 under the
+// second): the net normal force cancels, the sum of absolute values is 2 f. Sliding along x at 1 m/s with
+// Coulomb friction mu = 0.2 (a dashpot far above the cone): each pair's friction is mu f along -x, so |FX| = 2 mu f
+// while the net friction force is -2 mu f, and ||F|| = 2 f sqrt(1 + mu^2).
+TEST(ContactPass, PairSumsDoNotCancelWhereTheForcesDo) {
+  TwoSegments s(0.5, 0.25, 0.04);
+  s.nodes.resize(8);
+  const double xy[6][2] = {{0, 0}, {1, 0}, {2, 0}, {0, 1}, {1, 1}, {2, 1}};
+  for (std::size_t k = 0; k < 6; ++k) s.nodes.x[k] = xy[k][0], s.nodes.y[k] = xy[k][1], s.nodes.mass[k] = 1.0;
+  s.nodes.x[6] = 0.5, s.nodes.y[6] = 0.25, s.nodes.z[6] = 0.04, s.nodes.mass[6] = 0.5;
+  s.nodes.x[7] = 1.5, s.nodes.y[7] = 0.75, s.nodes.z[7] = -0.04, s.nodes.mass[7] = 0.5;
+  s.nodes.vx[6] = s.nodes.vx[7] = 1.0;
+  ContactInterface& in = s.contact.interfaces[0];
+  in.secondary_nodes = {6, 7};
+  for (auto* v : {&in.node_gap, &in.gap_reduction, &in.gap_clearance, &in.node_tangent_sum, &in.node_reach_stiffness,
+                  &in.node_friction_viscosity, &in.node_element_stiffness})
+    v->assign(2, 0.0);
+  in.node_active = {1, 1}, in.node_touched = {0, 0}, in.node_impacted = {0, 0};
+  in.friction = true, in.friction_law.fric = 0.2, in.friction_damping = 1e3, in.friction_form = 1;
+  in.sum_pair_forces = true;
+  s.contact.fx.assign(8, 0.0), s.contact.fy.assign(8, 0.0), s.contact.fz.assign(8, 0.0);
+  s.run();
+  const InterfaceResult& r = s.contact.results[0];
+  const double f = penalty_force(1000.0, 0.1, 0.06), mu = 0.2;
+  EXPECT_EQ(r.active_nodes, 2);
+  EXPECT_NEAR(r.normal_force[2], 0.0, 1e-9 * f);
+  EXPECT_NEAR(r.pair_normal_abs[2], 2.0 * f, 1e-9 * f);
+  EXPECT_NEAR(r.pair_normal_norm, 2.0 * f, 1e-9 * f);
+  EXPECT_NEAR(r.tangential_force[0], -2.0 * mu * f, 1e-9 * f);
+  EXPECT_NEAR(r.pair_force_abs[0], 2.0 * mu * f, 1e-9 * f);
+  EXPECT_NEAR(r.pair_force_abs[2], 2.0 * f, 1e-9 * f);
+  EXPECT_NEAR(r.pair_force_norm, 2.0 * f * std::sqrt(1.0 + mu * mu), 1e-9 * f);
+}
+
 // The bucket sort finds exactly the pairs a brute-force test of every node against every grown segment box finds.
 TEST(ContactSearch, BucketSortMatchesBruteForceOnRandomClouds) {
   std::mt19937 rng(12345);

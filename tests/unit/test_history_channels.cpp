@@ -3,10 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iterator>
 
 #include "crumple/core/geometry.hpp"
 #include "crumple/model/history_variables.hpp"
 #include "crumple/output/history_channels.hpp"
+#include "crumple/solver/accelerometers.hpp"
+#include "crumple/solver/node_rotations.hpp"
 #include "crumple/state/element_status.hpp"
 #include "crumple/solver/solver.hpp"
 #include "deck_files.hpp"
@@ -25,7 +28,8 @@ std::string th(const std::string& keyword, const std::string& variables, const s
 }
 
 // Two shells of the plate in parts 1 and 2 (nodes 2 and 5 shared), subset 9 of both; a brick (part 3, nodes 7-14) of
-// side 0.01; a rigid body 7 (main node 15, node 16) of mass 3; a rigid wall under the plate; an interface on it.
+// side 0.01; a rigid body 7 (main node 15, node 16) of mass 3; a rigid wall under the plate; an interface on it;
+// accelerometers 4 (node 5, unfiltered) and 6 (node 7, Fcut 100).
 std::string model_cards() {
   std::string s = "/NODE\n";
   const double xs[3] = {0.0, 0.01, 0.02};
@@ -50,6 +54,7 @@ std::string model_cards() {
   s += "/RBODY/7\nsled\n" + I(15) + I(0) + I(0) + I(0) + R(3.0) + I(14) + I(0) + I(0) + I(0) + "\n" + vec(0, 0, 0) +
        vec(0, 0, 0) + I(0) + I(0) + "\n";
   s += "/INTER/TYPE7/5\ncontact\n" + I(10) + I(20) + "\n\n\n\n" + "       000\n\n";
+  s += "/ACCEL/4\nsensor\n" + I(5) + "\n/ACCEL/6\nblock sensor\n" + I(7) + I(0) + blank(10) + R(100.0) + "\n";
   return s;
 }
 
@@ -62,7 +67,8 @@ std::string requests() {
             I(1) + I(0) + "\n" + I(2) + I(0) + "\n") +
          th("/TH/BRIC/5", var("DEF") + var("VOL"), I(1) + blank(10) + "cube\n") +
          th("/TH/RWALL/6", var("DEF"), I(1) + "\n") + th("/TH/RBODY/7", var("DEF"), I(7) + "\n") +
-         th("/TH/INTER/8", var("DEF") + var("CE_ELAST") + var("CE_FRIC") + var("CE_DAMP"), I(5) + "\n");
+         th("/TH/INTER/8", var("DEF") + var("CE_ELAST") + var("CE_FRIC") + var("CE_DAMP") + var("|FN|") + var("|F|"),
+            I(5) + "\n");
 }
 
 struct Fixture {
@@ -144,12 +150,13 @@ TEST(HistoryChannels, EveryWrittenVariableIsEvaluated) {
   const std::pair<const char*, std::string> kinds[] = {
       {"/TH/NODE/1", I(1) + I(0) + "\n"},       {"/TH/PART/2", I(1) + "\n"}, {"/TH/SUBS/3", I(9) + "\n"},
       {"/TH/SHEL/4", I(1) + I(0) + "\n"},       {"/TH/BRIC/5", I(1) + "\n"}, {"/TH/RWALL/6", I(1) + "\n"},
-      {"/TH/RBODY/7", I(7) + "\n"},             {"/TH/INTER/8", I(5) + "\n"}};
+      {"/TH/RBODY/7", I(7) + "\n"},             {"/TH/INTER/8", I(5) + "\n"}, {"/TH/ACCEL/9", I(4) + "\n"}};
   const HistoryObject objects[] = {HistoryObject::Node,  HistoryObject::Part,      HistoryObject::Subset,
                                    HistoryObject::Shell, HistoryObject::Brick,     HistoryObject::RigidWall,
-                                   HistoryObject::RigidBody, HistoryObject::Interface};
+                                   HistoryObject::RigidBody, HistoryObject::Interface, HistoryObject::Accelerometer};
+  constexpr std::size_t kKinds = std::size(objects);
   std::vector<std::size_t> expected;
-  for (std::size_t k = 0; k < 8; ++k) {
+  for (std::size_t k = 0; k < kKinds; ++k) {
     std::string variables;
     std::size_t written = 0, on_line = 0;
     for (const HistoryVariable& v : history_kind(objects[k]).variables) {
@@ -161,10 +168,11 @@ TEST(HistoryChannels, EveryWrittenVariableIsEvaluated) {
   }
   Fixture f(cards);
   const HistoryChannels channels(f.model());
-  ASSERT_EQ(channels.datasets().size(), 8u);
-  for (std::size_t k = 0; k < 8; ++k) EXPECT_EQ(channels.datasets()[k].columns.size(), expected[k]) << kinds[k].first;
+  ASSERT_EQ(channels.datasets().size(), kKinds);
+  for (std::size_t k = 0; k < kKinds; ++k)
+    EXPECT_EQ(channels.datasets()[k].columns.size(), expected[k]) << kinds[k].first;
   const Row row = evaluate(channels, f.state);
-  for (std::size_t k = 0; k < 8; ++k) EXPECT_EQ(row.values[k].size(), expected[k]);
+  for (std::size_t k = 0; k < kKinds; ++k) EXPECT_EQ(row.values[k].size(), expected[k]);
 }
 
 // Displacement from the deck's position, velocity, the acceleration and the kinematic conditions' reaction from
@@ -316,6 +324,7 @@ TEST(HistoryChannels, BrickWallBodyAndInterfaceValues) {
   InterfaceResult& r = s.contact.results.at(0);
   r.normal_force = {0.0, 0.0, 9.0}, r.tangential_force = {1.0, 0.0, 0.0};
   r.elastic_energy = 0.5, r.friction_work = 0.25, r.damping_work = 0.125;
+  r.pair_normal_abs = {1.5, 0.0, 11.0}, r.pair_normal_norm = 12.0, r.pair_force_abs = {2.5, 0.5, 11.0}, r.pair_force_norm = 13.0;
   const HistoryChannels channels(m);
   Row row = evaluate(channels, s);
   EXPECT_EQ(row("BRIC_5/1/SX"), 1.0);
@@ -338,6 +347,12 @@ TEST(HistoryChannels, BrickWallBodyAndInterfaceValues) {
   EXPECT_EQ(row("INTER_8/5/CE_ELAST"), 0.5);
   EXPECT_EQ(row("INTER_8/5/CE_FRIC"), 0.25);
   EXPECT_EQ(row("INTER_8/5/CE_DAMP"), 0.125);
+  EXPECT_EQ(row("INTER_8/5/|FNX|"), 1.5);
+  EXPECT_EQ(row("INTER_8/5/|FNZ|"), 11.0);
+  EXPECT_EQ(row("INTER_8/5/||FN||"), 12.0);
+  EXPECT_EQ(row("INTER_8/5/|FY|"), 0.5);
+  EXPECT_EQ(row("INTER_8/5/||F||"), 13.0);
+  EXPECT_TRUE(s.contact.interfaces.at(0).sum_pair_forces);  // asked by /TH/INTER/8: the pass sums them
   // The rotation vector of a large turn about a slanted axis, and of a half turn.
   const double a = 1.0 / std::sqrt(2.0);
   body.rotation = rotation({a, a, 0.0}, 3.0);
@@ -348,4 +363,63 @@ TEST(HistoryChannels, BrickWallBodyAndInterfaceValues) {
   row = evaluate(channels, s);
   EXPECT_NEAR(row("RBODY_7/7/RY"), 3.14159265358979323846, 1e-7);
   EXPECT_NEAR(row("RBODY_7/7/RX"), 0.0, 1e-7);
+}
+
+// /TH/ACCEL: after one cycle's velocity update, the raw acceleration (v - before) / dt of an unfiltered accelerometer
+// and its integral, and the filter's first sample b0 b0' a (fc h = 1/4: docs/output-format.md, eq. ACC-2) for the
+// filtered one, in the card's order of objects, with their units and titles.
+TEST(HistoryChannels, AccelerometerValuesAfterAVelocityUpdate) {
+  Fixture f(requests() + th("/TH/ACCEL/9", var("DEF") + var("W"), I(6) + I(4) + "\n"));
+  SolverState& s = f.state;
+  NodalState& n = s.nodes;
+  std::vector<double> bx = n.vx, by = n.vy, bz = n.vz;
+  const std::size_t k5 = f.node(5), k7 = f.node(7);
+  n.vx[k5] = 0.5, n.vy[k5] = -0.25, n.vz[k7] = 2.0;
+  const double dt = 2.5e-3;  // 100 Hz x 2.5 ms = 1/4
+  update_accelerometers(f.model().accelerometers, n, {&bx, &by, &bz}, dt, s.histories);
+  const HistoryChannels channels(f.model());
+  const HistoryDataset& d = channels.datasets().back();
+  EXPECT_EQ(d.name, "ACCEL_9");
+  EXPECT_EQ(d.kind, "ACCEL");
+  ASSERT_EQ(d.columns.size(), 12u);
+  EXPECT_EQ(d.columns[0].label, "ACCEL_9/6/AX");
+  EXPECT_EQ(d.columns[0].object_title, "block sensor");
+  EXPECT_EQ(d.columns[0].unit, "L/T^2");
+  EXPECT_EQ(d.columns[3].label, "ACCEL_9/6/WX");
+  EXPECT_EQ(d.columns[3].unit, "L/T");
+  EXPECT_EQ(d.columns[6].label, "ACCEL_9/4/AX");
+  const Row row = evaluate(channels, s);
+  EXPECT_DOUBLE_EQ(row("ACCEL_9/4/AX"), 0.5 / dt);
+  EXPECT_DOUBLE_EQ(row("ACCEL_9/4/AY"), -0.25 / dt);
+  EXPECT_EQ(row("ACCEL_9/4/AZ"), 0.0);
+  EXPECT_DOUBLE_EQ(row("ACCEL_9/4/WX"), 0.5);
+  EXPECT_DOUBLE_EQ(row("ACCEL_9/4/WY"), -0.25);
+  EXPECT_NEAR(row("ACCEL_9/6/AZ"), 0.09398085143379448 * 2.0 / dt, 1e-12 * 2.0 / dt);
+  EXPECT_EQ(row("ACCEL_9/6/AX"), 0.0);
+  EXPECT_DOUBLE_EQ(row("ACCEL_9/6/WZ"), 2.0);
+}
+
+// /TH/NODE DRX DRY DRZ: the cycle integrates the angular velocity of the nodes a request asks them of, and only
+// theirs: two steps with w = (0.1, 0.2, 0.3) for dt = 1e-3 then w = (-0.5, 0, 1) for dt = 2e-3 give
+// DRX = 1e-4 - 1e-3 = -9e-4, DRY = 2e-4, DRZ = 3e-4 + 2e-3 = 2.3e-3 (hand values).
+TEST(HistoryChannels, NodeRotationIsTheIntegralOfTheAngularVelocity) {
+  Fixture f(requests() + th("/TH/NODE/9", var("DRX") + var("DRY") + var("DRZ"), I(5) + I(0) + "\n" + I(2) + I(0) + "\n"));
+  SolverState& s = f.state;
+  NodalState& n = s.nodes;
+  const std::size_t k = f.node(2), other = f.node(5);
+  ASSERT_EQ(s.histories.rotation_nodes.size(), 2u);  // nodes 2 and 5, and not the nodes of /TH/NODE/1 without DR
+  n.wx[k] = 0.1, n.wy[k] = 0.2, n.wz[k] = 0.3, n.wz[other] = 7.0;
+  n.wx[f.node(7)] = 9.0;  // a node no request asks DR of: not integrated
+  integrate_node_rotations(n, 1e-3, s.histories);
+  n.wx[k] = -0.5, n.wy[k] = 0.0, n.wz[k] = 1.0;
+  integrate_node_rotations(n, 2e-3, s.histories);
+  const HistoryChannels channels(f.model());
+  const Row row = evaluate(channels, s);
+  EXPECT_NEAR(row("NODE_9/2/DRX"), -9e-4, 1e-18);
+  EXPECT_NEAR(row("NODE_9/2/DRY"), 2e-4, 1e-18);
+  EXPECT_NEAR(row("NODE_9/2/DRZ"), 2.3e-3, 1e-18);
+  EXPECT_NEAR(row("NODE_9/5/DRZ"), 7.0 * 3e-3, 1e-15);
+  EXPECT_EQ(row("NODE_9/5/DRX"), 0.0);
+  EXPECT_EQ(channels.datasets().back().columns[0].unit, "-");
+  EXPECT_EQ(channels.datasets().back().columns[0].label, "NODE_9/5/DRX");
 }

@@ -185,10 +185,6 @@ TEST(OutputKeywords, HistoriesCrumpleDoesNotWriteAreNamedWarnings) {
   EXPECT_EQ(skipped(unknown), (std::vector<std::string>{
                                   "/TH/NODE/2: output-only: TEMP not among the variables of /TH/NODE/2 in the manual "
                                   "that Crumple computes"}));
-  const Deck rotations = read(th("/TH/NODE/2", var("DEF") + var("DRX") + var("DRZ"), I(1) + "\n"));
-  EXPECT_EQ(skipped(rotations),
-            (std::vector<std::string>{"/TH/NODE/2: output-only: variables DRX DRZ not written (NAME.h5 records the "
-                                      "others)"}));
   // DEF of a shell names the membrane and bending energies, which Crumple does not split.
   const Deck shell = read(th("/TH/SHEL/3", var("DEF") + var("THIC"), I(1) + I(0) + "\n"));
   EXPECT_EQ(skipped(shell), (std::vector<std::string>{"/TH/SHEL/3: output-only: variables IEM IEB not written "
@@ -198,6 +194,10 @@ TEST(OutputKeywords, HistoriesCrumpleDoesNotWriteAreNamedWarnings) {
                                   "/TH/PART/1: output-only: time history not written by Crumple; variables IXX XXMOM "
                                   "not written; FOO not among the variables of /TH/PART/1 in the manual that Crumple "
                                   "computes"}));
+  // An interface's moments: the manual does not say about which point.
+  const Deck moments = read(th("/TH/INTER/5", var("|FNX|") + var("MX"), I(5) + "\n"));
+  EXPECT_EQ(skipped(moments), (std::vector<std::string>{"/TH/INTER/5: output-only: variables MX not written (NAME.h5 "
+                                                        "records the others)"}));
   const Deck sections = read(section(11) + th("/TH/SECTIO/6", var("DEF"), I(11) + "\n"));
   ASSERT_EQ(skipped(sections).size(), 2u);  // the /SECT card's note, then the history's
   EXPECT_EQ(skipped(sections)[1],
@@ -207,13 +207,59 @@ TEST(OutputKeywords, HistoriesCrumpleDoesNotWriteAreNamedWarnings) {
                                   th("/TH/SUBS/8", var("DEF"), I(30) + "\n") +
                                   th("/TH/RWALL/3", var("DEF"), I(1) + "\n") +
                                   th("/TH/RBODY/4", var("DEF"), I(7) + "\n") +
-                                  th("/TH/INTER/5", var("DEF") + var("CE_ELAST") + var("CE_FRIC") + var("CE_DAMP"),
+                                  th("/TH/INTER/5", var("DEF") + var("CE_ELAST") + var("CE_FRIC") + var("CE_DAMP") +
+                                                        var("|FN|") + var("|F|") + var("FN") + var("FT"),
                                      I(5) + "\n") +
-                                  th("/TH/NODE/2", var("XYZ") + var("A") + var("VR") + var("AR") + var("REACX"),
+                                  th("/TH/NODE/2", var("XYZ") + var("A") + var("VR") + var("AR") + var("REACX") +
+                                                       var("DRX") + var("DRZ"),
                                      I(1) + "\n") +
                                   th("/TH/SHELL/3", var("STRESS") + var("PLAS") + var("OFF") + var("EPSD"),
                                      I(1) + I(0) + "\n");
   EXPECT_TRUE(skipped(read(all_written)).empty()) << all_warnings(read(all_written));
+}
+
+// /ACCEL (docs/cards/loads-output-engine.md §6.3): node_ID 1-10, skew_ID 11-20 (0), Fcut 31-50 (blank: 0, no
+// filter); /TH/ACCEL names accelerometers by their ids and draws no warning.
+TEST(OutputKeywords, AccelerometersAndTheirHistory) {
+  const std::string cards = "/ACCEL/4\nhead\n" + I(5) + I(0) + blank(10) + R(1650.0) + "\n" + "/ACCEL/9\n\n" + I(7) +
+                            "\n" + th("/TH/ACCEL/3", var("DEF") + var("W"), I(9) + I(4) + "\n");
+  const Deck d = read(cards);
+  ASSERT_EQ(d.model.accelerometers.size(), 2u);
+  const Accelerometer& head = d.model.accelerometers[0];
+  EXPECT_EQ(head.user_id, 4);
+  EXPECT_EQ(head.title, "head");
+  EXPECT_EQ(head.node_id, 5);
+  EXPECT_EQ(head.node, d.model.index.nodes.at(5));
+  EXPECT_EQ(head.cutoff, 1650.0);
+  EXPECT_EQ(d.model.accelerometers[1].node, d.model.index.nodes.at(7));
+  EXPECT_EQ(d.model.accelerometers[1].cutoff, 0.0);
+  ASSERT_EQ(d.model.histories.size(), 1u);
+  const TimeHistoryRequest& h = d.model.histories[0];
+  EXPECT_EQ(h.object, HistoryObject::Accelerometer);
+  EXPECT_EQ(h.objects, (std::vector<std::int32_t>{1, 0}));
+  EXPECT_TRUE(d.report.warnings.empty()) << all_warnings(d);
+  EXPECT_TRUE(d.report.skipped_options.empty());
+}
+
+TEST(OutputKeywords, MalformedAccelerometersAreErrorsNamingTheField) {
+  const std::string skew = error_of("/ACCEL/4\nhead\n" + I(5) + I(2) + "\n");
+  EXPECT_TRUE(contains(skew, "/ACCEL/4: field skew_ID")) << skew;
+  EXPECT_TRUE(contains(skew, "skew frames are not supported by Crumple")) << skew;
+  const std::string negative = error_of("/ACCEL/4\nhead\n" + I(5) + I(0) + blank(10) + R(-1.0) + "\n");
+  EXPECT_TRUE(contains(negative, "field Fcut")) << negative;
+  EXPECT_TRUE(contains(negative, "non-negative cutoff frequency")) << negative;
+  const std::string no_node = error_of("/ACCEL/4\nhead\n" + I(0) + "\n");
+  EXPECT_TRUE(contains(no_node, "field node_ID")) << no_node;
+  const std::string missing = error_of("/ACCEL/4\nhead\n" + I(99) + "\n");
+  EXPECT_TRUE(contains(missing, "node 99 not defined")) << missing;
+  const std::string unit = error_of("/ACCEL/4/2\nhead\n" + I(5) + "\n");
+  EXPECT_TRUE(contains(unit, "unit_ID")) << unit;
+  const std::string unread = error_of("/ACCEL/4\nhead\n" + I(5) + I(0) + I(7) + "\n");  // columns 21-30 are blank
+  EXPECT_TRUE(contains(unread, "columns 30-30")) << unread;
+  const std::string unknown = error_of("/ACCEL/4\nhead\n" + I(5) + "\n" + th("/TH/ACCEL/3", var("DEF"), I(8) + "\n"));
+  EXPECT_TRUE(contains(unknown, "accelerometer 8 not defined")) << unknown;
+  const std::string twice = error_of("/ACCEL/4\nhead\n" + I(5) + "\n/ACCEL/4\nagain\n" + I(6) + "\n");
+  EXPECT_TRUE(contains(twice, "/ACCEL/4")) << twice;
 }
 
 // QA box_crush layout: the all-blank file-name line is a data line; without it the group line would be misread.

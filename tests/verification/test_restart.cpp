@@ -1,9 +1,11 @@
 // Restart (docs/theory/time-loop.md, "Restart"): a run stopped after k cycles with its snapshot written
 // (NAME.rst), then resumed with `--restart`, must end bitwise where the uninterrupted run ends: every field of
 // the snapshot (positions, velocities, stresses, plastic strains, hourglass stresses, contact pairs and their
-// friction history, rigid bodies, walls, energies, cycle count) and every history row written after the restart.
+// friction history, rigid bodies, walls, energies, cycle count) and every history row written after the restart,
+// the /TH datasets' included.
 // The decks cover shells with a rigid body and a rigid wall (the example tube), TYPE7 contact with friction and a
-// rigid body of bricks (contact_idel), and a continued run (ball_two_runs, stopped in its first engine deck).
+// rigid body of bricks (contact_idel), a continued run (ball_two_runs, stopped in its first engine deck), and
+// accelerometers, whose filters and integrals carry over (accel_strip).
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -15,6 +17,7 @@
 #include "crumple/solver/snapshot.hpp"
 #include "crumple/solver/solver_state.hpp"
 #include "deck_files.hpp"
+#include "crumple/output/history_reader.hpp"
 #include "crumple/output/results_reader.hpp"
 
 namespace crumple::test {
@@ -102,16 +105,27 @@ TEST_P(Restart, ResumedRunEndsBitwiseWhereTheUninterruptedRunEnds) {
     const std::vector<double> ya = a.doubles(std::string("/history/") + series), yb = b.doubles(std::string("/history/") + series);
     EXPECT_EQ(0, std::memcmp(ya.data() + offset, yb.data(), yb.size() * sizeof(double))) << series;
   }
+  // So are the /TH datasets' rows: what the cycle integrates for them (accelerometers, nodal rotations) carries over.
+  const HistoryFile listing(whole.path() / "RUN.h5");
+  for (const HistorySeries& th : listing.series()) {
+    if (th.path.rfind("/history/th/", 0) != 0) continue;
+    const std::size_t width = th.columns.size();
+    const std::vector<double> ya = a.doubles(th.path), yb = b.doubles(th.path);
+    ASSERT_EQ(yb.size(), (ta.size() - offset) * width) << th.path;
+    EXPECT_EQ(0, std::memcmp(ya.data() + offset * width, yb.data(), yb.size() * sizeof(double))) << th.path;
+  }
 }
 
 const std::filesystem::path kQa = CRUMPLE_QA_DIR;
 const std::filesystem::path kDecks = std::filesystem::path(CRUMPLE_SOURCE_DIR) / "decks";
+const std::filesystem::path kTestDecks = std::filesystem::path(CRUMPLE_SOURCE_DIR) / "tests" / "regression" / "decks";
 
 INSTANTIATE_TEST_SUITE_P(
     Decks, Restart,
     ::testing::Values(RestartCase{"tube", kDecks / "tube_impact" / "TUBE_0000.rad", 3000},
                       RestartCase{"contact_idel", kQa / "contact_idel" / "IDEL8_0000.rad", 333},
-                      RestartCase{"ball_two_runs", kQa / "ball_two_runs" / "BOULE1V4_0000.rad", 777}),
+                      RestartCase{"ball_two_runs", kQa / "ball_two_runs" / "BOULE1V4_0000.rad", 777},
+                      RestartCase{"accel_strip", kTestDecks / "accel_strip" / "ACCEL_0000.rad", 300}),
     [](const auto& p) { return std::string(p.param.name); });
 
 TEST(Restart, FileOfAnotherModelIsRefusedWithItsCounts) {

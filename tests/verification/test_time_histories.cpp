@@ -179,3 +179,44 @@ TEST(TimeHistories, TheFileHoldsTheStateAtEveryRowAndThePartsSumToTheModel) {
 }
 
 }  // namespace crumple::verification
+
+namespace crumple::verification {
+
+// /TH/NODE DRX DRY DRZ (docs/output-format.md, "NODE", eq. TH-1): a node of a free strip turned about z by /IMPVEL ZZ
+// at w = 2 rad/s (a drilling rotation, which no shell resists) has DRZ = w t at every row (the sum of w dt, the
+// positions' steps); its other integrals and those of a node left alone stay 0.
+TEST(TimeHistories, NodeRotationIsTheAngleOfAnImposedSpin) {
+  constexpr double kSpin = 2.0;
+  Strip strip;
+  strip.nx = 2, strip.ny = 1, strip.length = 0.2, strip.width = 0.1;
+  std::string s = node_cards(strip.nodes()) + shell_cards(1, strip.shells()) + part_card() +
+                  shell_property(0.002, 3, 0.0, 24) + elastic_material(kRho, kE, kNu) + unit_function(1);
+  s += node_group(1, {3}) + imposed_velocity(1, 1, "ZZ", 1, kSpin);
+  s += "/TH/NODE/1\nrotations\n" + var("DRX") + var("DRY") + var("DRZ") + var("VRZ") + "\n" + I(3) + I(0) + "\n" + I(1) +
+       I(0) + "\n";
+  test::TempDir dir;
+  dir.write("VERIF_0001.rad", "/RUN/VERIF/1\n1e-3\n/TFILE\n1e-4\n/PRINT/-100000\n");
+  const auto path = dir.write("VERIF_0000.rad", test::begin_card("VERIF") + s + "/END\n");
+  Model model = read_deck(path).model;
+  std::vector<double> times;
+  SimulationOptions options;
+  options.name = "VERIF";
+  options.output_directory = dir.path();
+  options.on_history_row = [&](const SolverState& state) { times.push_back(state.time); };
+  std::ostringstream console;
+  ASSERT_EQ(run_simulation(model, options, console).status, RunStatus::Normal);
+  const HistoryFile file(dir.path() / "VERIF.h5");
+  ASSERT_EQ(file.rows(), times.size());
+  ASSERT_GE(times.size(), 10u);
+  const Columns h(file);
+  for (std::size_t r = 0; r < times.size(); ++r) {
+    SCOPED_TRACE("row " + std::to_string(r));
+    EXPECT_EQ(h("NODE_1/3/VRZ", r), kSpin);
+    EXPECT_NEAR(h("NODE_1/3/DRZ", r), kSpin * times[r], 1e-12 * kSpin * times[r]);
+    EXPECT_NEAR(h("NODE_1/3/DRX", r), 0.0, 1e-12 * kSpin * times[r]);
+    EXPECT_NEAR(h("NODE_1/3/DRY", r), 0.0, 1e-12 * kSpin * times[r]);
+    EXPECT_NEAR(h("NODE_1/1/DRZ", r), 0.0, 1e-12 * kSpin * times[r]);
+  }
+}
+
+}  // namespace crumple::verification

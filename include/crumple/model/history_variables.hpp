@@ -12,6 +12,10 @@
 #include "crumple/model/output_requests.hpp"
 
 namespace crumple {
+struct Model;
+}
+
+namespace crumple {
 
 struct HistoryVariable {
   std::string_view name;  // upper case, as in the manual: "DX", "|FNX|"
@@ -40,6 +44,16 @@ struct HistorySelection {
   std::vector<std::string> unknown;
 };
 HistorySelection select_history_variables(HistoryObject object, const std::vector<std::string>& requested);
+
+// The /TH/INTER variables that sum over the interface's contact pairs (docs/output-format.md, "INTER"): the
+// contact pass adds them up only for the interfaces a request asks them of.
+inline constexpr std::string_view kInterfacePairSums[] = {"|FNX|", "|FNY|", "|FNZ|", "||FN||",
+                                                          "|FX|",  "|FY|",  "|FZ|",  "||F||"};
+
+// The objects (dense indices, sorted, each once) of the `object` kind for which some /TH request of the model asks
+// one of `variables` (its groups expanded): what the cycle must keep for those requests and for nothing else.
+std::vector<std::int32_t> objects_with_history(const Model& model, HistoryObject object,
+                                               std::span<const std::string_view> variables);
 
 // Factor that turns a value of dimension `d` in the working units `work_si` (SI size of one unit of mass, length
 // and time) into SI units.

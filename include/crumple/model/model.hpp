@@ -59,6 +59,7 @@ struct Model {
   std::vector<Type7Interface> type7_interfaces;
   std::vector<TimeHistoryRequest> histories;
   std::vector<Section> sections;
+  std::vector<Accelerometer> accelerometers;
 
   RunControl run;
 
@@ -69,7 +70,7 @@ struct Model {
 
   struct Index {
     IdMap nodes, parts, properties, materials, functions, node_groups, shell_groups, surfaces, subsets,
-        rigid_walls, rigid_bodies, interfaces, sections;
+        rigid_walls, rigid_bodies, interfaces, sections, accelerometers;
     std::array<IdMap, kElementKinds> elements;
   } index;
 

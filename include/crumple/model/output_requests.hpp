@@ -8,7 +8,9 @@
 
 namespace crumple {
 
-enum class HistoryObject : std::uint8_t { Node, Part, RigidWall, Interface, Shell, Sh3n, Brick, Subset, Section, RigidBody };
+enum class HistoryObject : std::uint8_t {
+  Node, Part, RigidWall, Interface, Shell, Sh3n, Brick, Subset, Section, RigidBody, Accelerometer
+};
 
 // Layouts: docs/cards/loads-output-engine.md §6.1. Variables are kept as written (upper case, each once, group names
 // such as DEF not expanded: select_history_variables in history_variables.hpp expands them); objects are kept once
@@ -24,6 +26,17 @@ struct TimeHistoryRequest {  // /TH/...
   std::vector<std::string> object_names;  // /TH/NODE, /TH/SHEL(L), /TH/SH3N, /TH/BRIC: the name of each object
                                           // (may be empty), parallel to object_ids; empty for the other kinds
   std::vector<std::int32_t> objects;    // dense indices (model build)
+};
+
+// /ACCEL (docs/cards/loads-output-engine.md §6.3): the acceleration of a node, filtered by a 4-pole Butterworth
+// low-pass (docs/output-format.md, "ACCEL"). The reader accepts skew_ID = 0 only (output in the global frame).
+struct Accelerometer {  // /ACCEL
+  SourceLocation where;
+  std::int64_t user_id = 0;
+  std::string title;
+  std::int64_t node_id = 0;
+  double cutoff = 0.0;       // Fcut: corner frequency of the filter [1/T]; 0 or blank: no filter
+  std::int32_t node = -1;    // dense index (model build)
 };
 
 // /SECT (docs/cards/loads-output-engine.md §6.2). The reader accepts ISAVE = 0 only, no moving frame, and a

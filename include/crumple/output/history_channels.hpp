@@ -27,7 +27,7 @@ struct HistoryColumn {
 // order of the request (groups expanded).
 struct HistoryDataset {
   std::string name;     // "<KIND>_<thgroup id>", e.g. "NODE_2" (a second card of the same kind and id: "NODE_2_2")
-  std::string kind;     // "NODE", "PART", "SUBS", "SHEL", "SH3N", "BRIC", "INTER", "RWALL", "RBODY"
+  std::string kind;     // "NODE", "PART", "SUBS", "SHEL", "SH3N", "BRIC", "INTER", "RWALL", "RBODY", "ACCEL"
   std::string keyword;  // the card's keyword line: "/TH/NODE/2"
   std::int64_t id = 0;  // thgroup id
   std::string title;

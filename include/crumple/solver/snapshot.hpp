@@ -106,6 +106,15 @@ void visit_interface(V& v, const std::string& at, ContactInterface& c, Interface
   v(at + "result/released", r.released);
 }
 
+// The /TH integrals (accelerometers, nodal rotations): only those the deck asks for exist, so a restart file of a
+// deck without them has none, as before they existed.
+template <class V>
+void visit_histories(V& v, HistoryIntegrals& h) {
+  for (auto [name, field] : {std::pair{"accel_filtered", &h.accel_filtered}, {"accel_velocity", &h.accel_velocity},
+                             {"accel_memory", &h.accel_memory}, {"rotation", &h.rotation}})
+    if (!field->empty()) v(std::string("histories/") + name, *field);
+}
+
 }  // namespace snapshot_detail
 
 // Calls v(name, field) for every field of the snapshot: std::vector<T>, std::array<T, N> and scalars (double,
@@ -139,6 +148,7 @@ void visit_state(V& v, SolverState& s, ResumeMarks& marks) {
     visit_interface(v, "interfaces/" + std::to_string(k) + "/", s.contact.interfaces[k], s.contact.results[k]);
   v("contact/fx", s.contact.fx), v("contact/fy", s.contact.fy), v("contact/fz", s.contact.fz);
   v("contact/touched", s.contact.touched);
+  visit_histories(v, s.histories);
 }
 
 }  // namespace crumple

@@ -69,6 +69,22 @@ struct RecordedNodalResults {
   std::vector<double> external_force;  // /CLOAD and /GRAV forces at t^n [M L T^-2]
 };
 
+// What the /TH outputs need integrated over every cycle and the cycle would otherwise not keep (docs/output-format.md,
+// "ACCEL", and "NODE" for DRX DRY DRZ): sized by the solver at the start only when the deck asks for it, else empty,
+// so that a deck without them pays nothing. Output only: no phase of the cycle reads it.
+struct HistoryIntegrals {
+  // /ACCEL, in the order of Model::accelerometers; 3 values (x y z, global) per accelerometer.
+  std::vector<double> accel_filtered;  // the filtered acceleration AX AY AZ [L/T^2]
+  std::vector<double> accel_velocity;  // WX WY WZ: the sum of the raw accelerations a^n dt^n since the start [L/T]
+  // 18 per accelerometer, 6 per component: the filter's last two inputs and the last two outputs of each of its
+  // two sections (x1 x2 y1 y2 z1 z2), zero at the start.
+  std::vector<double> accel_memory;
+  // /TH/NODE DRX DRY DRZ: the nodes a request asks them of (dense indices, sorted) and, 3 per node, the integral of
+  // their angular velocity, sum w^(n+1/2) dt^(n+1/2) since the start (global axes) [-].
+  std::vector<std::int32_t> rotation_nodes;
+  std::vector<double> rotation;
+};
+
 struct SolverState {
   NodalState nodes;
   std::vector<double> x0, y0, z0;                  // initial coordinates
@@ -100,6 +116,7 @@ struct SolverState {
     std::vector<std::int32_t> controlling, last_inverted, last_non_finite, failed;
   } group_share;
   RecordedNodalResults recorded;
+  HistoryIntegrals histories;
 };
 
 // What every element kind has per element, for code that treats the kinds alike: the status byte

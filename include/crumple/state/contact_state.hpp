@@ -49,6 +49,11 @@ struct InterfaceResult {
   double damping_work = 0.0;    // energy dissipated by the normal damping so far (>= 0) [E]
   double friction_work = 0.0;   // energy dissipated by friction so far (>= 0) [E]
   double absorbed = 0.0;        // minus the accumulated work of all contact forces on all nodes (E_contact) [E]
+  // /TH/INTER |FNX| .. ||F|| (docs/output-format.md, "INTER"), summed over the pairs in contact in the last cycle
+  // only when a request asks them (ContactInterface::sum_pair_forces), else 0: per pair, the absolute components
+  // and the magnitude of its normal force and of its whole (normal plus friction) force [F].
+  Vec3 pair_normal_abs{}, pair_force_abs{};
+  double pair_normal_norm = 0.0, pair_force_norm = 0.0;
   int active_nodes = 0;         // secondary nodes with a non-zero force in the last cycle
   double dt = std::numeric_limits<double>::infinity();  // interface step of the last cycle, scaled [T]
   std::int32_t dt_node = -1;    // dense index of the secondary node controlling it
@@ -74,6 +79,7 @@ struct ContactInterface {
   double dt_minimum = 0.0;       // card dtmin: contacts whose step falls below it are released [T]
   int idel = 0;
   std::uint8_t release_bc = 0;   // IBC: fixed dofs (bits x 1, y 2, z 4) released at a secondary node's first impact
+  bool sum_pair_forces = false;  // a /TH/INTER asks |FNX| .. ||F||: the pass sums them (InterfaceResult)
 
   std::vector<std::int32_t> secondary_nodes;          // dense node indices
   std::vector<double> node_gap;                       // secondary gap per secondary node (variable gap) [L]

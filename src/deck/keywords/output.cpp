@@ -1,5 +1,5 @@
-// Output requests: time histories (/TH/...) and cut sections (/SECT). Layouts: docs/cards/loads-output-engine.md
-// §6. Object ids and groups are resolved in resolve_output.cpp.
+// Output requests: time histories (/TH/...), cut sections (/SECT) and accelerometers (/ACCEL). Layouts:
+// docs/cards/loads-output-engine.md §6. Object ids and groups are resolved in resolve_output.cpp.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -241,6 +241,26 @@ void read_section(CardReader& reader, DeckContext& context) {
   context.model.sections.push_back(std::move(s));
 }
 
+// ---------------------------------------------------------------------------------------------------------------
+// /ACCEL/accel_ID[/unit_ID]: node_ID 1-10, skew_ID 11-20, Fcut 31-50 (docs/cards/loads-output-engine.md §6.3)
+
+void read_accelerometer(CardReader& reader, DeckContext& context) {
+  Accelerometer a;
+  a.where = reader.card().where;
+  a.user_id = card_id(reader, 1, true);
+  a.title = read_title(reader);
+  const Line line = reader.next("node_ID, skew_ID, Fcut");
+  a.node_id = line.integer(1, 10, "node_ID");
+  if (a.node_id <= 0) line.fail(1, 10, "node_ID", "a positive node id");
+  // Crumple has no /SKEW: the output is in the global frame, and a skew the deck names would be silently dropped.
+  if (line.integer(11, 10, "skew_ID") != 0)
+    context.unsupported(line.error(11, 10, "skew_ID", default_only("skew frames are")));
+  a.cutoff = line.real(31, 20, "Fcut", dim::rate);
+  if (a.cutoff < 0.0) line.fail(31, 20, "Fcut", "a non-negative cutoff frequency (0 or blank: no filter)");
+  reader.finish();
+  context.model.accelerometers.push_back(std::move(a));
+}
+
 }  // namespace
 
 void register_output_keywords(KeywordTable& table) {
@@ -261,7 +281,9 @@ void register_output_keywords(KeywordTable& table) {
   table.push_back({"/TH/BRIC", DeckPart::Starter, history(H::Brick, L::IdBlankName)});
   table.push_back({"/TH/SECTIO", DeckPart::Starter, history(H::Section, L::Ids)});
   table.push_back({"/TH/RBODY", DeckPart::Starter, history(H::RigidBody, L::Ids)});
+  table.push_back({"/TH/ACCEL", DeckPart::Starter, history(H::Accelerometer, L::Ids)});
   table.push_back({"/SECT", DeckPart::Starter, read_section});
+  table.push_back({"/ACCEL", DeckPart::Starter, read_accelerometer});
 }
 
 }  // namespace crumple::deck
