@@ -4,7 +4,8 @@
 
   - ns per element-cycle (the time loop's wall time / (elements x cycles)), by element kind, and the element
     phase's share of it;
-  - contact ns per secondary node-cycle (contact phase / (secondary nodes x contact passes)) and the contact's,
+  - contact ns per secondary node-cycle (contact phase / (secondary nodes x contact passes)), the nodes in
+    contact (ACTIVE_NODES of the interface histories in NAME.h5, read with h5py) and the contact's,
     the output's share of the cycle (the phases of NAME.summary.json); the contact sort is not timed apart by
     the solver, so its share is reported as not separated;
   - peak memory (the run's peak RSS, from /usr/bin/time) per element, and its slope against the element count;
@@ -89,6 +90,20 @@ def run_crumple(crumple, deck, out_dir, timeout):
     return wall, int(rss_file.read_text().split()[-1]) * 1024
 
 
+def nodes_in_contact(out_dir):
+    """Mean and largest number of active secondary nodes over the history rows (every interface summed), from
+    the ACTIVE_NODES columns of /history/interface_values in NAME.h5; None without interfaces."""
+    import h5py  # only here: the rest of the driver runs without it
+    with h5py.File(next(out_dir.glob("*.h5")), "r") as f:
+        values = f["history/interface_values"]
+        names = [v.decode() if isinstance(v, bytes) else str(v) for v in values.attrs.get("variables", [])]
+        columns = [k for k, v in enumerate(names) if v == "ACTIVE_NODES"]
+        if not columns or values.shape[0] == 0:
+            return None
+        active = values[:, columns].sum(axis=1)
+    return float(active.mean()), float(active.max())
+
+
 def largest_penetration(out_dir):
     """The largest penetration over gap of the run's interfaces, from the listing's INTER lines (None: none)."""
     listing = next(out_dir.glob("*.out")).read_text()
@@ -119,7 +134,7 @@ def measure(crumple, family, size, work, end_time, timeout, repeats):
             "secondary_nodes": meta["counts"]["contact_secondary_nodes"], "cycles": summary["cycles"],
             "wall": summary["wall_seconds"], "process_wall": process_wall, "peak_rss": peak_rss,
             "profile": summary["profile"], "status": summary["status"], "walls": walls,
-            "largest_p_over_g": largest_penetration(out_dir)}
+            "largest_p_over_g": largest_penetration(out_dir), "in_contact": nodes_in_contact(out_dir)}
 
 
 # ------------------------------------------------------------------------------------------------ the figures
@@ -198,15 +213,24 @@ def cost_table(runs, probe):
     return head + "\n".join(rows) + "\n"
 
 
+def in_contact(r):
+    """Mean / most secondary nodes in contact over the run, with the most as a share of the secondary nodes."""
+    if not r["in_contact"] or not r["secondary_nodes"]:
+        return "-"
+    mean, most = r["in_contact"]
+    return f"{mean:.0f} / {most:.0f} ({100 * most / r['secondary_nodes']:.1f} %)"
+
+
 def contact_table(runs, probe):
     gbps = probe["gb_per_s"]
-    head = ("| deck | secondary nodes | contact passes | largest p/g | contact ns / secondary node-cycle | x GB/s [B] "
-            "| contact share | sort share | output share |\n|---|---|---|---|---|---|---|---|---|\n")
+    head = ("| deck | secondary nodes | in contact, mean / most | contact passes | largest p/g "
+            "| contact ns / secondary node-cycle | x GB/s [B] | contact share | sort share | output share |\n"
+            "|---|---|---|---|---|---|---|---|---|---|\n")
     rows = []
     for r in runs:
         f = figures(r)
         contact, share = f["contact_ns_per_node_cycle"], f["contact_share"]
-        rows.append(f"| {r['family']} {r['target']:.0e} | {r['secondary_nodes'] or '-'} "
+        rows.append(f"| {r['family']} {r['target']:.0e} | {r['secondary_nodes'] or '-'} | {in_contact(r)} "
                     f"| {r['profile']['contact_passes']} | {text(r['largest_p_over_g'], '{:.4f}')} "
                     f"| {text(contact, '{:.1f}')} | {text(contact and contact * gbps)} "
                     f"| {text(share and 100 * share, '{:.1f} %')} | {'not separated' if contact is not None else '-'} "
