@@ -2,8 +2,9 @@
 """Whole-run benchmark of issue 13: writes the benchmark decks of decks/generate_bench.py for a list of sizes, runs
 `crumple run` on each, and prints and writes as Markdown what a run costs:
 
-  - ns per element-cycle (the time loop's wall time / (elements x cycles)), by element kind, and the element
-    phase's share of it;
+  - ns per element-cycle (the time loop's wall time / (elements x cycles)), by element kind, the element
+    phase's part of it, and the whole process's CPU time (deck reading included) per element-cycle, which a
+    loaded machine disturbs less than wall time;
   - contact ns per secondary node-cycle (contact phase / (secondary nodes x contact passes)), the nodes in
     contact (ACTIVE_NODES of the interface histories in NAME.h5, read with h5py) and the contact's,
     the output's share of the cycle (the phases of NAME.summary.json); the contact sort is not timed apart by
@@ -72,22 +73,24 @@ def check_counts(crumple, deck):
 
 
 def run_crumple(crumple, deck, out_dir, timeout):
-    """`crumple run` under /usr/bin/time: its process wall time [s] and peak RSS [bytes].
+    """`crumple run` under /usr/bin/time: its process wall time [s], peak RSS [bytes] and CPU time (user + system)
+    [s].
 
     The peak RSS is GNU time's %M, not this script's own wait4: a child forked from this process would count
     this process's memory (the bandwidth probe's arrays) in its peak, since Linux keeps the high-water mark of the
     memory replaced by exec; a child of the small `time` process counts only a few hundred kB of it.
     """
     out_dir.mkdir(parents=True, exist_ok=True)
-    rss_file = out_dir / "peak_rss_kb"
-    command = ["/usr/bin/time", "-f", "%M", "-o", str(rss_file), crumple, "run", str(deck), "-o", str(out_dir)]
+    rss_file = out_dir / "time_rss_kb_user_system"
+    command = ["/usr/bin/time", "-f", "%M %U %S", "-o", str(rss_file), crumple, "run", str(deck), "-o", str(out_dir)]
     with open(out_dir / "console.log", "w") as log:
         start = time.perf_counter()
         done = subprocess.run(command, stdout=log, stderr=subprocess.STDOUT, timeout=timeout)
         wall = time.perf_counter() - start
     if done.returncode != 0:
         raise RuntimeError(f"crumple run {deck} exited with {done.returncode}: see {out_dir / 'console.log'}")
-    return wall, int(rss_file.read_text().split()[-1]) * 1024
+    rss_kb, user, system = rss_file.read_text().split()[-3:]
+    return wall, int(rss_kb) * 1024, float(user) + float(system)
 
 
 def nodes_in_contact(out_dir):
@@ -125,14 +128,14 @@ def measure(crumple, family, size, work, end_time, timeout, repeats):
     runs = []
     for k in range(repeats):
         out_dir = deck_dir / f"out{k + 1}"
-        process_wall, peak_rss = run_crumple(crumple, deck, out_dir, timeout)
+        process_wall, peak_rss, cpu = run_crumple(crumple, deck, out_dir, timeout)
         summary = json.loads(next(out_dir.glob("*.summary.json")).read_text())
-        runs.append((summary["wall_seconds"], process_wall, peak_rss, summary, out_dir))
+        runs.append((summary["wall_seconds"], process_wall, peak_rss, cpu, summary, out_dir))
     walls = [r[0] for r in runs]
-    _, process_wall, peak_rss, summary, out_dir = min(runs, key=lambda r: r[0])
+    _, process_wall, peak_rss, cpu, summary, out_dir = min(runs, key=lambda r: r[0])
     return {"family": family, "target": size, "elements": elements, "nodes": counts["nodes"],
             "secondary_nodes": meta["counts"]["contact_secondary_nodes"], "cycles": summary["cycles"],
-            "wall": summary["wall_seconds"], "process_wall": process_wall, "peak_rss": peak_rss,
+            "wall": summary["wall_seconds"], "process_wall": process_wall, "process_cpu": cpu, "peak_rss": peak_rss,
             "profile": summary["profile"], "status": summary["status"], "walls": walls,
             "largest_p_over_g": largest_penetration(out_dir), "in_contact": nodes_in_contact(out_dir)}
 
@@ -146,6 +149,7 @@ def figures(r):
     cycle = p["elements"] + p["contact"] + p["loads"] + p["update"] + p["output"]
     passes, secondary = p["contact_passes"], r["secondary_nodes"]
     return {"ns_per_element_cycle": 1e9 * r["wall"] / element_cycles,
+            "cpu_ns_per_element_cycle": 1e9 * r["process_cpu"] / element_cycles,
             "element_phase_ns": 1e9 * p["elements"] / element_cycles,
             "contact_ns_per_node_cycle": 1e9 * p["contact"] / (secondary * passes) if secondary and passes else None,
             "contact_share": p["contact"] / cycle if passes else None,
@@ -199,17 +203,17 @@ def machine():
 
 def cost_table(runs, probe):
     gbps = probe["gb_per_s"]
-    head = ("| deck | element kind | elements | cycles | loop wall [s], fastest (all runs) | process wall [s] "
-            "| ns / element-cycle | x GB/s [B] | element phase ns / element-cycle | peak RSS [MB] | B / element |\n"
-            "|---|---|---|---|---|---|---|---|---|---|---|\n")
+    head = ("| deck | element kind | elements | cycles | loop wall [s], fastest (all runs) | process wall, CPU [s] "
+            "| ns / element-cycle | x GB/s [B] | element phase ns / element-cycle | process CPU ns / element-cycle "
+            "| peak RSS [MB] | B / element |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n")
     rows = []
     for r in runs:
         f = figures(r)
         walls = ", ".join(f"{w:.2f}" for w in r["walls"])
         rows.append(f"| {r['family']} {r['target']:.0e} | {KIND_OF_FAMILY[r['family']]} | {r['elements']} "
-                    f"| {r['cycles']} | {r['wall']:.2f} ({walls}) | {r['process_wall']:.2f} "
+                    f"| {r['cycles']} | {r['wall']:.2f} ({walls}) | {r['process_wall']:.2f}, {r['process_cpu']:.2f} "
                     f"| {f['ns_per_element_cycle']:.0f} | {f['ns_per_element_cycle'] * gbps:.0f} "
-                    f"| {f['element_phase_ns']:.0f} | {r['peak_rss'] / 1e6:.0f} | {f['bytes_per_element']:.0f} |")
+                    f"| {f['element_phase_ns']:.0f} | {f['cpu_ns_per_element_cycle']:.0f} | {r['peak_rss'] / 1e6:.0f} | {f['bytes_per_element']:.0f} |")
     return head + "\n".join(rows) + "\n"
 
 
