@@ -97,13 +97,16 @@ const char* metis_status_text(int status) {
 }
 
 // METIS k-way on the graph, reproducible: a fixed seed, contiguous domains when the graph is connected (METIS
-// refuses the option otherwise), C numbering. Returns each vertex's domain.
+// refuses the option otherwise), C numbering. The load tolerance is 1 % (UFACTOR 10) instead of METIS's 3 %: the
+// slowest rank sets the pace, and on the 2-million-shell tube the tighter balance costs no halo (docs/parallel.md,
+// "Projection"). Returns each vertex's domain.
 std::vector<idx_t> run_metis(parallel::ElementGraph& graph, int domains) {
   idx_t options[METIS_NOPTIONS];
   METIS_SetDefaultOptions(options);
   options[METIS_OPTION_SEED] = kMetisSeed;
   options[METIS_OPTION_NUMBERING] = 0;
   options[METIS_OPTION_CONTIG] = parallel::connected(graph) ? 1 : 0;
+  options[METIS_OPTION_UFACTOR] = 10;
   idx_t vertices = graph.vertices(), constraints = 1, parts = domains, cut = 0;
   std::vector<idx_t> part(static_cast<std::size_t>(vertices), 0);
   const int status = METIS_PartGraphKway(&vertices, &constraints, graph.offsets.data(), graph.adjacency.data(),

@@ -185,12 +185,12 @@ TEST(Partition, ImbalanceIsLargestWeightOverMean) {
   std::sort(w.begin(), w.end());
   EXPECT_EQ(w[1], 2 * w[0]);
   EXPECT_NEAR(p.imbalance, 4.0 / 3.0, 1e-12);
-  // On a larger plate METIS balances within its default 3 %.
+  // On a larger plate METIS balances within its 1 % (UFACTOR 10), give or take one element's weight.
   const Partition q = partition_model(read(dir, plate_cards(24, 16)), 6);
   const long long largest = *std::max_element(q.weight.begin(), q.weight.end());
   const double mean = static_cast<double>(std::accumulate(q.weight.begin(), q.weight.end(), 0LL)) / 6.0;
   EXPECT_DOUBLE_EQ(q.imbalance, static_cast<double>(largest) / mean);
-  EXPECT_LT(q.imbalance, 1.035);
+  EXPECT_LT(q.imbalance, 1.02);
 }
 
 // The weights follow the measured costs: more layers cost more, QBAT's four points more than one, a 2 x 2 x 2 brick
