@@ -18,23 +18,24 @@ static_assert(std::is_same_v<idx_t, std::int32_t>, "the element graph is built f
 // The cost of one element-cycle (internal forces, stress update, element time step) in units of 10 ns, measured
 // once (docs/parallel.md, "Weights") by bench/element_costs.py: the tube of decks/tube_impact (Johnson-Cook steel,
 // 10 m/s into a wall, about 770 cycles) meshed with each kind and formulation, the element phase's CPU time over
-// elements x cycles, median of 3 runs, Release build, 2026-12-02. Only the ratios matter to METIS.
+// elements x cycles, median of 3 runs, Release build, 2026-12-02; the mean of two such sets an hour apart (they
+// differ by up to 30 % on the shared machine, their ratios by about 15 %). Only the ratios matter to METIS.
 // Shells cost an element part plus a part per layer (through-thickness point), fitted to N = 1, 3, 5, 9:
-//   Ishell 24: 369, 583, 769, 1173 ns -> 268 + 100 N; Ishell 1: 377, 749 ns at N = 1, 5 -> the same constants
+//   Ishell 24: 404, 688, 918, 1344 ns -> 316 + 116 N; Ishell 1: 396, 816 ns at N = 1, 5, the same within 10 %
 //   (Ishell 2 and 3 are Ishell 1's kernel with other hourglass forces);
-//   Ishell 12 (QBAT, four in-plane points): 1023, 2964 ns at N = 1, 5 -> 538 + 485 N;
-//   3-node shells: 253, 905 ns at N = 1, 5 -> 90 + 163 N;
-//   resultant plasticity (N = 0), Ishell 24: 558 ns, about three layers.
-constexpr int kShell4Element = 27, kShell4Layer = 10;          // Ishell 1, 2, 3, 24
-constexpr int kShell4QbatElement = 54, kShell4QbatLayer = 49;  // Ishell 12
-constexpr int kShell3Element = 9, kShell3Layer = 16;           // Ish3n 1, 2
-constexpr int kResultantLayers = 3;                            // N = 0
-// Bricks: Isolid 1, 2: 651, 615 ns; Isolid 24: 2136 ns (the assumed-strain stabilisation); 2 x 2 x 2 points:
-// Isolid 17 (as 12): 2080 to 2828 ns over two sets of runs; Isolid 14, 18 (assumed shears): 4255, 4476 ns.
-constexpr int kBrickOnePoint = 64;        // Isolid 1, 2
-constexpr int kBrickPhysical = 214;       // Isolid 24
-constexpr int kBrickEightPoints = 245;    // Isolid 12, 17
-constexpr int kBrickAssumedShear = 435;   // Isolid 14, 18
+//   Ishell 12 (QBAT, four in-plane points): 1173, 2756 ns at N = 1, 5 -> 777 + 396 N;
+//   3-node shells: 228, 825 ns at N = 1, 5 -> 79 + 149 N;
+//   resultant plasticity (N = 0), Ishell 24: 556 ns, two layers.
+constexpr int kShell4Element = 32, kShell4Layer = 12;          // Ishell 1, 2, 3, 24
+constexpr int kShell4QbatElement = 78, kShell4QbatLayer = 40;  // Ishell 12
+constexpr int kShell3Element = 8, kShell3Layer = 15;           // Ish3n 1, 2
+constexpr int kResultantLayers = 2;                            // N = 0
+// Bricks: Isolid 1, 2: 653, 616 ns; Isolid 24: 2226 ns (the assumed-strain stabilisation); 2 x 2 x 2 points:
+// Isolid 17 (as 12): 2104 ns; Isolid 14, 18 (assumed shears): 4833, 4796 ns.
+constexpr int kBrickOnePoint = 63;        // Isolid 1, 2
+constexpr int kBrickPhysical = 223;       // Isolid 24
+constexpr int kBrickEightPoints = 210;    // Isolid 12, 17
+constexpr int kBrickAssumedShear = 481;   // Isolid 14, 18
 // An element a rigid body carries is not computed (docs/theory/rigid-bodies.md); it stays in the contact surfaces
 // and its nodes are moved by the body, a small cost.
 constexpr int kRigidElement = 1;
