@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 
+#include <algorithm>
 #include <ostream>
 
 #include "crumple/model/summary.hpp"
@@ -14,6 +15,20 @@ std::string join(const std::vector<std::string>& items) {
   std::string out;
   for (const auto& item : items) out += (out.empty() ? "" : " ") + item;
   return out.empty() ? "(none)" : out;
+}
+
+// Up to 16 values one by one, more as their range and mean.
+template <class T>
+std::string per_domain(const std::vector<T>& values) {
+  if (values.size() <= 16) {
+    std::vector<std::string> items;
+    for (const T v : values) items.push_back(fmt::format("{}", v));
+    return join(items);
+  }
+  double sum = 0.0;
+  for (const T v : values) sum += static_cast<double>(v);
+  const auto [low, high] = std::minmax_element(values.begin(), values.end());
+  return fmt::format("min {} mean {:.1f} max {}", *low, sum / static_cast<double>(values.size()), *high);
 }
 
 }  // namespace
@@ -71,6 +86,20 @@ void print_check_report(const Deck& deck, std::ostream& out) {
   fmt::print(out, "  read                  {}\n", join(deck.report.keywords_read));
   fmt::print(out, "  accepted, no effect   {}\n", join(deck.report.accepted_without_effect));
   for (const auto& w : deck.report.warnings) fmt::print(out, "warning: {}\n", w.text());
+}
+
+void print_partition_report(const Partition& p, std::ostream& out) {
+  std::vector<long long> elements(static_cast<std::size_t>(p.domains), 0);
+  for (const auto& kind : p.domain_of_element)
+    for (const std::int32_t d : kind) ++elements[static_cast<std::size_t>(d)];
+  fmt::print(out, "Partition (METIS k-way on the element graph)\n");
+  fmt::print(out, "  ranks                 {}\n", p.domains);
+  fmt::print(out, "  edge cut              {}\n", p.edge_cut);
+  fmt::print(out, "  shared nodes          {}\n", p.shared_nodes);
+  fmt::print(out, "  imbalance             {:.3f}\n", p.imbalance);
+  fmt::print(out, "  elements per rank     {}\n", per_domain(elements));
+  fmt::print(out, "  weight per rank       {}\n", per_domain(p.weight));
+  fmt::print(out, "  neighbours per rank   {}\n", per_domain(p.neighbours));
 }
 
 }  // namespace crumple::app

@@ -44,6 +44,10 @@ int main(int argc, char** argv) {
   const char* const skip_help =
       "Skip keywords and options Crumple lacks (unknown or not supported) with a warning instead of failing";
   check->add_flag("--skip-unknown", skip_unknown, skip_help);
+  int ranks = 0;
+  check->add_option("--ranks", ranks,
+                    "Also partition the model for N ranks (METIS) and print the partition's quality")
+      ->check(CLI::PositiveNumber);
 
   CLI::App* run = cli.add_subcommand("run", "Run a deck: writes NAME.h5, NAME.out and NAME.summary.json");
   run->add_option("DECK", deck_path, "Starter deck (NAME_0000.rad) with its engine deck beside it")->required();
@@ -98,7 +102,17 @@ int main(int argc, char** argv) {
       ReadOptions options;
       options.skip_unknown = skip_unknown;
       const Deck deck = read_deck(deck_path, options);
+      Partition partition;
+      if (ranks > 0) {
+        try {
+          partition = partition_model(deck.model, ranks);
+        } catch (const std::runtime_error& e) {  // a rank count the model does not admit
+          fmt::print(stderr, "crumple: {}\n", e.what());
+          return app::kExitBadInput;
+        }
+      }
       app::print_check_report(deck, std::cout);
+      if (ranks > 0) app::print_partition_report(partition, std::cout);
       return app::kExitNormal;
     }
     if (regress->parsed()) return app::regress(regress_options, std::cout, std::cerr);
