@@ -8,11 +8,15 @@
 #include <cstdlib>
 #include <cstring>
 #include <optional>
+#include <sstream>
 
 #include "app/console.hpp"
 #include "app/exit_codes.hpp"
 #include "crumple/output/restart_file.hpp"
+#include "crumple/parallel/mpi_exchange.hpp"
+#include "crumple/parallel/partition.hpp"
 #include "crumple/output/run_recorder.hpp"
+#include "crumple/solver/quiet_observer.hpp"
 #include "crumple/solver/solver.hpp"
 #include "crumple/solver/solver_state.hpp"
 
@@ -34,16 +38,18 @@ std::string output_directory_problem(const std::filesystem::path& dir) {
 }
 
 RunSummary run_engine_decks(Deck& deck, const SimulationOptions& options, std::ostream& console,
-                            const std::filesystem::path& restart) {
+                            const std::filesystem::path& restart, const Domain* domain) {
   Model& m = deck.model;
   const RunControl first = m.run;
   std::vector<RunControl> controls{first};
   controls.insert(controls.end(), deck.continued_runs.begin(), deck.continued_runs.end());
   std::vector<std::string> notes;
-  SolverState state = initial_state(m, notes);
+  SolverState state = domain != nullptr ? initial_state(m, notes, *domain) : initial_state(m, notes);
+  notes.insert(notes.end(), options.notes.begin(), options.notes.end());
   std::optional<ResumeMarks> marks;
   if (!restart.empty()) {
     marks = read_restart(restart, m, state);
+    mark_domain(state);  // the restart holds the elements' conditions; this domain computes its own
     if (marks->engine_deck < 1 || marks->engine_deck > static_cast<int>(controls.size()))
       throw RestartError(fmt::format("restart file {} was written in engine deck {}; this deck has {}",
                                      restart.string(), marks->engine_deck, controls.size()));
@@ -51,8 +57,13 @@ RunSummary run_engine_decks(Deck& deck, const SimulationOptions& options, std::o
                                 state.cycle, state.time, marks->engine_deck));
   }
   const int start = marks ? marks->engine_deck : 1;
-  RunRecorder recorder(m, options.output_directory, options.name.empty() ? m.run_name : options.name,
-                       options.write_results, {options.deck, options.approximations, options.progress}, &console);
+  // Domain 0 writes the run (or the only domain); the others report to no one.
+  std::optional<RunRecorder> recorder;
+  QuietObserver quiet;
+  if (domain == nullptr || domain->index == 0)
+    recorder.emplace(m, options.output_directory, options.name.empty() ? m.run_name : options.name,
+                     options.write_results, RunStart{options.deck, options.approximations, options.progress}, &console);
+  RunObserver& observer = recorder ? static_cast<RunObserver&>(*recorder) : quiet;
   RunSummary summary;
   for (int k = start; k <= static_cast<int>(controls.size()); ++k) {
     m.run = controls[static_cast<std::size_t>(k - 1)];
@@ -61,12 +72,12 @@ RunSummary run_engine_decks(Deck& deck, const SimulationOptions& options, std::o
     engine.resume = k == start && marks ? &*marks : nullptr;
     if (k > start) continue_from(state);
     const int decks_before = k > start ? summary.engine_decks : 0;
-    summary = run_engine_deck(m, engine, recorder, state, k == start ? notes : std::vector<std::string>{});
+    summary = run_engine_deck(m, engine, observer, state, k == start ? notes : std::vector<std::string>{});
     summary.engine_decks = decks_before + 1;
     if (summary.status != RunStatus::Normal) break;
   }
   m.run = first;
-  recorder.close(state, summary.status != RunStatus::Normal);
+  if (recorder) recorder->close(state, summary.status != RunStatus::Normal);
   return summary;
 }
 
@@ -78,20 +89,23 @@ int launched_ranks() {
   return 1;
 }
 
-int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
-  if (const int ranks = launched_ranks(); ranks > 1) {
-    // Each rank would run the whole model and they would race on the same files.
-    fmt::print(err, "crumple: started as {} MPI ranks (mpirun -np {}): parallel runs are not supported by Crumple "
-                    "yet; run it as one process (the result does not depend on it)\n", ranks, ranks);
-    return kExitBadInput;
-  }
-  ReadOptions read;
-  read.skip_unknown = options.skip_unknown;
-  read.require_engine = true;
-  Deck deck = read_deck(options.deck, read);
-  for (const auto& w : deck.report.warnings) fmt::print(err, "warning: {}\n", w.text());
+namespace {
 
-  if (const std::string problem = output_directory_problem(options.output_directory); !problem.empty()) {
+// What a run of several domains adds to a run (docs/parallel.md): the MPI session, this rank's domain and its
+// exchange. Absent for a run of one process.
+struct Ranks {
+  MpiSession& mpi;
+  const Domain& domain;
+  Exchange& exchange;
+};
+
+// Reads, runs and writes the deck; with `ranks`, this rank's domain of it (rank 0 writes, the others only compute).
+int run_deck_as(const RunOptions& options, Deck& deck, std::ostream& out, std::ostream& err, Ranks* ranks,
+                const std::vector<std::string>& notes) {
+  const bool writer = ranks == nullptr || ranks->mpi.rank() == 0;
+  std::string problem = writer ? output_directory_problem(options.output_directory) : std::string();
+  if (ranks != nullptr && MpiSession::any(!problem.empty()) && problem.empty()) return kExitBadInput;  // rank 0 says why
+  if (!problem.empty()) {
     fmt::print(err, "crumple: {}\n", problem);
     return kExitBadInput;
   }
@@ -102,12 +116,15 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
   for (const SkippedOption& o : deck.report.skipped_options) solver.approximations.push_back(o.text());
   solver.deck = options.deck;
   solver.progress = options.progress;
+  solver.notes = notes;
   const StopOnSignals signals;
   solver.stop_request = &signals.request();
-  RunSummary summary = run_engine_decks(deck, solver, out, options.restart);
+  solver.exchange = ranks != nullptr ? &ranks->exchange : nullptr;
+  RunSummary summary = run_engine_decks(deck, solver, out, options.restart, ranks != nullptr ? &ranks->domain : nullptr);
   summary.date = started;
   summary.deck_files = describe_deck_files(deck.report.files);
-  write_summary(summary, options.output_directory / (solver.name + ".summary.json"));
+  summary.ranks = ranks != nullptr ? ranks->mpi.size() : 1;
+  if (writer) write_summary(summary, options.output_directory / (solver.name + ".summary.json"));
   fmt::print(out, "crumple run {}: {} after {} cycles, time {:.6g}, energy error {:.3g} %, {:.2f} s\n", solver.name,
              status_name(summary.status), summary.cycles, summary.time, summary.energy.error_percent,
              summary.wall_seconds);
@@ -120,6 +137,54 @@ int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
     return kExitRunFailed;
   }
   return kExitNormal;
+}
+
+Deck read_run_deck(const RunOptions& options, std::ostream& err) {
+  ReadOptions read;
+  read.skip_unknown = options.skip_unknown;
+  read.require_engine = true;
+  Deck deck = read_deck(options.deck, read);
+  for (const auto& w : deck.report.warnings) fmt::print(err, "warning: {}\n", w.text());
+  return deck;
+}
+
+// mpirun -np N crumple run DECK: every rank reads the deck and partitions it the same way; rank 0 alone speaks
+// and writes. A deck error or a partition that cannot be made is the same on every rank: rank 0 reports it and
+// every rank returns. An error one rank meets during the run ends every rank at once with that rank's message.
+int run_deck_on_ranks(const RunOptions& options, std::ostream& out, std::ostream& err) {
+  MpiSession mpi;
+  std::ostringstream silent;
+  std::ostream& console = mpi.rank() == 0 ? out : silent;
+  std::ostream& errors = mpi.rank() == 0 ? err : silent;
+  Deck deck;
+  Partition partition;
+  try {
+    deck = read_run_deck(options, errors);
+    partition = partition_model(deck.model, mpi.size());
+  } catch (const std::runtime_error& e) {
+    if (mpi.rank() != 0) return kExitBadInput;
+    if (dynamic_cast<const DeckErrors*>(&e) != nullptr || dynamic_cast<const DeckError*>(&e) != nullptr) throw;
+    fmt::print(err, "crumple: {}\n", e.what());  // the partition: more ranks than elements...
+    return kExitBadInput;
+  }
+  const Domain domain = make_domain(deck.model, partition, mpi.rank());
+  MpiExchange exchange;
+  Ranks ranks{mpi, domain, exchange};
+  try {
+    return run_deck_as(options, deck, console, errors, &ranks, describe(partition));
+  } catch (const std::exception& e) {
+    fmt::print(err, "crumple: rank {} of {}: {}\n", mpi.rank(), mpi.size(), e.what());
+    err.flush();
+    MpiSession::abort(kExitInternal);
+  }
+}
+
+}  // namespace
+
+int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
+  if (launched_ranks() > 1) return run_deck_on_ranks(options, out, err);
+  Deck deck = read_run_deck(options, err);
+  return run_deck_as(options, deck, out, err, nullptr, {});
 }
 
 }  // namespace crumple::app

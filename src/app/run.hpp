@@ -21,8 +21,10 @@ struct RunOptions {
 // normally. `deck.model.run` is the run control of the deck being run while it runs. Returns the last deck's
 // summary with the total cycle count. With `restart`, the state and the engine deck to resume come from that
 // restart file (docs/theory/time-loop.md, "Restart"); throws RestartError when it does not fit the deck.
+// In a run of several domains, `domain` is this one (options.exchange talks to the others): domain 0 writes the
+// listing and the results, the others nothing.
 RunSummary run_engine_decks(Deck& deck, const SimulationOptions& options, std::ostream& console,
-                            const std::filesystem::path& restart = {});
+                            const std::filesystem::path& restart = {}, const Domain* domain = nullptr);
 
 // `crumple run`: reads the deck and runs it, writing NAME.h5, NAME.out and NAME.summary.json into the output
 // directory; SIGINT and SIGTERM stop the run at the end of the cycle, with its files written to there. Returns

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "crumple/output/build_info.hpp"
+#include "crumple/state/element_status.hpp"
 #include "hdf5_support.hpp"
 
 namespace crumple {
@@ -40,6 +41,14 @@ class Writer {
   void operator()(const std::string& name, std::vector<T>& values) {
     write(name, values.data(), values.size());
   }
+  // Element statuses: their conditions only, as one process has them; a domain of a run of several marks the
+  // elements it does not compute when it reads them back (parallel runs, docs/parallel.md).
+  void operator()(const std::string& name, std::vector<std::uint8_t>& values) {
+    if (!name.ends_with("/deleted")) return write(name, values.data(), values.size());
+    conditions_.resize(values.size());
+    for (std::size_t e = 0; e < values.size(); ++e) conditions_[e] = element_condition(values[e]);
+    write(name, conditions_.data(), conditions_.size());
+  }
   template <class T, std::size_t N>
   void operator()(const std::string& name, std::array<T, N>& values) {
     write(name, values.data(), N);
@@ -67,6 +76,7 @@ class Writer {
   }
   hid_t root_;
   Handle links_;
+  std::vector<std::uint8_t> conditions_;
 };
 
 class Reader {

@@ -3,8 +3,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <type_traits>
 
 #include "crumple/contact/contact.hpp"
+#include "crumple/solver/snapshot.hpp"
 #include "crumple/solver/accelerometers.hpp"
 #include "crumple/solver/node_rotations.hpp"
 #include "solver/internal.hpp"
@@ -270,6 +276,46 @@ void share_element_results(const Model& m, SolverState& s, Exchange& exchange) {
   assemble_element_loads(d, s.shells, s.shells3, s.bricks, s.nodes);
 }
 
+namespace {
+
+// Every field of one kind's element state from the elements' owners: point fields by the points' owners, element
+// fields (one or more values per element) by the elements'. The status is shared every cycle already.
+template <class State, class Visit>
+void share_kind_state(Exchange& exchange, State& state, Visit visit, const std::vector<std::int32_t>& owner,
+                      const std::vector<std::int32_t>& point_owner, std::initializer_list<std::string_view> point_fields) {
+  const std::size_t n = owner.size();
+  auto share = [&](const std::string& name, auto& values) {
+    using Values = std::remove_reference_t<decltype(values)>;
+    if constexpr (std::is_same_v<Values, std::vector<double>> || std::is_same_v<Values, std::vector<std::uint8_t>>) {
+      if (values.empty() || name == "deleted") return;
+      if (std::find(point_fields.begin(), point_fields.end(), name) != point_fields.end()) {
+        exchange.share(values, 1, point_owner);
+      } else {
+        if (n == 0 || values.size() % n != 0) throw std::logic_error("element field " + name + " is not per element");
+        exchange.share(values, static_cast<int>(values.size() / n), owner);
+      }
+    }
+  };
+  visit(share, std::string(), state);
+}
+
+}  // namespace
+
+void share_element_state(SolverState& s, Exchange& exchange) {
+  const auto& owner = s.domain.owner;
+  const auto& points = s.point_owner;
+  auto shells = [](auto& v, const std::string& at, ShellState& st) { snapshot_detail::visit_shells(v, at, st); };
+  auto bricks = [](auto& v, const std::string& at, BrickState& st) { snapshot_detail::visit_bricks(v, at, st); };
+  const auto shell_points = {std::string_view("sxx"), std::string_view("syy"), std::string_view("sxy"),
+                             std::string_view("eps_p"), std::string_view("eps_rate"), std::string_view("static_yield")};
+  const auto brick_points = {std::string_view("sxx"), std::string_view("syy"), std::string_view("szz"),
+                             std::string_view("sxy"), std::string_view("syz"), std::string_view("szx"),
+                             std::string_view("eps_p"), std::string_view("eps_rate")};
+  share_kind_state(exchange, s.shells, shells, owner[0], points[0], shell_points);
+  share_kind_state(exchange, s.shells3, shells, owner[1], points[1], shell_points);
+  share_kind_state(exchange, s.bricks, bricks, owner[2], points[2], brick_points);
+}
+
 void run_element_kernels(const Model& m, SolverState& s) {
   s.nodes.clear_forces();
   for (std::size_t g = 0; g < m.element_groups.size(); ++g) s.group_results[g] = group_forces(m, s, g);
@@ -472,8 +518,17 @@ void check_run_limits(const Model& m, const SolverState& s, RunEvents& events) {
   }
 }
 
-bool stop_requested(const std::atomic<int>* request, const SolverState& s, RunEvents& events) {
-  const int signal = request != nullptr ? request->load(std::memory_order_relaxed) : 0;
+bool stop_requested(const std::atomic<int>* request, SolverState& s, RunEvents& events, Exchange* exchange,
+                    bool check_now) {
+  int signal = request != nullptr ? request->load(std::memory_order_relaxed) : 0;
+  if (s.domain.several()) {
+    // Every domain stops at the same cycle: the requests are combined every 64 cycles (the energy checks' rhythm).
+    if (!check_now) return false;
+    std::vector<std::int32_t>& any = s.group_share.stop_signal;
+    any.assign(1, signal);
+    exchange->max(any);
+    signal = any[0];
+  }
   if (signal == 0) return false;
   StopReason& stop = events.stop;
   stop.kind = StopReason::Kind::Requested, stop.cycle = s.cycle, stop.time = s.time, stop.index = signal;

@@ -43,6 +43,9 @@ void run_element_kernels(const Model& model, SolverState& state);
 // Between them in a run of several domains (docs/parallel.md, "Assembly"): what each domain computed of its own
 // elements reaches every domain, and every node's sum is assembled in the model's order.
 void share_element_results(const Model& model, SolverState& state, Exchange& exchange);
+// Before an output of a run of several domains: every element's whole state from the domain that computes it, so
+// that the domain that writes (0) writes what one domain writes.
+void share_element_state(SolverState& state, Exchange& exchange);
 StepBound combine_group_results(const Model& model, SolverState& state, RunEvents& events, bool& elements_deleted);
 
 // 1b. Contact at x^n with v^(n-1/2), when the model has interfaces: the interface step joins `bound`.
@@ -93,7 +96,8 @@ void update_kinetic_energy(SolverState& state);
 void check_run_limits(const Model& model, const SolverState& state, RunEvents& events);
 // A stop asked from outside the solver (SolverOptions::stop_request, which the app's SIGINT and SIGTERM handlers
 // set): recorded in `events.stop` at the end of the cycle; true when there is one. One relaxed load per cycle.
-bool stop_requested(const std::atomic<int>* request, const SolverState& state, RunEvents& events);
+bool stop_requested(const std::atomic<int>* request, SolverState& state, RunEvents& events,
+                    Exchange* exchange, bool check_now);
 // The next output times once a frame or a history row has been written at the state's time.
 void advance_schedule(const Model& model, const SolverState& state, const MonitorDue& due, OutputSchedule& schedule);
 

@@ -131,23 +131,49 @@ void setup_through_thickness_rules(SolverState& s) {
 
 }  // namespace
 
+}  // namespace crumple::solver
+
+namespace crumple {
+
+void mark_domain(SolverState& s) {
+  if (!s.domain.several()) return;
+  for (int k = 0; k < kElementKinds; ++k) {
+    const auto kind = static_cast<ElementKind>(k);
+    std::vector<std::uint8_t>& status = element_view(s, kind).status;
+    for (std::size_t e = 0; e < status.size(); ++e)
+      status[e] = static_cast<std::uint8_t>(element_condition(status[e]) | (s.domain.mine(kind, e) ? 0 : kElementElsewhere));
+  }
+}
+
+}  // namespace crumple
+
+namespace crumple::solver {
+namespace {
+
 // One domain of a run of several (docs/parallel.md): the elements of the other domains are marked as computed
 // elsewhere (the kernels skip them), and every element's loads and energies are recorded for the assembly.
 void take_domain(const Model& m, SolverState& s, Domain domain) {
   s.domain = std::move(domain);
   if (!s.domain.several()) return;
-  std::array<ShellState*, 2> shells{&s.shells, &s.shells3};
   for (int k = 0; k < kElementKinds; ++k) {
     const auto kind = static_cast<ElementKind>(k);
-    const std::size_t n = m.elements[static_cast<std::size_t>(k)].size();
-    const bool brick = kind == ElementKind::Brick8;
-    std::vector<std::uint8_t>& status = brick ? s.bricks.deleted : shells[static_cast<std::size_t>(k)]->deleted;
-    ElementRecords& records = brick ? s.bricks.records : shells[static_cast<std::size_t>(k)]->records;
-    records.start(n, nodes_per_element(kind), brick ? 3 : 6);
-    for (std::size_t e = 0; e < n; ++e)
-      if (!s.domain.mine(kind, e)) status[e] |= kElementElsewhere;
+    element_view(s, kind).records.start(m.elements[static_cast<std::size_t>(k)].size(), nodes_per_element(kind),
+                                        kind == ElementKind::Brick8 ? 3 : 6);
+  }
+  mark_domain(s);
+  for (std::size_t g = 0; g < m.element_groups.size(); ++g) {  // groups are kind by kind, points group by group
+    const ElementGroup& group = m.element_groups[g];
+    const bool brick = group.kind == ElementKind::Brick8;
+    const ShellState& shell = group.kind == ElementKind::Shell4 ? s.shells : s.shells3;
+    const int points = brick ? s.bricks.points[g] : shell.points[g];
+    auto& owner = s.point_owner[static_cast<std::size_t>(group.kind)];
+    for (std::int32_t e = group.begin; e < group.end; ++e)
+      owner.insert(owner.end(), static_cast<std::size_t>(points),
+                   s.domain.owner[static_cast<std::size_t>(group.kind)][static_cast<std::size_t>(e)]);
   }
 }
+
+}  // namespace
 
 SolverState make_state(const Model& m, std::vector<std::string>& notes, Domain domain) {
   SolverState s;

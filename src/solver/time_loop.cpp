@@ -115,6 +115,8 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunObse
       if (!events.pending.empty()) observer.events(events);
       if (events.stop.stopped()) break;
     }
+    const bool restart_now = restart_due(m, s) && !due.finished;
+    if (s.domain.several() && (due.frame || due.history || restart_now)) share_element_state(s, *options.exchange);
     if (due.frame) observer.frame(s);
     if (due.history) {
       VelocityChange change;
@@ -124,12 +126,13 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunObse
       if (options.on_history_row) options.on_history_row(s);
     }
     advance_schedule(m, s, due, schedule);
-    if (restart_due(m, s) && !due.finished) write_snapshot(observer, s, options, events, schedule);
+    if (restart_now) write_snapshot(observer, s, options, events, schedule);
     if (show_progress) observer.progress(s, dt_next, control);
     clock.lap(phases.output);
-    if (due.finished || stop_requested(options.stop_request, s, events)) break;
+    if (due.finished || stop_requested(options.stop_request, s, events, options.exchange, due.energies())) break;
   }
   update_kinetic_energy(s);
+  if (s.domain.several()) share_element_state(s, *options.exchange);
   observer.events(events);
   observer.row(s, dt_next, control);  // the cycle the run ended at, unless its row is printed already
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

@@ -22,6 +22,7 @@ struct SimulationOptions : SolverOptions {
   std::vector<std::string> approximations;
   std::filesystem::path deck;  // the starter deck, named in the listing header (empty: not named)
   ProgressOptions progress;    // the console progress line (off unless the app turns it on)
+  std::vector<std::string> notes;  // the caller's start-up notes for the listing (a partition's quality)
 };
 
 // Runs the model from its initial state to its end time and writes the listing and results into

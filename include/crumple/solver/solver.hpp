@@ -33,6 +33,9 @@ SolverState initial_state(const Model& model, std::vector<std::string>& notes);
 // The same for one domain of a run of several (docs/parallel.md): it computes its own elements only, and its
 // options' exchange shares them with the other domains every cycle.
 SolverState initial_state(const Model& model, std::vector<std::string>& notes, Domain domain);
+// After a restart is read into a domain's state: the elements of the other domains are marked as computed
+// elsewhere again (a restart file holds the elements' conditions only).
+void mark_domain(SolverState& state);
 
 // One engine deck from `state` (a fresh state, or the state a previous engine deck left: the snapshot a
 // continued run carries on) to the end time of `model.run`, reported to `observer`. `state` is left at the end of

@@ -109,11 +109,14 @@ struct SolverState {
   std::vector<double> nodal_stiffness;  // scratch of the nodal time step: sum of element stiffness estimates
   std::vector<GroupStepResult> group_results;  // scratch of the element phase: per element group of the model
   Domain domain;  // the elements this state computes: all of them, or one domain's of a run of several
+  // Several domains: per element kind, the domain of each integration point (its element's).
+  std::array<std::vector<std::int32_t>, kElementKinds> point_owner;
   // Scratch of the element phase's exchange (several domains only): per element group, its smallest step and the
   // element that has it, the last element that inverted and the last with NaN forces, and the failed count.
   struct GroupShare {
     std::vector<double> min_dt;
     std::vector<std::int32_t> controlling, last_inverted, last_non_finite, failed;
+    std::vector<std::int32_t> stop_signal;  // the combined stop request
   } group_share;
   RecordedNodalResults recorded;
   HistoryIntegrals histories;

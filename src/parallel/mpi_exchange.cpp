@@ -1,0 +1,97 @@
+// Domains as MPI ranks (parallel/mpi_exchange.hpp).
+#include "crumple/parallel/mpi_exchange.hpp"
+
+#include <mpi.h>
+
+#include <climits>
+#include <cstdlib>
+#include <limits>
+
+namespace crumple {
+
+MpiSession::MpiSession() {
+  MPI_Init(nullptr, nullptr);
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+  MPI_Comm_size(MPI_COMM_WORLD, &size_);
+}
+MpiSession::~MpiSession() { MPI_Finalize(); }
+void MpiSession::abort(int code) {
+  MPI_Abort(MPI_COMM_WORLD, code);
+  std::abort();  // MPI_Abort does not return
+}
+bool MpiSession::any(bool flag) {
+  int local = flag ? 1 : 0, global = 0;
+  MPI_Allreduce(&local, &global, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+  return global != 0;
+}
+
+MpiExchange::MpiExchange() {
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+  MPI_Comm_size(MPI_COMM_WORLD, &size_);
+}
+
+const MpiExchange::Layout& MpiExchange::layout(const std::vector<std::int32_t>& owner, int width) {
+  auto [it, added] = layouts_.try_emplace({owner.data(), width});
+  Layout& l = it->second;
+  if (!added) return l;
+  l.counts.assign(static_cast<std::size_t>(size_), 0);
+  for (std::int32_t d : owner) l.counts[static_cast<std::size_t>(d)] += width;
+  l.displacements.assign(static_cast<std::size_t>(size_), 0);
+  for (int d = 1; d < size_; ++d)
+    l.displacements[static_cast<std::size_t>(d)] = l.displacements[static_cast<std::size_t>(d - 1)] + l.counts[static_cast<std::size_t>(d - 1)];
+  l.slots.reserve(owner.size());
+  for (int d = 0; d < size_; ++d)
+    for (std::size_t e = 0; e < owner.size(); ++e)
+      if (owner[e] == d) l.slots.push_back(static_cast<std::uint32_t>(e));
+  return l;
+}
+
+template <class T>
+void MpiExchange::share_slots(std::vector<T>& values, int width, const std::vector<std::int32_t>& owner,
+                              std::vector<T>& send, std::vector<T>& gathered) {
+  const Layout& l = layout(owner, width);
+  const auto w = static_cast<std::size_t>(width);
+  const auto first = static_cast<std::size_t>(l.displacements[static_cast<std::size_t>(rank_)]) / w;
+  const auto mine = static_cast<std::size_t>(l.counts[static_cast<std::size_t>(rank_)]) / w;
+  send.resize(mine * w);
+  for (std::size_t i = 0; i < mine; ++i)
+    for (std::size_t c = 0; c < w; ++c) send[i * w + c] = values[l.slots[first + i] * w + c];
+  gathered.resize(l.slots.size() * w);
+  const MPI_Datatype type = sizeof(T) == sizeof(double) ? MPI_DOUBLE : MPI_UINT8_T;
+  MPI_Allgatherv(send.data(), static_cast<int>(send.size()), type, gathered.data(), l.counts.data(),
+                 l.displacements.data(), type, MPI_COMM_WORLD);
+  for (std::size_t i = 0; i < l.slots.size(); ++i)
+    for (std::size_t c = 0; c < w; ++c) values[l.slots[i] * w + c] = gathered[i * w + c];
+}
+
+void MpiExchange::share(std::vector<double>& values, int width, const std::vector<std::int32_t>& owner) {
+  if (values.empty()) return;
+  share_slots(values, width, owner, send_double_, gathered_double_);
+}
+void MpiExchange::share(std::vector<std::uint8_t>& values, int width, const std::vector<std::int32_t>& owner) {
+  if (values.empty()) return;
+  share_slots(values, width, owner, send_byte_, gathered_byte_);
+}
+
+// MPI_MINLOC keeps the smallest value and, among equal values, the smallest index: the first element in model
+// order. A slot without a value (index -1) goes in as (+infinity, INT_MAX) so that it never wins.
+void MpiExchange::min_with_index(std::vector<double>& value, std::vector<std::int32_t>& index) {
+  pairs_.resize(value.size());
+  for (std::size_t i = 0; i < value.size(); ++i)
+    pairs_[i] = index[i] < 0 ? DoubleInt{std::numeric_limits<double>::infinity(), INT_MAX} : DoubleInt{value[i], index[i]};
+  MPI_Allreduce(MPI_IN_PLACE, pairs_.data(), static_cast<int>(pairs_.size()), MPI_DOUBLE_INT, MPI_MINLOC, MPI_COMM_WORLD);
+  for (std::size_t i = 0; i < value.size(); ++i) {
+    const bool none = pairs_[i].index == INT_MAX;
+    value[i] = none ? std::numeric_limits<double>::infinity() : pairs_[i].value;
+    index[i] = none ? -1 : pairs_[i].index;
+  }
+}
+
+void MpiExchange::max(std::vector<std::int32_t>& values) {
+  MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_INT32_T, MPI_MAX, MPI_COMM_WORLD);
+}
+void MpiExchange::sum(std::vector<std::int32_t>& values) {
+  MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_INT32_T, MPI_SUM, MPI_COMM_WORLD);
+}
+
+}  // namespace crumple
