@@ -497,7 +497,8 @@ GroupStepResult brick8_one_point_forces(const ElementTable& table, const Element
 
   for (std::int32_t e = group.begin; e < group.end; ++e) {
     const auto ue = static_cast<std::size_t>(e);
-    if (recording) state.records.clear(ue);  // what the element hands the nodes if it computes nothing
+    // What one of this domain's elements hands the nodes if it computes nothing this cycle.
+    if (recording && !(state.deleted[ue] & kElementElsewhere)) state.records.clear(ue);
     if (state.deleted[ue]) continue;
     const std::int32_t* n = table.nodes_of(ue);
     Element el;
@@ -609,7 +610,8 @@ GroupStepResult brick8_full_forces(const ElementTable& table, const ElementGroup
 
   for (std::int32_t e = group.begin; e < group.end; ++e) {
     const auto ue = static_cast<std::size_t>(e);
-    if (recording) state.records.clear(ue);  // what the element hands the nodes if it computes nothing
+    // What one of this domain's elements hands the nodes if it computes nothing this cycle.
+    if (recording && !(state.deleted[ue] & kElementElsewhere)) state.records.clear(ue);
     if (state.deleted[ue]) continue;
     const std::int32_t* n = table.nodes_of(ue);
     Element el;

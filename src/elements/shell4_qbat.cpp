@@ -226,7 +226,8 @@ GroupStepResult shell4_qbat_forces(const ElementTable& table, const ElementGroup
   const bool recording = state.records.on();
   for (std::int32_t e = group.begin; e < group.end; ++e) {
     const auto ue = static_cast<std::size_t>(e);
-    if (recording) state.records.clear(ue);  // what the element hands the nodes if it computes nothing
+    // What one of this domain's elements hands the nodes if it computes nothing this cycle.
+    if (recording && !(state.deleted[ue] & kElementElsewhere)) state.records.clear(ue);
     if (state.deleted[ue]) continue;
     const bool small_strain = p.small_strain || state.small_strain[ue] != 0;
     LocalElement l;

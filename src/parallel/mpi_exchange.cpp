@@ -35,7 +35,8 @@ const MpiExchange::Layout& MpiExchange::layout(const std::vector<std::int32_t>& 
   Layout& l = it->second;
   if (!added) return l;
   l.counts.assign(static_cast<std::size_t>(size_), 0);
-  for (std::int32_t d : owner) l.counts[static_cast<std::size_t>(d)] += width;
+  for (std::int32_t d : owner)
+    if (d >= 0) l.counts[static_cast<std::size_t>(d)] += width;
   l.displacements.assign(static_cast<std::size_t>(size_), 0);
   for (int d = 1; d < size_; ++d)
     l.displacements[static_cast<std::size_t>(d)] = l.displacements[static_cast<std::size_t>(d - 1)] + l.counts[static_cast<std::size_t>(d - 1)];

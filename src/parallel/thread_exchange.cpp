@@ -14,7 +14,7 @@ void ThreadExchange::share_slots(std::vector<T>& values, int width, const std::v
   board_.barrier_.arrive_and_wait();
   const auto w = static_cast<std::size_t>(width);
   for (std::size_t e = 0; e < owner.size(); ++e) {
-    if (owner[e] == domain_) continue;
+    if (owner[e] < 0 || owner[e] == domain_) continue;
     const auto& from = *static_cast<const std::vector<T>*>(board_.offered_[static_cast<std::size_t>(owner[e])]);
     std::copy_n(from.begin() + static_cast<std::ptrdiff_t>(e * w), w, values.begin() + static_cast<std::ptrdiff_t>(e * w));
   }

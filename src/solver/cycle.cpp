@@ -222,56 +222,99 @@ double step_scale(const RunControl& run) { return run.dt.scale > 0.0 ? run.dt.sc
 
 namespace {
 
+// The per-type step controls and the nodal step read every element's critical step; otherwise only the groups'
+// smallest steps matter, which travel anyway.
+bool critical_steps_needed(const RunControl& rc) {
+  return rc.dt_nodal_cst.given || rc.dt_shell.minimum > 0.0 || rc.dt_sh3n.minimum > 0.0 || rc.dt_brick.minimum > 0.0;
+}
+
+// Every domain's elements' conditions from their owners (an element that failed in its kernel is deleted
+// everywhere).
+void share_conditions(SolverState& s, Exchange& exchange) {
+  for (int k = 0; k < kElementKinds; ++k) {
+    const std::vector<std::int32_t>& owner = s.domain.owner[static_cast<std::size_t>(k)];
+    std::vector<std::uint8_t>& status = element_view(s, static_cast<ElementKind>(k)).status;
+    exchange.share(status, 1, owner);  // the owner's condition, without the flag
+    for (std::size_t e = 0; e < owner.size(); ++e)
+      if (owner[e] != s.domain.index) status[e] = static_cast<std::uint8_t>(status[e] | kElementElsewhere);
+  }
+}
+
 // The groups' results as one domain finds them (GroupStepResult over all of a group's elements): the smallest step
-// with the first element that has it, the last inverted and the last non-finite element, the failed count, and
-// the energies summed in element order from the records (an element that computed nothing recorded zero).
+// with the first element that has it, the last inverted and the last non-finite element, the failed count, and the
+// energies: a whole group's from the domain that computes it, a split group's summed in element order from its
+// elements' records (an element that computed nothing recorded zero).
 void share_group_results(const Model& m, SolverState& s, Exchange& exchange) {
   SolverState::GroupShare& w = s.group_share;
   const std::size_t groups = m.element_groups.size();
   for (auto* v : {&w.controlling, &w.last_inverted, &w.last_non_finite, &w.failed}) v->resize(groups);
-  w.min_dt.resize(groups);
+  w.min_dt.resize(groups), w.energies.resize(2 * groups);
   for (std::size_t g = 0; g < groups; ++g) {
     const GroupStepResult& r = s.group_results[g];
     w.min_dt[g] = r.min_dt, w.controlling[g] = r.controlling;
     w.last_inverted[g] = r.inverted, w.last_non_finite[g] = r.non_finite, w.failed[g] = r.failed;
+    w.energies[2 * g] = r.internal_energy, w.energies[2 * g + 1] = r.hourglass_energy;
   }
   exchange.min_with_index(w.min_dt, w.controlling);
   exchange.max(w.last_inverted);
   exchange.max(w.last_non_finite);
   exchange.sum(w.failed);
+  exchange.share(w.energies, 2, s.domain.group_owner);
+  bool failed = false;
   for (std::size_t g = 0; g < groups; ++g) {
     const ElementGroup& group = m.element_groups[g];
-    const ElementRecords& records = element_view(s, group.kind).records;
     GroupStepResult r;
     if (w.controlling[g] >= 0) r.min_dt = w.min_dt[g], r.controlling = w.controlling[g];
     r.inverted = w.last_inverted[g], r.non_finite = w.last_non_finite[g], r.failed = w.failed[g];
-    for (std::int32_t e = group.begin; e < group.end; ++e) {
-      r.internal_energy += records.internal[static_cast<std::size_t>(e)];
-      r.hourglass_energy += records.hourglass[static_cast<std::size_t>(e)];
+    r.internal_energy = w.energies[2 * g], r.hourglass_energy = w.energies[2 * g + 1];
+    if (s.domain.group_owner[g] < 0) {
+      const ElementRecords& records = element_view(s, group.kind).records;
+      r.internal_energy = r.hourglass_energy = 0.0;
+      for (std::int32_t e = group.begin; e < group.end; ++e) {
+        r.internal_energy += records.internal[static_cast<std::size_t>(e)];
+        r.hourglass_energy += records.hourglass[static_cast<std::size_t>(e)];
+      }
     }
+    failed = failed || r.failed > 0;
     s.group_results[g] = r;
   }
+  if (failed) share_conditions(s, exchange);
+}
+
+// The interior nodes' sums, complete in the domain whose elements alone use them, reach every domain.
+void share_interior_sums(SolverState& s, Exchange& exchange) {
+  NodalState& n = s.nodes;
+  std::vector<double>& sums = s.group_share.node_sums;
+  sums.resize(6 * n.size());
+  std::vector<double>* fields[6] = {&n.fx, &n.fy, &n.fz, &n.mx, &n.my, &n.mz};
+  const std::vector<std::int32_t>& owner = s.domain.node_owner;
+  for (std::size_t k = 0; k < n.size(); ++k)
+    if (owner[k] == s.domain.index)
+      for (std::size_t c = 0; c < 6; ++c) sums[6 * k + c] = (*fields[c])[k];
+  exchange.share(sums, 6, owner);
+  for (std::size_t k = 0; k < n.size(); ++k)
+    if (owner[k] >= 0 && owner[k] != s.domain.index)
+      for (std::size_t c = 0; c < 6; ++c) (*fields[c])[k] = sums[6 * k + c];
 }
 
 }  // namespace
 
-// What one domain computed of its own elements reaches every domain (docs/parallel.md, "Assembly"): their
-// records, critical steps and conditions, then the groups' results as one domain finds them, then every node's sum.
+// What one domain computed of its own elements reaches every domain (docs/parallel.md, "Exchange"): the interior
+// nodes' sums, the loads of the elements at shared nodes, the energies of split groups, the critical steps when a
+// step control reads them, then the groups' results as one domain finds them, then the shared nodes' sums in model
+// order.
 void share_element_results(const Model& m, SolverState& s, Exchange& exchange) {
   const Domain& d = s.domain;
-  ElementStateView views[kElementKinds] = {element_view(s, ElementKind::Shell4), element_view(s, ElementKind::Shell3),
-                                           element_view(s, ElementKind::Brick8)};
+  const bool critical_steps = critical_steps_needed(m.run);
   for (int k = 0; k < kElementKinds; ++k) {
-    const std::vector<std::int32_t>& owner = d.owner[static_cast<std::size_t>(k)];
-    ElementStateView& v = views[k];
-    exchange.share(v.records.load, v.records.nodes_per_element * v.records.values_per_node, owner);
-    exchange.share(v.records.internal, 1, owner);
-    exchange.share(v.records.hourglass, 1, owner);
-    exchange.share(v.critical_dt, 1, owner);
-    exchange.share(v.status, 1, owner);  // the owner's condition, without the flag
-    for (std::size_t e = 0; e < owner.size(); ++e)
-      if (owner[e] != d.index) v.status[e] = static_cast<std::uint8_t>(v.status[e] | kElementElsewhere);
+    ElementStateView v = element_view(s, static_cast<ElementKind>(k));
+    exchange.share(v.records.load, v.records.nodes_per_element * v.records.values_per_node,
+                   d.boundary_owner[static_cast<std::size_t>(k)]);
+    exchange.share(v.records.internal, 1, d.split_owner[static_cast<std::size_t>(k)]);
+    exchange.share(v.records.hourglass, 1, d.split_owner[static_cast<std::size_t>(k)]);
+    if (critical_steps) exchange.share(v.critical_dt, 1, d.owner[static_cast<std::size_t>(k)]);
   }
+  share_interior_sums(s, exchange);
   share_group_results(m, s, exchange);
   assemble_element_loads(d, s.shells, s.shells3, s.bricks, s.nodes);
 }
@@ -301,7 +344,28 @@ void share_kind_state(Exchange& exchange, State& state, Visit visit, const std::
 
 }  // namespace
 
-void share_element_state(SolverState& s, Exchange& exchange) {
+ElementStateNeed history_needs(const Model& m) {
+  ElementStateNeed need = ElementStateNeed::None;
+  for (const TimeHistoryRequest& th : m.histories) {
+    const HistoryObject o = th.object;
+    if (o == HistoryObject::Shell || o == HistoryObject::Sh3n || o == HistoryObject::Brick || o == HistoryObject::Section)
+      return ElementStateNeed::All;
+    if (o == HistoryObject::Part || o == HistoryObject::Subset) need = ElementStateNeed::Energies;
+  }
+  return need;
+}
+
+void share_element_state(SolverState& s, Exchange& exchange, ElementStateNeed need) {
+  if (need == ElementStateNeed::None) return;
+  if (need == ElementStateNeed::Energies) {
+    const auto& owner = s.domain.owner;
+    for (auto* state : {&s.shells, &s.shells3}) {
+      const auto& o = owner[state == &s.shells ? 0 : 1];
+      exchange.share(state->internal_energy, 1, o), exchange.share(state->hourglass_energy, 1, o);
+    }
+    exchange.share(s.bricks.internal_energy, 1, owner[2]), exchange.share(s.bricks.hourglass_energy, 1, owner[2]);
+    return;
+  }
   const auto& owner = s.domain.owner;
   const auto& points = s.point_owner;
   auto shells = [](auto& v, const std::string& at, ShellState& st) { snapshot_detail::visit_shells(v, at, st); };

@@ -45,7 +45,11 @@ void run_element_kernels(const Model& model, SolverState& state);
 void share_element_results(const Model& model, SolverState& state, Exchange& exchange);
 // Before an output of a run of several domains: every element's whole state from the domain that computes it, so
 // that the domain that writes (0) writes what one domain writes.
-void share_element_state(SolverState& state, Exchange& exchange);
+enum class ElementStateNeed : std::uint8_t { None, Energies, All };
+void share_element_state(SolverState& state, Exchange& exchange, ElementStateNeed need = ElementStateNeed::All);
+// What the model's time histories read of the elements: their whole state (shells, bricks, sections), their
+// energies (parts, subsets) or nothing.
+ElementStateNeed history_needs(const Model& model);
 StepBound combine_group_results(const Model& model, SolverState& state, RunEvents& events, bool& elements_deleted);
 
 // 1b. Contact at x^n with v^(n-1/2), when the model has interfaces: the interface step joins `bound`.

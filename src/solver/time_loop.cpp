@@ -70,6 +70,7 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunObse
   observer.start(s, notes);
   RunEvents events;
   OutputSchedule schedule(m.run, s.time, options.max_cycles);
+  const ElementStateNeed history_need = history_needs(m);  // several domains: what a history row gathers
   if (options.resume != nullptr) resume_monitor(*options.resume, events, schedule);
   keep_requested_results(m.run, s);
   if (options.resume == nullptr) write_first_frame(m, s, observer, schedule);
@@ -116,7 +117,8 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunObse
       if (events.stop.stopped()) break;
     }
     const bool restart_now = restart_due(m, s) && !due.finished;
-    if (s.domain.several() && (due.frame || due.history || restart_now)) share_element_state(s, *options.exchange);
+    if (s.domain.several() && (due.frame || due.history || restart_now))
+      share_element_state(s, *options.exchange, due.frame || restart_now ? ElementStateNeed::All : history_need);
     if (due.frame) observer.frame(s);
     if (due.history) {
       VelocityChange change;

@@ -14,8 +14,9 @@ class Exchange {
   virtual int domain() const = 0;
   virtual int domains() const = 0;
 
-  // Element values: `values` holds `width` values per element of one kind; `owner` the domain of each element.
-  // Each domain fills the slots of its own elements; after the call every domain holds every owner's slots.
+  // Values of elements (or nodes, or groups): `values` holds `width` values per slot; `owner` the domain of each
+  // slot, -1 for a slot that does not travel. Each domain fills its own slots; after the call every domain holds
+  // every owner's slots.
   virtual void share(std::vector<double>& values, int width, const std::vector<std::int32_t>& owner) = 0;
   virtual void share(std::vector<std::uint8_t>& values, int width, const std::vector<std::int32_t>& owner) = 0;
 

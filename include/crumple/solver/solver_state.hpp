@@ -112,11 +112,14 @@ struct SolverState {
   // Several domains: per element kind, the domain of each integration point (its element's).
   std::array<std::vector<std::int32_t>, kElementKinds> point_owner;
   // Scratch of the element phase's exchange (several domains only): per element group, its smallest step and the
-  // element that has it, the last element that inverted and the last with NaN forces, and the failed count.
+  // element that has it, the last element that inverted and the last with NaN forces, the failed count and the
+  // energies; per node its direct sum.
   struct GroupShare {
     std::vector<double> min_dt;
     std::vector<std::int32_t> controlling, last_inverted, last_non_finite, failed;
     std::vector<std::int32_t> stop_signal;  // the combined stop request
+    std::vector<double> energies;           // per group: internal and hourglass energy of the cycle
+    std::vector<double> node_sums;          // per node: fx fy fz mx my mz of its owner's direct sum
   } group_share;
   RecordedNodalResults recorded;
   HistoryIntegrals histories;
