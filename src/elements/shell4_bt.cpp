@@ -63,7 +63,8 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
   const bool recording = state.records.on();
   for (std::int32_t e = group.begin; e < group.end; ++e) {
     const auto ue = static_cast<std::size_t>(e);
-    if (recording) state.records.clear(ue);  // what the element hands the nodes if it computes nothing
+    // What one of this domain's elements hands the nodes if it computes nothing this cycle.
+    if (recording && !(state.deleted[ue] & kElementElsewhere)) state.records.clear(ue);
     if (state.deleted[ue]) continue;
     const std::int32_t* n = table.nodes_of(ue);
     Vec3 x[NN], v[NN], w[NN];
