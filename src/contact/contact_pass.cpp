@@ -273,17 +273,23 @@ ContactStep contact_forces(const Model& m, ContactState& c, NodalState& nodes, d
   return step;
 }
 
-double contact_work(ContactState& c, const NodalState& n, const std::vector<double>* v_old, double dt_average) {
-  double total = 0.0;
+void add_contact_work(const ContactState& c, const NodalState& n, const std::vector<double>* v_old,
+                      const std::vector<std::int32_t>& node_owner, std::int32_t me, ExactSum* power) {
   for (std::size_t f = 0; f < c.interfaces.size(); ++f) {
     const ContactInterface& in = c.interfaces[f];
-    double work = 0.0;
     for (std::size_t e = 0; e < in.applied_node.size(); ++e) {
       const auto k = static_cast<std::size_t>(in.applied_node[e]);
-      work += in.applied_x[e] * 0.5 * (v_old[0][k] + n.vx[k]) + in.applied_y[e] * 0.5 * (v_old[1][k] + n.vy[k]) +
-              in.applied_z[e] * 0.5 * (v_old[2][k] + n.vz[k]);
+      if (node_owner[k] != me) continue;
+      power[f].add(in.applied_x[e] * 0.5 * (v_old[0][k] + n.vx[k]) + in.applied_y[e] * 0.5 * (v_old[1][k] + n.vy[k]) +
+                   in.applied_z[e] * 0.5 * (v_old[2][k] + n.vz[k]));
     }
-    c.results[f].absorbed -= work * dt_average;
+  }
+}
+
+double absorb_contact_work(ContactState& c, const ExactSum* power, double dt_average) {
+  double total = 0.0;
+  for (std::size_t f = 0; f < c.interfaces.size(); ++f) {
+    c.results[f].absorbed -= power[f].value() * dt_average;
     total += c.results[f].absorbed;
   }
   return total;

@@ -1,43 +1,61 @@
 // One domain of a run of several (parallel/domain.hpp, docs/parallel.md "Assembly").
 #include "crumple/parallel/domain.hpp"
 
+#include <algorithm>
+
 namespace crumple {
 
 Domain single_domain(const Model& m) {
   Domain d;
   for (int k = 0; k < kElementKinds; ++k) d.owner[static_cast<std::size_t>(k)].assign(m.elements[static_cast<std::size_t>(k)].size(), 0);
+  d.node_owner.assign(m.nodes.size(), 0);
   return d;
 }
 
 namespace {
 
-// Each node's domain: the one whose elements alone use it, -1 if several or none (Domain::node_owner).
-std::vector<std::int32_t> node_owners(const Model& m, const Domain& d) {
-  constexpr std::int32_t kNone = -2;
-  std::vector<std::int32_t> owner(m.nodes.size(), kNone);
+// Per node: the lowest and the highest domain whose elements use it (-1, -1 when none does).
+struct NodeUse {
+  std::vector<std::int32_t> lowest, highest;
+};
+NodeUse node_use(const Model& m, const Domain& d) {
+  NodeUse use{std::vector<std::int32_t>(m.nodes.size(), -1), std::vector<std::int32_t>(m.nodes.size(), -1)};
   for (int kind = 0; kind < kElementKinds; ++kind) {
     const ElementTable& table = m.elements[static_cast<std::size_t>(kind)];
     const int count = nodes_per_element(table.kind);
     for (std::size_t e = 0; e < table.size(); ++e) {
       const std::int32_t domain = d.owner[static_cast<std::size_t>(kind)][e];
       for (int a = 0; a < count; ++a) {
-        std::int32_t& o = owner[static_cast<std::size_t>(table.nodes_of(e)[a])];
-        o = o == kNone || o == domain ? domain : -1;
+        const auto k = static_cast<std::size_t>(table.nodes_of(e)[a]);
+        use.lowest[k] = use.lowest[k] < 0 ? domain : std::min(use.lowest[k], domain);
+        use.highest[k] = std::max(use.highest[k], domain);
       }
     }
   }
-  for (std::int32_t& o : owner) o = o == kNone ? -1 : o;
-  return owner;
+  return use;
 }
 
-// The shared nodes' load lists, in the kernels' order (element groups are kind by kind, in element order).
-void load_lists(const Model& m, Domain& d, const std::vector<std::int32_t>& touched_by_several) {
+// Whether domain `index` uses node k through one of its elements (domain.hpp: local nodes).
+std::vector<std::uint8_t> used_by(const Model& m, const Domain& d) {
+  std::vector<std::uint8_t> used(m.nodes.size(), 0);
+  for (int kind = 0; kind < kElementKinds; ++kind) {
+    const ElementTable& table = m.elements[static_cast<std::size_t>(kind)];
+    const int count = nodes_per_element(table.kind);
+    for (std::size_t e = 0; e < table.size(); ++e)
+      if (d.owner[static_cast<std::size_t>(kind)][e] == d.index)
+        for (int a = 0; a < count; ++a) used[static_cast<std::size_t>(table.nodes_of(e)[a])] = 1;
+  }
+  return used;
+}
+
+// The local shared nodes' load lists, in the kernels' order (element groups are kind by kind, in element order).
+void load_lists(const Model& m, Domain& d) {
   std::vector<std::int32_t> slot(m.nodes.size(), -1);
   for (std::size_t i = 0; i < d.shared_nodes.size(); ++i) slot[static_cast<std::size_t>(d.shared_nodes[i])] = static_cast<std::int32_t>(i);
   d.first.assign(d.shared_nodes.size() + 1, 0);
   for (const ElementTable& table : m.elements)
     for (std::int32_t node : table.connectivity)
-      if (touched_by_several[static_cast<std::size_t>(node)]) ++d.first[static_cast<std::size_t>(slot[static_cast<std::size_t>(node)]) + 1];
+      if (const std::int32_t i = slot[static_cast<std::size_t>(node)]; i >= 0) ++d.first[static_cast<std::size_t>(i) + 1];
   for (std::size_t i = 0; i < d.shared_nodes.size(); ++i) d.first[i + 1] += d.first[i];
   d.loads.resize(d.first.back());
   std::vector<std::uint32_t> fill(d.first.begin(), d.first.end() - 1);
@@ -60,16 +78,26 @@ Domain make_domain(const Model& m, const Partition& partition, int index) {
   Domain d;
   d.index = index, d.count = partition.domains;
   d.owner = partition.domain_of_element;
-  d.node_owner = node_owners(m, d);
+  const NodeUse use = node_use(m, d);
+  const std::vector<std::uint8_t> used = used_by(m, d);
   std::vector<std::int32_t> several(m.nodes.size(), 0);  // used by elements of several domains
-  for (int kind = 0; kind < kElementKinds; ++kind) {
-    const ElementTable& table = m.elements[static_cast<std::size_t>(kind)];
-    for (std::int32_t node : table.connectivity)
-      several[static_cast<std::size_t>(node)] = d.node_owner[static_cast<std::size_t>(node)] < 0;
+  d.node_owner.assign(m.nodes.size(), 0);
+  d.local.assign(m.nodes.size(), 0);
+  // Nodes every domain advances although elements use them: the main nodes of rigid bodies and the nodes that
+  // carry moving walls, whose motion every domain needs (a body's centre, a wall's plane).
+  std::vector<std::uint8_t> everywhere(m.nodes.size(), 0);
+  for (const RigidBody& b : m.rigid_bodies) everywhere[static_cast<std::size_t>(b.main_node)] = 1;
+  for (const RigidWall& w : m.rigid_walls)
+    if (w.node >= 0) everywhere[static_cast<std::size_t>(w.node)] = 1;
+  for (std::size_t k = 0; k < m.nodes.size(); ++k) {
+    const bool free = use.lowest[k] < 0;  // no element uses it: every domain advances it, domain 0 owns it
+    several[k] = !free && use.lowest[k] != use.highest[k];
+    d.node_owner[k] = free ? 0 : use.lowest[k];
+    if (free || used[k] || everywhere[k]) d.local_nodes.push_back(static_cast<std::int32_t>(k)), d.local[k] = 1;
+    if (d.node_owner[k] == index) d.owned_nodes.push_back(static_cast<std::int32_t>(k));
+    if (several[k] && used[k]) d.shared_nodes.push_back(static_cast<std::int32_t>(k));
   }
-  for (std::size_t k = 0; k < m.nodes.size(); ++k)
-    if (several[k]) d.shared_nodes.push_back(static_cast<std::int32_t>(k));
-  load_lists(m, d, several);
+  load_lists(m, d);
   for (int kind = 0; kind < kElementKinds; ++kind) {
     const ElementTable& table = m.elements[static_cast<std::size_t>(kind)];
     auto& boundary = d.boundary_owner[static_cast<std::size_t>(kind)];

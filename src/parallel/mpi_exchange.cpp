@@ -3,6 +3,7 @@
 
 #include <mpi.h>
 
+#include <algorithm>
 #include <climits>
 #include <cstdlib>
 #include <limits>
@@ -91,6 +92,28 @@ void MpiExchange::min_with_index(std::vector<double>& value, std::vector<std::in
 void MpiExchange::max(std::vector<std::int32_t>& values) {
   MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_INT32_T, MPI_MAX, MPI_COMM_WORLD);
 }
+void MpiExchange::max(std::vector<double>& values) {
+  MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+}
+
+// The normalised digits of every sum, summed as integers (exact, in any order); the non-finite parts as doubles
+// (inf, -inf and NaN combine to the same result in any order).
+void MpiExchange::sum(std::vector<ExactSum>& sums) {
+  constexpr auto n = static_cast<std::size_t>(ExactSum::kDigits);
+  digits_.resize(n * sums.size()), non_finite_.resize(sums.size());
+  for (std::size_t i = 0; i < sums.size(); ++i) {
+    sums[i].normalise();
+    std::copy(sums[i].digits().begin(), sums[i].digits().end(), digits_.begin() + static_cast<std::ptrdiff_t>(i * n));
+    non_finite_[i] = sums[i].non_finite();
+  }
+  MPI_Allreduce(MPI_IN_PLACE, digits_.data(), static_cast<int>(digits_.size()), MPI_INT64_T, MPI_SUM, MPI_COMM_WORLD);
+  MPI_Allreduce(MPI_IN_PLACE, non_finite_.data(), static_cast<int>(non_finite_.size()), MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+  for (std::size_t i = 0; i < sums.size(); ++i) {
+    std::copy_n(digits_.begin() + static_cast<std::ptrdiff_t>(i * n), n, sums[i].digits().begin());
+    sums[i].non_finite() = non_finite_[i];
+  }
+}
+
 void MpiExchange::sum(std::vector<std::int32_t>& values) {
   MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_INT32_T, MPI_SUM, MPI_COMM_WORLD);
 }

@@ -69,6 +69,12 @@ void ThreadExchange::min_with_index(std::vector<double>& value, std::vector<std:
 void ThreadExchange::max(std::vector<std::int32_t>& values) {
   reduce(values, [](std::size_t, std::int32_t& a, std::int32_t b, int) { a = std::max(a, b); });
 }
+void ThreadExchange::max(std::vector<double>& values) {
+  reduce(values, [](std::size_t, double& a, double b, int) { a = std::max(a, b); });
+}
+void ThreadExchange::sum(std::vector<ExactSum>& sums) {
+  reduce(sums, [](std::size_t, ExactSum& a, const ExactSum& b, int) { a.add(b); });
+}
 void ThreadExchange::sum(std::vector<std::int32_t>& values) {
   reduce(values, [](std::size_t, std::int32_t& a, std::int32_t b, int) { a += b; });
 }

@@ -127,9 +127,10 @@ long long control_group_step(const Model& m, std::size_t g, SolverState& s, RunE
   return 0;
 }
 
-// Power of the /CLOAD and /GRAV loads on the mid-step velocities, times the step.
-double load_work(const Model& m, const SolverState& s, const VelocityScratch& scratch, double t, double dt_average) {
-  double work = 0.0;
+// Power of the /CLOAD and /GRAV loads on the mid-step velocities, times the step, into `work`: each node's terms
+// from the domain that owns it.
+void add_load_work(const Model& m, const SolverState& s, const VelocityScratch& scratch, double t, double dt_average,
+                   ExactSum& work) {
   const NodalState& n = s.nodes;
   const std::vector<double>* now[6] = {&n.vx, &n.vy, &n.vz, &n.wx, &n.wy, &n.wz};
   auto mean_velocity = [&](Dof dof, std::size_t k) {
@@ -140,35 +141,45 @@ double load_work(const Model& m, const SolverState& s, const VelocityScratch& sc
     if (im.kind != ImposedKind::Force || t < im.t_start || t > im.t_stop) continue;
     const double value = load_curve(m, im.function, im.scale_x, im.scale_y, t);
     for (std::int32_t node : m.node_groups[static_cast<std::size_t>(im.node_group)].nodes)
-      work += value * mean_velocity(im.dof, static_cast<std::size_t>(node)) * dt_average;
+      if (s.domain.owns(static_cast<std::size_t>(node)))
+        work.add(value * mean_velocity(im.dof, static_cast<std::size_t>(node)) * dt_average);
   }
   for (const Gravity& g : m.gravity) {
     const double a = load_curve(m, g.function, g.scale_x, g.scale_y, t);
     for_each_load_node(m, g.node_group, [&](std::int32_t node) {
       const auto k = static_cast<std::size_t>(node);
-      work += n.mass[k] * a * mean_velocity(g.dof, k) * dt_average;
+      if (s.domain.owns(k)) work.add(n.mass[k] * a * mean_velocity(g.dof, k) * dt_average);
     });
   }
-  return work;
 }
 
-// Work of the kinematic conditions: the impulse that changed the free velocity, on the mid-step velocity.
-double constraint_work(SolverState& s, const VelocityScratch& scratch) {
-  double work = 0.0;
+// Work of the kinematic conditions: the impulse that changed the free velocity, on the mid-step velocity, into
+// `work` (owned nodes).
+void add_constraint_work(SolverState& s, const VelocityScratch& scratch, ExactSum& work) {
   NodalState& n = s.nodes;
   auto v = velocities(n);
-  for (std::size_t k = 0; k < n.size(); ++k) {
+  for_each_owned_node(s.domain, n.size(), [&](std::size_t k) {
     for (std::size_t d = 0; d < 3; ++d) {
       const double dv = (*v[d])[k] - scratch.free[d][k];
-      if (dv != 0.0) work += n.mass[k] * dv * 0.5 * ((*v[d])[k] + scratch.before[d][k]);
+      if (dv != 0.0) work.add(n.mass[k] * dv * 0.5 * ((*v[d])[k] + scratch.before[d][k]));
     }
     if (n.inertia[k] > 0.0)
       for (std::size_t d = 3; d < 6; ++d) {
         const double dv = (*v[d])[k] - scratch.free[d][k];
-        if (dv != 0.0) work += n.inertia[k] * dv * 0.5 * ((*v[d])[k] + scratch.before[d][k]);
+        if (dv != 0.0) work.add(n.inertia[k] * dv * 0.5 * ((*v[d])[k] + scratch.before[d][k]));
       }
+  });
+}
+
+// The local nodes' velocities into `to` (the scratch of the update, VelocityScratch).
+void copy_local_velocities(const SolverState& s, const std::array<std::vector<double>*, 6>& v,
+                           std::array<std::vector<double>, 6>& to) {
+  if (!s.domain.several()) {
+    for (std::size_t d = 0; d < 6; ++d) std::copy(v[d]->begin(), v[d]->end(), to[d].begin());
+    return;
   }
-  return work;
+  for (std::size_t d = 0; d < 6; ++d)
+    for (std::int32_t k : s.domain.local_nodes) to[d][static_cast<std::size_t>(k)] = (*v[d])[static_cast<std::size_t>(k)];
 }
 
 // Hourglass energy above 10 % of the internal energy is a mesh or formulation problem the user must see
@@ -201,7 +212,8 @@ void record_internal_forces(SolverState& s) {
   std::vector<double>& out = s.recorded.internal_force;
   if (out.empty()) return;
   const NodalState& n = s.nodes;
-  for (std::size_t k = 0; k < n.size(); ++k) out[3 * k] = n.fx[k], out[3 * k + 1] = n.fy[k], out[3 * k + 2] = n.fz[k];
+  for_each_local_node(s.domain, n.size(),
+                      [&](std::size_t k) { out[3 * k] = n.fx[k], out[3 * k + 1] = n.fy[k], out[3 * k + 2] = n.fz[k]; });
 }
 
 // a^n from the velocity change of the step, after the kinematic conditions (field frames, /ANIM/VECT/ACC).
@@ -209,11 +221,11 @@ void record_acceleration(SolverState& s, const VelocityScratch& scratch, double 
   std::vector<double>& out = s.recorded.acceleration;
   if (out.empty() || !(dt_average > 0.0)) return;
   const NodalState& n = s.nodes;
-  for (std::size_t k = 0; k < n.size(); ++k) {
+  for_each_local_node(s.domain, n.size(), [&](std::size_t k) {
     out[3 * k] = (n.vx[k] - scratch.before[0][k]) / dt_average;
     out[3 * k + 1] = (n.vy[k] - scratch.before[1][k]) / dt_average;
     out[3 * k + 2] = (n.vz[k] - scratch.before[2][k]) / dt_average;
-  }
+  });
 }
 
 }  // namespace
@@ -281,28 +293,11 @@ void share_group_results(const Model& m, SolverState& s, Exchange& exchange) {
   if (failed) share_conditions(s, exchange);
 }
 
-// The interior nodes' sums, complete in the domain whose elements alone use them, reach every domain.
-void share_interior_sums(SolverState& s, Exchange& exchange) {
-  NodalState& n = s.nodes;
-  std::vector<double>& sums = s.group_share.node_sums;
-  sums.resize(6 * n.size());
-  std::vector<double>* fields[6] = {&n.fx, &n.fy, &n.fz, &n.mx, &n.my, &n.mz};
-  const std::vector<std::int32_t>& owner = s.domain.node_owner;
-  for (std::size_t k = 0; k < n.size(); ++k)
-    if (owner[k] == s.domain.index)
-      for (std::size_t c = 0; c < 6; ++c) sums[6 * k + c] = (*fields[c])[k];
-  exchange.share(sums, 6, owner);
-  for (std::size_t k = 0; k < n.size(); ++k)
-    if (owner[k] >= 0 && owner[k] != s.domain.index)
-      for (std::size_t c = 0; c < 6; ++c) (*fields[c])[k] = sums[6 * k + c];
-}
-
 }  // namespace
 
-// What one domain computed of its own elements reaches every domain (docs/parallel.md, "Exchange"): the interior
-// nodes' sums, the loads of the elements at shared nodes, the energies of split groups, the critical steps when a
-// step control reads them, then the groups' results as one domain finds them, then the shared nodes' sums in model
-// order.
+// What one domain computed of its own elements reaches the domains that need it (docs/parallel.md, "Exchange"): the
+// loads of the elements at shared nodes, the energies of split groups, the critical steps when a step control reads
+// them, then the groups' results as one domain finds them, then the local shared nodes' sums in model order.
 void share_element_results(const Model& m, SolverState& s, Exchange& exchange) {
   const Domain& d = s.domain;
   const bool critical_steps = critical_steps_needed(m.run);
@@ -314,7 +309,6 @@ void share_element_results(const Model& m, SolverState& s, Exchange& exchange) {
     exchange.share(v.records.hourglass, 1, d.split_owner[static_cast<std::size_t>(k)]);
     if (critical_steps) exchange.share(v.critical_dt, 1, d.owner[static_cast<std::size_t>(k)]);
   }
-  share_interior_sums(s, exchange);
   share_group_results(m, s, exchange);
   assemble_element_loads(d, s.shells, s.shells3, s.bricks, s.nodes);
 }
@@ -380,8 +374,35 @@ void share_element_state(SolverState& s, Exchange& exchange, ElementStateNeed ne
   share_kind_state(exchange, s.bricks, bricks, owner[2], points[2], brick_points);
 }
 
+void share_node_state(const Model& m, SolverState& s, Exchange& exchange) {
+  NodalState& n = s.nodes;
+  const std::vector<std::int32_t>& owner = s.domain.node_owner;
+  for (auto* v : {&n.x, &n.y, &n.z, &n.vx, &n.vy, &n.vz, &n.wx, &n.wy, &n.wz, &n.fx, &n.fy, &n.fz, &n.mx, &n.my, &n.mz})
+    exchange.share(*v, 1, owner);
+  RecordedNodalResults& r = s.recorded;
+  for (auto* v : {&r.acceleration, &r.internal_force, &r.external_force})
+    if (!v->empty()) exchange.share(*v, 3, owner);
+  // Output-only integrals of the cycle, kept right by the domain their node is local to.
+  SolverState::GroupShare& w = s.group_share;
+  HistoryIntegrals& h = s.histories;
+  if (!m.accelerometers.empty()) {
+    if (w.accelerometer_owner.empty())
+      for (const Accelerometer& a : m.accelerometers) w.accelerometer_owner.push_back(owner[static_cast<std::size_t>(a.node)]);
+    exchange.share(h.accel_filtered, 3, w.accelerometer_owner), exchange.share(h.accel_velocity, 3, w.accelerometer_owner);
+    exchange.share(h.accel_memory, 18, w.accelerometer_owner);
+  }
+  if (!h.rotation_nodes.empty()) {
+    if (w.rotation_owner.empty())
+      for (std::int32_t k : h.rotation_nodes) w.rotation_owner.push_back(owner[static_cast<std::size_t>(k)]);
+    exchange.share(h.rotation, 3, w.rotation_owner);
+  }
+}
+
 void run_element_kernels(const Model& m, SolverState& s) {
-  s.nodes.clear_forces();
+  NodalState& n = s.nodes;
+  if (!s.domain.several()) n.clear_forces();
+  else
+    for_each_local_node(s.domain, n.size(), [&n](std::size_t k) { n.fx[k] = n.fy[k] = n.fz[k] = n.mx[k] = n.my[k] = n.mz[k] = 0.0; });
   for (std::size_t g = 0; g < m.element_groups.size(); ++g) s.group_results[g] = group_forces(m, s, g);
 }
 
@@ -415,8 +436,28 @@ StepBound compute_element_forces(const Model& m, SolverState& s, RunEvents& even
   return combine_group_results(m, s, events, elements_deleted);
 }
 
+namespace {
+
+// Several domains: every interface node's position and velocity from its owner, so that every domain runs the
+// whole contact pass on the same data (docs/parallel.md, "Contact").
+void share_contact_nodes(SolverState& s) {
+  std::vector<std::int32_t>& owner = s.group_share.contact_node_owner;
+  if (owner.empty()) {
+    owner.assign(s.nodes.size(), -1);
+    for (const ContactInterface& in : s.contact.interfaces) {
+      for (std::int32_t k : in.secondary_nodes) owner[static_cast<std::size_t>(k)] = s.domain.node_owner[static_cast<std::size_t>(k)];
+      for (std::int32_t k : in.main_nodes) owner[static_cast<std::size_t>(k)] = s.domain.node_owner[static_cast<std::size_t>(k)];
+    }
+  }
+  NodalState& n = s.nodes;
+  for (auto* v : {&n.x, &n.y, &n.z, &n.vx, &n.vy, &n.vz}) s.reducer.exchange()->share(*v, 1, owner);
+}
+
+}  // namespace
+
 void compute_contact_forces(const Model& m, SolverState& s, RunEvents& events, bool elements_deleted,
                             StepBound& bound) {
+  if (s.domain.several()) share_contact_nodes(s);
   if (elements_deleted)
     contact::remove_deleted_elements(s.contact, {&s.shells.deleted, &s.shells3.deleted, &s.bricks.deleted});
   const contact::ContactStep step = contact::contact_forces(m, s.contact, s.nodes, s.time, s.dt, bound.dt,
@@ -470,8 +511,8 @@ double choose_time_step(const Model& m, SolverState& s, RunEvents& events, StepB
 void integrate(SolverState& s, VelocityScratch& scratch, double dt_average) {
   NodalState& n = s.nodes;
   auto v = velocities(n);
-  for (std::size_t d = 0; d < 6; ++d) std::copy(v[d]->begin(), v[d]->end(), scratch.before[d].begin());
-  for (std::size_t k = 0; k < n.size(); ++k) {
+  copy_local_velocities(s, v, scratch.before);
+  for_each_local_node(s.domain, n.size(), [&](std::size_t k) {
     const double inverse_mass = n.mass[k] > 0.0 ? 1.0 / n.mass[k] : 0.0;
     n.vx[k] += dt_average * n.fx[k] * inverse_mass;
     n.vy[k] += dt_average * n.fy[k] * inverse_mass;
@@ -482,8 +523,8 @@ void integrate(SolverState& s, VelocityScratch& scratch, double dt_average) {
       n.wy[k] += dt_average * n.my[k] * inverse_inertia;
       n.wz[k] += dt_average * n.mz[k] * inverse_inertia;
     }
-  }
-  for (std::size_t d = 0; d < 6; ++d) std::copy(v[d]->begin(), v[d]->end(), scratch.free[d].begin());
+  });
+  copy_local_velocities(s, v, scratch.free);
 }
 
 void apply_constraints(const Model& m, SolverState& s, VelocityScratch& scratch, double dt_average, double dt_next) {
@@ -498,9 +539,17 @@ void apply_constraints(const Model& m, SolverState& s, VelocityScratch& scratch,
     }
   impose_kinematics(m, s, s.time, dt_next);
   apply_rigid_walls(m, s, dt_average, dt_next);
-  s.energy.external_work += load_work(m, s, scratch, s.time, dt_average) + constraint_work(s, scratch) + body_work;
+  // The works of the step as exact sums over the owned nodes, combined over the domains (docs/parallel.md): the
+  // loads' and conditions' work, then each interface's contact work.
+  std::vector<ExactSum>& work = s.reducer.sums;
+  work.assign(1 + s.contact.interfaces.size(), ExactSum{});
+  add_load_work(m, s, scratch, s.time, dt_average, work[0]);
+  add_constraint_work(s, scratch, work[0]);
   if (!s.contact.interfaces.empty())
-    s.energy.contact = contact::contact_work(s.contact, n, scratch.before.data(), dt_average);
+    contact::add_contact_work(s.contact, n, scratch.before.data(), s.domain.node_owner, s.domain.index, work.data() + 1);
+  s.reducer.sum(work);
+  s.energy.external_work += work[0].value() + body_work;
+  if (!s.contact.interfaces.empty()) s.energy.contact = contact::absorb_contact_work(s.contact, work.data() + 1, dt_average);
   record_acceleration(s, scratch, dt_average);
   // /ACCEL: only a deck with accelerometers has any (a loop over them, not over the nodes).
   update_accelerometers(m.accelerometers, n, {&scratch.before[0], &scratch.before[1], &scratch.before[2]}, dt_average,
@@ -509,11 +558,11 @@ void apply_constraints(const Model& m, SolverState& s, VelocityScratch& scratch,
 
 void advance_positions(SolverState& s, double dt_next) {
   NodalState& n = s.nodes;
-  for (std::size_t k = 0; k < n.size(); ++k) {
+  for_each_local_node(s.domain, n.size(), [&n, dt_next](std::size_t k) {
     n.x[k] += dt_next * n.vx[k];
     n.y[k] += dt_next * n.vy[k];
     n.z[k] += dt_next * n.vz[k];
-  }
+  });
   // /TH/NODE DRX DRY DRZ: only the nodes a request asks them of (none: no loop).
   integrate_node_rotations(n, dt_next, s.histories);
   s.time += dt_next;

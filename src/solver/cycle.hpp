@@ -47,6 +47,9 @@ void share_element_results(const Model& model, SolverState& state, Exchange& exc
 // that the domain that writes (0) writes what one domain writes.
 enum class ElementStateNeed : std::uint8_t { None, Energies, All };
 void share_element_state(SolverState& state, Exchange& exchange, ElementStateNeed need = ElementStateNeed::All);
+// Before an output of a run of several domains: every node's state (and the output-only integrals of the nodes)
+// from the domain that owns it; between outputs a domain keeps only its local nodes right (parallel/domain.hpp).
+void share_node_state(const Model& model, SolverState& state, Exchange& exchange);
 // What the model's time histories read of the elements: their whole state (shells, bricks, sections), their
 // energies (parts, subsets) or nothing.
 ElementStateNeed history_needs(const Model& model);

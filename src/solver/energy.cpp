@@ -20,43 +20,57 @@ namespace {
 
 // Kinetic energy of a body's nodes (main and secondary) relative to their centre of mass,
 // sum 1/2 m_i |v_i - v_c|^2 [E]: the centre's velocity first, then the sum, without the cancellation of
-// "total minus 1/2 M v_c^2" on a body that mostly translates.
-double relative_kinetic_energy(const NodalState& n, const RigidBodyState& b) {
-  double mass = n.mass[static_cast<std::size_t>(b.main_node)], vc[3] = {0.0, 0.0, 0.0};
-  auto add_momentum = [&](std::size_t k, double m) { vc[0] += m * n.vx[k], vc[1] += m * n.vy[k], vc[2] += m * n.vz[k]; };
-  add_momentum(static_cast<std::size_t>(b.main_node), mass);
-  for (std::int32_t k : b.secondary) {
-    const auto uk = static_cast<std::size_t>(k);
-    mass += n.mass[uk];
-    add_momentum(uk, n.mass[uk]);
-  }
-  if (!(mass > 0.0)) return 0.0;
-  for (double& v : vc) v /= mass;
-  auto relative = [&](std::size_t k) {
-    const double dx = n.vx[k] - vc[0], dy = n.vy[k] - vc[1], dz = n.vz[k] - vc[2];
-    return 0.5 * n.mass[k] * (dx * dx + dy * dy + dz * dz);
+// "total minus 1/2 M v_c^2" on a body that mostly translates. Both sums are exact, each node's terms from its owner.
+double relative_kinetic_energy(SolverState& s, const RigidBodyState& b, bool whole_model) {
+  const NodalState& n = s.nodes;
+  auto for_body_nodes = [&](auto f) {
+    auto take = [&](std::int32_t k) { return whole_model || s.domain.owns(static_cast<std::size_t>(k)); };
+    if (take(b.main_node)) f(static_cast<std::size_t>(b.main_node));
+    for (std::int32_t k : b.secondary)
+      if (take(k)) f(static_cast<std::size_t>(k));
   };
-  double spin = relative(static_cast<std::size_t>(b.main_node));
-  for (std::int32_t k : b.secondary) spin += relative(static_cast<std::size_t>(k));
-  return spin;
+  std::vector<ExactSum>& sums = s.reducer.sums;
+  sums.assign(4, ExactSum{});  // mass, momentum x y z
+  for_body_nodes([&](std::size_t k) {
+    sums[0].add(n.mass[k]), sums[1].add(n.mass[k] * n.vx[k]), sums[2].add(n.mass[k] * n.vy[k]), sums[3].add(n.mass[k] * n.vz[k]);
+  });
+  if (!whole_model) s.reducer.sum(sums);
+  const double mass = sums[0].value();
+  if (!(mass > 0.0)) return 0.0;
+  const double vc[3] = {sums[1].value() / mass, sums[2].value() / mass, sums[3].value() / mass};
+  sums.assign(1, ExactSum{});
+  for_body_nodes([&](std::size_t k) {
+    const double dx = n.vx[k] - vc[0], dy = n.vy[k] - vc[1], dz = n.vz[k] - vc[2];
+    sums[0].add(0.5 * n.mass[k] * (dx * dx + dy * dy + dz * dz));
+  });
+  if (!whole_model) s.reducer.sum(sums);
+  return sums[0].value();
 }
 
 }  // namespace
 
-std::pair<double, double> kinetic_energy(const SolverState& s) {
+std::pair<double, double> kinetic_energy(SolverState& s, bool whole_model) {
   const NodalState& n = s.nodes;
-  double translational = 0.0, rotational = 0.0;
-  for (std::size_t k = 0; k < n.size(); ++k) {
-    translational += 0.5 * n.mass[k] * (n.vx[k] * n.vx[k] + n.vy[k] * n.vy[k] + n.vz[k] * n.vz[k]);
-    rotational += 0.5 * n.inertia[k] * (n.wx[k] * n.wx[k] + n.wy[k] * n.wy[k] + n.wz[k] * n.wz[k]);
+  std::vector<ExactSum>& sums = s.reducer.sums;
+  sums.assign(2, ExactSum{});
+  auto add = [&](std::size_t k) {
+    sums[0].add(0.5 * n.mass[k] * (n.vx[k] * n.vx[k] + n.vy[k] * n.vy[k] + n.vz[k] * n.vz[k]));
+    sums[1].add(0.5 * n.inertia[k] * (n.wx[k] * n.wx[k] + n.wy[k] * n.wy[k] + n.wz[k] * n.wz[k]));
+  };
+  if (whole_model) {
+    for (std::size_t k = 0; k < n.size(); ++k) add(k);
+  } else {
+    for_each_owned_node(s.domain, n.size(), add);
+    s.reducer.sum(sums);
   }
+  double translational = sums[0].value(), rotational = sums[1].value();
   // Rigid bodies, as the reference's listing splits them: translational 1/2 M v_c^2 of the centre of mass,
   // rotational the rest of the nodes' kinetic energy, sum 1/2 m_i |v_i - v_c|^2, which for a rigid motion is
   // 1/2 w . I w of the nodal masses about the centre (docs/theory/rigid-bodies.md, RB-7). The total is unchanged.
   // The inertia the card adds (Jxx..Jxz, in the body frame) spins with the body: 1/2 w . R J R^T w.
   for (const RigidBodyState& b : s.bodies) {
     if (b.active) {
-      const double spin = relative_kinetic_energy(n, b);
+      const double spin = relative_kinetic_energy(s, b, whole_model);
       translational -= spin, rotational += spin;
     }
     const auto& R = b.rotation;

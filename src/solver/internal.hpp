@@ -46,8 +46,10 @@ NodalStep nodal_time_step(const Model& model, SolverState& state);
 // times, in O(1) whatever the ratio of the interval to the step (/ANIM/DT, /TFILE).
 double next_output_time(double t, double start, double interval);
 
-// Translational and rotational kinetic energy of the current half-step velocities.
-std::pair<double, double> kinetic_energy(const SolverState& state);
+// Translational and rotational kinetic energy of the current half-step velocities: exact sums over the owned nodes,
+// combined over the domains (every domain calls it at the same cycles); with `whole_model`, over every node of this
+// domain's arrays and without the exchange (the start, where every domain holds every node).
+std::pair<double, double> kinetic_energy(SolverState& state, bool whole_model = false);
 
 // Adds /CLOAD and /GRAV forces at time t; returns nothing (their work is counted with the velocity update).
 void add_external_forces(const Model& model, SolverState& state, double time);

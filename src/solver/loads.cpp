@@ -67,16 +67,16 @@ void record_external_forces(const Model& m, SolverState& s, double t) {
 
 void impose_kinematics(const Model& m, SolverState& s, double t, double dt_next) {
   NodalState& n = s.nodes;
-  for (std::size_t k = 0; k < n.size(); ++k) {
+  for_each_local_node(s.domain, n.size(), [&](std::size_t k) {
     const std::uint8_t mask = s.fixed[k];
-    if (mask == 0) continue;
+    if (mask == 0) return;
     if (mask & 1u) n.vx[k] = 0.0;
     if (mask & 2u) n.vy[k] = 0.0;
     if (mask & 4u) n.vz[k] = 0.0;
     if (mask & 8u) n.wx[k] = 0.0;
     if (mask & 16u) n.wy[k] = 0.0;
     if (mask & 32u) n.wz[k] = 0.0;
-  }
+  });
   const double t_half = t + 0.5 * dt_next;
   for (const ImposedMotion& im : m.imposed) {
     if (im.kind == ImposedKind::Force) continue;

@@ -249,21 +249,43 @@ void switch_rigid_bodies(const Model& m, SolverState& s) {
     mark_elements_in_rigid_bodies(m, s), mark_contact_nodes_in_rigid_bodies(s);
 }
 
+// Each body's resultant about its centre (eq. RB-1, RB-2): exact sums of its nodes' forces and moments, each node
+// from the domain that owns it, combined over the domains, so that every domain moves the body alike.
 void gather_rigid_body_forces(SolverState& s) {
   NodalState& n = s.nodes;
-  for (RigidBodyState& b : s.bodies) {
+  std::vector<ExactSum>& sums = s.reducer.sums;
+  sums.assign(6 * s.bodies.size(), ExactSum{});
+  for (std::size_t i = 0; i < s.bodies.size(); ++i) {
+    RigidBodyState& b = s.bodies[i];
     if (!b.active) continue;
+    ExactSum* resultant = &sums[6 * i];  // fx fy fz mx my mz
     const auto main = static_cast<std::size_t>(b.main_node);
+    if (s.domain.owns(main)) {
+      const double own[6] = {n.fx[main], n.fy[main], n.fz[main], n.mx[main], n.my[main], n.mz[main]};
+      for (int c = 0; c < 6; ++c) resultant[c].add(own[c]);
+    }
     const Vec3 cog = position(n, b.main_node);
     for (std::int32_t node : b.secondary) {
       const auto k = static_cast<std::size_t>(node);
-      const Vec3 r{n.x[k] - cog[0], n.y[k] - cog[1], n.z[k] - cog[2]};
-      const Vec3 f{n.fx[k], n.fy[k], n.fz[k]};
-      const Vec3 t = cross(r, f);
-      n.fx[main] += f[0], n.fy[main] += f[1], n.fz[main] += f[2];
-      n.mx[main] += t[0] + n.mx[k], n.my[main] += t[1] + n.my[k], n.mz[main] += t[2] + n.mz[k];
+      if (s.domain.owns(k)) {
+        const Vec3 r{n.x[k] - cog[0], n.y[k] - cog[1], n.z[k] - cog[2]};
+        const Vec3 f{n.fx[k], n.fy[k], n.fz[k]};
+        const Vec3 t = cross(r, f);
+        const double terms[6] = {f[0], f[1], f[2], t[0] + n.mx[k], t[1] + n.my[k], t[2] + n.mz[k]};
+        for (int c = 0; c < 6; ++c) resultant[c].add(terms[c]);
+      }
       n.fx[k] = n.fy[k] = n.fz[k] = n.mx[k] = n.my[k] = n.mz[k] = 0.0;
     }
+  }
+  if (s.bodies.empty()) return;
+  s.reducer.sum(sums);
+  for (std::size_t i = 0; i < s.bodies.size(); ++i) {
+    const RigidBodyState& b = s.bodies[i];
+    if (!b.active) continue;
+    const auto main = static_cast<std::size_t>(b.main_node);
+    const ExactSum* resultant = &sums[6 * i];
+    n.fx[main] = resultant[0].value(), n.fy[main] = resultant[1].value(), n.fz[main] = resultant[2].value();
+    n.mx[main] = resultant[3].value(), n.my[main] = resultant[4].value(), n.mz[main] = resultant[5].value();
   }
 }
 

@@ -81,34 +81,53 @@ bool holds(const RigidWall& w, const RigidWallState& st, std::size_t i, const No
 // mass, (M I + sum m_i n_i n_i^T) V' = M V + sum m_i (v_i . n_i - vn_i') n_i over the held nodes (m_i I and
 // m_i v_i for tied ones), which conserves momentum and leaves every held node on the wall. Dofs in which the
 // wall node is driven keep V. The set of held nodes depends on V': a few passes settle it.
-Vec3 exchanged_velocity(const RigidWall& w, RigidWallState& st, const NodalState& n, double dt_next) {
+// The sums run over the held nodes each domain owns, exactly, combined over the domains (docs/parallel.md), and
+// whether the held set changed is combined too, so that every domain takes the same passes and the same V'.
+Vec3 exchanged_velocity(const RigidWall& w, RigidWallState& st, SolverState& s, double dt_next) {
+  const NodalState& n = s.nodes;
   const double wall_mass = n.mass[static_cast<std::size_t>(w.node)];
   Vec3 velocity = st.velocity;
   std::fill(st.active.begin(), st.active.end(), 0);
+  std::vector<ExactSum>& sums = s.reducer.sums;
+  std::vector<std::int32_t>& changed = s.reducer.flags;
   for (int pass = 0; pass < 4; ++pass) {
-    Eigen::Matrix3d a = wall_mass * Eigen::Matrix3d::Identity();
-    Eigen::Vector3d b = wall_mass * Eigen::Vector3d(st.velocity[0], st.velocity[1], st.velocity[2]);
-    bool changed = false;
+    sums.assign(12, ExactSum{});  // a (row by row), then b
+    changed.assign(1, 0);
     for (std::size_t i = 0; i < st.nodes.size(); ++i) {
+      const auto k = static_cast<std::size_t>(st.nodes[i]);
+      if (!s.domain.owns(k)) continue;
       Vec3 normal{};
       double vn_new = 0.0;
       const bool held = holds(w, st, i, n, velocity, dt_next, normal, vn_new);
-      changed = changed || held != (st.active[i] != 0);
+      if (held != (st.active[i] != 0)) changed[0] = 1;
       st.active[i] = held;
       if (!held) continue;
-      const auto k = static_cast<std::size_t>(st.nodes[i]);
       const Eigen::Vector3d v(n.vx[k], n.vy[k], n.vz[k]), nn(normal[0], normal[1], normal[2]);
+      Eigen::Matrix3d a_node;
+      Eigen::Vector3d b_node;
       if (st.tied[i] != 0 || w.slide == WallSliding::Tied) {
-        a += n.mass[k] * Eigen::Matrix3d::Identity(), b += n.mass[k] * v;
+        a_node = n.mass[k] * Eigen::Matrix3d::Identity(), b_node = n.mass[k] * v;
       } else {
-        a += n.mass[k] * nn * nn.transpose(), b += n.mass[k] * (v.dot(nn) - vn_new) * nn;
+        a_node = n.mass[k] * nn * nn.transpose(), b_node = n.mass[k] * (v.dot(nn) - vn_new) * nn;
       }
+      for (int r = 0; r < 3; ++r) {
+        for (int c = 0; c < 3; ++c) sums[static_cast<std::size_t>(3 * r + c)].add(a_node(r, c));
+        sums[static_cast<std::size_t>(9 + r)].add(b_node(r));
+      }
+    }
+    s.reducer.sum(sums);
+    s.reducer.max(changed);
+    Eigen::Matrix3d a = wall_mass * Eigen::Matrix3d::Identity();
+    Eigen::Vector3d b = wall_mass * Eigen::Vector3d(st.velocity[0], st.velocity[1], st.velocity[2]);
+    for (int r = 0; r < 3; ++r) {
+      for (int c = 0; c < 3; ++c) a(r, c) += sums[static_cast<std::size_t>(3 * r + c)].value();
+      b(r) += sums[static_cast<std::size_t>(9 + r)].value();
     }
     for (int d = 0; d < 3; ++d)
       if (!(st.free_dofs & (1u << d))) a.row(d) = Eigen::RowVector3d::Unit(d), b(d) = st.velocity[static_cast<std::size_t>(d)];
     const Eigen::Vector3d solved = a.partialPivLu().solve(b);
     velocity = {solved(0), solved(1), solved(2)};
-    if (!changed && pass > 0) break;
+    if (changed[0] == 0 && pass > 0) break;
   }
   return velocity;
 }
@@ -147,13 +166,16 @@ void apply_rigid_walls(const Model& m, SolverState& s, double dt_average, double
       st.origin = {n.x[k], n.y[k], n.z[k]};
     }
     const bool exchange = moving && st.free_dofs != 0 && n.mass[static_cast<std::size_t>(w.node)] > 0.0;
-    const Vec3 wall_velocity = exchange ? exchanged_velocity(w, st, n, dt_next) : st.velocity;
-    Vec3 impulse{}, normal_impulse{};
+    const Vec3 wall_velocity = exchange ? exchanged_velocity(w, st, s, dt_next) : st.velocity;
+    // The held local nodes take the wall's velocity; the impulses are exact sums over the owned ones.
+    std::vector<ExactSum>& sums = s.reducer.sums;
+    sums.assign(6, ExactSum{});  // impulse x y z, its normal part x y z
     for (std::size_t i = 0; i < st.nodes.size(); ++i) {
+      const auto k = static_cast<std::size_t>(st.nodes[i]);
+      if (!s.domain.is_local(k)) continue;
       Vec3 normal{};
       double vn_new = 0.0;
       if (!holds(w, st, i, n, wall_velocity, dt_next, normal, vn_new)) continue;
-      const auto k = static_cast<std::size_t>(st.nodes[i]);
       const Vec3 before = node_velocity(n, k);
       const Vec3 rel = before - wall_velocity;
       Vec3 v = wall_velocity;  // tied
@@ -172,11 +194,15 @@ void apply_rigid_walls(const Model& m, SolverState& s, double dt_average, double
         for (std::size_t c = 0; c < 3; ++c) v[c] = wall_velocity[c] + tangential[c] + normal[c] * vn_new;
       }
       n.vx[k] = v[0], n.vy[k] = v[1], n.vz[k] = v[2];
-      for (std::size_t c = 0; c < 3; ++c) impulse[c] += n.mass[k] * (v[c] - before[c]);
+      if (!s.domain.owns(k)) continue;
+      for (std::size_t c = 0; c < 3; ++c) sums[c].add(n.mass[k] * (v[c] - before[c]));
       // Its part along the wall's normal at the node, for the normal and tangential wall forces of the outputs.
       const double along_normal = n.mass[k] * dot(v - before, normal);
-      for (std::size_t c = 0; c < 3; ++c) normal_impulse[c] += along_normal * normal[c];
+      for (std::size_t c = 0; c < 3; ++c) sums[3 + c].add(along_normal * normal[c]);
     }
+    s.reducer.sum(sums);
+    const Vec3 impulse{sums[0].value(), sums[1].value(), sums[2].value()};
+    const Vec3 normal_impulse{sums[3].value(), sums[4].value(), sums[5].value()};
     // A moving wall takes the opposite impulse in its free dofs (momentum is exchanged, not created).
     if (exchange) {
       const auto k = static_cast<std::size_t>(w.node);

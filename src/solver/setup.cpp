@@ -196,7 +196,8 @@ SolverState make_state(const Model& m, std::vector<std::string>& notes, Domain d
   setup_node_rotations(m, s.histories);
   s.mass_initial = 0.0;
   for (double mass : s.nodes.mass) s.mass_initial += mass;
-  const auto [translational, rotational] = kinetic_energy(s);  // a rigid body's initial spin is rotational (RB-7)
+  // A rigid body's initial spin is rotational (RB-7); every domain holds every node here.
+  const auto [translational, rotational] = kinetic_energy(s, true);
   s.energy.initial_kinetic = translational + rotational;
   return s;
 }

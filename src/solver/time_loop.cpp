@@ -65,6 +65,7 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunObse
                            const std::vector<std::string>& notes) {
   using namespace solver;
   const auto started = std::chrono::steady_clock::now();
+  s.reducer = Reducer(options.exchange);
   if (options.resume == nullptr) switch_rigid_bodies(m, s);  // a resumed state has them switched already
   update_kinetic_energy(s);  // for the listing's row of cycle 0
   observer.start(s, notes);
@@ -109,7 +110,9 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunObse
 
     const MonitorDue due = outputs_due(m, s, schedule, dt_next);
     const bool show_progress = observer.progress_due();
-    if (due.energies() || show_progress) update_kinetic_energy(s);
+    // The kinetic energy is a sum over the domains: every domain takes it at the same cycles, so a run of several
+    // shows the progress line with the last one taken.
+    if (due.energies() || (show_progress && !s.domain.several())) update_kinetic_energy(s);
     if (due.energies()) {
       if (due.print) observer.row(s, dt_next, control);
       check_run_limits(m, s, events);
@@ -117,8 +120,10 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunObse
       if (events.stop.stopped()) break;
     }
     const bool restart_now = restart_due(m, s) && !due.finished;
-    if (s.domain.several() && (due.frame || due.history || restart_now))
+    if (s.domain.several() && (due.frame || due.history || restart_now)) {
       share_element_state(s, *options.exchange, due.frame || restart_now ? ElementStateNeed::All : history_need);
+      share_node_state(m, s, *options.exchange);
+    }
     if (due.frame) observer.frame(s);
     if (due.history) {
       VelocityChange change;
@@ -134,7 +139,7 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunObse
     if (due.finished || stop_requested(options.stop_request, s, events, options.exchange, due.energies())) break;
   }
   update_kinetic_energy(s);
-  if (s.domain.several()) share_element_state(s, *options.exchange);
+  if (s.domain.several()) share_element_state(s, *options.exchange), share_node_state(m, s, *options.exchange);
   observer.events(events);
   observer.row(s, dt_next, control);  // the cycle the run ended at, unless its row is printed already
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "crumple/state/contact_state.hpp"
+#include "crumple/core/exact_sum.hpp"
 #include "crumple/model/model.hpp"
 #include "crumple/state/nodal_state.hpp"
 
@@ -40,9 +41,13 @@ ContactStep contact_forces(const Model& model, ContactState& state, NodalState& 
 void remove_deleted_elements(ContactState& state,
                              const std::array<const std::vector<std::uint8_t>*, kElementKinds>& deleted);
 
-// Work of the last cycle's contact forces over the step, with v_old = v^(n-1/2) and the nodes' v^(n+1/2):
-// F . (v_old + v_new) / 2 dt_average, accumulated as absorbed energy (eq. C-10). Returns the sum over interfaces.
-double contact_work(ContactState& state, const NodalState& nodes, const std::vector<double>* v_old,
-                    double dt_average);
+// Power of the last cycle's contact forces over the step, with v_old = v^(n-1/2) and the nodes' v^(n+1/2):
+// F . (v_old + v_new) / 2 per force, into power[f] for interface f, for the forces on the nodes `me` owns
+// (node_owner; one domain: all of them) (eq. C-10).
+void add_contact_work(const ContactState& state, const NodalState& nodes, const std::vector<double>* v_old,
+                      const std::vector<std::int32_t>& node_owner, std::int32_t me, ExactSum* power);
+// The power of every domain's forces (summed over the domains) times dt_average, accumulated as each interface's
+// absorbed energy; returns the sum over the interfaces.
+double absorb_contact_work(ContactState& state, const ExactSum* power, double dt_average);
 
 }  // namespace crumple::contact

@@ -1,12 +1,15 @@
 #pragma once
-// One domain of a run of several (docs/parallel.md): which elements it computes, and how every node's sum of
-// element loads is assembled in one fixed order, the model's, whatever the partition.
+// One domain of a run of several (docs/parallel.md): which elements it computes, which nodes it advances, and how
+// every node's sum of element loads is assembled in one fixed order, the model's, whatever the partition.
 //
-// Crumple's domains share the nodes: every domain keeps every node and advances it the same way, and computes only
-// its own elements. After the element kernels, the domains share each element's loads (state/element_records.hpp)
-// and every domain assembles every node's sum from them, element by element in model order, exactly as one domain
-// adds them directly. The rest of the cycle (contact, loads, rigid bodies and walls, the step, the update) then
-// runs on identical data in every domain and gives identical results.
+// A domain computes its own elements and advances its *local* nodes: the nodes of its elements, and the nodes no
+// element uses (rigid-body main nodes, wall nodes, point masses), which every domain advances alike. Node arrays
+// keep the whole model's size; a node that is not local to a domain holds stale values there, and no phase of the
+// cycle reads it (tests: the domains give the one domain's results bit for bit). After the element kernels the
+// domains share the loads of the elements at shared nodes (state/element_records.hpp) and every domain assembles
+// its shared nodes' sums from them, element by element in model order, exactly as one domain adds them directly.
+// Each node also has one *owner*, the lowest domain it is local to: sums over nodes (energies, a rigid body's
+// resultant) take each node once, from its owner, as exact sums (core/exact_sum.hpp).
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -31,10 +34,12 @@ struct Domain {
   int count = 1;
   // Per element kind, per element: the domain that computes it.
   std::array<std::vector<std::int32_t>, kElementKinds> owner;
-  // Per node: the domain whose elements alone use it (its direct sum there is complete and final), or -1 when
-  // elements of several domains use it (a shared node, assembled from the records) or none does.
+  // Per node: its owner, the lowest domain it is local to (0 for a node no element uses).
   std::vector<std::int32_t> node_owner;
-  std::vector<std::int32_t> shared_nodes;  // ascending
+  // The nodes this domain advances and the nodes it owns, ascending (every node in a run of one domain).
+  std::vector<std::int32_t> local_nodes, owned_nodes;
+  std::vector<std::uint8_t> local;  // per node: 1 when local (several domains only)
+  std::vector<std::int32_t> shared_nodes;  // local nodes that elements of several domains use, ascending
   // Per shared node (parallel to shared_nodes): its element loads in the order one domain adds them (kind by
   // kind, element by element): loads[first[i] .. first[i + 1]).
   std::vector<std::uint32_t> first;
@@ -50,6 +55,8 @@ struct Domain {
   bool mine(ElementKind kind, std::size_t element) const {
     return owner[static_cast<std::size_t>(kind)][element] == index;
   }
+  bool owns(std::size_t node) const { return node_owner[node] == index; }
+  bool is_local(std::size_t node) const { return count == 1 || local[node] != 0; }
 };
 
 // The whole model as one domain: nothing to share, no assembly list.
@@ -57,7 +64,25 @@ Domain single_domain(const Model& model);
 // Domain `index` of `partition`, with the assembly lists of every node.
 Domain make_domain(const Model& model, const Partition& partition, int index);
 
-// Every shared node's sum of element loads from the records of the three element kinds (Shell4, Shell3, Brick8),
+// Calls f(k) for every local node k, ascending; for every owned node. One domain: every node, as one loop.
+template <class F>
+void for_each_local_node(const Domain& d, std::size_t nodes, F f) {
+  if (!d.several()) {
+    for (std::size_t k = 0; k < nodes; ++k) f(k);
+    return;
+  }
+  for (std::int32_t k : d.local_nodes) f(static_cast<std::size_t>(k));
+}
+template <class F>
+void for_each_owned_node(const Domain& d, std::size_t nodes, F f) {
+  if (!d.several()) {
+    for (std::size_t k = 0; k < nodes; ++k) f(k);
+    return;
+  }
+  for (std::int32_t k : d.owned_nodes) f(static_cast<std::size_t>(k));
+}
+
+// Every local shared node's sum of element loads from the records of the three element kinds (Shell4, Shell3, Brick8),
 // each node's loads in its list's order: forces into n.fx, n.fy, n.fz and the shells' moments into n.mx, n.my,
 // n.mz, from zero. The result is what the kernels give adding directly, bit for bit.
 void assemble_element_loads(const Domain& domain, const ShellState& shell4, const ShellState& shell3,

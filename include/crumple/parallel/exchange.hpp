@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "crumple/core/exact_sum.hpp"
+
 namespace crumple {
 
 class Exchange {
@@ -24,7 +26,11 @@ class Exchange {
   // the smallest index among equal values (index -1: no value, +infinity); the largest; the sum.
   virtual void min_with_index(std::vector<double>& value, std::vector<std::int32_t>& index) = 0;
   virtual void max(std::vector<std::int32_t>& values) = 0;
+  virtual void max(std::vector<double>& values) = 0;
   virtual void sum(std::vector<std::int32_t>& values) = 0;
+  // Exact sums (core/exact_sum.hpp) over the domains, slot-wise, in place: every domain ends with the sums of all
+  // domains' terms, the same whatever the partition.
+  virtual void sum(std::vector<ExactSum>& sums) = 0;
 };
 
 }  // namespace crumple

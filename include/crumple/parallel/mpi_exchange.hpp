@@ -40,7 +40,9 @@ class MpiExchange final : public Exchange {
   void share(std::vector<std::uint8_t>& values, int width, const std::vector<std::int32_t>& owner) override;
   void min_with_index(std::vector<double>& value, std::vector<std::int32_t>& index) override;
   void max(std::vector<std::int32_t>& values) override;
+  void max(std::vector<double>& values) override;
   void sum(std::vector<std::int32_t>& values) override;
+  void sum(std::vector<ExactSum>& sums) override;
 
  private:
   // Per owner array and width: the slots of each rank's elements in rank order, and the counts and displacements
@@ -63,6 +65,8 @@ class MpiExchange final : public Exchange {
     int index;
   };
   std::vector<DoubleInt> pairs_;
+  std::vector<std::int64_t> digits_;  // exact sums' digits, packed
+  std::vector<double> non_finite_;
 };
 
 }  // namespace crumple

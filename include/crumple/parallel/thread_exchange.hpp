@@ -31,7 +31,9 @@ class ThreadExchange final : public Exchange {
   void share(std::vector<std::uint8_t>& values, int width, const std::vector<std::int32_t>& owner) override;
   void min_with_index(std::vector<double>& value, std::vector<std::int32_t>& index) override;
   void max(std::vector<std::int32_t>& values) override;
+  void max(std::vector<double>& values) override;
   void sum(std::vector<std::int32_t>& values) override;
+  void sum(std::vector<ExactSum>& sums) override;
 
  private:
   template <class T>

@@ -10,6 +10,7 @@
 #include "crumple/elements/shell4.hpp"
 #include "crumple/model/model.hpp"
 #include "crumple/parallel/domain.hpp"
+#include "crumple/parallel/reducer.hpp"
 #include "crumple/state/nodal_state.hpp"
 #include "crumple/state/shell_state.hpp"
 
@@ -109,17 +110,21 @@ struct SolverState {
   std::vector<double> nodal_stiffness;  // scratch of the nodal time step: sum of element stiffness estimates
   std::vector<GroupStepResult> group_results;  // scratch of the element phase: per element group of the model
   Domain domain;  // the elements this state computes: all of them, or one domain's of a run of several
+  Reducer reducer;  // sums over the domains of a run of several (none for one domain)
   // Several domains: per element kind, the domain of each integration point (its element's).
   std::array<std::vector<std::int32_t>, kElementKinds> point_owner;
   // Scratch of the element phase's exchange (several domains only): per element group, its smallest step and the
   // element that has it, the last element that inverted and the last with NaN forces, the failed count and the
-  // energies; per node its direct sum.
+  // energies.
   struct GroupShare {
     std::vector<double> min_dt;
     std::vector<std::int32_t> controlling, last_inverted, last_non_finite, failed;
     std::vector<std::int32_t> stop_signal;  // the combined stop request
     std::vector<double> energies;           // per group: internal and hourglass energy of the cycle
-    std::vector<double> node_sums;          // per node: fx fy fz mx my mz of its owner's direct sum
+    // Owners of what travels before the contact pass and before an output (kept, so that the exchange's layouts,
+    // made once per owner array, stay valid): per node, its owner when it is an interface's node, else -1; per
+    // accelerometer and per /TH/NODE rotation node, the owner of its node.
+    std::vector<std::int32_t> contact_node_owner, accelerometer_owner, rotation_owner;
   } group_share;
   RecordedNodalResults recorded;
   HistoryIntegrals histories;
