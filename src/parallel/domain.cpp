@@ -82,7 +82,7 @@ Domain make_domain(const Model& m, const Partition& partition, int index) {
   const std::vector<std::uint8_t> used = used_by(m, d);
   std::vector<std::int32_t> several(m.nodes.size(), 0);  // used by elements of several domains
   d.node_owner.assign(m.nodes.size(), 0);
-  d.local.assign(m.nodes.size(), 0);
+  d.local.assign(m.nodes.size(), 0), d.multi_local.assign(m.nodes.size(), 0);
   // Nodes every domain advances although elements use them: the main nodes of rigid bodies and the nodes that
   // carry moving walls, whose motion every domain needs (a body's centre, a wall's plane).
   std::vector<std::uint8_t> everywhere(m.nodes.size(), 0);
@@ -94,6 +94,7 @@ Domain make_domain(const Model& m, const Partition& partition, int index) {
     several[k] = !free && use.lowest[k] != use.highest[k];
     d.node_owner[k] = free ? 0 : use.lowest[k];
     if (free || used[k] || everywhere[k]) d.local_nodes.push_back(static_cast<std::int32_t>(k)), d.local[k] = 1;
+    d.multi_local[k] = free || everywhere[k] || several[k];
     if (d.node_owner[k] == index) d.owned_nodes.push_back(static_cast<std::int32_t>(k));
     if (several[k] && used[k]) d.shared_nodes.push_back(static_cast<std::int32_t>(k));
   }

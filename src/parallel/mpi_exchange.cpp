@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <climits>
+#include <iterator>
 #include <cstdlib>
 #include <limits>
 
@@ -73,6 +74,24 @@ void MpiExchange::share(std::vector<double>& values, int width, const std::vecto
 void MpiExchange::share(std::vector<std::uint8_t>& values, int width, const std::vector<std::int32_t>& owner) {
   if (values.empty()) return;
   share_slots(values, width, owner, send_byte_, gathered_byte_);
+}
+
+void MpiExchange::renew(const std::vector<std::int32_t>& owner) {
+  for (auto it = layouts_.begin(); it != layouts_.end();)
+    it = it->first.first == owner.data() ? layouts_.erase(it) : std::next(it);
+}
+
+void MpiExchange::gather(const std::vector<double>& mine, std::vector<double>& all) {
+  gather_counts_.assign(static_cast<std::size_t>(size_), 0);
+  int count = static_cast<int>(mine.size());
+  MPI_Allgather(&count, 1, MPI_INT, gather_counts_.data(), 1, MPI_INT, MPI_COMM_WORLD);
+  gather_displacements_.assign(static_cast<std::size_t>(size_), 0);
+  for (int d = 1; d < size_; ++d)
+    gather_displacements_[static_cast<std::size_t>(d)] =
+        gather_displacements_[static_cast<std::size_t>(d - 1)] + gather_counts_[static_cast<std::size_t>(d - 1)];
+  all.resize(static_cast<std::size_t>(gather_displacements_.back() + gather_counts_.back()));
+  MPI_Allgatherv(mine.data(), count, MPI_DOUBLE, all.data(), gather_counts_.data(), gather_displacements_.data(),
+                 MPI_DOUBLE, MPI_COMM_WORLD);
 }
 
 // MPI_MINLOC keeps the smallest value and, among equal values, the smallest index: the first element in model

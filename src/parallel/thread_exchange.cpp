@@ -66,6 +66,20 @@ void ThreadExchange::min_with_index(std::vector<double>& value, std::vector<std:
   value = std::move(best_value), index = std::move(best_index);
 }
 
+void ThreadExchange::renew(const std::vector<std::int32_t>&) {}
+
+void ThreadExchange::gather(const std::vector<double>& mine, std::vector<double>& all) {
+  board_.offered_[static_cast<std::size_t>(domain_)] = &mine;
+  board_.barrier_.arrive_and_wait();
+  std::vector<double> result;
+  for (int d = 0; d < domains(); ++d) {
+    const auto& from = *static_cast<const std::vector<double>*>(board_.offered_[static_cast<std::size_t>(d)]);
+    result.insert(result.end(), from.begin(), from.end());
+  }
+  board_.barrier_.arrive_and_wait();
+  all = std::move(result);
+}
+
 void ThreadExchange::max(std::vector<std::int32_t>& values) {
   reduce(values, [](std::size_t, std::int32_t& a, std::int32_t b, int) { a = std::max(a, b); });
 }

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <initializer_list>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -338,6 +339,16 @@ void share_kind_state(Exchange& exchange, State& state, Visit visit, const std::
 
 }  // namespace
 
+bool histories_read_nodes(const Model& m) {
+  for (const TimeHistoryRequest& th : m.histories) {
+    const HistoryObject o = th.object;
+    if (o == HistoryObject::Node || o == HistoryObject::Part || o == HistoryObject::Subset || o == HistoryObject::Section ||
+        o == HistoryObject::Accelerometer)
+      return true;
+  }
+  return false;
+}
+
 ElementStateNeed history_needs(const Model& m) {
   ElementStateNeed need = ElementStateNeed::None;
   for (const TimeHistoryRequest& th : m.histories) {
@@ -374,11 +385,51 @@ void share_element_state(SolverState& s, Exchange& exchange, ElementStateNeed ne
   share_kind_state(exchange, s.bricks, bricks, owner[2], points[2], brick_points);
 }
 
-void share_node_state(const Model& m, SolverState& s, Exchange& exchange) {
+namespace {
+
+// Before a restart snapshot: the contact state each domain keeps for the secondary nodes it owns and for their
+// pairs (docs/parallel.md, "Contact"), from those domains.
+void share_contact_state(SolverState& s, Exchange& exchange) {
+  SolverState::GroupShare& w = s.group_share;
+  w.secondary_owner.resize(s.contact.interfaces.size()), w.pair_owner.resize(s.contact.interfaces.size());
+  for (std::size_t f = 0; f < s.contact.interfaces.size(); ++f) {
+    ContactInterface& in = s.contact.interfaces[f];
+    std::vector<std::int32_t>& node = w.secondary_owner[f];
+    if (node.empty())
+      for (std::int32_t k : in.secondary_nodes) node.push_back(s.domain.node_owner[static_cast<std::size_t>(k)]);
+    std::vector<std::int32_t>& pair = w.pair_owner[f];
+    pair.clear();
+    for (std::int32_t i : in.candidate_node) pair.push_back(node[static_cast<std::size_t>(i)]);
+    exchange.renew(pair);
+    for (auto* v : {&in.friction_x, &in.friction_y, &in.friction_z}) exchange.share(*v, 1, pair);
+    for (auto* v : {&in.gap_reduction, &in.gap_clearance}) exchange.share(*v, 1, node);
+    exchange.share(in.node_impacted, 1, node);
+    if (!in.friction_mu.empty()) {
+      exchange.share(in.friction_mu, 1, node);
+      std::vector<double> pass(in.friction_mu_pass.begin(), in.friction_mu_pass.end());
+      exchange.share(pass, 1, node);
+      for (std::size_t i = 0; i < pass.size(); ++i) in.friction_mu_pass[i] = static_cast<long long>(pass[i]);
+    }
+  }
+}
+
+}  // namespace
+
+void share_node_state(const Model& m, SolverState& s, Exchange& exchange, bool restart) {
   NodalState& n = s.nodes;
   const std::vector<std::int32_t>& owner = s.domain.node_owner;
   for (auto* v : {&n.x, &n.y, &n.z, &n.vx, &n.vy, &n.vz, &n.wx, &n.wy, &n.wz, &n.fx, &n.fy, &n.fz, &n.mx, &n.my, &n.mz})
     exchange.share(*v, 1, owner);
+  if (!s.contact.interfaces.empty()) {
+    // The contact force field: each node's from its owner; every node with one is then to be cleared by the next
+    // pass (so that a restart starts with the same list everywhere).
+    ContactState& c = s.contact;
+    for (auto* v : {&c.fx, &c.fy, &c.fz}) exchange.share(*v, 1, owner);
+    c.touched.clear();
+    for (std::size_t k = 0; k < c.fx.size(); ++k)
+      if (c.fx[k] != 0.0 || c.fy[k] != 0.0 || c.fz[k] != 0.0) c.touched.push_back(static_cast<std::int32_t>(k));
+    if (restart) share_contact_state(s, exchange);
+  }
   RecordedNodalResults& r = s.recorded;
   for (auto* v : {&r.acceleration, &r.internal_force, &r.external_force})
     if (!v->empty()) exchange.share(*v, 3, owner);
@@ -438,30 +489,71 @@ StepBound compute_element_forces(const Model& m, SolverState& s, RunEvents& even
 
 namespace {
 
-// Several domains: every interface node's position and velocity from its owner, so that every domain runs the
-// whole contact pass on the same data (docs/parallel.md, "Contact").
-void share_contact_nodes(SolverState& s) {
-  std::vector<std::int32_t>& owner = s.group_share.contact_node_owner;
-  if (owner.empty()) {
-    owner.assign(s.nodes.size(), -1);
-    for (const ContactInterface& in : s.contact.interfaces) {
-      for (std::int32_t k : in.secondary_nodes) owner[static_cast<std::size_t>(k)] = s.domain.node_owner[static_cast<std::size_t>(k)];
-      for (std::int32_t k : in.main_nodes) owner[static_cast<std::size_t>(k)] = s.domain.node_owner[static_cast<std::size_t>(k)];
-    }
+// The contact pass's view of the other domains (contact/contact.hpp, ContactDomains), over the run's exchange.
+class ContactExchange final : public contact::ContactDomains {
+ public:
+  ContactExchange(SolverState& s, Exchange& exchange) : s_(s), exchange_(exchange) {
+    scope_.node_owner = &s.domain.node_owner, scope_.me = s.domain.index;
+    scope_.local = &s.domain.local, scope_.multi_local = &s.domain.multi_local;
   }
-  NodalState& n = s.nodes;
-  for (auto* v : {&n.x, &n.y, &n.z, &n.vx, &n.vy, &n.vz}) s.reducer.exchange()->share(*v, 1, owner);
-}
+  const contact::ContactScope& scope() const override { return scope_; }
+  double max(double value) override {
+    values_.assign(1, value);
+    exchange_.max(values_);
+    return values_[0];
+  }
+  void sum(std::vector<ExactSum>& sums) override { exchange_.sum(sums); }
+  void min_with_index(double& value, std::int32_t& index) override {
+    values_.assign(1, value), indices_.assign(1, index);
+    exchange_.min_with_index(values_, indices_);
+    value = values_[0], index = indices_[0];
+  }
+  void union_of(std::vector<std::int32_t>& flags) override { exchange_.max(flags); }
+  void gather_positions(const ContactInterface& in) override {
+    const std::vector<std::int32_t>& owner = interface_owner(in);
+    NodalState& n = s_.nodes;
+    for (auto* v : {&n.x, &n.y, &n.z}) exchange_.share(*v, 1, owner);
+  }
+  void share_ghosts(const ContactInterface& in, bool changed) override {
+    if (changed) exchange_.renew(in.ghost_owner);
+    NodalState& n = s_.nodes;
+    for (auto* v : {&n.x, &n.y, &n.z, &n.vx, &n.vy, &n.vz}) exchange_.share(*v, 1, in.ghost_owner);
+  }
+  void gather(const std::vector<double>& mine, std::vector<double>& all) override { exchange_.gather(mine, all); }
+
+ private:
+  // Per node, its owner when it is one of the interface's nodes, else -1 (kept: the exchange's layouts use it).
+  const std::vector<std::int32_t>& interface_owner(const ContactInterface& in) {
+    const auto f = static_cast<std::size_t>(&in - s_.contact.interfaces.data());
+    std::vector<std::vector<std::int32_t>>& owners = s_.group_share.interface_node_owner;
+    if (owners.size() <= f) owners.resize(s_.contact.interfaces.size());
+    std::vector<std::int32_t>& owner = owners[f];
+    if (owner.empty()) {
+      owner.assign(s_.nodes.size(), -1);
+      for (std::int32_t k : in.secondary_nodes) owner[static_cast<std::size_t>(k)] = s_.domain.node_owner[static_cast<std::size_t>(k)];
+      for (std::int32_t k : in.main_nodes) owner[static_cast<std::size_t>(k)] = s_.domain.node_owner[static_cast<std::size_t>(k)];
+    }
+    return owner;
+  }
+
+  SolverState& s_;
+  Exchange& exchange_;
+  contact::ContactScope scope_;
+  std::vector<double> values_;
+  std::vector<std::int32_t> indices_;
+};
 
 }  // namespace
 
 void compute_contact_forces(const Model& m, SolverState& s, RunEvents& events, bool elements_deleted,
                             StepBound& bound) {
-  if (s.domain.several()) share_contact_nodes(s);
   if (elements_deleted)
     contact::remove_deleted_elements(s.contact, {&s.shells.deleted, &s.shells3.deleted, &s.bricks.deleted});
+  std::optional<ContactExchange> domains;
+  if (s.domain.several()) domains.emplace(s, *s.reducer.exchange());
   const contact::ContactStep step = contact::contact_forces(m, s.contact, s.nodes, s.time, s.dt, bound.dt,
-                                                            step_scale(m.run), s.mass_added);
+                                                            step_scale(m.run), s.mass_added,
+                                                            domains ? &*domains : nullptr);
   // IBC: boundary conditions of secondary nodes released at their first impact.
   for (const auto& [node, dofs] : s.contact.bc_releases) {
     s.fixed[static_cast<std::size_t>(node)] &= static_cast<std::uint8_t>(~dofs);

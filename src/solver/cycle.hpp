@@ -49,10 +49,14 @@ enum class ElementStateNeed : std::uint8_t { None, Energies, All };
 void share_element_state(SolverState& state, Exchange& exchange, ElementStateNeed need = ElementStateNeed::All);
 // Before an output of a run of several domains: every node's state (and the output-only integrals of the nodes)
 // from the domain that owns it; between outputs a domain keeps only its local nodes right (parallel/domain.hpp).
-void share_node_state(const Model& model, SolverState& state, Exchange& exchange);
+// `restart`: before a restart snapshot, with the contact state of the pairs each domain computes.
+void share_node_state(const Model& model, SolverState& state, Exchange& exchange, bool restart);
 // What the model's time histories read of the elements: their whole state (shells, bricks, sections), their
 // energies (parts, subsets) or nothing.
 ElementStateNeed history_needs(const Model& model);
+// Whether a history row reads nodal state (/TH/NODE, PART, SUBS, SECTIO, ACCEL); the others (rigid walls and
+// bodies, interfaces, the energies) read what every domain holds alike.
+bool histories_read_nodes(const Model& model);
 StepBound combine_group_results(const Model& model, SolverState& state, RunEvents& events, bool& elements_deleted);
 
 // 1b. Contact at x^n with v^(n-1/2), when the model has interfaces: the interface step joins `bound`.

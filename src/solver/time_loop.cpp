@@ -72,6 +72,7 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunObse
   RunEvents events;
   OutputSchedule schedule(m.run, s.time, options.max_cycles);
   const ElementStateNeed history_need = history_needs(m);  // several domains: what a history row gathers
+  const bool history_nodes = histories_read_nodes(m);
   if (options.resume != nullptr) resume_monitor(*options.resume, events, schedule);
   keep_requested_results(m.run, s);
   if (options.resume == nullptr) write_first_frame(m, s, observer, schedule);
@@ -122,7 +123,7 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunObse
     const bool restart_now = restart_due(m, s) && !due.finished;
     if (s.domain.several() && (due.frame || due.history || restart_now)) {
       share_element_state(s, *options.exchange, due.frame || restart_now ? ElementStateNeed::All : history_need);
-      share_node_state(m, s, *options.exchange);
+      if (due.frame || restart_now || history_nodes) share_node_state(m, s, *options.exchange, restart_now);
     }
     if (due.frame) observer.frame(s);
     if (due.history) {
@@ -139,7 +140,7 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunObse
     if (due.finished || stop_requested(options.stop_request, s, events, options.exchange, due.energies())) break;
   }
   update_kinetic_energy(s);
-  if (s.domain.several()) share_element_state(s, *options.exchange), share_node_state(m, s, *options.exchange);
+  if (s.domain.several()) share_element_state(s, *options.exchange), share_node_state(m, s, *options.exchange, true);
   observer.events(events);
   observer.row(s, dt_next, control);  // the cycle the run ended at, unless its row is printed already
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

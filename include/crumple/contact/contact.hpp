@@ -2,6 +2,7 @@
 // TYPE7 contact module (docs/theory/contact.md, ../shared/spec/type7.md). The time loop calls contact_forces once
 // per cycle, and only when the model has an interface: a deck without contact runs none of this code.
 #include <array>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -29,11 +30,45 @@ struct ContactStep {
   std::int32_t node = -1;   // its secondary node (dense index)
 };
 
+// Which nodes a domain of a run of several owns and advances (parallel/domain.hpp), as the contact pass needs it:
+// it computes the pairs whose secondary node it owns and applies forces to its local nodes. A run of one domain
+// leaves every pointer null: every pair, every node.
+struct ContactScope {
+  const std::vector<std::int32_t>* node_owner = nullptr;
+  std::int32_t me = 0;
+  const std::vector<std::uint8_t>* local = nullptr;        // per node: 1 when this domain advances it
+  const std::vector<std::uint8_t>* multi_local = nullptr;  // per node: 1 when several domains advance it
+  bool owns(std::size_t k) const { return node_owner == nullptr || (*node_owner)[k] == me; }
+  bool is_local(std::size_t k) const { return local == nullptr || (*local)[k] != 0; }
+  bool only_here(std::size_t k) const { return is_local(k) && (multi_local == nullptr || (*multi_local)[k] == 0); }
+};
+
+// What the contact pass needs of the other domains, at its named points (docs/parallel.md, "Contact"); the solver
+// implements it over its exchange. A run of one domain passes none.
+class ContactDomains {
+ public:
+  virtual ~ContactDomains() = default;
+  virtual const ContactScope& scope() const = 0;
+  virtual double max(double value) = 0;                                    // over the domains
+  virtual void sum(std::vector<ExactSum>& sums) = 0;                       // slot-wise, exact
+  virtual void min_with_index(double& value, std::int32_t& index) = 0;     // the smallest, then the first index
+  virtual void union_of(std::vector<std::int32_t>& flags) = 0;             // slot-wise maximum
+  // Before a sort: every node of the interface at its owner's position.
+  virtual void gather_positions(const ContactInterface& interface) = 0;
+  // Every cycle: the positions and velocities of the nodes whose ghost_owner is set, from their owners. `changed`
+  // after a sort, when ghost_owner has changed.
+  virtual void share_ghosts(const ContactInterface& interface, bool changed) = 0;
+  // Every domain's `mine` (whole records), concatenated in domain order into `all`.
+  virtual void gather(const std::vector<double>& mine, std::vector<double>& all) = 0;
+};
+
 // One cycle at x^n with v^(n-1/2): forces added to the nodal forces (and kept in state.fx..), energies and steps
 // per interface. `dt_previous` is dt^(n-1/2), `dt_estimate` the elements' step for the coming cycle (search
-// margin); `scale` the /DT scale of the steps; /DT/INTER/CST mass goes into nodes.mass and `added_mass`.
+// margin); `scale` the /DT scale of the steps; /DT/INTER/CST mass goes into nodes.mass and `added_mass`. With
+// `domains`, this domain's share of the pass, and every result the same as one domain's, bit for bit.
 ContactStep contact_forces(const Model& model, ContactState& state, NodalState& nodes, double time,
-                           double dt_previous, double dt_estimate, double scale, double& added_mass);
+                           double dt_previous, double dt_estimate, double scale, double& added_mass,
+                           ContactDomains* domains = nullptr);
 
 // Idel 1, 2 (type7.md §2): segments whose element has been deleted leave the main surface, and secondary nodes
 // none of whose elements is left leave the secondary set. `deleted` holds the deletion flags of each element

@@ -38,7 +38,8 @@ struct Domain {
   std::vector<std::int32_t> node_owner;
   // The nodes this domain advances and the nodes it owns, ascending (every node in a run of one domain).
   std::vector<std::int32_t> local_nodes, owned_nodes;
-  std::vector<std::uint8_t> local;  // per node: 1 when local (several domains only)
+  std::vector<std::uint8_t> local;        // per node: 1 when local (several domains only)
+  std::vector<std::uint8_t> multi_local;  // per node: 1 when local to several domains (several domains only)
   std::vector<std::int32_t> shared_nodes;  // local nodes that elements of several domains use, ascending
   // Per shared node (parallel to shared_nodes): its element loads in the order one domain adds them (kind by
   // kind, element by element): loads[first[i] .. first[i + 1]).

@@ -22,6 +22,11 @@ class Exchange {
   virtual void share(std::vector<double>& values, int width, const std::vector<std::int32_t>& owner) = 0;
   virtual void share(std::vector<std::uint8_t>& values, int width, const std::vector<std::int32_t>& owner) = 0;
 
+  // `owner` has changed since its last share (its slots travel differently): forget what was made of it.
+  virtual void renew(const std::vector<std::int32_t>& owner) = 0;
+  // Every domain's `mine`, concatenated in domain order into `all` (lengths may differ between domains).
+  virtual void gather(const std::vector<double>& mine, std::vector<double>& all) = 0;
+
   // Slot-wise reductions over the domains, in place (the same length in every domain): the smallest value with
   // the smallest index among equal values (index -1: no value, +infinity); the largest; the sum.
   virtual void min_with_index(std::vector<double>& value, std::vector<std::int32_t>& index) = 0;

@@ -38,6 +38,8 @@ class MpiExchange final : public Exchange {
   int domains() const override { return size_; }
   void share(std::vector<double>& values, int width, const std::vector<std::int32_t>& owner) override;
   void share(std::vector<std::uint8_t>& values, int width, const std::vector<std::int32_t>& owner) override;
+  void renew(const std::vector<std::int32_t>& owner) override;
+  void gather(const std::vector<double>& mine, std::vector<double>& all) override;
   void min_with_index(std::vector<double>& value, std::vector<std::int32_t>& index) override;
   void max(std::vector<std::int32_t>& values) override;
   void max(std::vector<double>& values) override;
@@ -66,6 +68,7 @@ class MpiExchange final : public Exchange {
   };
   std::vector<DoubleInt> pairs_;
   std::vector<std::int64_t> digits_;  // exact sums' digits, packed
+  std::vector<int> gather_counts_, gather_displacements_;
   std::vector<double> non_finite_;
 };
 

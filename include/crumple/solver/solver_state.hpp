@@ -121,10 +121,14 @@ struct SolverState {
     std::vector<std::int32_t> controlling, last_inverted, last_non_finite, failed;
     std::vector<std::int32_t> stop_signal;  // the combined stop request
     std::vector<double> energies;           // per group: internal and hourglass energy of the cycle
-    // Owners of what travels before the contact pass and before an output (kept, so that the exchange's layouts,
-    // made once per owner array, stay valid): per node, its owner when it is an interface's node, else -1; per
-    // accelerometer and per /TH/NODE rotation node, the owner of its node.
-    std::vector<std::int32_t> contact_node_owner, accelerometer_owner, rotation_owner;
+    // Owners of what travels at a sort and before an output (kept, so that the exchange's layouts, made once per
+    // owner array, stay valid): per accelerometer and per /TH/NODE rotation node, the owner of its node; per
+    // interface and node, its owner when it is one of the interface's nodes, else -1.
+    std::vector<std::int32_t> accelerometer_owner, rotation_owner;
+    std::vector<std::vector<std::int32_t>> interface_node_owner;  // per interface
+    // Per interface, per secondary node, and per candidate pair (renewed at each sort): the owner of the
+    // secondary node, for a restart snapshot of the contact state.
+    std::vector<std::vector<std::int32_t>> secondary_owner, pair_owner;
   } group_share;
   RecordedNodalResults recorded;
   HistoryIntegrals histories;

@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "crumple/core/exact_sum.hpp"
 #include "crumple/core/vec3.hpp"
 
 namespace crumple::contact {
@@ -125,6 +126,14 @@ struct ContactInterface {
   std::vector<double> node_tangent_sum;         // scratch: sum of the node's pairs' tangent stiffnesses [F/L]
   std::vector<double> node_reach_stiffness;     // scratch: the same at the depth each pair can reach in a step [F/L]
   std::vector<double> node_friction_viscosity;  // scratch: sum of its pairs' friction dashpots C_t (Iform 1) [F T/L]
+  // The pairs this domain computes (ascending; a run of one domain: all), fixed at each sort (docs/parallel.md,
+  // "Contact"): a pair belongs to the domain that owns its secondary node. pair_remote: 1 when one of the pair's
+  // nodes is local to another domain too, so that its force must travel there. ghost_owner, per node (several
+  // domains only): the owner of a node some domain needs for its pairs without advancing it, else -1.
+  std::vector<std::int32_t> my_pairs;
+  std::vector<std::uint8_t> pair_remote;
+  std::vector<std::int32_t> ghost_owner;
+  bool divided = false;  // my_pairs and the rest made for the current pairs (not kept in a restart file)
   double margin = 0.0;                          // search margin beyond the gap [L]
   double bucket_scale = 0.2;                    // Bumult: bucket size factor
   double motion = std::numeric_limits<double>::infinity();  // accumulated largest nodal motion since the sort [L]
@@ -180,6 +189,11 @@ struct ContactState {
   // keeps it as bodies switch on and off.
   std::vector<double> rigid_body_mass;
   contact::PairBatch batch;  // scratch of the pass: one batch of gathered pairs (eq. C-1)
+  // Scratch of the pass: the forces of this domain's pairs in contact and the masses its nodes took (records of
+  // kRecordWidth values, contact/contact_pass.cpp), those that travel, the other domains', and all in pair order.
+  std::vector<double> own_records, sent_records, received_records, ordered_records;
+  std::vector<std::size_t> order;       // scratch: the received pair records by pair
+  std::vector<ExactSum> cycle_sums;     // scratch: one interface's sums of the cycle
 };
 
 }  // namespace crumple
