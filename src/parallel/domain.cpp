@@ -72,6 +72,67 @@ void load_lists(const Model& m, Domain& d) {
   }
 }
 
+// Per node used by elements of several domains: those domains, ascending (CSR: first[k] .. first[k + 1]).
+struct NodeDomains {
+  std::vector<std::uint32_t> first;
+  std::vector<std::int32_t> domains;
+};
+NodeDomains node_domains(const Model& m, const Domain& d, const std::vector<std::int32_t>& several) {
+  std::vector<std::vector<std::int32_t>> lists(m.nodes.size());
+  for (int kind = 0; kind < kElementKinds; ++kind) {
+    const ElementTable& table = m.elements[static_cast<std::size_t>(kind)];
+    const int count = nodes_per_element(table.kind);
+    for (std::size_t e = 0; e < table.size(); ++e)
+      for (int a = 0; a < count; ++a) {
+        const auto k = static_cast<std::size_t>(table.nodes_of(e)[a]);
+        if (!several[k]) continue;
+        std::vector<std::int32_t>& list = lists[k];
+        const std::int32_t domain = d.owner[static_cast<std::size_t>(kind)][e];
+        if (std::find(list.begin(), list.end(), domain) == list.end()) list.push_back(domain);
+      }
+  }
+  NodeDomains nd;
+  nd.first.assign(m.nodes.size() + 1, 0);
+  for (std::size_t k = 0; k < lists.size(); ++k) {
+    std::sort(lists[k].begin(), lists[k].end());
+    nd.first[k + 1] = nd.first[k] + static_cast<std::uint32_t>(lists[k].size());
+    nd.domains.insert(nd.domains.end(), lists[k].begin(), lists[k].end());
+  }
+  return nd;
+}
+
+// The record halos (Domain::record_halo): an element at a shared node goes to every other domain that uses the
+// node, which assembles it; this domain receives the others' elements at its shared nodes.
+void record_halos(const Model& m, Domain& d, const std::vector<std::int32_t>& several) {
+  const NodeDomains nd = node_domains(m, d, several);
+  for (int kind = 0; kind < kElementKinds; ++kind) {
+    const ElementTable& table = m.elements[static_cast<std::size_t>(kind)];
+    const int count = nodes_per_element(table.kind);
+    std::vector<std::vector<std::uint32_t>> send(static_cast<std::size_t>(d.count)), receive(static_cast<std::size_t>(d.count));
+    std::vector<std::uint8_t> to(static_cast<std::size_t>(d.count));
+    for (std::size_t e = 0; e < table.size(); ++e) {
+      const std::int32_t owner = d.owner[static_cast<std::size_t>(kind)][e];
+      std::fill(to.begin(), to.end(), 0);
+      for (int a = 0; a < count; ++a) {
+        const auto k = static_cast<std::size_t>(table.nodes_of(e)[a]);
+        for (std::uint32_t j = nd.first[k]; j < nd.first[k + 1]; ++j) to[static_cast<std::size_t>(nd.domains[j])] = 1;
+      }
+      for (int s = 0; s < d.count; ++s) {
+        if (!to[static_cast<std::size_t>(s)] || s == owner) continue;
+        if (owner == d.index) send[static_cast<std::size_t>(s)].push_back(static_cast<std::uint32_t>(e));
+        if (s == d.index) receive[static_cast<std::size_t>(owner)].push_back(static_cast<std::uint32_t>(e));
+      }
+    }
+    HaloPlan& plan = d.record_halo[static_cast<std::size_t>(kind)];
+    for (int s = 0; s < d.count; ++s)
+      if (!send[static_cast<std::size_t>(s)].empty() || !receive[static_cast<std::size_t>(s)].empty()) {
+        plan.neighbours.push_back(s);
+        plan.send.push_back(std::move(send[static_cast<std::size_t>(s)]));
+        plan.receive.push_back(std::move(receive[static_cast<std::size_t>(s)]));
+      }
+  }
+}
+
 }  // namespace
 
 Domain make_domain(const Model& m, const Partition& partition, int index) {
@@ -99,15 +160,9 @@ Domain make_domain(const Model& m, const Partition& partition, int index) {
     if (several[k] && used[k]) d.shared_nodes.push_back(static_cast<std::int32_t>(k));
   }
   load_lists(m, d);
-  for (int kind = 0; kind < kElementKinds; ++kind) {
-    const ElementTable& table = m.elements[static_cast<std::size_t>(kind)];
-    auto& boundary = d.boundary_owner[static_cast<std::size_t>(kind)];
-    boundary.assign(table.size(), -1);
-    for (std::size_t e = 0; e < table.size(); ++e)
-      for (int a = 0; a < nodes_per_element(table.kind); ++a)
-        if (several[static_cast<std::size_t>(table.nodes_of(e)[a])]) boundary[e] = d.owner[static_cast<std::size_t>(kind)][e];
-    d.split_owner[static_cast<std::size_t>(kind)].assign(table.size(), -1);
-  }
+  record_halos(m, d, several);
+  for (int kind = 0; kind < kElementKinds; ++kind)
+    d.split_owner[static_cast<std::size_t>(kind)].assign(m.elements[static_cast<std::size_t>(kind)].size(), -1);
   for (const ElementGroup& group : m.element_groups) {
     const auto& owner = d.owner[static_cast<std::size_t>(group.kind)];
     std::int32_t whole = owner[static_cast<std::size_t>(group.begin)];

@@ -27,9 +27,46 @@ bool MpiSession::any(bool flag) {
   return global != 0;
 }
 
-MpiExchange::MpiExchange() {
+struct MpiExchange::Requests {
+  std::vector<MPI_Request> pending;
+};
+
+MpiExchange::MpiExchange() : requests_(std::make_unique<Requests>()) {
   MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
   MPI_Comm_size(MPI_COMM_WORLD, &size_);
+}
+MpiExchange::~MpiExchange() = default;
+
+// Receives posted first, then each neighbour's slots packed and sent, then every request completed and the
+// received slots unpacked. One message per neighbour and direction.
+void MpiExchange::halo(std::vector<double>& values, int width, const HaloPlan& plan) {
+  const std::size_t neighbours = plan.neighbours.size(), w = static_cast<std::size_t>(width);
+  halo_send_.resize(neighbours), halo_receive_.resize(neighbours);
+  std::vector<MPI_Request>& pending = requests_->pending;
+  pending.clear();
+  constexpr int kTag = 7;
+  for (std::size_t i = 0; i < neighbours; ++i) {
+    halo_receive_[i].resize(plan.receive[i].size() * w);
+    if (halo_receive_[i].empty()) continue;
+    pending.emplace_back();
+    MPI_Irecv(halo_receive_[i].data(), static_cast<int>(halo_receive_[i].size()), MPI_DOUBLE, plan.neighbours[i], kTag,
+              MPI_COMM_WORLD, &pending.back());
+  }
+  for (std::size_t i = 0; i < neighbours; ++i) {
+    std::vector<double>& buffer = halo_send_[i];
+    buffer.resize(plan.send[i].size() * w);
+    if (buffer.empty()) continue;
+    for (std::size_t j = 0; j < plan.send[i].size(); ++j)
+      std::copy_n(values.begin() + static_cast<std::ptrdiff_t>(plan.send[i][j] * w), w, buffer.begin() + static_cast<std::ptrdiff_t>(j * w));
+    pending.emplace_back();
+    MPI_Isend(buffer.data(), static_cast<int>(buffer.size()), MPI_DOUBLE, plan.neighbours[i], kTag, MPI_COMM_WORLD,
+              &pending.back());
+  }
+  MPI_Waitall(static_cast<int>(pending.size()), pending.data(), MPI_STATUSES_IGNORE);
+  for (std::size_t i = 0; i < neighbours; ++i)
+    for (std::size_t j = 0; j < plan.receive[i].size(); ++j)
+      std::copy_n(halo_receive_[i].begin() + static_cast<std::ptrdiff_t>(j * w), w,
+                  values.begin() + static_cast<std::ptrdiff_t>(plan.receive[i][j] * w));
 }
 
 const MpiExchange::Layout& MpiExchange::layout(const std::vector<std::int32_t>& owner, int width) {

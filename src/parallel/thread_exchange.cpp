@@ -66,6 +66,18 @@ void ThreadExchange::min_with_index(std::vector<double>& value, std::vector<std:
   value = std::move(best_value), index = std::move(best_index);
 }
 
+void ThreadExchange::halo(std::vector<double>& values, int width, const HaloPlan& plan) {
+  board_.offered_[static_cast<std::size_t>(domain_)] = &values;
+  board_.barrier_.arrive_and_wait();
+  const auto w = static_cast<std::size_t>(width);
+  for (std::size_t i = 0; i < plan.neighbours.size(); ++i) {
+    const auto& from = *static_cast<const std::vector<double>*>(board_.offered_[static_cast<std::size_t>(plan.neighbours[i])]);
+    for (std::uint32_t slot : plan.receive[i])
+      std::copy_n(from.begin() + static_cast<std::ptrdiff_t>(slot * w), w, values.begin() + static_cast<std::ptrdiff_t>(slot * w));
+  }
+  board_.barrier_.arrive_and_wait();
+}
+
 void ThreadExchange::renew(const std::vector<std::int32_t>&) {}
 
 void ThreadExchange::gather(const std::vector<double>& mine, std::vector<double>& all) {

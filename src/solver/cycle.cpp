@@ -304,8 +304,8 @@ void share_element_results(const Model& m, SolverState& s, Exchange& exchange) {
   const bool critical_steps = critical_steps_needed(m.run);
   for (int k = 0; k < kElementKinds; ++k) {
     ElementStateView v = element_view(s, static_cast<ElementKind>(k));
-    exchange.share(v.records.load, v.records.nodes_per_element * v.records.values_per_node,
-                   d.boundary_owner[static_cast<std::size_t>(k)]);
+    exchange.halo(v.records.load, v.records.nodes_per_element * v.records.values_per_node,
+                  d.record_halo[static_cast<std::size_t>(k)]);
     exchange.share(v.records.internal, 1, d.split_owner[static_cast<std::size_t>(k)]);
     exchange.share(v.records.hourglass, 1, d.split_owner[static_cast<std::size_t>(k)]);
     if (critical_steps) exchange.share(v.critical_dt, 1, d.owner[static_cast<std::size_t>(k)]);

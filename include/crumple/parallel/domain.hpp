@@ -22,6 +22,14 @@
 
 namespace crumple {
 
+// What one domain sends to and receives from each of its neighbours (the domains it shares nodes with), for values
+// held per slot (an element, a node) in arrays of the whole model's size: per neighbour, the slots it sends and the
+// slots it receives, ascending. Exchange::halo moves them point to point.
+struct HaloPlan {
+  std::vector<std::int32_t> neighbours;                // ascending
+  std::vector<std::vector<std::uint32_t>> send, receive;  // per neighbour
+};
+
 // An element's load at one of its nodes, in the assembly list of the node.
 struct NodeLoadRef {
   std::uint8_t kind;      // ElementKind
@@ -45,8 +53,8 @@ struct Domain {
   // kind, element by element): loads[first[i] .. first[i + 1]).
   std::vector<std::uint32_t> first;
   std::vector<NodeLoadRef> loads;
-  // Per element kind, per element: its domain when it uses a shared node (its loads must travel), else -1.
-  std::array<std::vector<std::int32_t>, kElementKinds> boundary_owner;
+  // Per element kind: the loads of the elements at shared nodes, sent to the neighbours that assemble those nodes.
+  std::array<HaloPlan, kElementKinds> record_halo;
   // Per element group: the domain that computes all of it, or -1 when the group is split among domains; per kind,
   // per element: its domain when its group is split (its energy increments must travel), else -1.
   std::vector<std::int32_t> group_owner;

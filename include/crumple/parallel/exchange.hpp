@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "crumple/core/exact_sum.hpp"
+#include "crumple/parallel/domain.hpp"
 
 namespace crumple {
 
@@ -22,6 +23,9 @@ class Exchange {
   virtual void share(std::vector<double>& values, int width, const std::vector<std::int32_t>& owner) = 0;
   virtual void share(std::vector<std::uint8_t>& values, int width, const std::vector<std::int32_t>& owner) = 0;
 
+  // Point to point with the neighbours of `plan`: this domain's send slots to each neighbour, the neighbours' into
+  // its receive slots (`width` values per slot). Non-blocking sends and receives, completed before it returns.
+  virtual void halo(std::vector<double>& values, int width, const HaloPlan& plan) = 0;
   // `owner` has changed since its last share (its slots travel differently): forget what was made of it.
   virtual void renew(const std::vector<std::int32_t>& owner) = 0;
   // Every domain's `mine`, concatenated in domain order into `all` (lengths may differ between domains).

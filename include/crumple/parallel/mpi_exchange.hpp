@@ -5,6 +5,7 @@
 // share and reused, so that the cycle allocates nothing once warm.
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -34,10 +35,12 @@ class MpiSession {
 class MpiExchange final : public Exchange {
  public:
   MpiExchange();  // MPI must be initialised
+  ~MpiExchange() override;
   int domain() const override { return rank_; }
   int domains() const override { return size_; }
   void share(std::vector<double>& values, int width, const std::vector<std::int32_t>& owner) override;
   void share(std::vector<std::uint8_t>& values, int width, const std::vector<std::int32_t>& owner) override;
+  void halo(std::vector<double>& values, int width, const HaloPlan& plan) override;
   void renew(const std::vector<std::int32_t>& owner) override;
   void gather(const std::vector<double>& mine, std::vector<double>& all) override;
   void min_with_index(std::vector<double>& value, std::vector<std::int32_t>& index) override;
@@ -69,6 +72,9 @@ class MpiExchange final : public Exchange {
   std::vector<DoubleInt> pairs_;
   std::vector<std::int64_t> digits_;  // exact sums' digits, packed
   std::vector<int> gather_counts_, gather_displacements_;
+  std::vector<std::vector<double>> halo_send_, halo_receive_;  // per neighbour
+  struct Requests;  // MPI_Request storage (mpi.h stays out of this header)
+  std::unique_ptr<Requests> requests_;
   std::vector<double> non_finite_;
 };
 
