@@ -75,7 +75,7 @@ void resolve_model(DeckContext& context, std::vector<RunControl>& continued_runs
 // Stages, in order (src/deck/resolve_*.cpp).
 void resolve_definitions(Resolver& r);  // nodes, functions, materials, properties, parts
 void resolve_elements(Resolver& r);     // connectivity, part order, groups, geometry checks
-void resolve_sets(Resolver& r);         // node and shell groups, surfaces, subsets
+void resolve_sets(Resolver& r);         // node and element groups, surfaces, subsets
 void resolve_load_references(Resolver& r);    // loads, imposed motion, added mass, rigid walls and bodies
 void resolve_output_references(Resolver& r, std::vector<RunControl>& continued_runs);  // interfaces, sections, time histories, run control
 

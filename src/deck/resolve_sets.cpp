@@ -1,4 +1,4 @@
-// Node groups, shell groups, surfaces and subsets: members resolved to dense indices.
+// Node groups, element groups, surfaces and subsets: members resolved to dense indices.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -79,19 +79,33 @@ void resolve_node_group(Resolver& r, std::size_t g, std::vector<int>& state, int
   state[g] = 2;
 }
 
-void resolve_shell_group(Resolver& r, ShellGroup& group) {
+// The keyword of an element group card and the words for its members: /GRSHEL/SHEL/6, "shell_ID", "4-node shell".
+struct ElementSetWords {
+  std::string_view keyword, item, field, what;
+};
+ElementSetWords element_set_words(ElementKind kind) {
+  switch (kind) {
+    case ElementKind::Shell4: return {"/GRSHEL", "SHEL", "shell_ID", "4-node shell"};
+    case ElementKind::Shell3: return {"/GRSH3N", "SH3N", "sh3n_ID", "3-node shell"};
+    case ElementKind::Brick8: return {"/GRBRIC", "BRIC", "brick_ID", "brick"};
+  }
+  return {};
+}
+
+void resolve_element_set(Resolver& r, ElementSet& group) {
   Model& m = r.model;
-  const std::string keyword =
-      fmt::format("/GRSHEL/{}/{}", group.source == SetSource::Ids ? "SHEL" : "PART", group.user_id);
+  const ElementSetWords words = element_set_words(group.kind);
+  const std::string keyword = fmt::format("{}/{}/{}", words.keyword,
+                                          group.source == SetSource::Ids ? words.item : "PART", group.user_id);
   if (group.source == SetSource::Ids) {
     for (std::int64_t id : group.items)
-      if (const auto e = r.find(m.index.elements[static_cast<int>(ElementKind::Shell4)], id, group.where, keyword,
-                                "shell_ID", "4-node shell");
+      if (const auto e = r.find(m.index.elements[static_cast<int>(group.kind)], id, group.where, keyword,
+                                words.field, words.what);
           e >= 0)
         group.elements.push_back(e);
   } else {
     for_each_element_of_parts(m, parts_of(r, group.items, group.where, keyword), [&](ElementKind kind, std::int32_t e) {
-      if (kind == ElementKind::Shell4) group.elements.push_back(e);
+      if (kind == group.kind) group.elements.push_back(e);
     });
   }
   sort_unique(group.elements);
@@ -168,11 +182,14 @@ void resolve_sets(Resolver& r) {
   Model& m = r.model;
   r.index(m.node_groups, m.index.node_groups, "/GRNOD");
   r.index(m.shell_groups, m.index.shell_groups, "/GRSHEL");
+  r.index(m.sh3n_groups, m.index.sh3n_groups, "/GRSH3N");
+  r.index(m.brick_groups, m.index.brick_groups, "/GRBRIC");
   r.index(m.surfaces, m.index.surfaces, "/SURF");
   r.index(m.subsets, m.index.subsets, "/SUBSET");
   std::vector<int> state(m.node_groups.size(), 0);
   for (std::size_t g = 0; g < m.node_groups.size(); ++g) resolve_node_group(r, g, state);
-  for (ShellGroup& g : m.shell_groups) resolve_shell_group(r, g);
+  for (auto* groups : {&m.shell_groups, &m.sh3n_groups, &m.brick_groups})
+    for (ElementSet& g : *groups) resolve_element_set(r, g);
   for (Surface& s : m.surfaces) {
     if (s.source == SetSource::Parts) surface_from_parts(r, s);
     else surface_from_segments(r, s);

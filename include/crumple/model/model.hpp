@@ -45,7 +45,9 @@ struct Model {
   SolidDefaults solid_defaults;
 
   std::vector<NodeGroup> node_groups;
-  std::vector<ShellGroup> shell_groups;
+  std::vector<ShellGroup> shell_groups;   // /GRSHEL
+  std::vector<ElementSet> sh3n_groups;    // /GRSH3N
+  std::vector<ElementSet> brick_groups;   // /GRBRIC
   std::vector<Surface> surfaces;
   std::vector<Subset> subsets;
 
@@ -69,8 +71,8 @@ struct Model {
   double added_mass = 0.0;    // /ADMAS and /RBODY masses [M]
 
   struct Index {
-    IdMap nodes, parts, properties, materials, functions, node_groups, shell_groups, surfaces, subsets,
-        rigid_walls, rigid_bodies, interfaces, sections, accelerometers;
+    IdMap nodes, parts, properties, materials, functions, node_groups, shell_groups, sh3n_groups, brick_groups,
+        surfaces, subsets, rigid_walls, rigid_bodies, interfaces, sections, accelerometers;
     std::array<IdMap, kElementKinds> elements;
   } index;
 

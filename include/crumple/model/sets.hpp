@@ -1,5 +1,5 @@
 #pragma once
-// Parts and the sets that cards refer to: node groups, shell groups, surfaces, subsets.
+// Parts and the sets that cards refer to: node groups, element groups, surfaces, subsets.
 #include <array>
 #include <cstdint>
 #include <string>
@@ -33,14 +33,18 @@ struct NodeGroup {  // /GRNOD/NODE, /GRNOD/PART, /GRNOD/GRNOD
   std::vector<std::int32_t> nodes;  // dense node indices, sorted, unique (model build)
 };
 
-struct ShellGroup {  // /GRSHEL/SHEL, /GRSHEL/PART
+// A group of elements of one kind: /GRSHEL/SHEL, /GRSHEL/PART (4-node shells), /GRSH3N/SH3N, /GRSH3N/PART
+// (3-node shells), /GRBRIC/BRIC, /GRBRIC/PART (bricks).
+struct ElementSet {
   SourceLocation where;
   std::int64_t user_id = 0;
   std::string title;
   SetSource source = SetSource::Ids;
-  std::vector<std::int64_t> items;      // user ids of shells or parts
-  std::vector<std::int32_t> elements;   // dense indices into the Shell4 table (model build)
+  ElementKind kind = ElementKind::Shell4;
+  std::vector<std::int64_t> items;      // user ids of elements or parts
+  std::vector<std::int32_t> elements;   // dense indices into the kind's table, sorted, unique (model build)
 };
+using ShellGroup = ElementSet;
 
 // A surface segment: 4 nodes (a triangle repeats its third node), oriented by the owning element.
 struct Segment {

@@ -1,4 +1,4 @@
-// Groups and surfaces: /GRNOD, /GRSHEL, /SURF, /SUBSET (docs/deck-format.md).
+// Groups and surfaces: /GRNOD, /GRSHEL, /GRSH3N, /GRBRIC, /SURF, /SUBSET (docs/deck-format.md).
 #include <fmt/format.h>
 
 #include "../context.hpp"
@@ -31,10 +31,14 @@ void read_node_group(CardReader& reader, DeckContext& context, SetSource source,
   context.model.node_groups.push_back(std::move(g));
 }
 
-void read_shell_group(CardReader& reader, DeckContext& context, SetSource source, std::string_view item) {
-  auto g = begin_group<ShellGroup>(reader, source);
+void read_element_group(CardReader& reader, DeckContext& context, ElementKind kind, SetSource source,
+                        std::string_view item) {
+  auto g = begin_group<ElementSet>(reader, source);
+  g.kind = kind;
   g.items = positive_ids(reader, item);
-  context.model.shell_groups.push_back(std::move(g));
+  Model& m = context.model;
+  (kind == ElementKind::Shell4 ? m.shell_groups : kind == ElementKind::Shell3 ? m.sh3n_groups : m.brick_groups)
+      .push_back(std::move(g));
 }
 
 // /SURF/PART/surf_ID with a list of parts, or /SURF/PART/ALL/surf_ID (every part of the model, no list).
@@ -90,14 +94,19 @@ void register_set_keywords(KeywordTable& table) {
   auto node_group = [](SetSource source, std::string_view item) {
     return [source, item](CardReader& r, DeckContext& c) { read_node_group(r, c, source, item); };
   };
-  auto shell_group = [](SetSource source, std::string_view item) {
-    return [source, item](CardReader& r, DeckContext& c) { read_shell_group(r, c, source, item); };
+  auto element_group = [](ElementKind kind, SetSource source, std::string_view item) {
+    return [kind, source, item](CardReader& r, DeckContext& c) { read_element_group(r, c, kind, source, item); };
   };
+  using K = ElementKind;
   table.push_back({"/GRNOD/NODE", DeckPart::Starter, node_group(SetSource::Ids, "node_ID")});
   table.push_back({"/GRNOD/PART", DeckPart::Starter, node_group(SetSource::Parts, "part_ID")});
   table.push_back({"/GRNOD/GRNOD", DeckPart::Starter, node_group(SetSource::Groups, "grnod_ID")});
-  table.push_back({"/GRSHEL/SHEL", DeckPart::Starter, shell_group(SetSource::Ids, "shell_ID")});
-  table.push_back({"/GRSHEL/PART", DeckPart::Starter, shell_group(SetSource::Parts, "part_ID")});
+  table.push_back({"/GRSHEL/SHEL", DeckPart::Starter, element_group(K::Shell4, SetSource::Ids, "shell_ID")});
+  table.push_back({"/GRSHEL/PART", DeckPart::Starter, element_group(K::Shell4, SetSource::Parts, "part_ID")});
+  table.push_back({"/GRSH3N/SH3N", DeckPart::Starter, element_group(K::Shell3, SetSource::Ids, "sh3n_ID")});
+  table.push_back({"/GRSH3N/PART", DeckPart::Starter, element_group(K::Shell3, SetSource::Parts, "part_ID")});
+  table.push_back({"/GRBRIC/BRIC", DeckPart::Starter, element_group(K::Brick8, SetSource::Ids, "brick_ID")});
+  table.push_back({"/GRBRIC/PART", DeckPart::Starter, element_group(K::Brick8, SetSource::Parts, "part_ID")});
   table.push_back({"/SURF/PART", DeckPart::Starter, read_surface_parts});
   table.push_back({"/SURF/SEG", DeckPart::Starter, read_surface_segments});
   table.push_back({"/SUBSET", DeckPart::Starter, read_subset});
