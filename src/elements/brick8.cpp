@@ -493,7 +493,7 @@ GroupStepResult brick8_one_point_forces(const ElementTable& table, const Element
   const double G = elastic.shear(), K = elastic.bulk();
   const double wave_modulus = K + 4.0 / 3.0 * G;  // rho c^2 of the dilatational wave
   const bool physical = p.isolid == 24;
-  const bool recording = state.records.on();
+  const bool recording = state.records.on(group.begin);
 
   for (std::int32_t e = group.begin; e < group.end; ++e) {
     const auto ue = static_cast<std::size_t>(e);
@@ -606,7 +606,7 @@ GroupStepResult brick8_full_forces(const ElementTable& table, const ElementGroup
   GroupStepResult result;
   const materials::SolidElastic elastic{p.young, p.poisson};
   const double wave_modulus = elastic.bulk() + 4.0 / 3.0 * elastic.shear();
-  const bool recording = state.records.on();
+  const bool recording = state.records.on(group.begin);
 
   for (std::int32_t e = group.begin; e < group.end; ++e) {
     const auto ue = static_cast<std::size_t>(e);

@@ -60,7 +60,7 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
   const int np = p.points;
   constexpr double mean = 1.0 / NN;  // shape function value at the element centre
 
-  const bool recording = state.records.on();
+  const bool recording = state.records.on(group.begin);
   for (std::int32_t e = group.begin; e < group.end; ++e) {
     const auto ue = static_cast<std::size_t>(e);
     // What one of this domain's elements hands the nodes if it computes nothing this cycle.

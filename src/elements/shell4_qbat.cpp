@@ -223,7 +223,7 @@ GroupStepResult shell4_qbat_forces(const ElementTable& table, const ElementGroup
   const Elastic viscous{E / (1.0 - nu * nu), nu};
   const int np = p.points;
 
-  const bool recording = state.records.on();
+  const bool recording = state.records.on(group.begin);
   for (std::int32_t e = group.begin; e < group.end; ++e) {
     const auto ue = static_cast<std::size_t>(e);
     // What one of this domain's elements hands the nodes if it computes nothing this cycle.

@@ -1,9 +1,11 @@
 #pragma once
-// What each element handed its nodes and the energy balance in the last cycle, kept only when a run has several
+// What each element handed its nodes and the energy balance in the last cycle, kept when a run has several
 // domains: every node's sum is then assembled from these records in one fixed order, the same for any partition
-// (docs/parallel.md, "Assembly"). In a run of one domain the records are empty and the kernels add their forces to
-// the nodes directly, in the same order.
+// (docs/parallel.md, "Assembly"). In a run of one domain the kernels add their forces to the nodes directly, in the
+// same order, and the records are empty, or kept for the element groups of the cut sections that /TH/SECTIO
+// writes only (docs/output-format.md, "SECTIO"). Recording changes nothing of a kernel's arithmetic.
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "crumple/core/vec3.hpp"
@@ -18,7 +20,15 @@ struct ElementRecords {
   // Per element: this cycle's increments of its internal and hourglass energy [E].
   std::vector<double> internal, hourglass;
 
+  // Run of one domain with cut sections: per element, 1 at the first element of a group that records (the
+  // records then cover the elements up to the last such group only); empty: every group records.
+  std::vector<std::uint8_t> only;
+
   bool on() const { return !load.empty(); }
+  // Whether the kernel of the group whose first element is `first` records its elements.
+  bool on(std::int32_t first) const {
+    return !load.empty() && (only.empty() || only[static_cast<std::size_t>(first)] != 0);
+  }
   void start(std::size_t elements, int nodes, int values) {
     nodes_per_element = nodes, values_per_node = values;
     load.assign(elements * static_cast<std::size_t>(nodes * values), 0.0);
@@ -27,6 +37,14 @@ struct ElementRecords {
   double* load_at(std::size_t element, int node) {
     return load.data() + (element * static_cast<std::size_t>(nodes_per_element) + static_cast<std::size_t>(node)) *
                              static_cast<std::size_t>(values_per_node);
+  }
+  const double* load_at(std::size_t element, int node) const {
+    return load.data() + (element * static_cast<std::size_t>(nodes_per_element) + static_cast<std::size_t>(node)) *
+                             static_cast<std::size_t>(values_per_node);
+  }
+  // Whether element `element` has a record (the records of a run of one domain may end before the last element).
+  bool covers(std::size_t element) const {
+    return (element + 1) * static_cast<std::size_t>(nodes_per_element * values_per_node) <= load.size();
   }
   // An element that computed nothing this cycle (deleted, carried by a rigid body) hands the nodes nothing.
   void clear(std::size_t element) {
