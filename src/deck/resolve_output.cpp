@@ -68,6 +68,30 @@ void resolve_run_control(Resolver& r, RunControl& run) {
                    fmt::format("run name '{}' differs from the /BEGIN run name '{}'", run.run_name, m.run_name));
 }
 
+// A section a /TH/SECTIO request writes (docs/output-format.md, "SECTIO"): its frame needs three distinct nodes
+// off one line, and the forces of interfaces across the cut are not computed (a section value without them would
+// be silently short).
+void check_written_section(Resolver& r, Section& s) {
+  const std::string kw = fmt::format("/SECT/{}", s.user_id);
+  r.require_zero(s.ninter, s.where, kw, "Ninter", "interface forces across a cut section (Ninter > 0) are");
+  if (s.ninter == 0) s.interfaces.clear(), s.interface_ids.clear();
+  for (int k = 0; k < 3; ++k)
+    if (s.node_ids[k] == 0) {
+      r.error(s.where, kw, fmt::format("node_ID{}", k + 1),
+              "a node (N1, N2 and N3 define the frame of a section that /TH/SECTIO writes)", "blank");
+      return;
+    }
+  if (s.nodes[0] < 0 || s.nodes[1] < 0 || s.nodes[2] < 0) return;  // reported already
+  const Nodes& n = r.model.nodes;
+  const Vec3 u = n.position(s.nodes[1]) - n.position(s.nodes[0]), w = n.position(s.nodes[2]) - n.position(s.nodes[0]);
+  if (!(norm(u) > 0.0))
+    r.error(s.where, kw, "node_ID2", "a node at another place than N1 (N1N2 is the frame's first axis)",
+            fmt::format("node {} at the place of node {}", s.node_ids[1], s.node_ids[0]));
+  else if (!(norm(cross(u, w)) > 1e-9 * norm(u) * norm(w)))
+    r.error(s.where, kw, "node_ID3", "a node off the line N1N2 (N1, N2, N3 span the section's plane)",
+            fmt::format("node {} on the line of nodes {} and {}", s.node_ids[2], s.node_ids[0], s.node_ids[1]));
+}
+
 }  // namespace
 
 void resolve_output_references(Resolver& r, std::vector<RunControl>& continued_runs) {
@@ -85,9 +109,11 @@ void resolve_output_references(Resolver& r, std::vector<RunControl>& continued_r
   for (Section& s : m.sections) {
     const std::string kw = fmt::format("/SECT/{}", s.user_id);
     for (int k = 0; k < 3; ++k)
-      r.find_optional(ix.nodes, s.node_ids[k], s.where, kw, fmt::format("node_ID{}", k + 1), "node");
+      s.nodes[k] = r.find_optional(ix.nodes, s.node_ids[k], s.where, kw, fmt::format("node_ID{}", k + 1), "node");
     s.node_group = r.find_optional(ix.node_groups, s.node_group_id, s.where, kw, "grnod_ID", "node group");
     s.shell_group = r.find_optional(ix.shell_groups, s.shell_group_id, s.where, kw, "grshel_ID", "shell group");
+    s.sh3n_group = r.find_optional(ix.sh3n_groups, s.sh3n_group_id, s.where, kw, "grtria_ID", "3-node shell group");
+    s.brick_group = r.find_optional(ix.brick_groups, s.brick_group_id, s.where, kw, "grbric_ID", "brick group");
     s.interfaces.clear();
     for (std::size_t k = 0; k < s.interface_ids.size(); ++k)
       s.interfaces.push_back(
@@ -101,6 +127,13 @@ void resolve_output_references(Resolver& r, std::vector<RunControl>& continued_r
     th.objects.clear();
     for (std::int64_t id : th.object_ids) th.objects.push_back(r.find(*map, id, th.where, th.keyword, "Obj_ID", what));
   }
+  std::vector<bool> written(m.sections.size(), false);
+  for (const TimeHistoryRequest& th : m.histories)
+    if (th.object == HistoryObject::Section)
+      for (std::int32_t k : th.objects)
+        if (k >= 0) written[static_cast<std::size_t>(k)] = true;
+  for (std::size_t k = 0; k < m.sections.size(); ++k)
+    if (written[k]) check_written_section(r, m.sections[k]);
   resolve_run_control(r, m.run);
   for (RunControl& run : continued_runs) resolve_run_control(r, run);
 }

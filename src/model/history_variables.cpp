@@ -127,18 +127,27 @@ constexpr std::array<S, 9> kBodyDef{"FX", "FY", "FZ", "MX", "MY", "MZ", "RX", "R
 constexpr std::array<S, 3> kBodyF{"FX", "FY", "FZ"}, kBodyM{"MX", "MY", "MZ"}, kBodyR{"RX", "RY", "RZ"};
 constexpr std::array<G, 4> kBodyGroups{{{"DEF", kBodyDef}, {"F", kBodyF}, {"M", kBodyM}, {"R", kBodyR}}};
 
-// ---- /TH/SECTIO: cut-section forces are not computed (the elements' nodal forces are summed as they are made).
-constexpr std::array<V, 14> kSection{{
-    {"FNX", "F", kForce, false},   {"FNY", "F", kForce, false},   {"FNZ", "F", kForce, false},
-    {"FTX", "F", kForce, false},   {"FTY", "F", kForce, false},   {"FTZ", "F", kForce, false},
-    {"M1", "F L", kMoment, false}, {"M2", "F L", kMoment, false}, {"M3", "F L", kMoment, false},
-    {"CX", "L", kLength, false},   {"CY", "L", kLength, false},   {"CZ", "L", kLength, false},
-    {"WORK", "E", kMoment, false}, {"WORKR", "E", kMoment, false}}};
-constexpr std::array<S, 9> kSectionDef{"FNX", "FNY", "FNZ", "FTX", "FTY", "FTZ", "M1", "M2", "M3"};
+// ---- /TH/SECTIO: the loads the section's elements hand the nodes of its cut (docs/output-format.md, "SECTIO").
+// WORKR: the manual names it without saying what it is; DFX..DMZ: the errors of a section whose motion is imposed
+// from a file (ISAVE 100, 200), which Crumple does not read.
+constexpr std::array<V, 26> kSection{{
+    {"FNX", "F", kForce, true},    {"FNY", "F", kForce, true},    {"FNZ", "F", kForce, true},
+    {"FTX", "F", kForce, true},    {"FTY", "F", kForce, true},    {"FTZ", "F", kForce, true},
+    {"M1", "F L", kMoment, true},  {"M2", "F L", kMoment, true},  {"M3", "F L", kMoment, true},
+    {"WORK", "E", kMoment, true},  {"WORKR", "E", kMoment, false},
+    {"MX", "F L", kMoment, true},  {"MY", "F L", kMoment, true},  {"MZ", "F L", kMoment, true},
+    {"F1", "F", kForce, true},     {"F2", "F", kForce, true},     {"F3", "F", kForce, true},
+    {"CX", "L", kLength, true},    {"CY", "L", kLength, true},    {"CZ", "L", kLength, true},
+    {"DFX", "F", kForce, false},   {"DFY", "F", kForce, false},   {"DFZ", "F", kForce, false},
+    {"DMX", "F L", kMoment, false}, {"DMY", "F L", kMoment, false}, {"DMZ", "F L", kMoment, false}}};
+constexpr std::array<S, 9> kSectionDef{"FNX", "FNY", "FNZ", "FTX", "FTY", "FTZ", "M1", "M2", "M3"},
+    kSectionGlobal{"FNX", "FNY", "FNZ", "FTX", "FTY", "FTZ", "MX", "MY", "MZ"};
+constexpr std::array<S, 6> kSectionLocal{"F1", "F2", "F3", "M1", "M2", "M3"};
 constexpr std::array<S, 3> kSectionFN{"FNX", "FNY", "FNZ"}, kSectionFT{"FTX", "FTY", "FTZ"},
     kSectionM{"M1", "M2", "M3"}, kSectionCenter{"CX", "CY", "CZ"};
-constexpr std::array<G, 5> kSectionGroups{
-    {{"DEF", kSectionDef}, {"FN", kSectionFN}, {"FT", kSectionFT}, {"M", kSectionM}, {"CENTER", kSectionCenter}}};
+constexpr std::array<G, 7> kSectionGroups{{{"DEF", kSectionDef}, {"FN", kSectionFN}, {"FT", kSectionFT},
+                                           {"M", kSectionM}, {"CENTER", kSectionCenter}, {"GLOBAL", kSectionGlobal},
+                                           {"LOCAL", kSectionLocal}}};
 
 // ---- /TH/ACCEL: the accelerometer's filtered acceleration and the integral of its raw acceleration. The manual's
 // groups table reads "DEF W"; the reference starter lists DEF as AX AY AZ (its listing of the QA deck

@@ -12,6 +12,7 @@
 
 #include "crumple/elements/shell4.hpp"
 #include "crumple/core/geometry.hpp"
+#include "crumple/model/cut_sections.hpp"
 #include "crumple/model/history_variables.hpp"
 #include "crumple/model/mass.hpp"
 #include "crumple/state/element_status.hpp"
@@ -123,6 +124,23 @@ constexpr Evaluator<A> kAccelerometer[] = {
     {"AX", component<A, &A::a, 0>}, {"AY", component<A, &A::a, 1>}, {"AZ", component<A, &A::a, 2>},
     {"WX", component<A, &A::w, 0>}, {"WY", component<A, &A::w, 1>}, {"WZ", component<A, &A::w, 2>}};
 
+struct SectionValues {  // docs/output-format.md, "SECTIO"
+  Vec3 fn, ft;            // normal and tangential parts of the resultant force, global axes
+  Vec3 f_local, m_local;  // the resultant force and moment on the axes of the section's frame (eqs. SEC-3, SEC-4)
+  Vec3 m;                 // the resultant moment about the reference point, global axes
+  Vec3 center;            // the reference point
+  double work = 0.0;
+};
+using C = SectionValues;
+constexpr Evaluator<C> kSection[] = {
+    {"FNX", component<C, &C::fn, 0>},      {"FNY", component<C, &C::fn, 1>},      {"FNZ", component<C, &C::fn, 2>},
+    {"FTX", component<C, &C::ft, 0>},      {"FTY", component<C, &C::ft, 1>},      {"FTZ", component<C, &C::ft, 2>},
+    {"M1", component<C, &C::m_local, 0>},  {"M2", component<C, &C::m_local, 1>},  {"M3", component<C, &C::m_local, 2>},
+    {"WORK", scalar<C, &C::work>},         {"MX", component<C, &C::m, 0>},         {"MY", component<C, &C::m, 1>},
+    {"MZ", component<C, &C::m, 2>},        {"F1", component<C, &C::f_local, 0>},  {"F2", component<C, &C::f_local, 1>},
+    {"F3", component<C, &C::f_local, 2>},  {"CX", component<C, &C::center, 0>},   {"CY", component<C, &C::center, 1>},
+    {"CZ", component<C, &C::center, 2>}};
+
 // The evaluator of `name` for a kind of object, or -1 when Crumple computes no such variable.
 template <class Values, std::size_t Count>
 int find(const Evaluator<Values> (&table)[Count], std::string_view name) {
@@ -143,7 +161,7 @@ int evaluator_of(HistoryObject object, std::string_view name) {
     case HistoryObject::RigidWall: return find(kForces, name);
     case HistoryObject::RigidBody: return find(kBody, name);
     case HistoryObject::Accelerometer: return find(kAccelerometer, name);
-    case HistoryObject::Section: return -1;
+    case HistoryObject::Section: return find(kSection, name);
   }
   return -1;
 }
@@ -288,6 +306,72 @@ AccelerometerValues accelerometer_values(const HistoryIntegrals& h, std::size_t 
   return {of(h.accel_filtered, 3 * k), of(h.accel_velocity, 3 * k)};
 }
 
+// ---- Cut sections (docs/output-format.md, "SECTIO").
+const ElementRecords& records_of(const SolverState& s, ElementKind kind) {
+  return kind == ElementKind::Brick8 ? s.bricks.records
+                                     : (kind == ElementKind::Shell4 ? s.shells : s.shells3).records;
+}
+
+const std::vector<double>& section_work_of(const SolverState& s, ElementKind kind) {
+  return kind == ElementKind::Brick8 ? s.bricks.section_work
+                                     : (kind == ElementKind::Shell4 ? s.shells : s.shells3).section_work;
+}
+
+SectionValues section_values(const Model& m, const SolverState& s, const Section& section,
+                             const std::vector<SectionTerm>& terms) {
+  const NodalState& n = s.nodes;
+  auto at = [&n](std::int32_t k) { return of(n.x, n.y, n.z, static_cast<std::size_t>(k)); };
+  // The frame of N1 N2 N3 at the row's positions (eq. SEC-2): e1 along N1N2, e3 normal to the plane N1N2N3.
+  const Vec3 x1 = at(section.nodes[0]), x2 = at(section.nodes[1]), x3 = at(section.nodes[2]);
+  const Vec3 e1 = unit(x2 - x1), e3 = unit(cross(e1, x3 - x1)), e2 = cross(e3, e1);
+  // The reference point O (Iframe, eq. SEC-5).
+  Vec3 o{0.0, 0.0, 0.0};
+  const int point = section.iframe % 10;
+  const std::vector<std::int32_t>* cut =
+      section.node_group >= 0 ? &m.node_groups[static_cast<std::size_t>(section.node_group)].nodes : nullptr;
+  if (point == 0) {
+    o = x1;
+  } else if (point == 1 || point == 2) {
+    Vec3 sum{0.0, 0.0, 0.0};
+    double weight = 0.0;
+    for (std::int32_t k : cut != nullptr ? *cut : std::vector<std::int32_t>{}) {
+      const double w = point == 1 ? 1.0 : n.mass[static_cast<std::size_t>(k)];
+      sum = sum + scaled(at(k), w), weight += w;
+    }
+    o = weight > 0.0 ? scaled(sum, 1.0 / weight) : Vec3{kUnknown, kUnknown, kUnknown};
+  }
+  // The resultants over the terms in model order (eq. SEC-1).
+  Vec3 f{0.0, 0.0, 0.0}, moment{0.0, 0.0, 0.0};
+  double work = 0.0;
+  for (const SectionTerm& t : terms) {
+    const ElementRecords& r = records_of(s, t.kind);
+    const auto ue = static_cast<std::size_t>(t.element);
+    if (!r.covers(ue))
+      throw std::runtime_error(fmt::format("history: the solver state has no loads recorded for /SECT/{}",
+                                           section.user_id));
+    const double* load = r.load_at(ue, t.slot);
+    const Vec3 force{load[0], load[1], load[2]};
+    const Vec3 couple = r.values_per_node == 6 ? Vec3{load[3], load[4], load[5]} : Vec3{0.0, 0.0, 0.0};
+    f = f + force;
+    moment = moment + couple + cross(at(t.node) - o, force);
+    const std::vector<double>& w = section_work_of(s, t.kind);
+    const std::size_t slot = ue * static_cast<std::size_t>(nodes_per_element(t.kind)) + static_cast<std::size_t>(t.slot);
+    work += w.empty() ? kUnknown : w[slot];
+  }
+  SectionValues out;
+  const double normal = dot(f, e3);
+  out.fn = scaled(e3, normal);
+  out.ft = f - out.fn;
+  const bool global = section.iframe >= 10;
+  const Vec3 axes[3] = {global ? Vec3{1.0, 0.0, 0.0} : e1, global ? Vec3{0.0, 1.0, 0.0} : e2,
+                        global ? Vec3{0.0, 0.0, 1.0} : e3};
+  for (std::size_t c = 0; c < 3; ++c) out.f_local[c] = dot(f, axes[c]), out.m_local[c] = dot(moment, axes[c]);
+  out.m = moment;
+  out.center = o;
+  out.work = work;
+  return out;
+}
+
 }  // namespace
 
 // ---- Parts: sums over the nodes and the elements.
@@ -338,6 +422,11 @@ void HistoryChannels::add_request(const TimeHistoryRequest& th) {
     request.getters.push_back(getter), written.push_back(v);
   }
   if (written.empty() || th.objects.empty()) return;
+  if (th.object == HistoryObject::Section) {
+    section_terms_.resize(model_.sections.size());
+    for (std::int32_t k : th.objects)
+      section_terms_[static_cast<std::size_t>(k)] = section_terms(model_, model_.sections[static_cast<std::size_t>(k)]);
+  }
   for (std::size_t k = 0; k < th.objects.size(); ++k)
     for (const HistoryVariable* v : written)
       d.columns.push_back({th.object_ids[k], object_title(model_, th, k), std::string(v->name), std::string(v->unit),
@@ -472,7 +561,9 @@ void HistoryChannels::evaluate(const Request& r, const SolverState& s, const Vel
       case HistoryObject::Accelerometer:
         append(kAccelerometer, accelerometer_values(s.histories, o), r.getters, row);
         break;
-      case HistoryObject::Section: break;
+      case HistoryObject::Section:
+        append(kSection, section_values(m, s, m.sections[o], section_terms_[o]), r.getters, row);
+        break;
     }
   }
 }

@@ -14,6 +14,7 @@
 #include "crumple/solver/snapshot.hpp"
 #include "crumple/solver/accelerometers.hpp"
 #include "crumple/solver/node_rotations.hpp"
+#include "crumple/solver/sections.hpp"
 #include "solver/internal.hpp"
 
 namespace crumple::solver {
@@ -646,6 +647,8 @@ void apply_constraints(const Model& m, SolverState& s, VelocityScratch& scratch,
   // /ACCEL: only a deck with accelerometers has any (a loop over them, not over the nodes).
   update_accelerometers(m.accelerometers, n, {&scratch.before[0], &scratch.before[1], &scratch.before[2]}, dt_average,
                         s.histories);
+  // /TH/SECTIO WORK: only a deck that asks it (a loop over the sections' elements, not over the model).
+  add_section_work(m, s, scratch.before, dt_average);
 }
 
 void advance_positions(SolverState& s, double dt_next) {

@@ -8,6 +8,7 @@
 #include "crumple/core/geometry.hpp"
 #include "crumple/model/mass.hpp"
 #include "crumple/solver/accelerometers.hpp"
+#include "crumple/solver/sections.hpp"
 #include "crumple/solver/node_rotations.hpp"
 #include "solver/internal.hpp"
 
@@ -190,6 +191,7 @@ SolverState make_state(const Model& m, std::vector<std::string>& notes, Domain d
   setup_bricks(m, s);
   s.group_results.assign(m.element_groups.size(), GroupStepResult{});
   take_domain(m, s, std::move(domain));
+  setup_sections(m, s);  // /TH/SECTIO: after the domain, whose records it may restrict or read
   setup_rigid_bodies(m, s);
   setup_rigid_walls(m, s);
   setup_accelerometers(m.accelerometers.size(), s.histories);

@@ -1,6 +1,7 @@
 // The explicit time loop (docs/theory/time-loop.md): one cycle is the named phases of solver/cycle.hpp, in order.
 #include <chrono>
 
+#include "crumple/solver/sections.hpp"
 #include "crumple/solver/snapshot.hpp"
 #include "crumple/solver/solver.hpp"
 #include "solver/cycle.hpp"
@@ -127,6 +128,7 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunObse
     }
     if (due.frame) observer.frame(s);
     if (due.history) {
+      share_section_records(s, options.exchange);  // /TH/SECTIO, several domains: the sections' element loads
       VelocityChange change;
       for (std::size_t d = 0; d < 6; ++d) change.before[d] = &scratch.before[d], change.free[d] = &scratch.free[d];
       change.dt = dt_average;

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <iterator>
+#include <sstream>
 
 #include "crumple/core/geometry.hpp"
 #include "crumple/model/history_variables.hpp"
@@ -422,4 +423,54 @@ TEST(HistoryChannels, NodeRotationIsTheIntegralOfTheAngularVelocity) {
   EXPECT_EQ(row("NODE_9/5/DRX"), 0.0);
   EXPECT_EQ(channels.datasets().back().columns[0].unit, "-");
   EXPECT_EQ(channels.datasets().back().columns[0].label, "NODE_9/5/DRX");
+}
+
+// /TH/SECTIO (docs/output-format.md, "SECTIO", eqs. SEC-1 to SEC-5) from hand-made loads: the cut is nodes 2 and 5
+// (x = 0.01), the section's element shell 2 (nodes 2 3 6 5: slots 0 and 3 on the cut); the frame N1 = 2, N2 = 5,
+// N3 = 7 has e1 = y, e2 = x, e3 = -z. The run records the loads of shell 2's group only.
+TEST(HistoryChannels, SectionValuesFromKnownLoads) {
+  auto sect = [](int id, int iframe) {
+    return "/SECT/" + std::to_string(id) + "\ncut\n" + I(2) + I(5) + I(7) + I(11) + "\n" + blank(100) + "\n" + I(0) +
+           I(0) + I(6) + I(0) + I(0) + I(0) + I(0) + I(0) + I(0) + I(iframe) + "\n";
+  };
+  const std::string cards = "/GRNOD/NODE/11\ncut\n" + I(2) + I(5) + "\n/GRSHEL/SHEL/6\nright\n" + I(2) + "\n" +
+                            sect(1, 0) + sect(2, 2) + sect(3, 12) + sect(4, 3) +
+                            th("/TH/SECTIO/9", var("DEF") + var("CENTER") + var("GLOBAL") + var("LOCAL") + var("WORK"),
+                               I(1) + I(2) + I(3) + I(4) + "\n");
+  Fixture f(cards);
+  const Model& m = f.model();
+  SolverState& s = f.state;
+  const auto shell2 = static_cast<std::size_t>(m.index.elements[0].at(2));
+  for (const ElementGroup& g : m.element_groups)  // only shell 2's group records
+    EXPECT_EQ(s.shells.records.on(g.begin), g.kind == ElementKind::Shell4 && g.begin <= static_cast<std::int32_t>(shell2) &&
+                                                static_cast<std::int32_t>(shell2) < g.end);
+  ASSERT_TRUE(s.shells.records.covers(shell2));
+  const double first[6] = {1, 2, 3, 0.1, 0.2, 0.3}, last[6] = {4, 5, 6, 0.4, 0.5, 0.6};
+  std::copy(first, first + 6, s.shells.records.load_at(shell2, 0));
+  std::copy(last, last + 6, s.shells.records.load_at(shell2, 3));
+  std::fill(s.shells.records.load_at(shell2, 1), s.shells.records.load_at(shell2, 1) + 6, 1e3);  // not on the cut
+  ASSERT_EQ(s.shells.section_work.size(), 4 * m.elements[0].size());
+  s.shells.section_work[4 * shell2] = 2.5, s.shells.section_work[4 * shell2 + 3] = 1.5;
+  s.shells.section_work[4 * shell2 + 1] = 100.0;
+  s.nodes.mass[f.node(2)] = 1.0, s.nodes.mass[f.node(5)] = 3.0;
+  const HistoryChannels channels(m);
+  const Row r = evaluate(channels, s);
+  auto expect = [&](int section, const std::string& names, const std::vector<double>& values) {
+    std::istringstream words(names);
+    std::string name;
+    for (double v : values) {
+      words >> name;
+      EXPECT_NEAR(r("SECTIO_9/" + std::to_string(section) + "/" + name), v, 1e-12) << section << " " << name;
+    }
+  };
+  for (int k = 1; k <= 4; ++k) {
+    expect(k, "FNX FNY FNZ FTX FTY FTZ WORK", {0, 0, 9, 5, 7, 0, 4.0});  // F = (5, 7, 9), e3 = -z
+  }
+  // About N1 (x2): M = sum m + (x5 - x2) x f5 = (0.56, 0.7, 0.86); local axes e1 = y, e2 = x, e3 = -z.
+  expect(1, "MX MY MZ M1 M2 M3 F1 F2 F3 CX CY CZ", {0.56, 0.7, 0.86, 0.7, 0.56, -0.86, 7, 5, -9, 0.01, 0, 0});
+  // About the centre of gravity of the cut's nodes (masses 1 and 3): (0.01, 0.0075, 0).
+  expect(2, "MX MY MZ M1 M2 M3 CX CY CZ", {0.4925, 0.7, 0.8975, 0.7, 0.4925, -0.8975, 0.01, 0.0075, 0});
+  expect(3, "MX MY MZ M1 M2 M3 F1 F2 F3", {0.4925, 0.7, 0.8975, 0.4925, 0.7, 0.8975, 5, 7, 9});  // global axes
+  // About the origin: sum m + x2 x f2 + x5 x f5 = (0.56, 0.61, 0.93).
+  expect(4, "MX MY MZ CX CY CZ", {0.56, 0.61, 0.93, 0, 0, 0});
 }

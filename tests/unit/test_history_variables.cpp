@@ -61,3 +61,15 @@ TEST(HistoryVariables, SiFactorIsTheProductOfTheUnitSizes) {
   EXPECT_DOUBLE_EQ(si_factor({1, 2, -2}, kg_mm_ms), 1.0);     // 1 kg mm^2 / ms^2 = 1 J
   EXPECT_DOUBLE_EQ(si_factor({0, 0, 0}, kg_mm_ms), 1.0);
 }
+
+// /TH/SECTIO (docs/output-format.md, "SECTIO"): the manual's groups; WORKR and the imposed-section errors are named
+// but not written.
+TEST(HistoryVariables, SectionGroupsAndWhatIsWritten) {
+  EXPECT_EQ(names(select_history_variables(HistoryObject::Section, {"DEF"})),
+            (std::vector<std::string>{"FNX", "FNY", "FNZ", "FTX", "FTY", "FTZ", "M1", "M2", "M3"}));
+  EXPECT_EQ(names(select_history_variables(HistoryObject::Section, {"CENTER", "LOCAL", "GLOBAL", "WORK"})),
+            (std::vector<std::string>{"CX", "CY", "CZ", "F1", "F2", "F3", "M1", "M2", "M3", "FNX", "FNY", "FNZ", "FTX",
+                                      "FTY", "FTZ", "MX", "MY", "MZ", "WORK"}));
+  for (const HistoryVariable& v : history_kind(HistoryObject::Section).variables)
+    EXPECT_EQ(v.written, v.name != "WORKR" && !v.name.starts_with("DF") && !v.name.starts_with("DM")) << v.name;
+}

@@ -2,6 +2,7 @@
 // line, including the blank file-name line), with the errors for malformed cards.
 #include <gtest/gtest.h>
 
+#include "crumple/model/cut_sections.hpp"
 #include "deck_files.hpp"
 
 using namespace crumple;
@@ -198,10 +199,10 @@ TEST(OutputKeywords, HistoriesCrumpleDoesNotWriteAreNamedWarnings) {
   const Deck moments = read(th("/TH/INTER/5", var("|FNX|") + var("MX"), I(5) + "\n"));
   EXPECT_EQ(skipped(moments), (std::vector<std::string>{"/TH/INTER/5: output-only: variables MX not written (NAME.h5 "
                                                         "records the others)"}));
-  const Deck sections = read(section(11) + th("/TH/SECTIO/6", var("DEF"), I(11) + "\n"));
-  ASSERT_EQ(skipped(sections).size(), 2u);  // the /SECT card's note, then the history's
-  EXPECT_EQ(skipped(sections)[1],
-            "/TH/SECTIO/6: output-only: time history not written by Crumple (cut-section forces are not computed)");
+  // Sections: WORKR (the manual does not say what it is) and the errors of imposed sections are not written.
+  const Deck sections = read(section(11) + th("/TH/SECTIO/6", var("DEF") + var("WORKR") + var("DFX"), I(11) + "\n"));
+  EXPECT_EQ(skipped(sections), (std::vector<std::string>{"/TH/SECTIO/6: output-only: variables WORKR DFX not written "
+                                                         "(NAME.h5 records the others)"}));
   // Everything these ask for is in NAME.h5.
   const std::string all_written = th("/TH/PART/1", var("DEF") + var("XCG") + var("RKE"), I(1) + "\n") +
                                   th("/TH/SUBS/8", var("DEF"), I(30) + "\n") +
@@ -214,7 +215,11 @@ TEST(OutputKeywords, HistoriesCrumpleDoesNotWriteAreNamedWarnings) {
                                                        var("DRX") + var("DRZ"),
                                      I(1) + "\n") +
                                   th("/TH/SHELL/3", var("STRESS") + var("PLAS") + var("OFF") + var("EPSD"),
-                                     I(1) + I(0) + "\n");
+                                     I(1) + I(0) + "\n") +
+                                  section(11) +
+                                  th("/TH/SECTIO/6", var("DEF") + var("CENTER") + var("GLOBAL") + var("LOCAL") +
+                                                         var("WORK"),
+                                     I(11) + "\n");
   EXPECT_TRUE(skipped(read(all_written)).empty()) << all_warnings(read(all_written));
 }
 
@@ -320,4 +325,87 @@ TEST(OutputKeywords, EmptySectionIsAWarning) {
   for (const auto& w : d.report.warnings) all += w.text() + "\n";
   EXPECT_TRUE(contains(all, "no node group")) << all;
   EXPECT_TRUE(contains(all, "records nothing")) << all;
+}
+
+// /GRSH3N and /GRBRIC (docs/deck-format.md): element groups of 3-node shells and bricks, by ids or by parts, for
+// the sections' grtria_ID and grbric_ID; a member of another kind is not found.
+TEST(OutputKeywords, SectionsTakeTriangleAndBrickGroups) {
+  std::string cards = "/NODE\n";
+  for (int k = 0; k < 8; ++k)
+    cards += I(101 + k) + R(0.1 + 0.01 * (k % 2)) + R(0.01 * ((k / 2) % 2)) + R(0.01 * (k / 4)) + "\n";
+  cards += "/SH3N/2\n" + I(5) + I(1) + I(2) + I(4) + "\n" + I(6) + I(2) + I(5) + I(4) + "\n";
+  cards += "/PART/2\ntriangles\n" + I(1) + I(1) + "\n";
+  cards += "/BRICK/3\n" + I(9) + I(101) + I(102) + I(104) + I(103) + I(105) + I(106) + I(108) + I(107) + "\n";
+  cards += "/PART/3\nbrick\n" + I(3) + I(1) + "\n/PROP/SOLID/3\nsolid\n" + I(1) + "\n" + R(0.0) + R(0.0) + R(0.0) + "\n";
+  cards += "/GRSH3N/SH3N/7\ntriangles\n" + I(6) + "\n/GRSH3N/PART/8\nby part\n" + I(2) + "\n";
+  cards += "/GRBRIC/BRIC/9\nbrick\n" + I(9) + "\n/GRBRIC/PART/10\nby part\n" + I(3) + "\n";
+  const std::string groups = I(9) + I(0) + I(6) + I(0) + I(0) + I(0) + I(7) + I(0) + I(0) + I(1);
+  const Deck d = read(cards + section(1, groups) + th("/TH/SECTIO/6", var("DEF"), I(1) + "\n"));
+  const Model& m = d.model;
+  ASSERT_EQ(m.sh3n_groups.size(), 2u);
+  ASSERT_EQ(m.brick_groups.size(), 2u);
+  const auto sh3n = static_cast<std::int32_t>(m.index.elements[static_cast<int>(ElementKind::Shell3)].at(6));
+  EXPECT_EQ(m.sh3n_groups[0].elements, (std::vector<std::int32_t>{sh3n}));
+  EXPECT_EQ(m.sh3n_groups[1].elements.size(), 2u);
+  EXPECT_EQ(m.brick_groups[0].elements, (std::vector<std::int32_t>{0}));
+  EXPECT_EQ(m.brick_groups[1].elements, (std::vector<std::int32_t>{0}));
+  const Section& s = m.sections[0];
+  EXPECT_EQ(s.brick_group, 0);
+  EXPECT_EQ(s.shell_group, 0);
+  EXPECT_EQ(s.sh3n_group, 0);
+  EXPECT_EQ(s.nodes[0], m.index.nodes.at(1));
+  EXPECT_EQ(s.nodes[2], m.index.nodes.at(4));
+  const auto elements = section_elements(m, s);
+  EXPECT_EQ(elements[0].size(), 2u);  // shells 1, 2
+  EXPECT_EQ(elements[1], (std::vector<std::int32_t>{sh3n}));
+  EXPECT_EQ(elements[2], (std::vector<std::int32_t>{0}));
+  EXPECT_TRUE(d.report.warnings.empty()) << all_warnings(d);
+  const std::string other = error_of(cards + "/GRSH3N/SH3N/11\nwrong kind\n" + I(1) + "\n");
+  EXPECT_TRUE(contains(other, "/GRSH3N/SH3N/11: field sh3n_ID")) << other;
+  EXPECT_TRUE(contains(other, "3-node shell 1 not defined")) << other;
+  const std::string brick = error_of(cards + section(1, I(99)));
+  EXPECT_TRUE(contains(brick, "field grbric_ID")) << brick;
+  EXPECT_TRUE(contains(brick, "brick group 99 not defined")) << brick;
+}
+
+// What a section sums (include/crumple/model/cut_sections.hpp): the slots of its elements at its nodes, in model
+// order. Nodes 3 and 6 are the plate's edge x = 0.02, which only shell 2 (nodes 2 3 6 5) touches.
+TEST(OutputKeywords, SectionTermsAreTheElementsNodesOnTheCut) {
+  const std::string groups = I(0) + I(0) + I(6) + I(0) + I(0) + I(0) + I(0) + I(0) + I(0) + I(1);
+  const std::string frame = I(3) + I(6) + I(7) + I(14) + I(0) + I(0) + R(0.0) + R(0.0);
+  const Deck d = read(section(1, groups, frame) + th("/TH/SECTIO/6", var("DEF"), I(1) + "\n"));
+  const Model& m = d.model;
+  const std::vector<SectionTerm> terms = section_terms(m, m.sections[0]);
+  ASSERT_EQ(terms.size(), 2u);
+  const auto shell2 = m.index.elements[static_cast<int>(ElementKind::Shell4)].at(2);
+  EXPECT_EQ(terms[0].kind, ElementKind::Shell4);
+  EXPECT_EQ(terms[0].element, shell2);
+  EXPECT_EQ(terms[0].slot, 1);
+  EXPECT_EQ(terms[0].node, m.index.nodes.at(3));
+  EXPECT_EQ(terms[1].slot, 2);
+  EXPECT_EQ(terms[1].node, m.index.nodes.at(6));
+}
+
+// A section that /TH/SECTIO writes needs its frame (three nodes off one line) and no interfaces across the cut
+// (their forces are not in the sums); a section no request writes is only read.
+TEST(OutputKeywords, WrittenSectionsNeedAFrameAndNoInterfaces) {
+  const std::string groups = I(0) + I(0) + I(6);
+  auto written = [&](const std::string& card) { return card + th("/TH/SECTIO/6", var("DEF"), I(1) + "\n"); };
+  const std::string interfaces = written(section(1, groups + blank(40) + I(1)) + I(5) + "\n");
+  EXPECT_TRUE(contains(error_of(interfaces), "/SECT/1: field Ninter")) << error_of(interfaces);
+  EXPECT_TRUE(contains(error_of(interfaces), "not supported by Crumple")) << error_of(interfaces);
+  EXPECT_TRUE(error_of(section(1, groups + blank(40) + I(1)) + I(5) + "\n").empty());  // not written: read only
+  const std::string blank_node = written(section(1, groups, I(1) + I(2) + I(0) + I(10)));
+  EXPECT_TRUE(contains(error_of(blank_node), "field node_ID3")) << error_of(blank_node);
+  const std::string in_line = written(section(1, groups, I(1) + I(2) + I(3) + I(10)));  // nodes 1 2 3 on y = 0
+  EXPECT_TRUE(contains(error_of(in_line), "a node off the line N1N2")) << error_of(in_line);
+  const std::string same_place = written(section(1, groups, I(1) + I(1) + I(3) + I(10)));
+  EXPECT_TRUE(contains(error_of(same_place), "field node_ID2")) << error_of(same_place);
+  test::TempDir dir;
+  ReadOptions skip;
+  skip.skip_unknown = true;
+  const Deck skipped = read_deck(starter(dir, interfaces), skip);
+  EXPECT_EQ(skipped.model.sections[0].ninter, 0);
+  EXPECT_TRUE(skipped.model.sections[0].interfaces.empty());
+  EXPECT_FALSE(skipped.report.skipped_options.empty());
 }

@@ -39,8 +39,9 @@ struct Accelerometer {  // /ACCEL
   std::int32_t node = -1;    // dense index (model build)
 };
 
-// /SECT (docs/cards/loads-output-engine.md §6.2). The reader accepts ISAVE = 0 only, no moving frame, and a
-// 4-node shell group (/GRSHEL) as the only element group; the other element-group ids stay 0.
+// /SECT (docs/cards/loads-output-engine.md §6.2; what /TH/SECTIO writes of it: docs/output-format.md, "SECTIO").
+// The reader accepts ISAVE = 0 only, no moving frame, and element groups of the kinds Crumple has: 4-node shells
+// (/GRSHEL), 3-node shells (/GRSH3N) and bricks (/GRBRIC); the other element-group ids stay 0.
 struct Section {  // /SECT
   SourceLocation where;
   std::int64_t user_id = 0;
@@ -56,10 +57,11 @@ struct Section {  // /SECT
                spring_group_id = 0, sh3n_group_id = 0;
   int ninter = 0;
   int iframe = 0;  // moment reference: 0 origin of the N1N2N3 frame, 1 geometric centre, 2 centre of gravity,
-                   // 3 point (0,0,0) of the frame; 10..13 the same in the global frame
+                   // 3 point (0,0,0); 10..13 the same with the axes of the global frame
   std::vector<std::int64_t> interface_ids;  // Ninter ids of interfaces whose forces cross the cut
+  std::int32_t nodes[3] = {-1, -1, -1};     // frame nodes, dense indices (model build; -1 when blank)
   std::int32_t node_group = -1;
-  std::int32_t shell_group = -1;
+  std::int32_t shell_group = -1, sh3n_group = -1, brick_group = -1;
   std::vector<std::int32_t> interfaces;  // dense indices (model build)
 };
 

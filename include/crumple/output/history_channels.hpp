@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "crumple/model/cut_sections.hpp"
 #include "crumple/model/model.hpp"
 #include "crumple/solver/solver_state.hpp"
 
@@ -27,7 +28,7 @@ struct HistoryColumn {
 // order of the request (groups expanded).
 struct HistoryDataset {
   std::string name;     // "<KIND>_<thgroup id>", e.g. "NODE_2" (a second card of the same kind and id: "NODE_2_2")
-  std::string kind;     // "NODE", "PART", "SUBS", "SHEL", "SH3N", "BRIC", "INTER", "RWALL", "RBODY", "ACCEL"
+  std::string kind;     // "NODE", "PART", "SUBS", "SHEL", "SH3N", "BRIC", "INTER", "RWALL", "RBODY", "SECTIO", "ACCEL"
   std::string keyword;  // the card's keyword line: "/TH/NODE/2"
   std::int64_t id = 0;  // thgroup id
   std::string title;
@@ -71,6 +72,7 @@ class HistoryChannels {
   std::vector<std::pair<std::int32_t, double>> node_share_;  // part, share
   std::vector<std::vector<std::int32_t>> subset_parts_;      // per subset: its parts and its subsets' parts, once each
   std::array<std::vector<std::int32_t>, kElementKinds> element_group_;  // per element of each kind: its group
+  std::vector<std::vector<SectionTerm>> section_terms_;  // per /SECT (written ones only): what its values sum
 };
 
 }  // namespace crumple

@@ -50,6 +50,7 @@ void visit_shells(V& v, const std::string& at, ShellState& s) {
         {"gauss_shear", &s.gauss_shear}, {"gauss_bending", &s.gauss_bending}, {"mass", &s.mass},
         {"hourglass_energy", &s.hourglass_energy}})
     v(at + name, *field);
+  if (!s.section_work.empty()) v(at + "section_work", s.section_work);  // only when /TH/SECTIO asks WORK
   v(at + "small_strain", s.small_strain);
   v(at + "deleted", s.deleted);
 }
@@ -63,6 +64,7 @@ void visit_bricks(V& v, const std::string& at, BrickState& b) {
         {"hourglass_energy", &b.hourglass_energy}, {"critical_dt", &b.critical_dt}, {"mass", &b.mass},
         {"reference_shape", &b.reference_shape}, {"reference_frame", &b.reference_frame}})
     v(at + name, *field);
+  if (!b.section_work.empty()) v(at + "section_work", b.section_work);
   v(at + "small_strain", b.small_strain);
   v(at + "deleted", b.deleted);
 }

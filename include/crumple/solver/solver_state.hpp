@@ -84,6 +84,10 @@ struct HistoryIntegrals {
   // their angular velocity, sum w^(n+1/2) dt^(n+1/2) since the start (global axes) [-].
   std::vector<std::int32_t> rotation_nodes;
   std::vector<double> rotation;
+  // /TH/SECTIO (solver/sections.hpp): per element kind, the elements of the sections a request asks WORK of (the
+  // cycle integrates their work, ShellState::section_work), and in a run of several domains each element's domain
+  // when a written section reads it, else -1 (their records travel at a history row).
+  std::array<std::vector<std::int32_t>, kElementKinds> section_work_elements, section_record_owner;
 };
 
 struct SolverState {

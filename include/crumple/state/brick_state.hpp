@@ -27,7 +27,9 @@ struct BrickState {
   std::vector<double> critical_dt;       // critical step of the last cycle (eq. B-12) [T]
   std::vector<double> mass;              // element mass [M] (nodal time-step estimate)
   std::vector<std::uint8_t> deleted;     // 1 once the element has failed
-  ElementRecords records;                // the last cycle's loads and energies per element (several domains only)
+  ElementRecords records;                // the last cycle's loads and energies per element (several domains, or
+                                         // the groups of the cut sections /TH/SECTIO writes)
+  std::vector<double> section_work;      // /TH/SECTIO WORK per element and node (ShellState::section_work)
   // Small strain (Ismstr 1, 3 from t = 0; Ismstr 2 once /DT/BRICK/CST switches it, docs/theory/brick8.md B-14):
   // the element computes its strains, forces and step on the frozen reference shape.
   std::vector<std::uint8_t> small_strain;  // 1 when the element runs on its reference shape

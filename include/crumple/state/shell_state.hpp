@@ -37,7 +37,11 @@ struct ShellState {
   std::vector<double> mass;             // element mass [M] (nodal stiffness estimate of the nodal time step)
   std::vector<double> hourglass_energy; // [M L^2 T^-2]
   std::vector<std::uint8_t> deleted;    // 1 once the element has failed
-  ElementRecords records;               // the last cycle's loads and energies per element (several domains only)
+  ElementRecords records;               // the last cycle's loads and energies per element (several domains, or
+                                        // the groups of the cut sections /TH/SECTIO writes)
+  // /TH/SECTIO WORK: per element and node, the work of the element's load at the node since the start, for the
+  // elements of the sections a request asks WORK of; empty otherwise [M L^2 T^-2].
+  std::vector<double> section_work;
 
   // Sizes the per-element arrays for n elements of the given thickness, every other value zero.
   void resize_elements(std::size_t n, double initial_thickness) {

@@ -93,11 +93,8 @@ void note_what_is_written(const TimeHistoryRequest& th, DeckContext& context) {
   }
   if (missing.empty() && selection.unknown.empty()) return;
   std::vector<std::string> parts;
-  if (th.object == HistoryObject::Section)
-    parts.push_back("time history not written by Crumple (cut-section forces are not computed)");
-  else if (written == 0)
-    parts.push_back("time history not written by Crumple");
-  if (!missing.empty() && th.object != HistoryObject::Section)
+  if (written == 0) parts.push_back("time history not written by Crumple");
+  if (!missing.empty())
     parts.push_back(fmt::format("variables {} not written{}", fmt::join(missing, " "),
                                 written > 0 ? " (NAME.h5 records the others)" : ""));
   if (!selection.unknown.empty())
@@ -183,23 +180,26 @@ void read_section_frame(const Line& line, Section& s) {
   if (s.alpha < 0.0) line.fail(81, 20, "alpha", "a non-negative filter coefficient");
 }
 
-// Element groups: only 4-node shell groups exist in Crumple's keyword set (/GRSHEL).
+// Element groups: 4-node shells (/GRSHEL), 3-node shells (/GRSH3N) and bricks (/GRBRIC); Crumple has no 2-D
+// quads, trusses, beams or springs.
 void read_section_groups(const Line& line, Section& s) {
   struct Field { int column; std::string_view name; std::string_view missing; };
-  constexpr std::array<Field, 6> unsupported{{
-      {1, "grbric_ID", "brick groups (/GRBRIC) are"},
+  constexpr std::array<Field, 4> unsupported{{
       {11, "grquad_ID", "2-D quad groups are"},
       {31, "grtrus_ID", "truss groups are"},
       {41, "grbeam_ID", "beam groups are"},
       {51, "grsprg_ID", "spring groups are"},
-      {61, "grtria_ID", "3-node shell groups (/GRSH3N) are"},
   }};
   for (const Field& f : unsupported) {
     const std::int64_t id = line.integer(f.column, 10, f.name);
     if (id != 0) line.fail(f.column, 10, f.name, fmt::format("0 or blank ({} not supported by Crumple)", f.missing));
   }
+  s.brick_group_id = line.integer(1, 10, "grbric_ID");
+  if (s.brick_group_id < 0) line.fail(1, 10, "grbric_ID", "a brick group id or blank");
   s.shell_group_id = line.integer(21, 10, "grshel_ID");
   if (s.shell_group_id < 0) line.fail(21, 10, "grshel_ID", "a shell group id or blank");
+  s.sh3n_group_id = line.integer(61, 10, "grtria_ID");
+  if (s.sh3n_group_id < 0) line.fail(61, 10, "grtria_ID", "a 3-node shell group id or blank");
   s.ninter = static_cast<int>(line.integer(71, 10, "Ninter"));
   if (s.ninter < 0 || s.ninter > 10) line.fail(71, 10, "Ninter", "a number of interfaces from 0 to 10");
   if (line.integer(81, 10, "(unused)") != 0)
@@ -235,9 +235,8 @@ void read_section(CardReader& reader, DeckContext& context) {
   reader.finish();
   const std::string& kw = reader.card().keyword;
   if (s.node_group_id == 0) context.warn(s.where, kw, "no node group (grnod_ID): the cut has no nodes");
-  if (s.shell_group_id == 0 && s.ninter == 0)
+  if (s.shell_group_id == 0 && s.sh3n_group_id == 0 && s.brick_group_id == 0 && s.ninter == 0)
     context.warn(s.where, kw, "no element group and no interface: the section records nothing");
-  context.note(s.where, kw, "", "output-only: cut-section forces are not written by Crumple", SkipKind::OutputOnly);
   context.model.sections.push_back(std::move(s));
 }
 
