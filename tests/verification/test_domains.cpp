@@ -9,6 +9,7 @@
 #include <thread>
 
 #include "crumple/deck/reader.hpp"
+#include "crumple/output/history_channels.hpp"
 #include "crumple/parallel/thread_exchange.hpp"
 #include "crumple/solver/quiet_observer.hpp"
 #include "crumple/solver/solver.hpp"
@@ -127,6 +128,60 @@ TEST_P(Domains, TwoAndThreeDomainsEndBitForBitWhereOneEnds) {
       const DomainRun& r = runs[static_cast<std::size_t>(d)];
       expect_same_nodes_and_energies(one, r, d);
       expect_own_elements(m, one, r, make_domain(m, p, d));
+    }
+  }
+}
+
+// /TH/SECTIO (docs/output-format.md, "SECTIO"): box_crush's eight sections, asked every variable Crumple writes
+// (WORK too, integrated by the domain that computes each element), give at every history row the one domain's
+// values bit for bit in every domain: the records of the sections' elements travel from their domains at the row
+// and every sum runs in model order.
+TEST(DomainSections, BoxCrushSectionHistoriesBitForBit) {
+  Model m = read_deck(kQa / "box_crush" / "BOX1BL_0000.rad").model;
+  for (TimeHistoryRequest& th : m.histories)
+    if (th.object == HistoryObject::Section)
+      for (const char* name : {"CENTER", "GLOBAL", "LOCAL", "WORK"}) th.variables.push_back(name);
+  using Rows = std::vector<std::vector<double>>;  // per row: the SECTIO columns
+  auto run = [&m](Domain domain, Exchange* exchange, Rows& rows) {
+    std::vector<std::string> notes;
+    SolverState state = initial_state(m, notes, std::move(domain));
+    HistoryChannels channels(m);
+    SolverOptions options;
+    options.exchange = exchange;
+    options.on_history_row = [&](const SolverState& s) {
+      std::vector<std::vector<double>> values;
+      channels.evaluate(s, VelocityChange{}, values);
+      for (std::size_t d = 0; d < channels.datasets().size(); ++d)
+        if (channels.datasets()[d].kind == "SECTIO") rows.push_back(values[d]);
+    };
+    QuietObserver quiet;
+    return run_engine_deck(m, options, quiet, state, notes);
+  };
+  Rows one;
+  ASSERT_EQ(run(single_domain(m), nullptr, one).status, RunStatus::Normal);
+  ASSERT_GT(one.size(), 50u);
+  // DEF, CENTER, GLOBAL, LOCAL, WORK: FNX .. M3, CX CY CZ, MX MY MZ, F1 F2 F3, WORK per section.
+  ASSERT_EQ(one.front().size(), 8u * 19u);
+  double work = 0.0;
+  for (std::size_t s = 0; s < 8; ++s) work += std::abs(one.back()[19 * s + 18]);
+  EXPECT_GT(work, 0.0);
+  for (const auto& [domains, round_robin] : {std::pair{2, true}, std::pair{3, false}}) {
+    SCOPED_TRACE(testing::Message() << domains << " domains, " << (round_robin ? "round-robin" : "blocks"));
+    const Partition p = test_partition(m, domains, round_robin);
+    ThreadBoard board(p.domains);
+    std::vector<ThreadExchange> exchanges;
+    for (int d = 0; d < domains; ++d) exchanges.emplace_back(board, d);
+    std::vector<Rows> rows(static_cast<std::size_t>(domains));
+    std::vector<std::thread> threads;
+    for (int d = 0; d < domains; ++d)
+      threads.emplace_back([&, d] {
+        run(make_domain(m, p, d), &exchanges[static_cast<std::size_t>(d)], rows[static_cast<std::size_t>(d)]);
+      });
+    for (std::thread& t : threads) t.join();
+    for (int d = 0; d < domains; ++d) {
+      const Rows& r = rows[static_cast<std::size_t>(d)];
+      ASSERT_EQ(r.size(), one.size()) << "domain " << d;
+      for (std::size_t k = 0; k < r.size(); ++k) EXPECT_TRUE(same_bits(r[k], one[k])) << "domain " << d << " row " << k;
     }
   }
 }
