@@ -4,8 +4,9 @@
 // friction history, rigid bodies, walls, energies, cycle count) and every history row written after the restart,
 // the /TH datasets' included.
 // The decks cover shells with a rigid body and a rigid wall (the example tube), TYPE7 contact with friction and a
-// rigid body of bricks (contact_idel), a continued run (ball_two_runs, stopped in its first engine deck), and
-// accelerometers, whose filters and integrals carry over (accel_strip).
+// rigid body of bricks (contact_idel), a continued run (ball_two_runs, stopped in its first engine deck),
+// accelerometers, whose filters and integrals carry over (accel_strip), and cut sections, whose work integrals
+// carry over and whose loads the first cycle after the restart records again (section_strip).
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -125,7 +126,8 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(RestartCase{"tube", kDecks / "tube_impact" / "TUBE_0000.rad", 3000},
                       RestartCase{"contact_idel", kQa / "contact_idel" / "IDEL8_0000.rad", 333},
                       RestartCase{"ball_two_runs", kQa / "ball_two_runs" / "BOULE1V4_0000.rad", 777},
-                      RestartCase{"accel_strip", kTestDecks / "accel_strip" / "ACCEL_0000.rad", 300}),
+                      RestartCase{"accel_strip", kTestDecks / "accel_strip" / "ACCEL_0000.rad", 300},
+                      RestartCase{"section_strip", kTestDecks / "section_strip" / "SECT_0000.rad", 600}),
     [](const auto& p) { return std::string(p.param.name); });
 
 TEST(Restart, FileOfAnotherModelIsRefusedWithItsCounts) {
