@@ -3,6 +3,7 @@
 
 #include <algorithm>
 
+#include "crumple/model/cut_sections.hpp"
 #include "resolve.hpp"
 
 namespace crumple::deck {
@@ -81,6 +82,11 @@ void check_written_section(Resolver& r, Section& s) {
               "a node (N1, N2 and N3 define the frame of a section that /TH/SECTIO writes)", "blank");
       return;
     }
+  // A cut and elements that do not meet (the card's other warnings cover a missing group): the values would be 0.
+  const bool elements = s.shell_group >= 0 || s.sh3n_group >= 0 || s.brick_group >= 0;
+  if (s.node_group >= 0 && elements && section_terms(r.model, s).empty())
+    r.context.warn(s.where, kw, "no element of the section's groups has a node of its cut (grnod_ID): its force and "
+                                "moment are 0");
   if (s.nodes[0] < 0 || s.nodes[1] < 0 || s.nodes[2] < 0) return;  // reported already
   const Nodes& n = r.model.nodes;
   const Vec3 u = n.position(s.nodes[1]) - n.position(s.nodes[0]), w = n.position(s.nodes[2]) - n.position(s.nodes[0]);

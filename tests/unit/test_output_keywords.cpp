@@ -401,6 +401,12 @@ TEST(OutputKeywords, WrittenSectionsNeedAFrameAndNoInterfaces) {
   EXPECT_TRUE(contains(error_of(in_line), "a node off the line N1N2")) << error_of(in_line);
   const std::string same_place = written(section(1, groups, I(1) + I(1) + I(3) + I(10)));
   EXPECT_TRUE(contains(error_of(same_place), "field node_ID2")) << error_of(same_place);
+  // Nodes 1, 4 (x = 0) are not nodes of shell 2 (group 6 holds shells 1 and 2; shell 1 has them): a group of shell 2
+  // alone and a cut at x = 0 do not meet.
+  const std::string apart = "/GRSHEL/SHEL/16\nright\n" + I(2) + "\n/GRNOD/NODE/17\nleft edge\n" + I(1) + I(4) + "\n" +
+                            written(section(1, I(0) + I(0) + I(16), I(1) + I(2) + I(4) + I(17)));
+  EXPECT_TRUE(warned(read(apart), "no element of the section's groups has a node of its cut")) << all_warnings(read(apart));
+  EXPECT_FALSE(warned(read(written(section(1))), "has a node of its cut"));
   test::TempDir dir;
   ReadOptions skip;
   skip.skip_unknown = true;
