@@ -81,6 +81,11 @@ void setup_sections(const Model& m, SolverState& s) {
       owner.assign(r.size(), -1);
       for (std::size_t e = 0; e < r.size(); ++e)
         if (r[e] != 0) owner[e] = s.domain.owner[static_cast<std::size_t>(k)][e];
+      // This domain's groups that hold a read element record (the domain records only the groups others need).
+      ElementRecords& records = records_of(s, static_cast<ElementKind>(k));
+      for (const ElementGroup& g : m.element_groups)
+        if (static_cast<int>(g.kind) == k && std::any_of(r.begin() + g.begin, r.begin() + g.end, [](std::uint8_t x) { return x != 0; }))
+          records.only[static_cast<std::size_t>(g.begin)] = 1;
     }
   }
   const auto work = read_elements(m, objects_with_history(m, HistoryObject::Section, kWork));

@@ -152,14 +152,28 @@ namespace crumple::solver {
 namespace {
 
 // One domain of a run of several (docs/parallel.md): the elements of the other domains are marked as computed
-// elsewhere (the kernels skip them), and every element's loads and energies are recorded for the assembly.
+// elsewhere (the kernels skip them), and the groups whose loads or energies other domains need are recorded: the
+// groups with an element at a shared node (its loads travel, Domain::record_halo) and the groups split among
+// domains (their energies are summed from the records).
 void take_domain(const Model& m, SolverState& s, Domain domain) {
   s.domain = std::move(domain);
   if (!s.domain.several()) return;
   for (int k = 0; k < kElementKinds; ++k) {
     const auto kind = static_cast<ElementKind>(k);
-    element_view(s, kind).records.start(m.elements[static_cast<std::size_t>(k)].size(), nodes_per_element(kind),
-                                        kind == ElementKind::Brick8 ? 3 : 6);
+    const std::size_t size = m.elements[static_cast<std::size_t>(k)].size();
+    ElementRecords& records = element_view(s, kind).records;
+    records.start(size, nodes_per_element(kind), kind == ElementKind::Brick8 ? 3 : 6);
+    std::vector<std::uint8_t> sent(size, 0);
+    for (const auto& list : s.domain.record_halo[static_cast<std::size_t>(k)].send)
+      for (std::uint32_t e : list) sent[e] = 1;
+    records.only.assign(size, 0);
+    for (std::size_t g = 0; g < m.element_groups.size(); ++g) {
+      const ElementGroup& group = m.element_groups[g];
+      if (group.kind != kind) continue;
+      const bool needed = s.domain.group_owner[g] < 0 ||
+                          std::any_of(sent.begin() + group.begin, sent.begin() + group.end, [](std::uint8_t x) { return x != 0; });
+      if (needed) records.only[static_cast<std::size_t>(group.begin)] = 1;
+    }
   }
   mark_domain(s);
   for (std::size_t g = 0; g < m.element_groups.size(); ++g) {  // groups are kind by kind, points group by group
