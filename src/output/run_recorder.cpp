@@ -131,6 +131,10 @@ std::string describe(const RunEvent& e, const Model& m) {
       return fmt::format("{} WARNING: energy error {:.3g} % (beyond 10 %): the energy balance is not kept; the run "
                          "may be going unstable, or mass scaling or contact releases add or take energy",
                          when, e.value);
+    case K::Rebalanced:
+      return fmt::format("{} DOMAINS REPARTITIONED: estimated imbalance {:.3f} -> {:.3f} (flowing plastic points weigh "
+                         "more; the results do not depend on the partition)",
+                         when, e.value, e.second_value);
   }
   return when;
 }

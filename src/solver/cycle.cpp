@@ -419,8 +419,18 @@ void share_contact_state(SolverState& s, Exchange& exchange) {
 void share_node_state(const Model& m, SolverState& s, Exchange& exchange, bool restart) {
   NodalState& n = s.nodes;
   const std::vector<std::int32_t>& owner = s.domain.node_owner;
-  for (auto* v : {&n.x, &n.y, &n.z, &n.vx, &n.vy, &n.vz, &n.wx, &n.wy, &n.wz, &n.fx, &n.fy, &n.fz, &n.mx, &n.my, &n.mz})
+  // The mass too: /DT/INTER/CST adds it where the node's pairs are computed.
+  for (auto* v : {&n.x, &n.y, &n.z, &n.vx, &n.vy, &n.vz, &n.wx, &n.wy, &n.wz, &n.fx, &n.fy, &n.fz, &n.mx, &n.my, &n.mz,
+                  &n.mass})
     exchange.share(*v, 1, owner);
+  // Tied walls keep which nodes they hold, where the node is local.
+  SolverState::GroupShare& w = s.group_share;
+  if (w.wall_node_owner.size() != s.walls.size()) {
+    w.wall_node_owner.assign(s.walls.size(), {});
+    for (std::size_t i = 0; i < s.walls.size(); ++i)
+      for (std::int32_t k : s.walls[i].nodes) w.wall_node_owner[i].push_back(owner[static_cast<std::size_t>(k)]);
+  }
+  for (std::size_t i = 0; i < s.walls.size(); ++i) exchange.share(s.walls[i].tied, 1, w.wall_node_owner[i]);
   if (!s.contact.interfaces.empty()) {
     // The contact force field: each node's from its owner; every node with one is then to be cleared by the next
     // pass (so that a restart starts with the same list everywhere).
@@ -435,7 +445,6 @@ void share_node_state(const Model& m, SolverState& s, Exchange& exchange, bool r
   for (auto* v : {&r.acceleration, &r.internal_force, &r.external_force})
     if (!v->empty()) exchange.share(*v, 3, owner);
   // Output-only integrals of the cycle, kept right by the domain their node is local to.
-  SolverState::GroupShare& w = s.group_share;
   HistoryIntegrals& h = s.histories;
   if (!m.accelerometers.empty()) {
     if (w.accelerometer_owner.empty())

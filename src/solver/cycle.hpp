@@ -8,6 +8,7 @@
 
 #include "crumple/model/model.hpp"
 #include "crumple/parallel/exchange.hpp"
+#include "crumple/parallel/partition.hpp"
 #include "crumple/solver/run_events.hpp"
 #include "crumple/solver/solver_state.hpp"
 
@@ -111,5 +112,15 @@ bool stop_requested(const std::atomic<int>* request, SolverState& state, RunEven
                     Exchange* exchange, bool check_now);
 // The next output times once a frame or a history row has been written at the state's time.
 void advance_schedule(const Model& model, const SolverState& state, const MonitorDue& due, OutputSchedule& schedule);
+
+// 8. Several domains (solver/rebalance.cpp, docs/parallel.md "Rebalancing"): every kRebalanceEvery cycles the
+// estimated imbalance is checked, and above kRebalanceTolerance every domain takes its share of a new partition.
+inline constexpr long long kRebalanceEvery = 100;
+inline constexpr double kRebalanceTolerance = 0.05;
+bool rebalance_due(const SolverState& state);
+// `repartition` (tests): the new partition to take, whatever the imbalance; empty: METIS with the yielded elements
+// weighed, when the imbalance is above the tolerance.
+void rebalance(const Model& model, SolverState& state, Exchange& exchange, RunEvents& events,
+               const Repartition& repartition);
 
 }  // namespace crumple::solver

@@ -29,6 +29,9 @@ void for_each_load_node(const Model& m, std::int32_t group, F f) {
 
 // Start state of a run; `notes` receives start-up remarks for the listing and the console.
 SolverState make_state(const Model& model, std::vector<std::string>& notes, Domain domain);
+// A run of several domains that repartitions (docs/parallel.md, "Rebalancing"): the state, whose every element and
+// node is up to date in every domain, takes `domain`, and everything made of the old one is made again.
+void rebind_domain(const Model& model, SolverState& state, Domain domain);
 void setup_rigid_bodies(const Model& model, SolverState& state);
 // Brick groups' parameters and state (setup_bricks.cpp, docs/theory/brick8.md).
 void setup_bricks(const Model& model, SolverState& state);

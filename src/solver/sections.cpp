@@ -67,7 +67,9 @@ std::vector<std::int32_t> written_sections(const Model& m) {
 
 }  // namespace
 
-void setup_sections(const Model& m, SolverState& s) {
+void setup_sections(const Model& m, SolverState& s) { bind_sections(m, s, false); }
+
+void bind_sections(const Model& m, SolverState& s, bool keep_work) {
   HistoryIntegrals& h = s.histories;
   const std::vector<std::int32_t> written = written_sections(m);
   if (written.empty()) return;
@@ -93,10 +95,11 @@ void setup_sections(const Model& m, SolverState& s) {
     const auto kind = static_cast<ElementKind>(k);
     auto& elements = h.section_work_elements[static_cast<std::size_t>(k)];
     const auto& w = work[static_cast<std::size_t>(k)];
+    elements.clear();
     for (std::size_t e = 0; e < w.size(); ++e)
       if (w[e] != 0 && (!s.domain.several() || s.domain.mine(kind, e)))
         elements.push_back(static_cast<std::int32_t>(e));
-    if (std::any_of(w.begin(), w.end(), [](std::uint8_t x) { return x != 0; }))
+    if (!keep_work && std::any_of(w.begin(), w.end(), [](std::uint8_t x) { return x != 0; }))
       section_work_of(s, kind).assign(w.size() * static_cast<std::size_t>(nodes_per_element(kind)), 0.0);
   }
 }

@@ -176,6 +176,7 @@ void take_domain(const Model& m, SolverState& s, Domain domain) {
     }
   }
   mark_domain(s);
+  for (auto& owner : s.point_owner) owner.clear();
   for (std::size_t g = 0; g < m.element_groups.size(); ++g) {  // groups are kind by kind, points group by group
     const ElementGroup& group = m.element_groups[g];
     const bool brick = group.kind == ElementKind::Brick8;
@@ -189,6 +190,23 @@ void take_domain(const Model& m, SolverState& s, Domain domain) {
 }
 
 }  // namespace
+
+void rebind_domain(const Model& m, SolverState& s, Domain domain) {
+  take_domain(m, s, std::move(domain));
+  // What was made of the old domain: the exchange scratch's owner arrays, the contact pass's division of its pairs
+  // and its node scratch, the cut sections' owners and recorded groups.
+  SolverState::GroupShare& w = s.group_share;
+  w.accelerometer_owner.clear(), w.rotation_owner.clear(), w.interface_node_owner.clear();
+  w.secondary_owner.clear(), w.pair_owner.clear(), w.wall_node_owner.clear();
+  for (ContactInterface& in : s.contact.interfaces) {
+    in.divided = false;
+    std::fill(in.node_touched.begin(), in.node_touched.end(), 0);
+    for (auto* v : {&in.node_tangent_sum, &in.node_reach_stiffness, &in.node_friction_viscosity})
+      std::fill(v->begin(), v->end(), 0.0);
+    in.touched_list.clear();
+  }
+  bind_sections(m, s, true);
+}
 
 SolverState make_state(const Model& m, std::vector<std::string>& notes, Domain domain) {
   SolverState s;

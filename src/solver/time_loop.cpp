@@ -140,6 +140,7 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunObse
     if (show_progress) observer.progress(s, dt_next, control);
     clock.lap(phases.output);
     if (due.finished || stop_requested(options.stop_request, s, events, options.exchange, due.energies())) break;
+    if (rebalance_due(s)) rebalance(m, s, *options.exchange, events, options.repartition);
   }
   update_kinetic_energy(s);
   if (s.domain.several()) share_element_state(s, *options.exchange), share_node_state(m, s, *options.exchange, true);

@@ -28,6 +28,8 @@ class Exchange {
   virtual void halo(std::vector<double>& values, int width, const HaloPlan& plan) = 0;
   // `owner` has changed since its last share (its slots travel differently): forget what was made of it.
   virtual void renew(const std::vector<std::int32_t>& owner) = 0;
+  // Every owner array may have changed (a new partition): forget everything made of them.
+  virtual void renew_all() = 0;
   // Every domain's `mine`, concatenated in domain order into `all` (lengths may differ between domains).
   virtual void gather(const std::vector<double>& mine, std::vector<double>& all) = 0;
 

@@ -42,6 +42,7 @@ class MpiExchange final : public Exchange {
   void share(std::vector<std::uint8_t>& values, int width, const std::vector<std::int32_t>& owner) override;
   void halo(std::vector<double>& values, int width, const HaloPlan& plan) override;
   void renew(const std::vector<std::int32_t>& owner) override;
+  void renew_all() override { layouts_.clear(); }
   void gather(const std::vector<double>& mine, std::vector<double>& all) override;
   void min_with_index(std::vector<double>& value, std::vector<std::int32_t>& index) override;
   void max(std::vector<std::int32_t>& values) override;

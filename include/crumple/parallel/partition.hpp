@@ -5,6 +5,7 @@
 // count only (same on every rank, every run).
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -28,9 +29,24 @@ struct Partition {
   std::vector<int> neighbours;       // per domain: how many other domains it shares nodes with
 };
 
+// Per element kind, per element: how many of its integration points flowed plastically over the last cycles (0 ..
+// 255). A point that flows costs a return to the yield surface on top of the element's elastic update: the weights
+// of a repartition during a run take it (docs/parallel.md, "Rebalancing").
+using PlasticPoints = std::array<std::vector<std::uint8_t>, kElementKinds>;
+
 // The partition of `model` into `domains` domains (>= 1). One domain: every element in domain 0, no METIS call.
+// With `plastic`, each element's weight grows by kPlasticPointShare of its elastic weight per flowing point.
 // Throws std::runtime_error when METIS fails or when domains exceeds the element count.
-Partition partition_model(const Model& model, int domains);
+Partition partition_model(const Model& model, int domains, const PlasticPoints* plastic = nullptr);
+
+// The cost of a point's plastic return against its element's elastic weight: 1 / kPlasticPointDivisor per point
+// (docs/parallel.md, "Rebalancing").
+inline constexpr int kPlasticPointDivisor = 3;
+// The weight METIS gives an element (element_weight) with `plastic_points` points flowing.
+int element_weight(const Model& model, ElementKind kind, std::size_t element, int plastic_points);
+
+// A partition of the model into `domains` domains, given the elements' flowing points (tests of rebalancing).
+using Repartition = std::function<Partition(const Model&, int domains, const PlasticPoints& plastic)>;
 
 // The partition's quality as listing lines.
 std::vector<std::string> describe(const Partition& partition);

@@ -31,6 +31,7 @@ class ThreadExchange final : public Exchange {
   void share(std::vector<std::uint8_t>& values, int width, const std::vector<std::int32_t>& owner) override;
   void halo(std::vector<double>& values, int width, const HaloPlan& plan) override;
   void renew(const std::vector<std::int32_t>& owner) override;
+  void renew_all() override {}
   void gather(const std::vector<double>& mine, std::vector<double>& all) override;
   void min_with_index(std::vector<double>& value, std::vector<std::int32_t>& index) override;
   void max(std::vector<std::int32_t>& values) override;

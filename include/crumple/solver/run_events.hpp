@@ -32,6 +32,8 @@ struct RunEvent {
     ContactBoundaryReleased,         // TYPE7 IBC: node index, value = the released dof mask
     HourglassShare,                  // hourglass energy above 10 % of the internal energy: value = the ratio
     EnergyErrorLarge,                // |energy error| above 10 %: value = the error in percent
+    Rebalanced,                      // several domains repartitioned: value, second_value = estimated imbalance
+                                     // before and after (largest domain's cost over the mean)
   };
   Kind kind;
   long long cycle = 0;
@@ -39,6 +41,7 @@ struct RunEvent {
   ElementKind element_kind = ElementKind::Shell4;
   std::int32_t index = -1;
   double value = 0.0;
+  double second_value = 0.0;
 };
 
 // Why a run ended before its end time. `kind` None while it runs on.

@@ -19,6 +19,9 @@ namespace crumple {
 // At the start (after the domain is taken): the records of the written sections' element groups (one domain) or
 // the owners of their records (several), and the work integrals of the sections a request asks WORK of.
 void setup_sections(const Model& model, SolverState& state);
+// The same for a state that has taken a new domain during the run (docs/parallel.md, "Rebalancing"); with
+// `keep_work`, the work integrals (gathered from their old domains) stay as they are.
+void bind_sections(const Model& model, SolverState& state, bool keep_work);
 
 // After the velocity update of a cycle (`before`: v^(n-1/2) x y z rx ry rz, `dt` = dt^n): the work of each WORK
 // element's recorded load at each of its nodes over the step, dt^n f . (v^(n-1/2) + v^(n+1/2)) / 2 (and the

@@ -7,6 +7,7 @@
 
 #include "crumple/model/model.hpp"
 #include "crumple/parallel/exchange.hpp"
+#include "crumple/parallel/partition.hpp"
 #include "crumple/solver/run_observer.hpp"
 
 namespace crumple {
@@ -26,6 +27,9 @@ struct SolverOptions {
   const std::atomic<int>* stop_request = nullptr;
   // A run of several domains: how this domain talks to the others (parallel/exchange.hpp); none for one domain.
   Exchange* exchange = nullptr;
+  // A run of several domains (tests): at each rebalancing check, the partition to take instead of the estimated
+  // one (docs/parallel.md, "Rebalancing"); empty: rebalance on the estimate.
+  Repartition repartition;
 };
 
 // The state of a model before its first cycle; `notes` receives the start-up remarks for the listing.

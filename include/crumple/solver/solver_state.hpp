@@ -133,9 +133,15 @@ struct SolverState {
     // Per interface, per secondary node, and per candidate pair (renewed at each sort): the owner of the
     // secondary node, for a restart snapshot of the contact state.
     std::vector<std::vector<std::int32_t>> secondary_owner, pair_owner;
+    std::vector<std::vector<std::int32_t>> wall_node_owner;  // per rigid wall, per candidate node: its owner
   } group_share;
   RecordedNodalResults recorded;
   HistoryIntegrals histories;
+  // Several domains, rebalancing (solver/rebalance.cpp): per element kind, every point's plastic strain at the last
+  // check (its growth since tells which points flow).
+  struct Rebalancing {
+    std::array<std::vector<double>, kElementKinds> eps_p_at_check;
+  } rebalancing;
 };
 
 // What every element kind has per element, for code that treats the kinds alike: the status byte
