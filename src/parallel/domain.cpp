@@ -133,6 +133,13 @@ void record_halos(const Model& m, Domain& d, const std::vector<std::int32_t>& se
   }
 }
 
+// Node k (ascending) joins the runs of consecutive nodes.
+void extend(std::vector<Domain::NodeRange>& ranges, std::size_t k) {
+  const auto node = static_cast<std::int32_t>(k);
+  if (!ranges.empty() && ranges.back().last == node) ++ranges.back().last;
+  else ranges.push_back({node, node + 1});
+}
+
 }  // namespace
 
 Domain make_domain(const Model& m, const Partition& partition, int index) {
@@ -154,9 +161,9 @@ Domain make_domain(const Model& m, const Partition& partition, int index) {
     const bool free = use.lowest[k] < 0;  // no element uses it: every domain advances it, domain 0 owns it
     several[k] = !free && use.lowest[k] != use.highest[k];
     d.node_owner[k] = free ? 0 : use.lowest[k];
-    if (free || used[k] || everywhere[k]) d.local_nodes.push_back(static_cast<std::int32_t>(k)), d.local[k] = 1;
+    if (free || used[k] || everywhere[k]) extend(d.local_nodes, k), d.local[k] = 1;
     d.multi_local[k] = free || everywhere[k] || several[k];
-    if (d.node_owner[k] == index) d.owned_nodes.push_back(static_cast<std::int32_t>(k));
+    if (d.node_owner[k] == index) extend(d.owned_nodes, k);
     if (several[k] && used[k]) d.shared_nodes.push_back(static_cast<std::int32_t>(k));
   }
   load_lists(m, d);

@@ -122,16 +122,25 @@ void list_members(const std::vector<std::int32_t>& vertex_of_element, std::int32
 }  // namespace
 
 ElementGraph build_element_graph(const Mesh& mesh, const std::vector<std::int32_t>& body_of_element,
-                                 const std::vector<std::int32_t>& element_weights) {
+                                 const std::vector<std::int32_t>& element_weights,
+                                 const std::vector<std::int32_t>* contact_weights) {
   ElementGraph graph;
   const std::int32_t vertices = number_vertices(body_of_element, graph.vertex_of_element);
   std::vector<std::int32_t> member_start, members;
   list_members(graph.vertex_of_element, vertices, member_start, members);
-  std::vector<std::int64_t> weight(static_cast<std::size_t>(vertices), 0);
-  for (std::size_t g = 0; g < element_weights.size(); ++g) weight[static_cast<std::size_t>(graph.vertex_of_element[g])] += element_weights[g];
-  std::int64_t total = 0;
-  for (const std::int64_t w : weight) total += w;
-  check_fits(total, "units of element weight");
+  graph.constraints = contact_weights != nullptr ? 2 : 1;
+  const auto ncon = static_cast<std::size_t>(graph.constraints);
+  std::vector<std::int64_t> weight(static_cast<std::size_t>(vertices) * ncon, 0);
+  for (std::size_t g = 0; g < element_weights.size(); ++g) {
+    const auto v = static_cast<std::size_t>(graph.vertex_of_element[g]);
+    weight[v * ncon] += element_weights[g];
+    if (contact_weights != nullptr) weight[v * ncon + 1] += (*contact_weights)[g];
+  }
+  for (std::size_t c = 0; c < ncon; ++c) {
+    std::int64_t total = 0;
+    for (std::size_t v = c; v < weight.size(); v += ncon) total += weight[v];
+    check_fits(total, "units of element weight");
+  }
   graph.vertex_weight.assign(weight.begin(), weight.end());
   // Neighbour u of v: last_of[u] == v once seen for v, its edge at slot_of[u]; the edge counts element pairs.
   std::vector<std::int32_t> seen(static_cast<std::size_t>(mesh.elements()), -1);

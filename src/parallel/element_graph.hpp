@@ -48,7 +48,8 @@ std::vector<std::int32_t> rigid_body_of_elements(const Mesh& mesh, const std::ve
 // The graph METIS partitions, in compressed form: vertex v's neighbours are adjacency[offsets[v] .. offsets[v+1]).
 struct ElementGraph {
   std::vector<std::int32_t> offsets, adjacency;
-  std::vector<std::int32_t> vertex_weight;  // the sum of its elements' weights
+  int constraints = 1;                      // weights per vertex: the element cost, and the contact cost if any
+  std::vector<std::int32_t> vertex_weight;  // per vertex, per constraint: the sum of its elements' weights
   std::vector<std::int32_t> edge_weight;    // how many element pairs the edge stands for
   std::vector<std::int32_t> vertex_of_element;
 
@@ -56,8 +57,11 @@ struct ElementGraph {
 };
 
 // One vertex per element, except the elements of one rigid body (body_of_element >= 0), which share one vertex.
+// With `contact_weights`, a second constraint: METIS balances the element and the contact cost each, since the two
+// phases of a cycle wait for each other in turn.
 ElementGraph build_element_graph(const Mesh& mesh, const std::vector<std::int32_t>& body_of_element,
-                                 const std::vector<std::int32_t>& element_weights);
+                                 const std::vector<std::int32_t>& element_weights,
+                                 const std::vector<std::int32_t>* contact_weights = nullptr);
 
 // True when every vertex can be reached from vertex 0 (METIS builds contiguous domains only then).
 bool connected(const ElementGraph& graph);

@@ -63,25 +63,30 @@ int computed_element_weight(const Model& model, ElementKind kind, std::size_t el
   return kBrickAssumedShear;
 }
 
-// An element with `points` points flowing plastically: its elastic weight plus 1 / kPlasticPointDivisor of it per
-// point (measured on the benchmark tube, Ishell 24, 5 points, Johnson-Cook, 2 ranks, 2026-12-02: an elastic
-// element-cycle 289 ns, each flowing point 95 ns more, the kernels' time over 100 cycles against the domains'
-// elastic elements and flowing points; docs/parallel.md, "Rebalancing").
-int plastic_weight(int weight, int points) { return weight + (points * weight + kPlasticPointDivisor / 2) / kPlasticPointDivisor; }
+// An element's weight with its running cost: its elastic weight, plus 1 / kPlasticPointDivisor of it per point
+// flowing plastically, plus its contact share (partition.hpp; the ratios from the kernels' and the contact pass's
+// time over 100 cycles of the benchmark tube against the domains' elastic elements, flowing points and pairs).
+int running_weight(int weight, const RunningCost* cost, int kind, std::size_t e) {
+  if (cost == nullptr) return weight;
+  const int points = cost->plastic[static_cast<std::size_t>(kind)][e];
+  return weight + (points * weight + kPlasticPointDivisor / 2) / kPlasticPointDivisor;
+}
+int contact_weight(const RunningCost* cost, int kind, std::size_t e) {
+  if (cost == nullptr || cost->contact[static_cast<std::size_t>(kind)].empty()) return 0;
+  return cost->contact[static_cast<std::size_t>(kind)][e];
+}
 
 std::vector<std::int32_t> weights_of_elements(const Model& model, const parallel::Mesh& mesh,
-                                              const std::vector<std::int32_t>& body_of_element,
-                                              const PlasticPoints* plastic) {
+                                              const std::vector<std::int32_t>& body_of_element, const RunningCost* cost) {
   std::vector<std::int32_t> weights(static_cast<std::size_t>(mesh.elements()));
   for (int k = 0; k < kElementKinds; ++k) {
     const auto kind = static_cast<ElementKind>(k);
     const std::int32_t first = mesh.first_of_kind[static_cast<std::size_t>(k)];
     for (std::int32_t g = first; g < mesh.first_of_kind[static_cast<std::size_t>(k) + 1]; ++g) {
       const auto e = static_cast<std::size_t>(g - first);
-      const int points = plastic != nullptr ? (*plastic)[static_cast<std::size_t>(k)][e] : 0;
       weights[static_cast<std::size_t>(g)] = body_of_element[static_cast<std::size_t>(g)] >= 0
                                                  ? kRigidElement
-                                                 : plastic_weight(computed_element_weight(model, kind, e), points);
+                                                 : running_weight(computed_element_weight(model, kind, e), cost, k, e);
     }
   }
   return weights;
@@ -119,7 +124,7 @@ std::vector<idx_t> run_metis(parallel::ElementGraph& graph, int domains) {
   options[METIS_OPTION_NUMBERING] = 0;
   options[METIS_OPTION_CONTIG] = parallel::connected(graph) ? 1 : 0;
   options[METIS_OPTION_UFACTOR] = 10;
-  idx_t vertices = graph.vertices(), constraints = 1, parts = domains, cut = 0;
+  idx_t vertices = graph.vertices(), constraints = graph.constraints, parts = domains, cut = 0;
   std::vector<idx_t> part(static_cast<std::size_t>(vertices), 0);
   // METIS 5.1 keeps state of its random generator and allocator in globals: two threads partitioning at once (the
   // domains of the tests, ThreadExchange) got different partitions of the same graph. One call at a time.
@@ -196,10 +201,11 @@ void measure_quality(const parallel::Mesh& mesh, const std::vector<std::int32_t>
 
 // Each element's domain, in the one numbering: METIS on the element graph, a rigid body's elements as one vertex.
 std::vector<std::int32_t> domains_of_elements(const parallel::Mesh& mesh, const std::vector<std::int32_t>& body,
-                                              const std::vector<std::int32_t>& weights, int domains) {
+                                              const std::vector<std::int32_t>& weights, int domains,
+                                              const std::vector<std::int32_t>* contact = nullptr) {
   check_domain_count(mesh, mesh.elements(), domains);  // before the graph: no graph for a hopeless count
   if (domains == 1) return std::vector<std::int32_t>(static_cast<std::size_t>(mesh.elements()), 0);
-  parallel::ElementGraph graph = parallel::build_element_graph(mesh, body, weights);
+  parallel::ElementGraph graph = parallel::build_element_graph(mesh, body, weights, contact);
   check_domain_count(mesh, graph.vertices(), domains);
   std::vector<idx_t> part = run_metis(graph, domains);
   fill_empty_domains(part, domains);
@@ -238,19 +244,31 @@ bool carried_by_rigid_body(const Model& model, ElementKind kind, std::size_t ele
 }  // namespace
 
 int element_weight(const Model& model, ElementKind kind, std::size_t element) {
-  return element_weight(model, kind, element, 0);
+  return carried_by_rigid_body(model, kind, element) ? kRigidElement : computed_element_weight(model, kind, element);
 }
-int element_weight(const Model& model, ElementKind kind, std::size_t element, int plastic_points) {
+int element_weight(const Model& model, ElementKind kind, std::size_t element, const RunningCost& cost) {
   if (carried_by_rigid_body(model, kind, element)) return kRigidElement;
-  return plastic_weight(computed_element_weight(model, kind, element), plastic_points);
+  return running_weight(computed_element_weight(model, kind, element), &cost, static_cast<int>(kind), element);
+}
+int element_contact_weight(ElementKind kind, std::size_t element, const RunningCost& cost) {
+  return contact_weight(&cost, static_cast<int>(kind), element);
 }
 
-Partition partition_model(const Model& model, int domains, const PlasticPoints* plastic) {
+Partition partition_model(const Model& model, int domains, const RunningCost* cost) {
   const parallel::Mesh mesh = parallel::build_mesh(model);
   const std::vector<std::int32_t> body =
       parallel::rigid_body_of_elements(mesh, parallel::rigid_owner_of_nodes(model));
-  const std::vector<std::int32_t> weights = weights_of_elements(model, mesh, body, plastic);
-  const std::vector<std::int32_t> domain = domains_of_elements(mesh, body, weights, domains);
+  const std::vector<std::int32_t> weights = weights_of_elements(model, mesh, body, cost);
+  // The contact cost as a second constraint, when there is any (METIS needs each constraint's total above zero).
+  std::vector<std::int32_t> contact;
+  if (cost != nullptr) {
+    for (int k = 0; k < kElementKinds; ++k)
+      for (std::size_t e = 0; e < model.elements[static_cast<std::size_t>(k)].size(); ++e)
+        contact.push_back(contact_weight(cost, k, e));
+    if (std::all_of(contact.begin(), contact.end(), [](std::int32_t w) { return w == 0; })) contact.clear();
+  }
+  const std::vector<std::int32_t> domain =
+      domains_of_elements(mesh, body, weights, domains, contact.empty() ? nullptr : &contact);
   Partition p;
   p.domains = domains;
   for (std::size_t k = 0; k < static_cast<std::size_t>(kElementKinds); ++k)

@@ -181,7 +181,8 @@ void copy_local_velocities(const SolverState& s, const std::array<std::vector<do
     return;
   }
   for (std::size_t d = 0; d < 6; ++d)
-    for (std::int32_t k : s.domain.local_nodes) to[d][static_cast<std::size_t>(k)] = (*v[d])[static_cast<std::size_t>(k)];
+    for (const Domain::NodeRange& r : s.domain.local_nodes)
+      std::copy(v[d]->begin() + r.first, v[d]->begin() + r.last, to[d].begin() + r.first);
 }
 
 // Hourglass energy above 10 % of the internal energy is a mesh or formulation problem the user must see

@@ -190,7 +190,7 @@ TEST(DomainSections, BoxCrushSectionHistoriesBitForBit) {
 }
 
 // Rebalancing moves elements and nodes between domains mid-run (every kRebalanceEvery cycles here, to blocks, then
-// round-robin, then METIS with the flowing points weighed): the state each domain then computes from must be the
+// round-robin, then METIS with the running cost): the state each domain then computes from must be the
 // one domain's, so the ends are still bit for bit equal; the last check compares each domain's own elements under
 // the last partition.
 class Repartitioned : public ::testing::TestWithParam<DomainCase> {};
@@ -202,9 +202,9 @@ TEST_P(Repartitioned, MidRunTheDomainsEndBitForBit) {
   ASSERT_GT(one.state.cycle, 10);
   const int domains = 3;
   // Each domain keeps its own copy of the lambda and calls it at the same checks: the same sequence everywhere.
-  const Repartition cycle_through = [calls = 0](const Model& model, int count, const PlasticPoints& plastic) mutable {
+  const Repartition cycle_through = [calls = 0](const Model& model, int count, const RunningCost& cost) mutable {
     const int k = calls++ % 3;
-    return k == 2 ? partition_model(model, count, &plastic) : test_partition(model, count, k == 1);
+    return k == 2 ? partition_model(model, count, &cost) : test_partition(model, count, k == 1);
   };
   const std::vector<DomainRun> runs = run_domains(m, test_partition(m, domains, true), cycle_through);
   for (int d = 0; d < domains; ++d) {

@@ -44,8 +44,12 @@ struct Domain {
   std::array<std::vector<std::int32_t>, kElementKinds> owner;
   // Per node: its owner, the lowest domain it is local to (0 for a node no element uses).
   std::vector<std::int32_t> node_owner;
-  // The nodes this domain advances and the nodes it owns, ascending (every node in a run of one domain).
-  std::vector<std::int32_t> local_nodes, owned_nodes;
+  // The nodes this domain advances and the nodes it owns, as ascending runs of consecutive nodes [first, last)
+  // (empty in a run of one domain: every node), so that the loops over them stay contiguous and vectorise.
+  struct NodeRange {
+    std::int32_t first, last;
+  };
+  std::vector<NodeRange> local_nodes, owned_nodes;
   std::vector<std::uint8_t> local;        // per node: 1 when local (several domains only)
   std::vector<std::uint8_t> multi_local;  // per node: 1 when local to several domains (several domains only)
   std::vector<std::int32_t> shared_nodes;  // local nodes that elements of several domains use, ascending
@@ -75,12 +79,17 @@ Domain make_domain(const Model& model, const Partition& partition, int index);
 
 // Calls f(k) for every local node k, ascending; for every owned node. One domain: every node, as one loop.
 template <class F>
+void for_each_node_in(const std::vector<Domain::NodeRange>& ranges, F f) {
+  for (const Domain::NodeRange& r : ranges)
+    for (auto k = static_cast<std::size_t>(r.first); k < static_cast<std::size_t>(r.last); ++k) f(k);
+}
+template <class F>
 void for_each_local_node(const Domain& d, std::size_t nodes, F f) {
   if (!d.several()) {
     for (std::size_t k = 0; k < nodes; ++k) f(k);
     return;
   }
-  for (std::int32_t k : d.local_nodes) f(static_cast<std::size_t>(k));
+  for_each_node_in(d.local_nodes, f);
 }
 template <class F>
 void for_each_owned_node(const Domain& d, std::size_t nodes, F f) {
@@ -88,7 +97,7 @@ void for_each_owned_node(const Domain& d, std::size_t nodes, F f) {
     for (std::size_t k = 0; k < nodes; ++k) f(k);
     return;
   }
-  for (std::int32_t k : d.owned_nodes) f(static_cast<std::size_t>(k));
+  for_each_node_in(d.owned_nodes, f);
 }
 
 // Every local shared node's sum of element loads from the records of the three element kinds (Shell4, Shell3, Brick8),

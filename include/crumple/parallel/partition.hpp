@@ -29,24 +29,33 @@ struct Partition {
   std::vector<int> neighbours;       // per domain: how many other domains it shares nodes with
 };
 
-// Per element kind, per element: how many of its integration points flowed plastically over the last cycles (0 ..
-// 255). A point that flows costs a return to the yield surface on top of the element's elastic update: the weights
-// of a repartition during a run take it (docs/parallel.md, "Rebalancing").
-using PlasticPoints = std::array<std::vector<std::uint8_t>, kElementKinds>;
+// What a running model costs per element beyond its kind and formulation (docs/parallel.md, "Rebalancing"), per
+// element kind and element:
+// - plastic: how many of its integration points flowed plastically over the last cycles (0 .. 255); a flowing point
+//   costs a return to the yield surface, 1 / kPlasticPointDivisor of the element's elastic weight;
+// - contact: its share of the contact pairs of its nodes (each secondary node's candidate pairs spread over the
+//   elements that use it), kPairWeight each; balanced as its own constraint.
+struct RunningCost {
+  std::array<std::vector<std::uint8_t>, kElementKinds> plastic;
+  std::array<std::vector<std::int32_t>, kElementKinds> contact;
+};
 
 // The partition of `model` into `domains` domains (>= 1). One domain: every element in domain 0, no METIS call.
-// With `plastic`, each element's weight grows by kPlasticPointShare of its elastic weight per flowing point.
-// Throws std::runtime_error when METIS fails or when domains exceeds the element count.
-Partition partition_model(const Model& model, int domains, const PlasticPoints* plastic = nullptr);
+// With `cost`, the weights take the running cost too. Throws std::runtime_error when METIS fails or when domains
+// exceeds the element count.
+Partition partition_model(const Model& model, int domains, const RunningCost* cost = nullptr);
 
-// The cost of a point's plastic return against its element's elastic weight: 1 / kPlasticPointDivisor per point
-// (docs/parallel.md, "Rebalancing").
+// Measured on the benchmark tube (Ishell 24, 5 points, Johnson-Cook, 2026-12-02; docs/parallel.md, "Rebalancing"):
+// an elastic element-cycle 289 ns (weight 92), a flowing point 95 ns more, a candidate contact pair 80 ns.
 inline constexpr int kPlasticPointDivisor = 3;
-// The weight METIS gives an element (element_weight) with `plastic_points` points flowing.
-int element_weight(const Model& model, ElementKind kind, std::size_t element, int plastic_points);
+inline constexpr int kPairWeight = 25;
+// The weights METIS gives an element (element_weight) with its running cost: the element cost, and its contact
+// cost, which METIS balances as a second constraint (the element phase and the contact pass wait for each other).
+int element_weight(const Model& model, ElementKind kind, std::size_t element, const RunningCost& cost);
+int element_contact_weight(ElementKind kind, std::size_t element, const RunningCost& cost);
 
-// A partition of the model into `domains` domains, given the elements' flowing points (tests of rebalancing).
-using Repartition = std::function<Partition(const Model&, int domains, const PlasticPoints& plastic)>;
+// A partition of the model into `domains` domains, given the running cost (tests of rebalancing).
+using Repartition = std::function<Partition(const Model&, int domains, const RunningCost& cost)>;
 
 // The partition's quality as listing lines.
 std::vector<std::string> describe(const Partition& partition);
