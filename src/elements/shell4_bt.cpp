@@ -313,4 +313,53 @@ GroupStepResult shell3_forces(const ElementTable& table, const ElementGroup& gro
   return shell_forces<3>(table, group, p, nodes, state, dt);
 }
 
+
+namespace {
+
+// The margin the shear mode keeps over the step it must hold (eq. S-8a): stable at 1.05 times the scaled step.
+constexpr double kShearModeMargin = 1.05;
+
+template <int NN>
+double inertia_share(const ShellGroupParameters& p, const Vec3* x, double thickness, double scale) {
+  // The element's plane at the start: its normal from the diagonals (the sides for a triangle), e1 along the
+  // first side, the nodes about the centre.
+  const Vec3 n3 = NN == 4 ? cross(x[2] - x[0], x[3] - x[1]) : cross(x[1] - x[0], x[2] - x[0]);
+  const Vec3 e3 = unit(n3);
+  const Vec3 side = x[1] - x[0];
+  const Vec3 e1 = unit(side - scaled(e3, dot(side, e3))), e2 = cross(e3, e1);
+  Vec3 centre{0.0, 0.0, 0.0};
+  for (int a = 0; a < NN; ++a) centre = centre + scaled(x[a], 1.0 / NN);
+  double lx[NN], ly[NN];
+  for (int a = 0; a < NN; ++a) lx[a] = dot(x[a] - centre, e1), ly[a] = dot(x[a] - centre, e2);
+  const double area = shell_section::local_area<NN>(lx, ly);
+  const double reference = thickness * thickness / 12.0 + area / 9.0;  // eq. S-8
+  if (!(area > 0.0) || !(p.shear_factor > 0.0)) return reference;
+  // The gradient operator (eq. S-2, S-9) and the Gram matrix of the two shear modes' deflection patterns.
+  double b11 = 0.0, b22 = 0.0, b12 = 0.0;
+  for (int a = 0; a < NN; ++a) {
+    const int next = (a + 1) % NN, previous = (a + NN - 1) % NN;
+    const double b1 = (ly[next] - ly[previous]) / (2.0 * area), b2 = (lx[previous] - lx[next]) / (2.0 * area);
+    b11 += b1 * b1, b22 += b2 * b2, b12 += b1 * b2;
+  }
+  const double lambda = 0.5 * (b11 + b22) + std::sqrt(0.25 * (b11 - b22) * (b11 - b22) + b12 * b12);
+  // The element's critical step, as its kernel takes it (eq. T-1a, T-1b; the plate speed for Ishell 12 and 24).
+  const double E = p.young, nu = p.poisson;
+  const bool plate = p.physical_hourglass || p.fully_integrated;
+  const double speed = plate ? std::sqrt(E / (p.density * (1.0 - nu * nu))) : std::sqrt(E / p.density);
+  const double length = shell_section::characteristic_length<NN>(lx, ly, area, NN == 4 && !plate);
+  const double step = kShearModeMargin * scale * length / speed;
+  // eq. S-8a: omega^2 = (kappa G / rho) (n lambda + 1 / X) <= (2 / step)^2.
+  const double shear = p.shear_factor * E / (2.0 * (1.0 + nu)) / p.density;
+  const double room = 4.0 / (step * step * shear) - NN * lambda;
+  if (!(room > 0.0)) return reference;  // not reachable with kappa G < E: the membrane bound is the lower
+  return std::max(reference, 1.0 / room);
+}
+
+}  // namespace
+
+double shell_rotational_inertia_share(const ShellGroupParameters& p, int nodes, const Vec3* x, double thickness,
+                                      double scale) {
+  return nodes == 4 ? inertia_share<4>(p, x, thickness, scale) : inertia_share<3>(p, x, thickness, scale);
+}
+
 }  // namespace crumple

@@ -104,17 +104,23 @@ void setup_shells(const Model& m, SolverState& s, ElementKind kind) {
     st.point_offset[g] = total_points;
     st.points[g] = sections * np;
     total_points += static_cast<std::size_t>(group.end - group.begin) * static_cast<std::size_t>(sections * np);
+    // The step the elements' rotations must be stable at: the shells' own /DT scale, else the run's.
+    const TimeStepControl& type = kind == ElementKind::Shell4 ? m.run.dt_shell : m.run.dt_sh3n;
+    const double scale = type.given && type.scale > 0.0 ? type.scale : m.run.dt.scale > 0.0 ? m.run.dt.scale : 0.9;
     for (std::int32_t e = group.begin; e < group.end; ++e) {
       st.thickness[static_cast<std::size_t>(e)] = prop.shell.thickness;
       // Lumped rotational inertia of the shell's nodes: (m/n) (t^2/12 + A/9) (docs/theory/shell4.md, eq. S-8),
-      // large enough that the rotations stay stable at the element step.
+      // raised where the element's transverse-shear mode would not be stable at its step (eq. S-8a).
       const double mass = element_mass(m, kind, static_cast<std::size_t>(e));
       st.mass[static_cast<std::size_t>(e)] = mass;
       const std::int32_t* nodes = table.nodes_of(static_cast<std::size_t>(e));
-      const double area = mass / (mat.density * prop.shell.thickness);
-      for (int a = 0; a < nodes_per; ++a)
-        s.nodes.inertia[static_cast<std::size_t>(nodes[a])] +=
-            shell_node_rotational_inertia(mass, prop.shell.thickness, area, nodes_per);
+      Vec3 x[4];
+      for (int a = 0; a < nodes_per; ++a) {
+        const auto k = static_cast<std::size_t>(nodes[a]);
+        x[a] = {s.nodes.x[k], s.nodes.y[k], s.nodes.z[k]};
+      }
+      const double share = shell_rotational_inertia_share(p, nodes_per, x, prop.shell.thickness, scale);
+      for (int a = 0; a < nodes_per; ++a) s.nodes.inertia[static_cast<std::size_t>(nodes[a])] += mass / nodes_per * share;
     }
   }
   st.resize_points(total_points);

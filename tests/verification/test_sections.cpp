@@ -290,8 +290,9 @@ TEST_P(PulledBar, FreeBodyAtEveryCycleAndEndForceAtRest) {
 // Sections at the cut x = a = 0.4: 1 the tip side about the cut's centre (Iframe 1, the local frame: e1 = y,
 // e2 = z, e3 = x), 2 the same in the global frame (Iframe 11), 3 about the origin (Iframe 13), 4 the clamped side
 // about the centre (Iframe 11). The cut's nodes are on one line across the strip: the bending moment crosses it as
-// the shells' nodal moments, so this also checks that they are in the sums. (With one row of square elements,
-// 10 x 1, this strip is unstable under a tip load at the default /DT scale with every Ishell, sections or not.)
+// the shells' nodal moments, so this also checks that they are in the sums. (One row of square elements, 10 x 1,
+// with nu = 0 was unstable at the default /DT scale until the rotational inertia took the transverse-shear mode's
+// bound, docs/theory/shell4.md eq. S-8a; the nu = 0 cases of tests/stability/test_thin_shells.cpp hold it.)
 TEST(Sections, CantileverMomentIsForceTimesLeverArm) {
   constexpr double L = 1.0, b = 0.1, t = 0.01, a = 0.4;
   const double inertia = b * t * t * t / 12.0;

@@ -3,6 +3,7 @@
 // integrated Batoz shell (Ishell 12); the 3-node C0 triangle (docs/theory/shell4.md).
 #include <cstdint>
 
+#include "crumple/core/vec3.hpp"
 #include "crumple/elements/group_result.hpp"
 #include "crumple/materials/hardening.hpp"
 #include "crumple/model/elements.hpp"
@@ -80,6 +81,14 @@ ShellElementOutput shell_element_output(const ShellGroupParameters& p, const She
 inline double shell_node_rotational_inertia(double element_mass, double thickness, double area, int nodes) {
   return element_mass / nodes * (thickness * thickness / 12.0 + area / 9.0);
 }
+
+// The share X of each node's rotational inertia, I = (m / n) X [L^2], an element of the group gives its nodes
+// (`x`: its n = 3 or 4 nodes at the start, `thickness` [L]): the reference's t^2 / 12 + A / 9 (eq. S-8), raised
+// where the element's transverse-shear mode would not be stable at `scale` times its critical step (eq. S-8a: a
+// node's rotation and its neighbours' deflection exchange through the shear; with a low Poisson ratio that mode
+// is faster than the membrane mode the step is made for).
+double shell_rotational_inertia_share(const ShellGroupParameters& p, int nodes, const Vec3* x, double thickness,
+                                      double scale);
 
 // Through-thickness rule for n = 1..10 points (docs/theory/shell4.md, eq. S-4): n equally spaced points from the
 // lower to the upper surface; the stress between points is taken linear, so the membrane weights are the
