@@ -421,17 +421,20 @@ def write_tube(directory, t, with_meta=True):
     return write_deck(directory, t.name, starter, engine, counts if with_meta else None, t)
 
 
-def setup_for(family, elements=None, size=None, end_time=0.1, contact=True, ishell=24, points=5, isolid=24):
+def setup_for(family, elements=None, size=None, end_time=0.1, contact=True, ishell=24, points=5, isolid=24,
+              speed=10.0):
     """The setup of one family at a target element count or an element size [mm]."""
     if family == "tube":
         n = tube_elements_per_side(elements) if elements else max(1, int(round(50.0 / size)))
-        return TubeSetup(elements_per_side=n, end_time=end_time, contact=contact, ishell=ishell, points=points)
+        return TubeSetup(elements_per_side=n, end_time=end_time, contact=contact, ishell=ishell, points=points,
+                         speed=speed)
     if family == "ball_plate":
         h = size if size else ball_plate_element_size(elements)
-        return BallPlateSetup(element_size=h, end_time=end_time, contact=contact, ishell=ishell, points=points)
+        return BallPlateSetup(element_size=h, end_time=end_time, contact=contact, ishell=ishell, points=points,
+                              speed=speed)
     if family == "brick_block":
         n = brick_block_divisions(elements) if elements else max(1, int(round(50.0 / size)))
-        return BrickBlockSetup(divisions=n, end_time=end_time, isolid=isolid)
+        return BrickBlockSetup(divisions=n, end_time=end_time, isolid=isolid, speed=speed)
     raise ValueError(f"unknown family {family}")
 
 
@@ -460,6 +463,7 @@ def parse_arguments():
     p.add_argument("--ishell", type=int, default=24, help="shell formulation (default 24)")
     p.add_argument("--points", type=int, default=5, help="shell points through the thickness (default 5)")
     p.add_argument("--isolid", type=int, default=24, help="brick formulation of brick_block (default 24)")
+    p.add_argument("--speed", type=float, default=10.0, help="impact speed [m/s] (default 10)")
     return p.parse_args()
 
 
@@ -467,7 +471,7 @@ def main():
     a = parse_arguments()
     starter = write_family(a.family, a.out, elements=int(a.elements) if a.elements else None, size=a.size,
                            end_time=a.end_time, contact=not a.no_contact, ishell=a.ishell, points=a.points,
-                           isolid=a.isolid)
+                           isolid=a.isolid, speed=a.speed)
     counts = json.loads(starter.with_name(starter.name.replace("_0000.rad", ".bench.json")).read_text())["counts"]
     print(f"wrote {starter}: " + ", ".join(f"{k} {v}" for k, v in counts.items()))
 
