@@ -77,7 +77,7 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
     // Co-rotational frame (eq. S-1).
     shell_section::Frame frame;
     if (!shell_section::corotational_frame<NN>(x, frame)) {
-      result.inverted = e;
+      delete_inverted_shell(state, result, e);
       continue;
     }
     const Vec3 e1 = frame.e1, e2 = frame.e2, e3 = frame.e3, centre = frame.centre;
@@ -106,7 +106,7 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
     const double area = shell_section::local_area<NN>(lx, ly);
     double b1[NN], b2[NN];
     if (!(area > 0.0)) {
-      result.inverted = e;
+      delete_inverted_shell(state, result, e);
       continue;
     }
     if constexpr (NN == 4) {
@@ -120,7 +120,7 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
         if (!(corner > 0.0)) ++negative_corners;
       }
       if (negative_corners >= 2) {
-        result.inverted = e;
+        delete_inverted_shell(state, result, e);
         continue;
       }
     }

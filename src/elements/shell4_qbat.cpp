@@ -232,7 +232,7 @@ GroupStepResult shell4_qbat_forces(const ElementTable& table, const ElementGroup
     const bool small_strain = p.small_strain || state.small_strain[ue] != 0;
     LocalElement l;
     if (!local_element(table, ue, nodes, state, small_strain, l)) {
-      result.inverted = e;
+      delete_inverted_shell(state, result, e);
       continue;
     }
     // Centre gradient of the projection (eq. S-2): the in-plane shear rate and the critical step (T-1).
@@ -243,7 +243,7 @@ GroupStepResult shell4_qbat_forces(const ElementTable& table, const ElementGroup
     bool valid = area > 0.0;
     for (int i = 0; i < 4 && valid; ++i) valid = gauss_point(l.x, kGaussXi[i], kGaussEta[i], g[i]);
     if (!valid) {
-      result.inverted = e;
+      delete_inverted_shell(state, result, e);
       continue;
     }
     double b1[4], b2[4], centre_shear = 0.0;

@@ -116,6 +116,10 @@ std::string describe(const RunEvent& e, const Model& m) {
       return fmt::format("{} {} of part {} SWITCHED TO SMALL STRAIN: time step {:.4e} at its minimum (/DT/{}/CST)", when,
                          element_name(m, e.element_kind, e.index), part_id_of(m, e.element_kind, e.index), e.value,
                          e.element_kind == ElementKind::Brick8 ? "BRICK" : e.element_kind == ElementKind::Shell3 ? "SH_3N" : "SHELL");
+    case K::ShellDeletedInverted:
+      return fmt::format("{} {} of part {} DELETED: turned inside out (zero area or two folded corners){}", when,
+                         element_name(m, e.element_kind, e.index), part_id_of(m, e.element_kind, e.index),
+                         e.value > 1.0 ? fmt::format(", with {:.0f} other shells of its group this cycle", e.value - 1.0) : "");
     case K::ContactBoundaryReleased: {
       std::string dofs;
       for (int d = 0; d < 3; ++d)
@@ -131,6 +135,11 @@ std::string describe(const RunEvent& e, const Model& m) {
       return fmt::format("{} WARNING: energy error {:.3g} % (beyond 10 %): the energy balance is not kept; the run "
                          "may be going unstable, or mass scaling or contact releases add or take energy",
                          when, e.value);
+    case K::StepDropped:
+      return fmt::format("{} WARNING: time step {:.4e} set by {}, below 1/1000 of the elements' step {:.4e}: the run "
+                         "slows down by that factor (a contact closing fast on a small gap bounds its step by "
+                         "(g - p) / (dp/dt); /DT/INTER/CST or /DT/INTER/DEL bound it)",
+                         when, e.value, describe(e.control, m), e.second_value);
     case K::Rebalanced:
       return fmt::format("{} DOMAINS REPARTITIONED: estimated imbalance {:.3f} -> {:.3f} (flowing plastic points weigh "
                          "more; the results do not depend on the partition)",
@@ -190,7 +199,8 @@ void RunRecorder::events(RunEvents& events) {
   for (const RunEvent& e : events.pending) {
     const std::string text = describe(e, model_);
     listing_.line(text);
-    if (e.kind == RunEvent::Kind::HourglassShare || e.kind == RunEvent::Kind::EnergyErrorLarge)
+    if (e.kind == RunEvent::Kind::HourglassShare || e.kind == RunEvent::Kind::EnergyErrorLarge ||
+        e.kind == RunEvent::Kind::ShellDeletedInverted || e.kind == RunEvent::Kind::StepDropped)
       console_line("warning: " + text);
   }
   events.pending.clear();
@@ -282,6 +292,8 @@ RunSummary RunRecorder::finish(const SolverState& s, const RunEvents& events, co
   listing_.line(termination(events.stop, model_));
   if (events.deleted_below_minimum_step > 0)
     listing_.line(fmt::format("ELEMENTS DELETED BELOW THEIR MINIMUM TIME STEP: {}", events.deleted_below_minimum_step));
+  if (events.deleted_inverted > 0)
+    listing_.line(fmt::format("SHELLS DELETED AS TURNED INSIDE OUT: {}", events.deleted_inverted));
   if (events.hourglass_warned)
     listing_.line(fmt::format("HOURGLASS ENERGY AT THE END {:.6g}: {:.1f} % OF THE INTERNAL ENERGY {:.6g}{}", s.energy.hourglass,
                               s.energy.internal != 0.0 ? 100.0 * s.energy.hourglass / std::abs(s.energy.internal) : 0.0,

@@ -262,18 +262,20 @@ void share_conditions(SolverState& s, Exchange& exchange) {
 void share_group_results(const Model& m, SolverState& s, Exchange& exchange) {
   SolverState::GroupShare& w = s.group_share;
   const std::size_t groups = m.element_groups.size();
-  for (auto* v : {&w.controlling, &w.last_inverted, &w.last_non_finite, &w.failed}) v->resize(groups);
+  for (auto* v : {&w.controlling, &w.last_inverted, &w.last_non_finite, &w.failed, &w.inverted_count}) v->resize(groups);
   w.min_dt.resize(groups), w.energies.resize(2 * groups);
   for (std::size_t g = 0; g < groups; ++g) {
     const GroupStepResult& r = s.group_results[g];
     w.min_dt[g] = r.min_dt, w.controlling[g] = r.controlling;
     w.last_inverted[g] = r.inverted, w.last_non_finite[g] = r.non_finite, w.failed[g] = r.failed;
+    w.inverted_count[g] = r.inverted_count;
     w.energies[2 * g] = r.internal_energy, w.energies[2 * g + 1] = r.hourglass_energy;
   }
   exchange.min_with_index(w.min_dt, w.controlling);
   exchange.max(w.last_inverted);
   exchange.max(w.last_non_finite);
   exchange.sum(w.failed);
+  exchange.sum(w.inverted_count);
   exchange.share(w.energies, 2, s.domain.group_owner);
   bool failed = false;
   for (std::size_t g = 0; g < groups; ++g) {
@@ -281,6 +283,7 @@ void share_group_results(const Model& m, SolverState& s, Exchange& exchange) {
     GroupStepResult r;
     if (w.controlling[g] >= 0) r.min_dt = w.min_dt[g], r.controlling = w.controlling[g];
     r.inverted = w.last_inverted[g], r.non_finite = w.last_non_finite[g], r.failed = w.failed[g];
+    r.inverted_count = w.inverted_count[g];
     r.internal_energy = w.energies[2 * g], r.hourglass_energy = w.energies[2 * g + 1];
     if (s.domain.group_owner[g] < 0) {
       const ElementRecords& records = element_view(s, group.kind).records;
@@ -468,6 +471,23 @@ void run_element_kernels(const Model& m, SolverState& s) {
   for (std::size_t g = 0; g < m.element_groups.size(); ++g) s.group_results[g] = group_forces(m, s, g);
 }
 
+namespace {
+
+// An inverted brick ends the run; inverted shells were deleted by their kernel and are named in the listing
+// (docs/theory/shell4.md, "Inverted elements").
+void report_inverted(ElementKind kind, const GroupStepResult& r, const SolverState& s, RunEvents& events) {
+  if (kind == ElementKind::Brick8) {
+    events.stop = element_stop(StopReason::Kind::InvertedElement, kind, r.inverted, s);
+    return;
+  }
+  RunEvent event{RunEvent::Kind::ShellDeletedInverted, s.cycle, s.time, kind, r.inverted};
+  event.value = r.inverted_count;
+  events.pending.push_back(event);
+  events.deleted_inverted += r.inverted_count;
+}
+
+}  // namespace
+
 StepBound combine_group_results(const Model& m, SolverState& s, RunEvents& events, bool& elements_deleted) {
   StepBound bound;
   const double scale = step_scale(m.run);
@@ -479,7 +499,7 @@ StepBound combine_group_results(const Model& m, SolverState& s, RunEvents& event
     s.energy.hourglass += r.hourglass_energy;
     if (r.non_finite >= 0 && !events.stop.stopped())
       events.stop = element_stop(StopReason::Kind::NonFiniteForces, group.kind, r.non_finite, s);
-    if (r.inverted >= 0) events.stop = element_stop(StopReason::Kind::InvertedElement, group.kind, r.inverted, s);
+    if (r.inverted >= 0) report_inverted(group.kind, r, s, events);
     const TimeStepControl& type = type_control(m.run, group.kind);
     const double type_scale = type.given && type.scale > 0.0 ? type.scale : scale;
     if (control_group_step(m, g, s, events, type_scale, r) > 0) elements_deleted = true;
@@ -716,6 +736,16 @@ void update_kinetic_energy(SolverState& s) {
   const auto [translational, rotational] = kinetic_energy(s);
   s.energy.kinetic_translational = translational;
   s.energy.kinetic_rotational = rotational;
+}
+
+// A step far below what the elements allow (a contact closing fast on a small gap, a node's mass) slows the run
+// by that factor without failing it: the user must see it once (docs/theory/time-step.md, "Step drops").
+void warn_step_drop(const SolverState& s, double element_step, double dt, const StepControl& control, RunEvents& events) {
+  if (events.step_drop_warned || !(dt < 1e-3 * element_step) || !(element_step < 1e300)) return;
+  events.step_drop_warned = true;
+  RunEvent event{RunEvent::Kind::StepDropped, s.cycle, s.time};
+  event.value = dt, event.second_value = element_step, event.control = control;
+  events.pending.push_back(event);
 }
 
 void check_run_limits(const Model& m, const SolverState& s, RunEvents& events) {

@@ -106,6 +106,9 @@ bool frame_due(const SolverState& state, const OutputSchedule& schedule);
 void update_kinetic_energy(SolverState& state);
 // NaN in the balance, /STOP added-mass and energy-error limits: recorded in `events.stop`.
 void check_run_limits(const Model& model, const SolverState& state, RunEvents& events);
+// Once per run: the step `dt` fell below 1/1000 of the elements' scaled step `element_step` (set by `control`).
+void warn_step_drop(const SolverState& state, double element_step, double dt, const StepControl& control,
+                    RunEvents& events);
 // A stop asked from outside the solver (SolverOptions::stop_request, which the app's SIGINT and SIGTERM handlers
 // set): recorded in `events.stop` at the end of the cycle; true when there is one. One relaxed load per cycle.
 bool stop_requested(const std::atomic<int>* request, SolverState& state, RunEvents& events,

@@ -36,8 +36,10 @@ void write_snapshot(RunObserver& observer, SolverState& s, const SolverOptions& 
   marks.next_frame = schedule.next_frame, marks.next_history = schedule.next_history;
   marks.deleted_below_minimum_step = events.deleted_below_minimum_step;
   marks.switched_to_small_strain = events.switched_to_small_strain;
+  marks.deleted_inverted = events.deleted_inverted;
   marks.hourglass_warned = events.hourglass_warned;
   marks.energy_error_warned = events.energy_error_warned;
+  marks.step_drop_warned = events.step_drop_warned;
   observer.restart(s, marks);
 }
 
@@ -46,8 +48,10 @@ void resume_monitor(const ResumeMarks& marks, RunEvents& events, solver::OutputS
   schedule.next_frame = marks.next_frame, schedule.next_history = marks.next_history;
   events.deleted_below_minimum_step = marks.deleted_below_minimum_step;
   events.switched_to_small_strain = marks.switched_to_small_strain;
+  events.deleted_inverted = marks.deleted_inverted;
   events.hourglass_warned = marks.hourglass_warned;
   events.energy_error_warned = marks.energy_error_warned;
+  events.step_drop_warned = marks.step_drop_warned;
 }
 
 // The state an engine deck starts from, when a frame is due at its time (t = 0 for the first): written before the
@@ -88,6 +92,7 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunObse
   for (;;) {
     bool elements_deleted = false;
     StepBound bound = compute_element_forces(m, s, events, elements_deleted, options.exchange);
+    const double element_step = bound.dt;
     keep(bound);
     clock.lap(phases.elements);
     if (events.stop.stopped()) break;
@@ -100,6 +105,7 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunObse
     apply_loads(m, s);
     dt_next = choose_time_step(m, s, events, bound);
     keep(bound);
+    warn_step_drop(s, element_step, dt_next, control, events);
     if (events.stop.stopped()) break;
     clock.lap(phases.loads);
 

@@ -12,7 +12,8 @@ struct GroupStepResult {
   double internal_energy = 0.0;    // increment of the cycle [M L^2 T^-2]
   double hourglass_energy = 0.0;   // increment of the cycle
   std::int32_t failed = 0;         // elements deleted during the cycle
-  std::int32_t inverted = -1;      // an element whose area became zero or negative (-1: none)
+  std::int32_t inverted = -1;      // an element whose area or volume became zero or negative (-1: none)
+  std::int32_t inverted_count = 0; // shells deleted as inverted during the cycle (of them `inverted` is the last)
   std::int32_t non_finite = -1;    // an element whose forces became NaN or infinite (-1: none)
 };
 
@@ -27,6 +28,17 @@ inline void close_element(State& state, GroupStepResult& result, std::int32_t e,
     state.deleted[ue] = kElementDeleted;
     ++result.failed;
   }
+}
+
+// A shell turned inside out (no frame, zero area, or a quadrilateral folded into a bow tie) leaves the run: it is
+// deleted and named in the listing, as crash solvers delete distorted shells instead of stopping
+// (docs/theory/shell4.md, "Inverted elements"). A brick of negative volume still ends the run.
+template <class State>
+inline void delete_inverted_shell(State& state, GroupStepResult& result, std::int32_t e) {
+  state.deleted[static_cast<std::size_t>(e)] = kElementDeleted;
+  ++result.failed;
+  ++result.inverted_count;
+  result.inverted = e;
 }
 
 }  // namespace crumple

@@ -29,9 +29,13 @@ struct RunEvent {
   enum class Kind : std::uint8_t {
     ElementDeletedBelowMinimumStep,  // /DT/<type>/DEL: element (kind, index), value = its scaled step [T]
     ElementSwitchedToSmallStrain,    // /DT/<type>/CST: element (kind, index), value = its scaled step [T]
+    ShellDeletedInverted,            // shells turned inside out in a group this cycle: the last (kind, index),
+                                     // value = how many of the group
     ContactBoundaryReleased,         // TYPE7 IBC: node index, value = the released dof mask
     HourglassShare,                  // hourglass energy above 10 % of the internal energy: value = the ratio
     EnergyErrorLarge,                // |energy error| above 10 %: value = the error in percent
+    StepDropped,                     // the step fell below 1/1000 of the elements' own: value = the step,
+                                     // second_value = the elements' step [T], `control` what set it
     Rebalanced,                      // several domains repartitioned: value, second_value = estimated imbalance
                                      // before and after (largest domain's cost over the mean)
   };
@@ -42,6 +46,7 @@ struct RunEvent {
   std::int32_t index = -1;
   double value = 0.0;
   double second_value = 0.0;
+  StepControl control{};  // StepDropped: what set the step
 };
 
 // Why a run ended before its end time. `kind` None while it runs on.
@@ -79,8 +84,10 @@ struct RunEvents {
   StopReason stop;
   long long deleted_below_minimum_step = 0;  // elements deleted by /DT/<type>/DEL over the run
   long long switched_to_small_strain = 0;    // elements switched by /DT/<type>/CST over the run
+  long long deleted_inverted = 0;            // shells deleted as turned inside out over the run
   bool hourglass_warned = false;             // the HourglassShare event has been raised
   bool energy_error_warned = false;          // the EnergyErrorLarge event has been raised
+  bool step_drop_warned = false;             // the StepDropped event has been raised
 };
 
 }  // namespace crumple

@@ -25,8 +25,10 @@ struct ResumeMarks {
   double next_history = std::numeric_limits<double>::infinity();  // [T]
   long long deleted_below_minimum_step = 0;
   long long switched_to_small_strain = 0;
+  long long deleted_inverted = 0;
   bool hourglass_warned = false;
   bool energy_error_warned = false;
+  bool step_drop_warned = false;
 };
 
 namespace snapshot_detail {
@@ -137,8 +139,10 @@ void visit_state(V& v, SolverState& s, ResumeMarks& marks) {
   v("marks/next_history", marks.next_history);
   v("marks/deleted_below_minimum_step", marks.deleted_below_minimum_step);
   v("marks/switched_to_small_strain", marks.switched_to_small_strain);
+  v("marks/deleted_inverted", marks.deleted_inverted);
   v("marks/hourglass_warned", marks.hourglass_warned);
   v("marks/energy_error_warned", marks.energy_error_warned);
+  v("marks/step_drop_warned", marks.step_drop_warned);
   visit_nodes(v, "nodes/", s.nodes);
   v("fixed", s.fixed), v("rigid_owner", s.rigid_owner), v("nodal_stiffness", s.nodal_stiffness);
   visit_shells(v, "shells4/", s.shells);

@@ -122,7 +122,7 @@ struct SolverState {
   // energies.
   struct GroupShare {
     std::vector<double> min_dt;
-    std::vector<std::int32_t> controlling, last_inverted, last_non_finite, failed;
+    std::vector<std::int32_t> controlling, last_inverted, last_non_finite, failed, inverted_count;
     std::vector<std::int32_t> stop_signal;  // the combined stop request
     std::vector<double> energies;           // per group: internal and hourglass energy of the cycle
     // Owners of what travels at a sort and before an output (kept, so that the exchange's layouts, made once per
