@@ -22,6 +22,7 @@ writer of this file.
 """
 import argparse
 import json
+import sys
 import math
 from dataclasses import dataclass, field, asdict
 from pathlib import Path
@@ -172,6 +173,7 @@ class TubeSetup:
     points: int = 5
     contact: bool = True
     fric: float = 0.1
+    gapmin: float = 0.0  # the self contact's Gapmin [mm]; 0: the default (the mean thickness, bounded)
     end_time: float = 0.1
     engine: list = None  # engine cards; None: bench_engine_cards
 
@@ -225,7 +227,7 @@ def tube_starter(t):
     out += fixed_wall_cards(1, 10)
     out += history_cards("RWALL", 1, "wall force", 1) + history_cards("RBODY", 2, "sled", 1)
     if t.contact:
-        out += type7_cards(1, "tube self contact", "tube surface", 1, [1], 10, t.fric)
+        out += type7_cards(1, "tube self contact", "tube surface", 1, [1], 10, t.fric, t.gapmin)
         out += history_cards("INTER", 3, "self contact", 1)
     return out + ["/END\n"], {"shell4": len(shells), "nodes": len(points),
                               "contact_secondary_nodes": (len(points) - 1) if t.contact else 0}
@@ -422,12 +424,12 @@ def write_tube(directory, t, with_meta=True):
 
 
 def setup_for(family, elements=None, size=None, end_time=0.1, contact=True, ishell=24, points=5, isolid=24,
-              speed=10.0):
+              speed=10.0, gap=0.0):
     """The setup of one family at a target element count or an element size [mm]."""
     if family == "tube":
         n = tube_elements_per_side(elements) if elements else max(1, int(round(50.0 / size)))
         return TubeSetup(elements_per_side=n, end_time=end_time, contact=contact, ishell=ishell, points=points,
-                         speed=speed)
+                         speed=speed, gapmin=gap)
     if family == "ball_plate":
         h = size if size else ball_plate_element_size(elements)
         return BallPlateSetup(element_size=h, end_time=end_time, contact=contact, ishell=ishell, points=points,
@@ -464,14 +466,18 @@ def parse_arguments():
     p.add_argument("--points", type=int, default=5, help="shell points through the thickness (default 5)")
     p.add_argument("--isolid", type=int, default=24, help="brick formulation of brick_block (default 24)")
     p.add_argument("--speed", type=float, default=10.0, help="impact speed [m/s] (default 10)")
+    p.add_argument("--gap", type=float, default=0.0,
+                   help="tube: the self contact's Gapmin [mm] (default 0: the thickness-based default)")
     return p.parse_args()
 
 
 def main():
     a = parse_arguments()
+    if a.gap and a.family != "tube":
+        sys.exit(f"generate_bench.py: --gap is the tube's self-contact gap; {a.family} has none to set")
     starter = write_family(a.family, a.out, elements=int(a.elements) if a.elements else None, size=a.size,
                            end_time=a.end_time, contact=not a.no_contact, ishell=a.ishell, points=a.points,
-                           isolid=a.isolid, speed=a.speed)
+                           isolid=a.isolid, speed=a.speed, gap=a.gap)
     counts = json.loads(starter.with_name(starter.name.replace("_0000.rad", ".bench.json")).read_text())["counts"]
     print(f"wrote {starter}: " + ", ".join(f"{k} {v}" for k, v in counts.items()))
 

@@ -1,0 +1,126 @@
+#!/usr/bin/env python3
+"""Stability at the extremes of crash practice (issue 13; docs/stability.md): the benchmark tube of
+decks/generate_bench.py (1 600 shells, Ishell 24, Johnson-Cook, TYPE7 self contact, a 50 kg sled on a rigid body)
+driven onto a fixed rigid wall at impact speeds from 0.1 to 1000 m/s and with self-contact gaps from 0.001 t to t.
+
+Each case must
+- run to its end time with status "normal" (a folding shell may be deleted, and is named in the listing);
+- keep its energy balance: |energy error| below ERROR_BOUND_PERCENT, every energy finite;
+- never take a step below 1/1000 of the elements' own without the listing's "WARNING: time step" line.
+
+usage: impact_cases.py CRUMPLE GENERATOR --case NAME [--work DIR]   one case, exit 1 when it fails (the ctests)
+       impact_cases.py CRUMPLE GENERATOR --all [--markdown]          every case, and the table of docs/stability.md
+"""
+import argparse
+import json
+import math
+import pathlib
+import re
+import subprocess
+import sys
+import tempfile
+import time
+
+ERROR_BOUND_PERCENT = 1.0  # the tube's balance: its only losses are counted (plastic work, contact, hourglass)
+STEP_DROP = 1e-3           # below this share of the elements' step the listing must say so
+
+# name: (impact speed [m/s], self-contact Gapmin [mm] (0: the default, the thickness), end time [ms], what it shows)
+CASES = {
+    "speed_0.1": (0.1, 0.0, 0.5, "a slow push: elastic, no contact"),
+    "speed_10": (10.0, 0.0, 0.5, "the benchmark's speed"),
+    "speed_300": (300.0, 0.0, 0.5, "the front folds at once; shells turned inside out are deleted"),
+    "speed_1000": (1000.0, 0.0, 0.15, "150 mm of crush in 0.15 ms"),
+    "gap_0.001t": (300.0, 0.0015, 0.3, "a gap of 0.001 t: the contact bounds the step by (g - p) / (dp/dt)"),
+    "gap_t": (300.0, 1.5, 0.5, "a gap of t = 1.5 mm, given"),
+}
+
+
+def run_case(crumple, generator, name, work):
+    speed, gap, end_time, _ = CASES[name]
+    deck_dir = pathlib.Path(work) / name
+    args = [sys.executable, generator, "tube", "--elements", "1600", "--speed", str(speed), "--end-time", str(end_time),
+            "--out", str(deck_dir)]
+    if gap > 0.0:
+        args += ["--gap", str(gap)]
+    subprocess.run(args, check=True, capture_output=True)
+    out = deck_dir / "out"
+    started = time.monotonic()
+    run = subprocess.run([crumple, "run", str(deck_dir / "TUBE_0000.rad"), "-o", str(out), "--quiet"],
+                         capture_output=True, text=True, timeout=600)
+    wall = time.monotonic() - started
+    summary = json.loads((out / "TUBE.summary.json").read_text())
+    listing = (out / "TUBE.out").read_text(errors="replace")
+    steps, element_steps = [], []
+    for line in listing.splitlines():
+        m = re.match(r"^\s*\d+\s+[-+.0-9eE]+\s+([-+.0-9eE]+)\s", line)
+        if m and float(m.group(1)) > 0.0:
+            steps.append(float(m.group(1)))
+    first_step = steps[0] if steps else float("nan")
+    return {
+        "name": name, "exit": run.returncode, "status": summary["status"], "message": summary["message"],
+        "time": summary["time"], "end_time": end_time, "cycles": summary["cycles"],
+        "error": summary["energy"]["error_percent"],
+        "finite": all(math.isfinite(v) for v in summary["energy"].values()),
+        "deleted": summary["deleted_elements"], "smallest_printed_step": min(steps) if steps else float("nan"),
+        "first_step": first_step, "step_warning": "WARNING: time step" in listing, "wall": wall,
+        "listing_deletions": len(re.findall(r"DELETED: turned inside out", listing)),
+    }
+
+
+def failures(r):
+    out = []
+    if r["exit"] != 0 or r["status"] != "normal":
+        out.append(f"status {r['status']} (exit {r['exit']}): {r['message']}")
+    if not r["time"] >= r["end_time"] * (1 - 1e-9):
+        out.append(f"stopped at {r['time']} before the end time {r['end_time']}")
+    if not r["finite"]:
+        out.append("an energy is NaN or infinite")
+    elif not abs(r["error"]) < ERROR_BOUND_PERCENT:
+        out.append(f"energy error {r['error']:.3g} % beyond {ERROR_BOUND_PERCENT} %")
+    if r["deleted"] > 0 and r["listing_deletions"] == 0:
+        out.append(f"{r['deleted']} elements deleted without a line in the listing")
+    # The printed rows show the smallest step only at their cycles; the warning is raised on every cycle's step.
+    if r["smallest_printed_step"] < STEP_DROP * r["first_step"] and not r["step_warning"]:
+        out.append(f"step {r['smallest_printed_step']:.3g} below {STEP_DROP} x the first {r['first_step']:.3g} "
+                   "without the listing's warning")
+    return out
+
+
+def table(results):
+    lines = ["| case | what it shows | end [ms] | status | cycles | energy error | deleted shells | "
+             "smallest printed step / first | step warning | wall [s] |",
+             "|---|---|---|---|---|---|---|---|---|---|"]
+    for r in results:
+        lines.append(f"| {r['name']} | {CASES[r['name']][3]} | {r['end_time']} | {r['status']} | {r['cycles']} | "
+                     f"{r['error']:.3g} % | {r['deleted']} | {r['smallest_printed_step'] / r['first_step']:.2g} | "
+                     f"{'yes' if r['step_warning'] else 'no'} | {r['wall']:.1f} |")
+    return "\n".join(lines)
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    p.add_argument("crumple")
+    p.add_argument("generator")
+    which = p.add_mutually_exclusive_group(required=True)
+    which.add_argument("--case", choices=sorted(CASES))
+    which.add_argument("--all", action="store_true")
+    p.add_argument("--work", help="folder for the decks and results (default: a temporary one)")
+    p.add_argument("--markdown", action="store_true", help="with --all: print the table of docs/stability.md")
+    a = p.parse_args()
+    names = sorted(CASES, key=list(CASES).index) if a.all else [a.case]
+    with tempfile.TemporaryDirectory() as tmp:
+        results = [run_case(a.crumple, a.generator, n, a.work or tmp) for n in names]
+    bad = 0
+    for r in results:
+        f = failures(r)
+        bad += bool(f)
+        print(f"{r['name']}: {'FAILED: ' + '; '.join(f) if f else 'passes'} (cycles {r['cycles']}, energy error "
+              f"{r['error']:.3g} %, deleted {r['deleted']}, smallest printed step / first "
+              f"{r['smallest_printed_step'] / r['first_step']:.2g}, wall {r['wall']:.1f} s)")
+    if a.markdown:
+        print(table(results))
+    return 1 if bad else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
