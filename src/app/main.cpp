@@ -53,6 +53,12 @@ int main(int argc, char** argv) {
   run->add_option("DECK", deck_path, "Starter deck (NAME_0000.rad) with its engine deck beside it")->required();
   run->add_option("-o,--output", run_options.output_directory, "Output directory (default: current directory)");
   run->add_flag("--skip-unknown", skip_unknown, skip_help);
+  std::string accuracy = "standard";
+  run->add_option("--accuracy", accuracy,
+                  "Speed-accuracy preset: draft (fewer shell points, mass scaling of the smallest 1 % of the "
+                  "elements), standard (the deck as written, the default) or fine (step scale 0.6, no added mass, "
+                  "5 shell points); every change is listed (docs/performance.md)")
+      ->check(CLI::IsMember({"draft", "standard", "fine"}));
   run->add_option("--restart", run_options.restart,
                   "Resume from a restart file (NAME.rst, written with /RFILE or when a run is stopped)");
 
@@ -121,6 +127,7 @@ int main(int argc, char** argv) {
     run_options.deck = deck_path;
     run_options.skip_unknown = skip_unknown;
     run_options.progress = app::stdout_progress(quiet);
+    run_options.accuracy = app::accuracy_preset(accuracy);
     return app::run_deck(run_options, std::cout, std::cerr);
   } catch (const DeckErrors& e) {
     return report_deck_errors(e.errors());

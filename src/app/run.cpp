@@ -10,6 +10,7 @@
 #include <optional>
 #include <sstream>
 
+#include "app/accuracy.hpp"
 #include "app/console.hpp"
 #include "app/exit_codes.hpp"
 #include "crumple/output/restart_file.hpp"
@@ -62,7 +63,7 @@ RunSummary run_engine_decks(Deck& deck, const SimulationOptions& options, std::o
   QuietObserver quiet;
   if (domain == nullptr || domain->index == 0)
     recorder.emplace(m, options.output_directory, options.name.empty() ? m.run_name : options.name,
-                     options.write_results, RunStart{options.deck, options.approximations, options.progress}, &console);
+                     options.write_results, RunStart{options.deck, options.approximations, options.progress, options.accuracy}, &console);
   RunObserver& observer = recorder ? static_cast<RunObserver&>(*recorder) : quiet;
   RunSummary summary;
   for (int k = start; k <= static_cast<int>(controls.size()); ++k) {
@@ -101,7 +102,7 @@ struct Ranks {
 
 // Reads, runs and writes the deck; with `ranks`, this rank's domain of it (rank 0 writes, the others only compute).
 int run_deck_as(const RunOptions& options, Deck& deck, std::ostream& out, std::ostream& err, Ranks* ranks,
-                const std::vector<std::string>& notes) {
+                const std::vector<std::string>& notes, const std::vector<std::string>& preset_changes) {
   const bool writer = ranks == nullptr || ranks->mpi.rank() == 0;
   std::string problem = writer ? output_directory_problem(options.output_directory) : std::string();
   if (ranks != nullptr && MpiSession::any(!problem.empty()) && problem.empty()) return kExitBadInput;  // rank 0 says why
@@ -114,6 +115,8 @@ int run_deck_as(const RunOptions& options, Deck& deck, std::ostream& out, std::o
   solver.name = deck.model.run.run_name.empty() ? deck.model.run_name : deck.model.run.run_name;
   solver.output_directory = options.output_directory;
   for (const SkippedOption& o : deck.report.skipped_options) solver.approximations.push_back(o.text());
+  solver.approximations.insert(solver.approximations.end(), preset_changes.begin(), preset_changes.end());
+  solver.accuracy = accuracy_preset_name(options.accuracy);
   solver.deck = options.deck;
   solver.progress = options.progress;
   solver.notes = notes;
@@ -139,12 +142,17 @@ int run_deck_as(const RunOptions& options, Deck& deck, std::ostream& out, std::o
   return kExitNormal;
 }
 
-Deck read_run_deck(const RunOptions& options, std::ostream& err) {
+// Reads the deck and applies the --accuracy preset to it; `preset_changes` gets one line per knob it moved.
+Deck read_run_deck(const RunOptions& options, std::ostream& err, std::vector<std::string>& preset_changes) {
   ReadOptions read;
   read.skip_unknown = options.skip_unknown;
   read.require_engine = true;
   Deck deck = read_deck(options.deck, read);
   for (const auto& w : deck.report.warnings) fmt::print(err, "warning: {}\n", w.text());
+  std::vector<RunControl*> runs{&deck.model.run};
+  for (RunControl& r : deck.continued_runs) runs.push_back(&r);
+  preset_changes = apply_accuracy_preset(options.accuracy, deck.model, runs);
+  for (const auto& c : preset_changes) fmt::print(err, "note: {}\n", c);
   return deck;
 }
 
@@ -158,8 +166,9 @@ int run_deck_on_ranks(const RunOptions& options, std::ostream& out, std::ostream
   std::ostream& errors = mpi.rank() == 0 ? err : silent;
   Deck deck;
   Partition partition;
+  std::vector<std::string> preset_changes;
   try {
-    deck = read_run_deck(options, errors);
+    deck = read_run_deck(options, errors, preset_changes);
     partition = partition_model(deck.model, mpi.size());
   } catch (const std::runtime_error& e) {
     if (mpi.rank() != 0) return kExitBadInput;
@@ -171,7 +180,7 @@ int run_deck_on_ranks(const RunOptions& options, std::ostream& out, std::ostream
   MpiExchange exchange;
   Ranks ranks{mpi, domain, exchange};
   try {
-    return run_deck_as(options, deck, console, errors, &ranks, describe(partition));
+    return run_deck_as(options, deck, console, errors, &ranks, describe(partition), preset_changes);
   } catch (const std::exception& e) {
     fmt::print(err, "crumple: rank {} of {}: {}\n", mpi.rank(), mpi.size(), e.what());
     err.flush();
@@ -183,8 +192,9 @@ int run_deck_on_ranks(const RunOptions& options, std::ostream& out, std::ostream
 
 int run_deck(const RunOptions& options, std::ostream& out, std::ostream& err) {
   if (launched_ranks() > 1) return run_deck_on_ranks(options, out, err);
-  Deck deck = read_run_deck(options, err);
-  return run_deck_as(options, deck, out, err, nullptr, {});
+  std::vector<std::string> preset_changes;
+  Deck deck = read_run_deck(options, err, preset_changes);
+  return run_deck_as(options, deck, out, err, nullptr, {}, preset_changes);
 }
 
 }  // namespace crumple::app

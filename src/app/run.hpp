@@ -2,6 +2,7 @@
 #include <filesystem>
 #include <iosfwd>
 
+#include "app/accuracy.hpp"
 #include "crumple/deck/reader.hpp"
 #include "crumple/output/run.hpp"
 #include "crumple/output/run_summary.hpp"
@@ -14,6 +15,7 @@ struct RunOptions {
   bool skip_unknown = false;
   std::filesystem::path restart;  // --restart FILE: resume the snapshot of a NAME.rst (empty: start at t = 0)
   ProgressOptions progress;  // console progress (console.hpp: stdout_progress)
+  AccuracyPreset accuracy = AccuracyPreset::Standard;  // --accuracy (accuracy.hpp)
 };
 
 // Runs every engine deck of `deck` in order (NAME_0001.rad, then the continued runs NAME_0002.rad...), each from

@@ -181,6 +181,7 @@ void RunRecorder::header(const RunStart& run) {
                             m.nodes.size(), count(ElementKind::Shell4), count(ElementKind::Shell3),
                             count(ElementKind::Brick8), m.element_groups.size(), m.parts.size(),
                             m.type7_interfaces.size(), m.rigid_bodies.size(), m.rigid_walls.size()));
+  listing_.line("ACCURACY PRESET " + run.accuracy);
   if (!run.approximations.empty()) listing_.line("OPTIONS SKIPPED OR APPROXIMATED:");
   for (const auto& option : run.approximations) listing_.line("  " + option);
 }
@@ -318,6 +319,7 @@ RunSummary RunRecorder::finish(const SolverState& s, const RunEvents& events, co
                             share(phases.update), phases.output, share(phases.output)));
   RunSummary summary = summarize_run(model_, name_, s, events, phases, dt, wall);
   summary.approximations = run_.approximations;
+  summary.accuracy = run_.accuracy;
   return summary;
 }
 

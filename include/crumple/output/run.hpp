@@ -20,6 +20,7 @@ struct SimulationOptions : SolverOptions {
   // Every option of the deck that was skipped or approximated (DeckReport::skipped_options, one line each:
   // "[skipped] file:line: keyword: field F: what"), for the listing header and the summary. Filled by the app.
   std::vector<std::string> approximations;
+  std::string accuracy = "standard";  // the --accuracy preset (its changes are among the approximations)
   std::filesystem::path deck;  // the starter deck, named in the listing header (empty: not named)
   ProgressOptions progress;    // the console progress line (off unless the app turns it on)
   std::vector<std::string> notes;  // the caller's start-up notes for the listing (a partition's quality)

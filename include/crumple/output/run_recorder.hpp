@@ -31,6 +31,7 @@ struct RunStart {
   // cards), one line each.
   std::vector<std::string> approximations;
   ProgressOptions progress;
+  std::string accuracy = "standard";  // the --accuracy preset, for the listing header and the summary
 };
 
 // The run's observer that writes it: NAME.out, NAME.h5, NAME.rst and the console's notes, warnings and progress.

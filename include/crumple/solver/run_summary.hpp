@@ -65,6 +65,7 @@ struct RunSummary {
   // Options of the deck that were skipped or approximated (output-only requests not written, performance hints,
   // options skipped on --skip-unknown), one line each; "approximations" in the JSON. Filled by the app.
   std::vector<std::string> approximations;
+  std::string accuracy = "standard";  // the --accuracy preset; its changes are among the approximations
 };
 
 // The status a stop reason gives the run: a /STOP limit or a stop on request ends it "stopped", anything else

@@ -1,0 +1,124 @@
+#include "app/accuracy.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "crumple/model/summary.hpp"
+
+namespace crumple::app {
+
+namespace {
+
+constexpr double kDefaultStepScale = 0.9;  // /DT's scale when the deck gives none
+
+// Where a change applies: the engine deck it is in when the run has several.
+std::string in_deck(std::size_t k, std::size_t decks) {
+  return decks > 1 ? fmt::format(" (engine deck {})", k + 1) : std::string();
+}
+
+// fine: every step scale the deck sets, and the run's own, at most kFineStepScale.
+void cap_step_scales(RunControl& run, const std::string& where, std::vector<std::string>& changes) {
+  const double run_scale = run.dt.scale > 0.0 ? run.dt.scale : kDefaultStepScale;
+  if (run_scale > kFineStepScale) {
+    changes.push_back(fmt::format("/DT scale {:g} -> {:g}{}", run_scale, kFineStepScale, where));
+    run.dt.scale = kFineStepScale;
+  }
+  for (auto [card, control] : {std::pair{"/DT/SHELL", &run.dt_shell}, {"/DT/SH_3N", &run.dt_sh3n},
+                               {"/DT/BRICK", &run.dt_brick}}) {
+    if (control->given && control->scale > kFineStepScale) {
+      changes.push_back(fmt::format("{} scale {:g} -> {:g}{}", card, control->scale, kFineStepScale, where));
+      control->scale = kFineStepScale;
+    }
+  }
+}
+
+// fine: no added mass, neither the nodal mass scaling nor the contact's.
+void remove_mass_scaling(RunControl& run, const std::string& where, std::vector<std::string>& changes) {
+  for (auto [card, control] : {std::pair{"/DT/NODA/CST", &run.dt_nodal_cst}, {"/DT/INTER/CST", &run.dt_inter_cst}}) {
+    if (!control->given) continue;
+    changes.push_back(fmt::format("{} {:g} {:g} removed: no added mass{}", card, control->scale, control->minimum, where));
+    *control = TimeStepControl{};
+  }
+}
+
+// The unscaled step below which `share` of the elements lie, on the initial geometry (T-1).
+double element_step_quantile(const Model& m, double share) {
+  std::vector<double> steps;
+  for (const ElementGroup& g : m.element_groups)
+    for (std::int32_t e = g.begin; e < g.end; ++e)
+      steps.push_back(initial_element_time_step(m, g.kind, static_cast<std::size_t>(e)));
+  if (steps.empty()) return 0.0;
+  const auto at = steps.begin() + static_cast<std::ptrdiff_t>(share * static_cast<double>(steps.size() - 1));
+  std::nth_element(steps.begin(), at, steps.end());
+  return *at;
+}
+
+// draft: nodal mass scaling (T-2, T-3) up to the step of the elements' kDraftMassScaledShare quantile, unless the
+// deck already scales to a larger step; nothing when the smallest elements are no smaller than that quantile (a
+// uniform mesh), where mass scaling would only add mass everywhere.
+void scale_smallest_elements(const Model& m, RunControl& run, const std::string& where, std::vector<std::string>& changes) {
+  const double quantile = element_step_quantile(m, kDraftMassScaledShare);
+  const ControllingElement smallest = smallest_element_time_step(m);
+  if (!(quantile > smallest.time_step * (1.0 + 1e-6))) return;  // no element is smaller than the others
+  const double scale = run.dt_nodal_cst.scale > 0.0 ? run.dt_nodal_cst.scale
+                       : run.dt.scale > 0.0         ? run.dt.scale
+                                                    : kDefaultStepScale;
+  const double target = scale * quantile;
+  if (run.dt_nodal_cst.given && run.dt_nodal_cst.minimum >= target) return;  // the deck scales further already
+  changes.push_back(fmt::format("/DT/NODA/CST {:g} {:.4g}: mass scaling up to the step of the smallest {:g} % of the "
+                                "elements (the smallest's is {:.4g}){}", scale, target, 100.0 * kDraftMassScaledShare,
+                                scale * smallest.time_step, where));
+  run.dt_nodal_cst.scale = scale, run.dt_nodal_cst.minimum = target, run.dt_nodal_cst.given = true;
+}
+
+// fine and draft: the shells' points through the thickness. N = 0 (resultant plasticity) and N = 1 (a membrane)
+// keep theirs: more points would change what the section is, not how well it is integrated.
+void set_shell_points(Model& m, int points, bool raise, std::vector<std::string>& changes) {
+  for (std::size_t p = 0; p < m.properties.size(); ++p) {
+    const Property& property = m.properties[p];
+    int& n = m.formulations[p].n_points;
+    if (property.kind != PropertyKind::Shell || n < 2 || (raise ? n >= points : n <= points)) continue;
+    changes.push_back(fmt::format("/PROP/SHELL/{} N {} -> {} points through the thickness", property.user_id, n, points));
+    n = points;
+  }
+}
+
+}  // namespace
+
+AccuracyPreset accuracy_preset(const std::string& name) {
+  if (name == "draft") return AccuracyPreset::Draft;
+  if (name == "standard") return AccuracyPreset::Standard;
+  if (name == "fine") return AccuracyPreset::Fine;
+  throw std::invalid_argument(fmt::format("--accuracy {}: expected draft, standard or fine", name));
+}
+
+const char* accuracy_preset_name(AccuracyPreset preset) {
+  switch (preset) {
+    case AccuracyPreset::Draft: return "draft";
+    case AccuracyPreset::Standard: return "standard";
+    case AccuracyPreset::Fine: return "fine";
+  }
+  return "standard";
+}
+
+std::vector<std::string> apply_accuracy_preset(AccuracyPreset preset, Model& model, std::vector<RunControl*> runs) {
+  std::vector<std::string> changes;
+  if (preset == AccuracyPreset::Standard) return changes;
+  for (std::size_t k = 0; k < runs.size(); ++k) {
+    const std::string where = in_deck(k, runs.size());
+    if (preset == AccuracyPreset::Fine) {
+      cap_step_scales(*runs[k], where, changes);
+      remove_mass_scaling(*runs[k], where, changes);
+    } else {
+      scale_smallest_elements(model, *runs[k], where, changes);
+    }
+  }
+  if (preset == AccuracyPreset::Fine) set_shell_points(model, kFineShellPoints, true, changes);
+  else set_shell_points(model, kDraftShellPoints, false, changes);
+  for (std::string& c : changes) c = fmt::format("--accuracy {}: {}", accuracy_preset_name(preset), c);
+  return changes;
+}
+
+}  // namespace crumple::app

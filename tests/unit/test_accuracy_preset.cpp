@@ -1,0 +1,117 @@
+// --accuracy draft|standard|fine (src/app/accuracy.hpp): what each preset moves in a read deck, and that it says
+// every change in one line.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "app/accuracy.hpp"
+#include "crumple/model/summary.hpp"
+#include "deck_files.hpp"
+
+using namespace crumple;
+using test::I;
+using test::R;
+
+namespace {
+
+bool any_contains(const std::vector<std::string>& lines, const std::string& part) {
+  return std::any_of(lines.begin(), lines.end(), [&](const std::string& l) { return l.find(part) != std::string::npos; });
+}
+
+// A strip of `n` square shells of side 10 mm (property 1, N points) and, with `tiny`, one more shell of side
+// 0.1 mm beside it (element step 100 times smaller).
+std::string strip(int n, int points, bool tiny) {
+  std::string s = "/NODE\n";
+  for (int i = 0; i <= n; ++i) s += I(2 * i + 1) + R(0.01 * i) + R(0.0) + R(0.0) + "\n" + I(2 * i + 2) + R(0.01 * i) + R(0.01) + R(0.0) + "\n";
+  const long long t = 2 * n + 3;
+  if (tiny)
+    s += I(t) + R(-1.0) + R(0.0) + R(0.0) + "\n" + I(t + 1) + R(-0.9999) + R(0.0) + R(0.0) + "\n" + I(t + 2) +
+         R(-0.9999) + R(0.0001) + R(0.0) + "\n" + I(t + 3) + R(-1.0) + R(0.0001) + R(0.0) + "\n";
+  s += "/SHELL/1\n";
+  for (int i = 0; i < n; ++i) s += I(i + 1) + I(2 * i + 1) + I(2 * i + 3) + I(2 * i + 4) + I(2 * i + 2) + "\n";
+  if (tiny) s += I(n + 1) + I(t) + I(t + 1) + I(t + 2) + I(t + 3) + "\n";
+  s += "/PART/1\nstrip\n" + I(1) + I(1) + "\n";
+  s += "/PROP/SHELL/1\nshell\n" + I(24) + I(0) + I(0) + "\n" + R(0.0) + "\n" + I(points) + I(0) + R(0.001) + "\n";
+  s += "/MAT/ELAST/1\nsteel\n" + R(7800.0) + "\n" + R(2.1e11) + R(0.3) + "\n";
+  return s;
+}
+
+struct Read {
+  test::TempDir dir;
+  Deck deck;
+  Read(const std::string& starter_cards, const std::string& engine) {
+    dir.write("TEST_0001.rad", engine);
+    deck = read_deck(dir.write("TEST_0000.rad", test::begin_card() + starter_cards + "/END\n"));
+  }
+  std::vector<std::string> apply(app::AccuracyPreset preset) {
+    return app::apply_accuracy_preset(preset, deck.model, {&deck.model.run});
+  }
+};
+
+const std::string kEngine = test::engine_cards();
+
+TEST(AccuracyPreset, StandardChangesNothing) {
+  Read r(strip(4, 3, false), kEngine + "/DT/NODA/CST\n0.8 1e-7\n");
+  EXPECT_TRUE(r.apply(app::AccuracyPreset::Standard).empty());
+  EXPECT_EQ(r.deck.model.formulations[0].n_points, 3);
+  EXPECT_TRUE(r.deck.model.run.dt_nodal_cst.given);
+}
+
+TEST(AccuracyPreset, FineCapsTheStepScalesRemovesAddedMassAndTakesFivePoints) {
+  Read r(strip(4, 3, false), kEngine + "/DT\n0.8 0\n/DT/SHELL\n0.7 0\n/DT/NODA/CST\n0.8 1e-7\n/DT/INTER/CST\n0.9 1e-8\n");
+  const auto changes = r.apply(app::AccuracyPreset::Fine);
+  const RunControl& run = r.deck.model.run;
+  EXPECT_DOUBLE_EQ(run.dt.scale, app::kFineStepScale);
+  EXPECT_DOUBLE_EQ(run.dt_shell.scale, app::kFineStepScale);
+  EXPECT_FALSE(run.dt_nodal_cst.given);
+  EXPECT_FALSE(run.dt_inter_cst.given);
+  EXPECT_EQ(r.deck.model.formulations[0].n_points, 5);
+  ASSERT_EQ(changes.size(), 5u);
+  EXPECT_TRUE(any_contains(changes, "--accuracy fine: /DT scale 0.8 -> 0.6"));
+  EXPECT_TRUE(any_contains(changes, "--accuracy fine: /DT/SHELL scale 0.7 -> 0.6"));
+  EXPECT_TRUE(any_contains(changes, "--accuracy fine: /DT/NODA/CST 0.8 1e-07 removed"));
+  EXPECT_TRUE(any_contains(changes, "--accuracy fine: /DT/INTER/CST 0.9 1e-08 removed"));
+  EXPECT_TRUE(any_contains(changes, "--accuracy fine: /PROP/SHELL/1 N 3 -> 5 points"));
+}
+
+TEST(AccuracyPreset, FineKeepsWhatIsAlreadyFinerAndTheSectionsThatAreNotIntegrationChoices) {
+  Read r(strip(4, 1, false), kEngine + "/DT\n0.5 0\n");  // N = 1: a membrane, not a coarse integration
+  EXPECT_TRUE(r.apply(app::AccuracyPreset::Fine).empty());
+  EXPECT_DOUBLE_EQ(r.deck.model.run.dt.scale, 0.5);
+  EXPECT_EQ(r.deck.model.formulations[0].n_points, 1);
+}
+
+TEST(AccuracyPreset, DraftTakesThreePointsAndAddsNoMassToAUniformMesh) {
+  Read r(strip(200, 5, false), kEngine);
+  const auto changes = r.apply(app::AccuracyPreset::Draft);
+  EXPECT_EQ(r.deck.model.formulations[0].n_points, 3);
+  EXPECT_FALSE(r.deck.model.run.dt_nodal_cst.given);
+  ASSERT_EQ(changes.size(), 1u);
+  EXPECT_TRUE(any_contains(changes, "--accuracy draft: /PROP/SHELL/1 N 5 -> 3 points"));
+}
+
+TEST(AccuracyPreset, DraftMassScalesTheSmallestPercentOfTheElements) {
+  Read r(strip(200, 3, true), kEngine);  // 200 shells of 10 mm and one of 0.1 mm: its step is 1/100 of theirs
+  const auto changes = r.apply(app::AccuracyPreset::Draft);
+  const TimeStepControl& cst = r.deck.model.run.dt_nodal_cst;
+  ASSERT_TRUE(cst.given);
+  const double big = initial_element_time_step(r.deck.model, ElementKind::Shell4, 0);
+  EXPECT_DOUBLE_EQ(cst.scale, 0.9);
+  EXPECT_NEAR(cst.minimum, 0.9 * big, 1e-9 * big);  // the 1st percentile is a 10 mm shell's step
+  ASSERT_EQ(changes.size(), 1u);
+  EXPECT_TRUE(any_contains(changes, "--accuracy draft: /DT/NODA/CST 0.9"));
+}
+
+TEST(AccuracyPreset, DraftKeepsADeckThatMassScalesFurther) {
+  Read r(strip(200, 3, true), kEngine + "/DT/NODA/CST\n0.9 1\n");
+  EXPECT_TRUE(r.apply(app::AccuracyPreset::Draft).empty());
+  EXPECT_DOUBLE_EQ(r.deck.model.run.dt_nodal_cst.minimum, 1.0);
+}
+
+TEST(AccuracyPreset, NamesAreTheThreePresets) {
+  EXPECT_EQ(app::accuracy_preset("draft"), app::AccuracyPreset::Draft);
+  EXPECT_EQ(app::accuracy_preset("fine"), app::AccuracyPreset::Fine);
+  EXPECT_THROW(app::accuracy_preset("coarse"), std::invalid_argument);
+}
+
+}  // namespace
