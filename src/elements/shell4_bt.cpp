@@ -319,6 +319,30 @@ namespace {
 // The margin the shear mode keeps over the step it must hold (eq. S-8a): stable at 1.05 times the scaled step.
 constexpr double kShearModeMargin = 1.05;
 
+// The Ishell 24 transverse-shear hourglass mode (eq. S-13) moves the deflections with gamma and the rotations with
+// cx, cy, which grow with the element's long side: on a sliver (aspect ratio 1000) its frequency on the
+// reference inertia is twice what the element step holds. Its rank-one stiffness k q q^T, k = kappa G t (H_xx +
+// H_yy), over the lumped masses m / 4 and inertias (m / 4) X gives omega^2 = k (4 / m) (sum gamma^2 + sum (cx^2 +
+// cy^2) / X) <= (2 / step)^2 for X at least the returned share (eq. S-8b); 0 when it holds for any X.
+double hourglass_shear_share(const ShellGroupParameters& p, const double (&lx)[4], const double (&ly)[4], double area,
+                             double step, double shear_speed2) {
+  constexpr double h[4] = {1.0, -1.0, 1.0, -1.0};
+  double b1[4], b2[4], gamma[4], hx = 0.0, hy = 0.0;
+  for (int a = 0; a < 4; ++a) {
+    b1[a] = (ly[(a + 1) % 4] - ly[(a + 3) % 4]) / (2.0 * area), b2[a] = (lx[(a + 3) % 4] - lx[(a + 1) % 4]) / (2.0 * area);
+    hx += h[a] * lx[a], hy += h[a] * ly[a];
+  }
+  for (int a = 0; a < 4; ++a) gamma[a] = p.orthogonal_hourglass ? 0.25 * (h[a] - hx * b1[a] - hy * b2[a]) : 0.25 * h[a];
+  double cx[4], cy[4];
+  shell_hourglass::shear_rotation_coefficients(shell_hourglass::quadratic_moments(gamma, lx, ly), b1, b2, cx, cy);
+  double deflection = 0.0, rotation = 0.0;
+  for (int a = 0; a < 4; ++a) deflection += gamma[a] * gamma[a], rotation += cx[a] * cx[a] + cy[a] * cy[a];
+  const shell_hourglass::ShapeTensor H = shell_hourglass::shape_tensor(lx, ly, area);
+  // (4 / step^2) (m / 4) / k with m / k = rho A / (kappa G (H_xx + H_yy)) per unit thickness.
+  const double room = 4.0 / (step * step) * area / (4.0 * shear_speed2 * (H.xx + H.yy)) - deflection;
+  return room > 0.0 ? rotation / room : 0.0;  // room <= 0: the deflection alone is too fast, which X cannot mend
+}
+
 template <int NN>
 double inertia_share(const ShellGroupParameters& p, const Vec3* x, double thickness, double scale) {
   // The element's plane at the start: its normal from the diagonals (the sides for a triangle), e1 along the
@@ -352,7 +376,10 @@ double inertia_share(const ShellGroupParameters& p, const Vec3* x, double thickn
   const double shear = p.shear_factor * E / (2.0 * (1.0 + nu)) / p.density;
   const double room = 4.0 / (step * step * shear) - NN * lambda;
   if (!(room > 0.0)) return reference;  // not reachable with kappa G < E: the membrane bound is the lower
-  return std::max(reference, 1.0 / room);
+  double share = std::max(reference, 1.0 / room);
+  if constexpr (NN == 4)
+    if (p.physical_hourglass) share = std::max(share, hourglass_shear_share(p, lx, ly, area, step, shear));
+  return share;
 }
 
 }  // namespace

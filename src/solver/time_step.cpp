@@ -39,6 +39,9 @@ NodalStep nodal_time_step(const Model& m, SolverState& s) {
     double& mass = s.nodes.mass[node];
     const double needed = 0.5 * k[node] * target * target;
     if (mass < needed) {
+      // A shell node's rotational inertia grows in the same ratio (eq. T-3a): its element's rotation modes keep
+      // their frequency ratio to the translational ones and stay stable at the step the mass now gives.
+      if (mass > 0.0) s.nodes.inertia[node] *= needed / mass;
       s.mass_added += needed - mass;
       mass = needed;
     }
