@@ -126,7 +126,7 @@ def fixed_wall_cards(wall_id, group_id):
             "#               X_M1                Y_M1                Z_M1\n", r20(1.0) + r20(0.0) + r20(0.0) + "\n"]
 
 
-def type7_cards(inter_id, title, surf_title, surf_id, part_ids, secondary_group, fric, gapmin=0.0):
+def type7_cards(inter_id, title, surf_title, surf_id, part_ids, secondary_group, fric, gapmin=0.0, inacti=0):
     """/SURF/PART of the parts + /INTER/TYPE7: the group's nodes against that surface, defaults otherwise."""
     blank = " " * 10
     return [f"/SURF/PART/{surf_id}\n{surf_title}\n"] + id_list(part_ids) + [
@@ -138,7 +138,7 @@ def type7_cards(inter_id, title, surf_title, surf_id, part_ids, secondary_group,
             r20(0.0) + r20(0.0) + r20(0.0) + r20(0.0) + i10(0) + i10(0) + "\n",
             "#              Stfac                Fric              Gapmin              Tstart               Tstop\n",
             r20(0.0) + r20(fric) + r20(gapmin) + r20(0.0) + r20(0.0) + "\n",
-            "       000" + " " * 20 + i10(0) + r20(0.0) + r20(0.0) + r20(0.0) + "\n",
+            "       000" + " " * 20 + i10(inacti) + r20(0.0) + r20(0.0) + r20(0.0) + "\n",
             i10(0) + i10(0) + r20(0.0) + i10(0) + i10(0) + i10(0) + r20(0.0) + i10(0) + "\n"]
 
 
@@ -249,6 +249,9 @@ class BallPlateSetup:
     element_size: float = 5.0
     speed: float = 10.0
     clearance: float = 0.05  # between the contact gaps at t = 0 [mm]
+    penetration: float = 0.0  # > 0: the ball's lowest node starts this share of the gap inside it instead
+    inacti: int = 0  # the interface's Inacti (what it does with initial penetrations)
+    plate_modulus_ratio: float = 1.0  # > 1: the plate is elastic, its Young's modulus the steel's over this
     steel: JohnsonCook = field(default_factory=JohnsonCook)
     ishell: int = 24
     points: int = 5
@@ -299,7 +302,8 @@ def sphere_point(lattice, n, radius, centre):
 def ball_mesh(s, first_id):
     """Nodes and quads of the cube-sphere ball whose lowest point is the contact gap plus clearance above z = 0."""
     n = s.ball_divisions
-    centre = (0.0, 0.0, s.radius + s.gapmin + s.clearance)
+    clearance = -s.penetration * s.gapmin if s.penetration > 0.0 else s.clearance
+    centre = (0.0, 0.0, s.radius + s.gapmin + clearance)
     ids, points, quads = {}, [], []
     for axis in range(3):
         for sign in (1, -1):
@@ -309,6 +313,9 @@ def ball_mesh(s, first_id):
                         ids[lat] = first_id + len(points)
                         points.append(sphere_point(lat, n, s.radius, centre))
                 quads.append(tuple(ids[lat] for lat in quad))
+    if s.penetration > 0.0:  # the lowest node, not the sphere, starts that share of the gap inside it
+        drop = min(p[2] for p in points) - (s.gapmin + clearance)
+        points = [(x, y, z - drop) for (x, y, z) in points]
     return points, quads
 
 
@@ -328,9 +335,14 @@ def ball_plate_starter(s):
     ball_points, ball_quads = ball_mesh(s, 1 + len(plate_points))
     out = begin_cards(s.name, s.title, s.origin)
     out += johnson_cook_cards(1, "mild steel", s.steel)
+    plate_material = 1
+    if s.plate_modulus_ratio != 1.0:  # a soft elastic plate: the stiffness ratio of the bodies in contact
+        plate_material = 2
+        out += ["/MAT/LAW1/2\nsoft plate\n", r20(s.steel.rho) + "\n",
+                r20(s.steel.young / s.plate_modulus_ratio) + r20(s.steel.poisson) + "\n"]
     out += shell_property_cards(1, "plate", s.ishell, s.points, s.plate_thickness)
     out += shell_property_cards(2, "ball", s.ishell, s.points, s.ball_thickness)
-    out += part_cards(1, "plate", 1, 1) + part_cards(2, "ball", 2, 1)
+    out += part_cards(1, "plate", 1, plate_material) + part_cards(2, "ball", 2, 1)
     out += [ruler()] + node_cards(plate_points + ball_points)
     out += element_cards("SHELL", 1, plate_quads) + element_cards("SHELL", 2, ball_quads, 1 + len(plate_quads))
     out += ["/GRNOD/NODE/10\nplate edge\n"] + id_list(edge)
@@ -338,7 +350,7 @@ def ball_plate_starter(s):
     out += ["/GRNOD/PART/11\nball\n", i10(2) + "\n"]
     out += initial_velocity_cards(1, "drop speed", (0.0, 0.0, -s.speed), 11)
     if s.contact:
-        out += type7_cards(1, "ball on plate", "plate surface", 1, [1], 11, s.fric, s.gapmin)
+        out += type7_cards(1, "ball on plate", "plate surface", 1, [1], 11, s.fric, s.gapmin, s.inacti)
         out += history_cards("INTER", 1, "ball on plate", 1)
     counts = {"shell4": len(plate_quads) + len(ball_quads), "nodes": len(plate_points) + len(ball_points),
               "contact_secondary_nodes": len(ball_points) if s.contact else 0}
@@ -424,7 +436,7 @@ def write_tube(directory, t, with_meta=True):
 
 
 def setup_for(family, elements=None, size=None, end_time=0.1, contact=True, ishell=24, points=5, isolid=24,
-              speed=10.0, gap=0.0):
+              speed=10.0, gap=0.0, penetration=0.0, inacti=0, plate_modulus_ratio=1.0):
     """The setup of one family at a target element count or an element size [mm]."""
     if family == "tube":
         n = tube_elements_per_side(elements) if elements else max(1, int(round(50.0 / size)))
@@ -433,7 +445,8 @@ def setup_for(family, elements=None, size=None, end_time=0.1, contact=True, ishe
     if family == "ball_plate":
         h = size if size else ball_plate_element_size(elements)
         return BallPlateSetup(element_size=h, end_time=end_time, contact=contact, ishell=ishell, points=points,
-                              speed=speed)
+                              speed=speed, penetration=penetration, inacti=inacti,
+                              plate_modulus_ratio=plate_modulus_ratio)
     if family == "brick_block":
         n = brick_block_divisions(elements) if elements else max(1, int(round(50.0 / size)))
         return BrickBlockSetup(divisions=n, end_time=end_time, isolid=isolid, speed=speed)
@@ -468,6 +481,12 @@ def parse_arguments():
     p.add_argument("--speed", type=float, default=10.0, help="impact speed [m/s] (default 10)")
     p.add_argument("--gap", type=float, default=0.0,
                    help="tube: the self contact's Gapmin [mm] (default 0: the thickness-based default)")
+    p.add_argument("--penetration", type=float, default=0.0,
+                   help="ball_plate: the ball starts this share of the contact gap inside it (0 to 0.99)")
+    p.add_argument("--inacti", type=int, default=0, help="ball_plate: the interface's Inacti (default 0)")
+    p.add_argument("--plate-modulus-ratio", type=float, default=1.0,
+                   help="ball_plate: an elastic plate whose Young's modulus is the steel's over this (default 1: "
+                        "the ball's steel)")
     return p.parse_args()
 
 
@@ -475,9 +494,17 @@ def main():
     a = parse_arguments()
     if a.gap and a.family != "tube":
         sys.exit(f"generate_bench.py: --gap is the tube's self-contact gap; {a.family} has none to set")
+    ball_only = {"--penetration": a.penetration != 0.0, "--inacti": a.inacti != 0,
+                 "--plate-modulus-ratio": a.plate_modulus_ratio != 1.0}
+    for option, given in ball_only.items():
+        if given and a.family != "ball_plate":
+            sys.exit(f"generate_bench.py: {option} is the ball_plate's; {a.family} has none to set")
+    if not 0.0 <= a.penetration < 1.0 or a.plate_modulus_ratio <= 0.0:
+        sys.exit("generate_bench.py: --penetration takes 0 to below 1, --plate-modulus-ratio a positive number")
     starter = write_family(a.family, a.out, elements=int(a.elements) if a.elements else None, size=a.size,
                            end_time=a.end_time, contact=not a.no_contact, ishell=a.ishell, points=a.points,
-                           isolid=a.isolid, speed=a.speed, gap=a.gap)
+                           isolid=a.isolid, speed=a.speed, gap=a.gap, penetration=a.penetration, inacti=a.inacti,
+                           plate_modulus_ratio=a.plate_modulus_ratio)
     counts = json.loads(starter.with_name(starter.name.replace("_0000.rad", ".bench.json")).read_text())["counts"]
     print(f"wrote {starter}: " + ", ".join(f"{k} {v}" for k, v in counts.items()))
 

@@ -223,6 +223,9 @@ ContactState setup_contact(const Model& m, NodalState& nodes, std::vector<std::s
       const double p[3] = {nodes.x[n], nodes.y[n], nodes.z[n]};
       const SegmentPoint c = closest_point_on_segment(p, x);
       const double g = in.pair_gap(i, s);
+      // Inacti 2: every segment a node starts inside the gap of leaves, not only its deepest: a node 99 % into
+      // the gap of one segment is as deep in its neighbours' (stability.BallPlate penetration cases).
+      if (card.inacti == 2 && c.distance < g) in.segment_active[s] = 0;
       if (c.distance < g && g - c.distance > worst[i]) {
         worst[i] = g - c.distance, worst_segment[i] = static_cast<std::int32_t>(s);
         for (int d = 0; d < 3; ++d) outward[i][static_cast<std::size_t>(d)] = c.distance > 0.0 ? (p[d] - c.point[d]) / c.distance : 0.0;
@@ -238,7 +241,7 @@ ContactState setup_contact(const Model& m, NodalState& nodes, std::vector<std::s
       if (worst[i] > deepest) deepest = worst[i], deepest_node = n;
       switch (card.inacti) {
         case 1: in.node_active[i] = 0; break;
-        case 2: in.segment_active[static_cast<std::size_t>(worst_segment[i])] = 0; break;
+        case 2: break;  // its segments are removed above
         case 3: {
           const auto k = static_cast<std::size_t>(n);
           nodes.x[k] += worst[i] * outward[i][0], nodes.y[k] += worst[i] * outward[i][1], nodes.z[k] += worst[i] * outward[i][2];
@@ -255,7 +258,7 @@ ContactState setup_contact(const Model& m, NodalState& nodes, std::vector<std::s
     if (!result.initial_penetrations.empty()) {
       static constexpr const char* action[7] = {"no action: they start with a contact force",
                                                 "their stiffness is removed (Inacti 1)",
-                                                "the segments they touch are removed (Inacti 2)",
+                                                "every segment they start inside the gap of is removed (Inacti 2)",
                                                 "they are moved out of the gap (Inacti 3)", "", 
                                                 "their gap is reduced to the initial distance (Inacti 5)",
                                                 "their gap is reduced to the initial distance less 5 % (Inacti 6)"};
