@@ -105,7 +105,7 @@ double Hardening::slope(double eps_p, double eps_rate) const {
   return 0.0;
 }
 
-double Hardening::yield_and_slope(double eps_p, double eps_rate, double& slope_out) const {
+double Hardening::yield_and_slope(double eps_p, double eps_rate, double& slope_out, double* static_part_out) const {
   if (law != MaterialLaw::JohnsonCook) {
     slope_out = slope(eps_p, eps_rate);
     return yield(eps_p, eps_rate);
@@ -116,7 +116,9 @@ double Hardening::yield_and_slope(double eps_p, double eps_rate, double& slope_o
   const double e = std::max(eps_p, 1e-6);
   const double power = p.b * std::pow(e, p.n);
   const double hardening = eps_p > 0.0 ? (eps_p == e ? power : p.b * std::pow(eps_p, p.n)) : 0.0;
-  const double sigma = (p.a + hardening) * factor;
+  const double static_value = p.a + hardening;  // jc_static's expression, term for term
+  if (static_part_out != nullptr) *static_part_out = static_value;
+  const double sigma = static_value * factor;
   if (p.sig_max0 > 0.0 && sigma >= cap(p, factor)) {
     slope_out = 0.0;
     return cap(p, factor);

@@ -115,9 +115,13 @@ PlaneStressResult plane_stress_radial_return(const PlaneStressElastic& el, const
   const bool kept = pr.kept;
   // PS-5: f(d) = trial - 3 G d - sigma_y(eps_p + d) = 0, decreasing in d; Newton from d = 0, safeguarded.
   double d = 0.0, lo = 0.0, hi = trial / (3.0 * G);
+  // The last strain the hardening was evaluated at and its static part: when the iteration ends on the residual
+  // there, the kept static part needs no second power.
+  double evaluated = -1.0, evaluated_static = 0.0;
   for (int it = 0; it < 50; ++it) {
     double slope = 0.0;
-    const double yield = hardening.yield_and_slope(eps_p + d, rate, slope);
+    evaluated = eps_p + d;
+    const double yield = hardening.yield_and_slope(evaluated, rate, slope, kept ? &evaluated_static : nullptr);
     const double f = trial - 3.0 * G * d - yield;
     if (std::abs(f) <= 1e-12 * yield) break;
     if (f > 0.0) lo = d; else hi = d;
@@ -132,7 +136,7 @@ PlaneStressResult plane_stress_radial_return(const PlaneStressElastic& el, const
   const double scale = (trial - 3.0 * G * d) / trial;
   sxx = txx * scale, syy = tyy * scale, sxy = txy * scale;
   result.plastic_strain_increment = d;
-  if (kept) *static_yield = hardening.static_part(eps_p + d);
+  if (kept) *static_yield = eps_p + d == evaluated ? evaluated_static : hardening.static_part(eps_p + d);
   // Plastic flow along the normal (3/2) s / sigma_vm: through the thickness -d (sxx + syy) / (2 sigma_vm).
   const double vm = von_mises_plane_stress(sxx, syy, sxy);
   result.thickness_strain = -nu / E * ((sxx + syy) - old_sum) - (vm > 0.0 ? d * (sxx + syy) / (2.0 * vm) : 0.0);

@@ -27,8 +27,9 @@ struct Hardening {
   bool has_static_part() const { return law == MaterialLaw::JohnsonCook; }
   double static_part(double eps_p) const;
   double yield_from_static(double static_part, double eps_rate) const;
-  // Both at once (one power evaluation for Johnson-Cook): returns sigma_y, writes the slope.
-  double yield_and_slope(double eps_p, double eps_rate, double& slope) const;
+  // Both at once (one power evaluation for Johnson-Cook): returns sigma_y, writes the slope and, when asked for
+  // Johnson-Cook, the static part at eps_p (the value static_part gives, to the last bit).
+  double yield_and_slope(double eps_p, double eps_rate, double& slope, double* static_part_out = nullptr) const;
   // Strain rate the yield stress sees (docs/theory/materials.md, eq. RF): with Fsmooth on and a cut-off Fcut, the
   // first-order low-pass rate_f = a rate + (1 - a) previous with a = min(1, 2 pi Fcut dt); otherwise `rate`.
   double filtered_rate(double rate, double previous, double dt) const;
