@@ -95,7 +95,31 @@ struct InterfaceCycle {
 
 struct PassSettings {
   double time, dt_previous, dt_estimate, scale, release_step, mass_step;
+  double speed = 0.0;  // the interface's largest nodal speed this pass [L/T]
 };
+
+// The pairs of my_pairs this pass must compute (eq. C-12a): a pair whose distance, less what its node and segment
+// can have moved since it was last computed, is still beyond the gap by more than three steps of the fastest
+// closing, and whose kinematic step would stay above the elements' step, can add no force, no stiffness and no
+// step: it is skipped. Its node must have no Inacti 5 / 6 gap reduction (computing a far pair shrinks that).
+void screen_pairs(ContactInterface& in, const PassSettings& ps) {
+  const std::size_t pairs = in.candidate_node.size();
+  if (in.pair_distance.size() != pairs) in.pair_distance.assign(pairs, -1.0), in.pair_motion.assign(pairs, 0.0);
+  in.live_pairs.clear();
+  const double closing = 2.02 * ps.speed;  // node and contact point each at most `speed`, with a margin
+  const bool screening = std::isfinite(ps.dt_estimate) && ps.dt_estimate > 0.0 && std::isfinite(in.motion);
+  for (std::int32_t q : in.my_pairs) {
+    const auto uq = static_cast<std::size_t>(q);
+    const double known = in.pair_distance[uq];
+    if (screening && known >= 0.0 && in.gap_reduction[static_cast<std::size_t>(in.candidate_node[uq])] == 0.0) {
+      const double beyond = known - 2.02 * (in.motion - in.pair_motion[uq]) - in.largest_gap;  // [L], lower bound
+      if (beyond > 3.0 * closing * ps.dt_estimate &&
+          ps.scale * 0.5 * (beyond + in.largest_gap) > closing * ps.dt_estimate)
+        continue;
+    }
+    in.live_pairs.push_back(q);
+  }
+}
 
 // The pairs of `in` this domain computes (eqs. C-1 to C-9, C-11): their forces into records (applied below, in pair
 // order), the node-local sums of their secondary nodes, the cycle's sums and step.
@@ -106,11 +130,12 @@ void compute_pairs(ContactState& c, ContactInterface& in, const NodalState& node
   const double alpha = filtered ? friction_filter_weight(in.friction_filter, in.filter_value, ps.dt_previous) : 1.0;
   const double scale = ps.scale, dt_previous = ps.dt_previous, dt_estimate = ps.dt_estimate;
   PairBatch& batch = c.batch;
-  const std::size_t mine = in.my_pairs.size();
+  screen_pairs(in, ps);
+  const std::size_t mine = in.live_pairs.size();
   for (std::size_t first = 0; first < mine; first += PairBatch::kSize) {
     const int count = static_cast<int>(std::min<std::size_t>(PairBatch::kSize, mine - first));
     for (int j = 0; j < count; ++j) {
-      const auto q = static_cast<std::size_t>(in.my_pairs[first + static_cast<std::size_t>(j)]);
+      const auto q = static_cast<std::size_t>(in.live_pairs[first + static_cast<std::size_t>(j)]);
       const auto n = static_cast<std::size_t>(in.secondary_nodes[static_cast<std::size_t>(in.candidate_node[q])]);
       const auto& seg = in.segments[static_cast<std::size_t>(in.candidate_segment[q])];
       batch.node[0][j] = nodes.x[n], batch.node[1][j] = nodes.y[n], batch.node[2][j] = nodes.z[n];
@@ -121,7 +146,8 @@ void compute_pairs(ContactState& c, ContactInterface& in, const NodalState& node
     }
     closest_points(batch, count);
     for (int j = 0; j < count; ++j) {
-      const auto q = static_cast<std::size_t>(in.my_pairs[first + static_cast<std::size_t>(j)]);
+      const auto q = static_cast<std::size_t>(in.live_pairs[first + static_cast<std::size_t>(j)]);
+      in.pair_distance[q] = batch.distance[j], in.pair_motion[q] = in.motion;
       const auto i = static_cast<std::size_t>(in.candidate_node[q]);
       const auto s = static_cast<std::size_t>(in.candidate_segment[q]);
       double* friction[3] = {&in.friction_x[q], &in.friction_y[q], &in.friction_z[q]};
@@ -433,11 +459,13 @@ ContactStep contact_forces(const Model& m, ContactState& c, NodalState& nodes, d
       if (domains != nullptr) domains->gather_positions(in);
       sort_candidates(in, nodes);
       in.divided = false;
+      in.pair_distance.clear();  // new candidates: each is computed once before it may be screened
     }
     const bool divide = !in.divided;
     if (divide) divide_pairs(in, nodes.size(), domains), in.divided = true;
     if (domains != nullptr) domains->share_ghosts(in, divide);
     PassSettings ps = settings;
+    ps.speed = speed;
     ps.release_step = std::max(in.dt_minimum, rc.dt_inter_del.given ? rc.dt_inter_del.minimum : 0.0);
     ++in.passes;
     for (std::int32_t i : in.touched_list) {

@@ -134,6 +134,11 @@ struct ContactInterface {
   std::vector<std::uint8_t> pair_remote;
   std::vector<std::int32_t> ghost_owner;
   bool divided = false;  // my_pairs and the rest made for the current pairs (not kept in a restart file)
+  // Pair screening (docs/theory/contact.md, C-12a): per candidate pair, its distance when last computed (< 0:
+  // not since the sort) and the interface's motion then; the pairs of my_pairs this pass computes. Scratch, not
+  // kept in a restart file: a pass that screens nothing gives the same results.
+  std::vector<double> pair_distance, pair_motion;
+  std::vector<std::int32_t> live_pairs;
   double margin = 0.0;                          // search margin beyond the gap [L]
   double bucket_scale = 0.2;                    // Bumult: bucket size factor
   double motion = std::numeric_limits<double>::infinity();  // accumulated largest nodal motion since the sort [L]
