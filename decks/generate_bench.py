@@ -146,10 +146,15 @@ def history_cards(kind, th_id, title, object_id):
     return [f"/TH/{kind}/{th_id}\n{title}\n", f"{'DEF':<10}\n", i10(object_id) + "\n"]
 
 
-def bench_engine_cards(name, end_time):
-    """Engine deck of a benchmark run: 100 history rows, frames at t = 0, half-way and the end."""
-    return [f"/RUN/{name}/1\n{end_time:g}\n", f"/TFILE\n{end_time / 100:g}\n", f"/ANIM/DT\n0.0 {end_time / 2:g}\n",
-            "/ANIM/ELEM/VONM\n", "/ANIM/ELEM/EPSP\n", "/PRINT/-1000\n", "/DT\n0.9 0.0\n", "/STOP\n0.1 0.1 0.0 0 0 0\n"]
+def bench_engine_cards(name, end_time, noda_cst=0.0):
+    """Engine deck of a benchmark run: 100 history rows, frames at t = 0, half-way and the end. With `noda_cst`
+    [ms] > 0, /DT/NODA/CST mass scaling to that step, and /STOP without its added-mass limit (the energy limit
+    stays)."""
+    cards = [f"/RUN/{name}/1\n{end_time:g}\n", f"/TFILE\n{end_time / 100:g}\n", f"/ANIM/DT\n0.0 {end_time / 2:g}\n",
+             "/ANIM/ELEM/VONM\n", "/ANIM/ELEM/EPSP\n", "/PRINT/-1000\n", "/DT\n0.9 0.0\n"]
+    if noda_cst > 0.0:
+        return cards + [f"/DT/NODA/CST\n0.9 {noda_cst:g}\n", "/STOP\n0.1 0.0 0.0 0 0 0\n"]
+    return cards + ["/STOP\n0.1 0.1 0.0 0 0 0\n"]
 
 
 # ------------------------------------------------------------------------------------------------------ the tube
@@ -174,6 +179,7 @@ class TubeSetup:
     contact: bool = True
     fric: float = 0.1
     gapmin: float = 0.0  # the self contact's Gapmin [mm]; 0: the default (the mean thickness, bounded)
+    noda_cst: float = 0.0  # > 0: /DT/NODA/CST mass scaling to this step [ms]
     end_time: float = 0.1
     engine: list = None  # engine cards; None: bench_engine_cards
 
@@ -431,17 +437,17 @@ def write_deck(directory, name, starter, engine, counts, setup):
 
 def write_tube(directory, t, with_meta=True):
     starter, counts = tube_starter(t)
-    engine = t.engine if t.engine is not None else bench_engine_cards(t.name, t.end_time)
+    engine = t.engine if t.engine is not None else bench_engine_cards(t.name, t.end_time, t.noda_cst)
     return write_deck(directory, t.name, starter, engine, counts if with_meta else None, t)
 
 
 def setup_for(family, elements=None, size=None, end_time=0.1, contact=True, ishell=24, points=5, isolid=24,
-              speed=10.0, gap=0.0, penetration=0.0, inacti=0, plate_modulus_ratio=1.0):
+              speed=10.0, gap=0.0, penetration=0.0, inacti=0, plate_modulus_ratio=1.0, noda_cst=0.0):
     """The setup of one family at a target element count or an element size [mm]."""
     if family == "tube":
         n = tube_elements_per_side(elements) if elements else max(1, int(round(50.0 / size)))
         return TubeSetup(elements_per_side=n, end_time=end_time, contact=contact, ishell=ishell, points=points,
-                         speed=speed, gapmin=gap)
+                         speed=speed, gapmin=gap, noda_cst=noda_cst)
     if family == "ball_plate":
         h = size if size else ball_plate_element_size(elements)
         return BallPlateSetup(element_size=h, end_time=end_time, contact=contact, ishell=ishell, points=points,
@@ -479,6 +485,8 @@ def parse_arguments():
     p.add_argument("--points", type=int, default=5, help="shell points through the thickness (default 5)")
     p.add_argument("--isolid", type=int, default=24, help="brick formulation of brick_block (default 24)")
     p.add_argument("--speed", type=float, default=10.0, help="impact speed [m/s] (default 10)")
+    p.add_argument("--noda-cst", type=float, default=0.0,
+                   help="tube: /DT/NODA/CST mass scaling to this step [ms] (default 0: none)")
     p.add_argument("--gap", type=float, default=0.0,
                    help="tube: the self contact's Gapmin [mm] (default 0: the thickness-based default)")
     p.add_argument("--penetration", type=float, default=0.0,
@@ -494,6 +502,8 @@ def main():
     a = parse_arguments()
     if a.gap and a.family != "tube":
         sys.exit(f"generate_bench.py: --gap is the tube's self-contact gap; {a.family} has none to set")
+    if a.noda_cst and a.family != "tube":
+        sys.exit(f"generate_bench.py: --noda-cst is the tube's; {a.family} has none to set")
     ball_only = {"--penetration": a.penetration != 0.0, "--inacti": a.inacti != 0,
                  "--plate-modulus-ratio": a.plate_modulus_ratio != 1.0}
     for option, given in ball_only.items():
@@ -504,7 +514,7 @@ def main():
     starter = write_family(a.family, a.out, elements=int(a.elements) if a.elements else None, size=a.size,
                            end_time=a.end_time, contact=not a.no_contact, ishell=a.ishell, points=a.points,
                            isolid=a.isolid, speed=a.speed, gap=a.gap, penetration=a.penetration, inacti=a.inacti,
-                           plate_modulus_ratio=a.plate_modulus_ratio)
+                           plate_modulus_ratio=a.plate_modulus_ratio, noda_cst=a.noda_cst)
     counts = json.loads(starter.with_name(starter.name.replace("_0000.rad", ".bench.json")).read_text())["counts"]
     print(f"wrote {starter}: " + ", ".join(f"{k} {v}" for k, v in counts.items()))
 

@@ -593,7 +593,8 @@ void compute_contact_forces(const Model& m, SolverState& s, RunEvents& events, b
     events.pending.push_back(released);
   }
   s.contact.bc_releases.clear();
-  if (step.dt < bound.dt) bound = {step.dt, StepControl::contact(step.interface, step.node)};
+  bound.contact_dt = step.dt, bound.contact_control = StepControl::contact(step.interface, step.node);
+  if (step.dt < bound.dt) bound.dt = step.dt, bound.control = bound.contact_control;
 }
 
 void apply_loads(const Model& m, SolverState& s) {
@@ -606,7 +607,10 @@ double choose_time_step(const Model& m, SolverState& s, RunEvents& events, StepB
   const RunControl& rc = m.run;
   if (rc.dt_nodal_cst.given) {
     const NodalStep nodal = nodal_time_step(m, s);
-    if (nodal.node >= 0) bound = {nodal.dt, StepControl::node(nodal.node)};
+    if (nodal.node >= 0) {
+      bound.dt = nodal.dt, bound.control = StepControl::node(nodal.node);
+      if (bound.contact_dt < bound.dt) bound.dt = bound.contact_dt, bound.control = bound.contact_control;
+    }
   }
   // /DTIX: never above DTmax; the first cycle of the engine deck at most DTini.
   if (rc.dt_max > 0.0 && !(bound.dt <= rc.dt_max)) bound = {rc.dt_max, {StepControl::Source::MaximumStep}};

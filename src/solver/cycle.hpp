@@ -18,6 +18,10 @@ namespace crumple::solver {
 struct StepBound {
   double dt = std::numeric_limits<double>::infinity();
   StepControl control;
+  // The contact's own bound, kept apart: the nodal step of /DT/NODA/CST replaces the elements' bound, never the
+  // contact's (docs/theory/time-step.md, T-3b).
+  double contact_dt = std::numeric_limits<double>::infinity();
+  StepControl contact_control{};
 };
 
 // Velocities before the update and after the free update (CD-2), for the work of the kinematic conditions.
