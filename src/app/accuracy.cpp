@@ -55,21 +55,21 @@ double element_step_quantile(const Model& m, double share) {
   return *at;
 }
 
-// draft: nodal mass scaling (T-2, T-3) up to the step of the elements' kDraftMassScaledShare quantile, unless the
-// deck already scales to a larger step; nothing when the smallest elements are no smaller than that quantile (a
-// uniform mesh), where mass scaling would only add mass everywhere.
+// draft: nodal mass scaling (T-2, T-3) up to the step of the elements' kDraftMassScaledShare quantile at the start,
+// unless the deck already scales to a larger step: the smallest elements are mass scaled to it, and no element's
+// step falls below it as the mesh deforms (on a uniform mesh, the step the run starts with).
 void scale_smallest_elements(const Model& m, RunControl& run, const std::string& where, std::vector<std::string>& changes) {
   const double quantile = element_step_quantile(m, kDraftMassScaledShare);
   const ControllingElement smallest = smallest_element_time_step(m);
-  if (!(quantile > smallest.time_step * (1.0 + 1e-6))) return;  // no element is smaller than the others
+  if (!(quantile > 0.0)) return;  // no element
   const double scale = run.dt_nodal_cst.scale > 0.0 ? run.dt_nodal_cst.scale
                        : run.dt.scale > 0.0         ? run.dt.scale
                                                     : kDefaultStepScale;
   const double target = scale * quantile;
   if (run.dt_nodal_cst.given && run.dt_nodal_cst.minimum >= target) return;  // the deck scales further already
-  changes.push_back(fmt::format("/DT/NODA/CST {:g} {:.4g}: mass scaling up to the step of the smallest {:g} % of the "
-                                "elements (the smallest's is {:.4g}){}", scale, target, 100.0 * kDraftMassScaledShare,
-                                scale * smallest.time_step, where));
+  changes.push_back(fmt::format("/DT/NODA/CST {:g} {:.4g}: mass scaling up to the step of the {:g} % smallest elements "
+                                "at the start (the smallest's is {:.4g}); no step falls below it{}", scale, target,
+                                100.0 * kDraftMassScaledShare, scale * smallest.time_step, where));
   run.dt_nodal_cst.scale = scale, run.dt_nodal_cst.minimum = target, run.dt_nodal_cst.given = true;
 }
 

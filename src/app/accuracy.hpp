@@ -21,7 +21,8 @@ inline constexpr double kFineStepScale = 0.6;       // fine: every /DT scale at 
 inline constexpr int kFineShellPoints = 5;          // fine: shells with 1 to 4 points get 5 (N = 0 stays resultant)
 inline constexpr int kDraftShellPoints = 3;         // draft: shells with more points get 3
 inline constexpr double kDraftMassScaledShare = 0.01;  // draft: /DT/NODA/CST up to the step of the elements'
-                                                       // 1st percentile (the smallest 1 % are mass scaled)
+                                                       // 1st percentile at the start (the smallest 1 % are mass
+                                                       // scaled, and no step falls below it as the mesh deforms)
 
 // Applies `preset` to the model's properties and to the run controls of every engine deck (`runs`: the first
 // engine deck's, then the continued runs'). Returns one line per change, empty for `standard`.

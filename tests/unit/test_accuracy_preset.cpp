@@ -81,12 +81,17 @@ TEST(AccuracyPreset, FineKeepsWhatIsAlreadyFinerAndTheSectionsThatAreNotIntegrat
   EXPECT_EQ(r.deck.model.formulations[0].n_points, 1);
 }
 
-TEST(AccuracyPreset, DraftTakesThreePointsAndAddsNoMassToAUniformMesh) {
+TEST(AccuracyPreset, DraftTakesThreePointsAndHoldsAUniformMeshAtItsFirstStep) {
   Read r(strip(200, 5, false), kEngine);
   const auto changes = r.apply(app::AccuracyPreset::Draft);
   EXPECT_EQ(r.deck.model.formulations[0].n_points, 3);
-  EXPECT_FALSE(r.deck.model.run.dt_nodal_cst.given);
-  ASSERT_EQ(changes.size(), 1u);
+  // Every element has the same step: the mass scaling's target is the step the run starts with.
+  const TimeStepControl& cst = r.deck.model.run.dt_nodal_cst;
+  ASSERT_TRUE(cst.given);
+  const double step = initial_element_time_step(r.deck.model, ElementKind::Shell4, 0);
+  EXPECT_NEAR(cst.minimum, 0.9 * step, 1e-9 * step);
+  ASSERT_EQ(changes.size(), 2u);
+  EXPECT_TRUE(any_contains(changes, "--accuracy draft: /DT/NODA/CST 0.9"));
   EXPECT_TRUE(any_contains(changes, "--accuracy draft: /PROP/SHELL/1 N 5 -> 3 points"));
 }
 
