@@ -183,14 +183,9 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
     double rotation_damping_x[NN] = {}, rotation_damping_y[NN] = {};  // Ishell 1, 2 rotation modes (eq. S-19)
     double hourglass_work = 0.0;
     if constexpr (NN == 4) {
-      constexpr double h[4] = {1.0, -1.0, 1.0, -1.0};
-      double hx = 0, hy = 0, bb = 0.0;
-      for (int a = 0; a < 4; ++a) hx += h[a] * lx[a], hy += h[a] * ly[a];
-      for (int a = 0; a < 4; ++a) {
-        // Ishell 2 (eq. S-17): the plain hourglass vector, not orthogonalised against the linear fields.
-        gamma[a] = p.orthogonal_hourglass ? 0.25 * (h[a] - hx * b1[a] - hy * b2[a]) : 0.25 * h[a];
-        bb += b1[a] * b1[a] + b2[a] * b2[a];
-      }
+      shell_hourglass::hourglass_vector(lx, ly, b1, b2, p.orthogonal_hourglass, gamma);
+      double bb = 0.0;
+      for (int a = 0; a < 4; ++a) bb += b1[a] * b1[a] + b2[a] * b2[a];
       double rates[5] = {0, 0, 0, 0, 0};
       for (int a = 0; a < 4; ++a) {
         rates[0] += gamma[a] * vx[a];
@@ -326,13 +321,10 @@ constexpr double kShearModeMargin = 1.05;
 // cy^2) / X) <= (2 / step)^2 for X at least the returned share (eq. S-8b); 0 when it holds for any X.
 double hourglass_shear_share(const ShellGroupParameters& p, const double (&lx)[4], const double (&ly)[4], double area,
                              double step, double shear_speed2) {
-  constexpr double h[4] = {1.0, -1.0, 1.0, -1.0};
-  double b1[4], b2[4], gamma[4], hx = 0.0, hy = 0.0;
-  for (int a = 0; a < 4; ++a) {
+  double b1[4], b2[4], gamma[4];
+  for (int a = 0; a < 4; ++a)
     b1[a] = (ly[(a + 1) % 4] - ly[(a + 3) % 4]) / (2.0 * area), b2[a] = (lx[(a + 3) % 4] - lx[(a + 1) % 4]) / (2.0 * area);
-    hx += h[a] * lx[a], hy += h[a] * ly[a];
-  }
-  for (int a = 0; a < 4; ++a) gamma[a] = p.orthogonal_hourglass ? 0.25 * (h[a] - hx * b1[a] - hy * b2[a]) : 0.25 * h[a];
+  shell_hourglass::hourglass_vector(lx, ly, b1, b2, p.orthogonal_hourglass, gamma);
   double cx[4], cy[4];
   shell_hourglass::shear_rotation_coefficients(shell_hourglass::quadratic_moments(gamma, lx, ly), b1, b2, cx, cy);
   double deflection = 0.0, rotation = 0.0;

@@ -24,6 +24,16 @@ inline double rotation_damping_moment(double hr, double density, double thicknes
   return std::clamp(viscous, -limit, limit);
 }
 
+// The hourglass vector gamma of a quadrilateral (eq. S-5), from its local node coordinates and gradient operator
+// (eq. S-2): h = (1, -1, 1, -1) orthogonalised against the linear fields, or h / 4 itself (Ishell 2, eq. S-17).
+inline void hourglass_vector(const double lx[4], const double ly[4], const double b1[4], const double b2[4],
+                             bool orthogonal, double gamma[4]) {
+  constexpr double h[4] = {1.0, -1.0, 1.0, -1.0};
+  double hx = 0, hy = 0;
+  for (int a = 0; a < 4; ++a) hx += h[a] * lx[a], hy += h[a] * ly[a];
+  for (int a = 0; a < 4; ++a) gamma[a] = orthogonal ? 0.25 * (h[a] - hx * b1[a] - hy * b2[a]) : 0.25 * h[a];
+}
+
 // H_ij = integral over the element of h_,i h_,j with h = xi eta the bilinear mode (eq. S-10), from the Jacobian at
 // the centre: H = (A / 3) (grad xi grad xi^T + grad eta grad eta^T), exact for parallelograms.
 // lx, ly: local node coordinates (counter-clockwise, nodes at xi, eta = (-1,-1), (1,-1), (1,1), (-1,1)).
