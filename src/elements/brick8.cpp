@@ -589,7 +589,6 @@ GroupStepResult brick8_one_point_forces(const ElementTable& table, const Element
     state.hourglass_energy[ue] += viscous_work;
     result.internal_energy += strain_work;
     result.hourglass_energy += viscous_work;
-    if (recording) state.records.internal[ue] = strain_work, state.records.hourglass[ue] = viscous_work;
 
     // Critical step L / (Q + sqrt(Q^2 + c^2)) (eq. B-12), where Q carries the bulk viscosity, and the hourglass
     // damper's own bound 2 m / lambda_max (eq. B-13): hourglass modes carry no stiffness in Isolid 1.
@@ -691,7 +690,6 @@ GroupStepResult brick8_full_forces(const ElementTable& table, const ElementGroup
     if (!std::isfinite(check)) result.non_finite = e;  // a NaN or an infinity stops the run at once
     state.internal_energy[ue] += internal;
     result.internal_energy += internal;
-    if (recording) state.records.internal[ue] = internal;
 
     const double step = length / (visc.speed + std::sqrt(visc.speed * visc.speed + c * c));
     close_element(state, result, e, step, failed);

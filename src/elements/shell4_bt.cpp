@@ -288,7 +288,6 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
     state.hourglass_energy[ue] += hourglass_work;
     result.internal_energy += internal;
     result.hourglass_energy += hourglass_work;
-    if (recording) state.records.internal[ue] = internal, state.records.hourglass[ue] = hourglass_work;
 
     close_element(state, result, e, step, failed);
   }

@@ -317,7 +317,6 @@ GroupStepResult shell4_qbat_forces(const ElementTable& table, const ElementGroup
     if (!std::isfinite(work)) result.non_finite = e;
     state.internal_energy[ue] += work;
     result.internal_energy += work;
-    if (recording) state.records.internal[ue] = work;
     close_element(state, result, e, step, failed);
   }
   return result;

@@ -168,17 +168,6 @@ Domain make_domain(const Model& m, const Partition& partition, int index) {
   }
   load_lists(m, d);
   record_halos(m, d, several);
-  for (int kind = 0; kind < kElementKinds; ++kind)
-    d.split_owner[static_cast<std::size_t>(kind)].assign(m.elements[static_cast<std::size_t>(kind)].size(), -1);
-  for (const ElementGroup& group : m.element_groups) {
-    const auto& owner = d.owner[static_cast<std::size_t>(group.kind)];
-    std::int32_t whole = owner[static_cast<std::size_t>(group.begin)];
-    for (std::int32_t e = group.begin; e < group.end; ++e) whole = owner[static_cast<std::size_t>(e)] == whole ? whole : -1;
-    d.group_owner.push_back(whole);
-    if (whole < 0)
-      for (std::int32_t e = group.begin; e < group.end; ++e)
-        d.split_owner[static_cast<std::size_t>(group.kind)][static_cast<std::size_t>(e)] = owner[static_cast<std::size_t>(e)];
-  }
   return d;
 }
 

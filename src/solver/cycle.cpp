@@ -244,43 +244,31 @@ void share_conditions(SolverState& s, Exchange& exchange) {
 }
 
 // The groups' results as one domain finds them (GroupStepResult over all of a group's elements): the smallest step
-// with the first element that has it, the last inverted and the last non-finite element, the failed count, and the
-// energies: a whole group's from the domain that computes it, a split group's summed in element order from its
-// elements' records (an element that computed nothing recorded zero).
+// with the first element that has it, the last inverted and the last non-finite element, the failed count. The
+// energies are not combined here: the balance takes each element's running energy when it is checked
+// (update_energies, docs/theory/energy.md).
 void share_group_results(const Model& m, SolverState& s, Exchange& exchange) {
   SolverState::GroupShare& w = s.group_share;
   const std::size_t groups = m.element_groups.size();
   for (auto* v : {&w.controlling, &w.last_inverted, &w.last_non_finite, &w.failed, &w.inverted_count}) v->resize(groups);
-  w.min_dt.resize(groups), w.energies.resize(2 * groups);
+  w.min_dt.resize(groups);
   for (std::size_t g = 0; g < groups; ++g) {
     const GroupStepResult& r = s.group_results[g];
     w.min_dt[g] = r.min_dt, w.controlling[g] = r.controlling;
     w.last_inverted[g] = r.inverted, w.last_non_finite[g] = r.non_finite, w.failed[g] = r.failed;
     w.inverted_count[g] = r.inverted_count;
-    w.energies[2 * g] = r.internal_energy, w.energies[2 * g + 1] = r.hourglass_energy;
   }
   exchange.min_with_index(w.min_dt, w.controlling);
   exchange.max(w.last_inverted);
   exchange.max(w.last_non_finite);
   exchange.sum(w.failed);
   exchange.sum(w.inverted_count);
-  exchange.share(w.energies, 2, s.domain.group_owner);
   bool failed = false;
   for (std::size_t g = 0; g < groups; ++g) {
-    const ElementGroup& group = m.element_groups[g];
     GroupStepResult r;
     if (w.controlling[g] >= 0) r.min_dt = w.min_dt[g], r.controlling = w.controlling[g];
     r.inverted = w.last_inverted[g], r.non_finite = w.last_non_finite[g], r.failed = w.failed[g];
     r.inverted_count = w.inverted_count[g];
-    r.internal_energy = w.energies[2 * g], r.hourglass_energy = w.energies[2 * g + 1];
-    if (s.domain.group_owner[g] < 0) {
-      const ElementRecords& records = element_view(s, group.kind).records;
-      r.internal_energy = r.hourglass_energy = 0.0;
-      for (std::int32_t e = group.begin; e < group.end; ++e) {
-        r.internal_energy += records.internal[static_cast<std::size_t>(e)];
-        r.hourglass_energy += records.hourglass[static_cast<std::size_t>(e)];
-      }
-    }
     failed = failed || r.failed > 0;
     s.group_results[g] = r;
   }
@@ -290,8 +278,7 @@ void share_group_results(const Model& m, SolverState& s, Exchange& exchange) {
 }  // namespace
 
 // What one domain computed of its own elements reaches the domains that need it (docs/parallel.md, "Exchange"): the
-// loads of the elements at shared nodes, the energies of split groups, the critical steps when a step control reads
-// them, then the groups' results as one domain finds them, then the local shared nodes' sums in model order.
+// loads of the elements at shared nodes, the critical steps when a step control reads them, then the groups' results as one domain finds them, then the local shared nodes' sums in model order.
 void share_element_results(const Model& m, SolverState& s, Exchange& exchange) {
   const Domain& d = s.domain;
   const bool critical_steps = critical_steps_needed(m.run);
@@ -299,8 +286,6 @@ void share_element_results(const Model& m, SolverState& s, Exchange& exchange) {
     ElementStateView v = element_view(s, static_cast<ElementKind>(k));
     exchange.halo(v.records.load, v.records.nodes_per_element * v.records.values_per_node,
                   d.record_halo[static_cast<std::size_t>(k)]);
-    exchange.share(v.records.internal, 1, d.split_owner[static_cast<std::size_t>(k)]);
-    exchange.share(v.records.hourglass, 1, d.split_owner[static_cast<std::size_t>(k)]);
     if (critical_steps) exchange.share(v.critical_dt, 1, d.owner[static_cast<std::size_t>(k)]);
   }
   share_group_results(m, s, exchange);
@@ -482,9 +467,7 @@ StepBound combine_group_results(const Model& m, SolverState& s, RunEvents& event
   for (std::size_t g = 0; g < m.element_groups.size(); ++g) {
     const ElementGroup& group = m.element_groups[g];
     GroupStepResult& r = s.group_results[g];  // r.min_dt: the unscaled critical step
-    s.energy.internal += r.internal_energy;
     elements_deleted = elements_deleted || r.failed > 0;
-    s.energy.hourglass += r.hourglass_energy;
     if (r.non_finite >= 0 && !events.stop.stopped())
       events.stop = element_stop(StopReason::Kind::NonFiniteForces, group.kind, r.non_finite, s);
     if (r.inverted >= 0) report_inverted(group.kind, r, s, events);
@@ -729,10 +712,13 @@ MonitorDue outputs_due(const Model& m, const SolverState& s, const OutputSchedul
   return due;
 }
 
-void update_kinetic_energy(SolverState& s) {
+void update_energies(SolverState& s) {
   const auto [translational, rotational] = kinetic_energy(s);
   s.energy.kinetic_translational = translational;
   s.energy.kinetic_rotational = rotational;
+  const auto [internal, hourglass] = element_energies(s);
+  s.energy.internal = internal;
+  s.energy.hourglass = hourglass;
 }
 
 // A step far below what the elements allow (a contact closing fast on a small gap, a node's mass) slows the run

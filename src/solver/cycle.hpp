@@ -106,8 +106,10 @@ struct MonitorDue {
 MonitorDue outputs_due(const Model& model, const SolverState& state, const OutputSchedule& schedule, double dt_next);
 // A field frame is due at the state's time (also before the first cycle: the frame at t = 0).
 bool frame_due(const SolverState& state, const OutputSchedule& schedule);
-// Kinetic energies of v^(n+1/2) into the balance.
-void update_kinetic_energy(SolverState& state);
+// The balance's energies, when it is checked: kinetic energies of v^(n+1/2), and the internal and hourglass
+// energies as exact sums of each element's running energy (docs/theory/energy.md), combined over the domains
+// (every domain calls it at the same cycles).
+void update_energies(SolverState& state);
 // NaN in the balance, /STOP added-mass and energy-error limits: recorded in `events.stop`.
 void check_run_limits(const Model& model, const SolverState& state, RunEvents& events);
 // Once per run: the step `dt` fell below 1/1000 of the elements' scaled step `element_step` (set by `control`).

@@ -49,6 +49,20 @@ double relative_kinetic_energy(SolverState& s, const RigidBodyState& b, bool who
 
 }  // namespace
 
+std::pair<double, double> element_energies(SolverState& s) {
+  std::vector<ExactSum>& sums = s.reducer.sums;
+  sums.assign(2, ExactSum{});
+  auto add = [&](ElementKind kind, const std::vector<double>& internal, const std::vector<double>& hourglass) {
+    for (std::size_t e = 0; e < internal.size(); ++e)
+      if (s.domain.mine(kind, e)) sums[0].add(internal[e]), sums[1].add(hourglass[e]);
+  };
+  add(ElementKind::Shell4, s.shells.internal_energy, s.shells.hourglass_energy);
+  add(ElementKind::Shell3, s.shells3.internal_energy, s.shells3.hourglass_energy);
+  add(ElementKind::Brick8, s.bricks.internal_energy, s.bricks.hourglass_energy);
+  s.reducer.sum(sums);
+  return {sums[0].value(), sums[1].value()};
+}
+
 std::pair<double, double> kinetic_energy(SolverState& s, bool whole_model) {
   const NodalState& n = s.nodes;
   std::vector<ExactSum>& sums = s.reducer.sums;

@@ -53,6 +53,10 @@ double next_output_time(double t, double start, double interval);
 // combined over the domains (every domain calls it at the same cycles); with `whole_model`, over every node of this
 // domain's arrays and without the exchange (the start, where every domain holds every node).
 std::pair<double, double> kinetic_energy(SolverState& state, bool whole_model = false);
+// Internal and hourglass energy: exact sums of every element's running energy (its own increments, summed by its
+// kernel), over this domain's elements, combined over the domains. The order of the elements and the partition
+// change nothing (docs/theory/energy.md).
+std::pair<double, double> element_energies(SolverState& state);
 
 // Adds /CLOAD and /GRAV forces at time t; returns nothing (their work is counted with the velocity update).
 void add_external_forces(const Model& model, SolverState& state, double time);

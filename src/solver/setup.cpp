@@ -158,9 +158,8 @@ namespace crumple::solver {
 namespace {
 
 // One domain of a run of several (docs/parallel.md): the elements of the other domains are marked as computed
-// elsewhere (the kernels skip them), and the groups whose loads or energies other domains need are recorded: the
-// groups with an element at a shared node (its loads travel, Domain::record_halo) and the groups split among
-// domains (their energies are summed from the records).
+// elsewhere (the kernels skip them), and the groups whose loads other domains need are recorded: the groups with an
+// element at a shared node (its loads travel, Domain::record_halo).
 void take_domain(const Model& m, SolverState& s, Domain domain) {
   s.domain = std::move(domain);
   if (!s.domain.several()) return;
@@ -176,8 +175,7 @@ void take_domain(const Model& m, SolverState& s, Domain domain) {
     for (std::size_t g = 0; g < m.element_groups.size(); ++g) {
       const ElementGroup& group = m.element_groups[g];
       if (group.kind != kind) continue;
-      const bool needed = s.domain.group_owner[g] < 0 ||
-                          std::any_of(sent.begin() + group.begin, sent.begin() + group.end, [](std::uint8_t x) { return x != 0; });
+      const bool needed = std::any_of(sent.begin() + group.begin, sent.begin() + group.end, [](std::uint8_t x) { return x != 0; });
       if (needed) records.only[static_cast<std::size_t>(group.begin)] = 1;
     }
   }

@@ -72,7 +72,7 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunObse
   const auto started = std::chrono::steady_clock::now();
   s.reducer = Reducer(options.exchange);
   if (options.resume == nullptr) switch_rigid_bodies(m, s);  // a resumed state has them switched already
-  update_kinetic_energy(s);  // for the listing's row of cycle 0
+  update_energies(s);  // for the listing's row of cycle 0
   observer.start(s, notes);
   RunEvents events;
   OutputSchedule schedule(m.run, s.time, options.max_cycles);
@@ -120,7 +120,7 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunObse
     const bool show_progress = observer.progress_due();
     // The kinetic energy is a sum over the domains: every domain takes it at the same cycles, so a run of several
     // shows the progress line with the last one taken.
-    if (due.energies() || (show_progress && !s.domain.several())) update_kinetic_energy(s);
+    if (due.energies() || (show_progress && !s.domain.several())) update_energies(s);
     if (due.energies()) {
       if (due.print) observer.row(s, dt_next, control);
       check_run_limits(m, s, events);
@@ -148,7 +148,7 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunObse
     if (due.finished || stop_requested(options.stop_request, s, events, options.exchange, due.energies())) break;
     if (rebalance_due(s)) rebalance(m, s, *options.exchange, events, options.repartition);
   }
-  update_kinetic_energy(s);
+  update_energies(s);
   if (s.domain.several()) share_element_state(s, *options.exchange), share_node_state(m, s, *options.exchange, true);
   observer.events(events);
   observer.row(s, dt_next, control);  // the cycle the run ended at, unless its row is printed already

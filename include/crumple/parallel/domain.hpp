@@ -59,10 +59,6 @@ struct Domain {
   std::vector<NodeLoadRef> loads;
   // Per element kind: the loads of the elements at shared nodes, sent to the neighbours that assemble those nodes.
   std::array<HaloPlan, kElementKinds> record_halo;
-  // Per element group: the domain that computes all of it, or -1 when the group is split among domains; per kind,
-  // per element: its domain when its group is split (its energy increments must travel), else -1.
-  std::vector<std::int32_t> group_owner;
-  std::array<std::vector<std::int32_t>, kElementKinds> split_owner;
 
   bool several() const { return count > 1; }
   bool mine(ElementKind kind, std::size_t element) const {

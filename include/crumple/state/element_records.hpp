@@ -1,5 +1,5 @@
 #pragma once
-// What each element handed its nodes and the energy balance in the last cycle, kept when a run has several
+// What each element handed its nodes in the last cycle, kept when a run has several
 // domains: every node's sum is then assembled from these records in one fixed order, the same for any partition
 // (docs/parallel.md, "Assembly"). In a run of one domain the kernels add their forces to the nodes directly, in the
 // same order, and the records are empty, or kept for the element groups of the cut sections that /TH/SECTIO
@@ -17,8 +17,6 @@ struct ElementRecords {
   int values_per_node = 6;  // shells: force x y z, moment x y z; bricks: force x y z
   // Per element, node and value: what the kernel subtracted from the node's sums [F], [F L].
   std::vector<double> load;
-  // Per element: this cycle's increments of its internal and hourglass energy [E].
-  std::vector<double> internal, hourglass;
 
   // Run of one domain with cut sections: per element, 1 at the first element of a group that records (the
   // records then cover the elements up to the last such group only); empty: every group records.
@@ -32,7 +30,6 @@ struct ElementRecords {
   void start(std::size_t elements, int nodes, int values) {
     nodes_per_element = nodes, values_per_node = values;
     load.assign(elements * static_cast<std::size_t>(nodes * values), 0.0);
-    internal.assign(elements, 0.0), hourglass.assign(elements, 0.0);
   }
   double* load_at(std::size_t element, int node) {
     return load.data() + (element * static_cast<std::size_t>(nodes_per_element) + static_cast<std::size_t>(node)) *
@@ -50,7 +47,6 @@ struct ElementRecords {
   void clear(std::size_t element) {
     double* v = load_at(element, 0);
     for (int i = 0; i < nodes_per_element * values_per_node; ++i) v[i] = 0.0;
-    internal[element] = hourglass[element] = 0.0;
   }
 };
 
