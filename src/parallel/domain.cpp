@@ -140,6 +140,24 @@ void extend(std::vector<Domain::NodeRange>& ranges, std::size_t k) {
   else ranges.push_back({node, node + 1});
 }
 
+// The last group (model order) that holds an element of a send list of the records' halo, or -1.
+std::int32_t last_sending_group(const Model& m, const Domain& d) {
+  std::array<std::vector<std::uint8_t>, kElementKinds> sent;
+  for (int k = 0; k < kElementKinds; ++k) {
+    sent[static_cast<std::size_t>(k)].assign(m.elements[static_cast<std::size_t>(k)].size(), 0);
+    for (const auto& list : d.record_halo[static_cast<std::size_t>(k)].send)
+      for (std::uint32_t e : list) sent[static_cast<std::size_t>(k)][e] = 1;
+  }
+  std::int32_t last = -1;
+  for (std::size_t g = 0; g < m.element_groups.size(); ++g) {
+    const ElementGroup& group = m.element_groups[g];
+    const auto& s = sent[static_cast<std::size_t>(group.kind)];
+    if (std::any_of(s.begin() + group.begin, s.begin() + group.end, [](std::uint8_t x) { return x != 0; }))
+      last = static_cast<std::int32_t>(g);
+  }
+  return last;
+}
+
 }  // namespace
 
 Domain make_domain(const Model& m, const Partition& partition, int index) {
@@ -168,6 +186,7 @@ Domain make_domain(const Model& m, const Partition& partition, int index) {
   }
   load_lists(m, d);
   record_halos(m, d, several);
+  d.last_sending_group = last_sending_group(m, d);
   return d;
 }
 

@@ -37,23 +37,25 @@ MpiExchange::MpiExchange() : requests_(std::make_unique<Requests>()) {
 }
 MpiExchange::~MpiExchange() = default;
 
-// Receives posted first, then each neighbour's slots packed and sent, then every request completed and the
-// received slots unpacked. One message per neighbour and direction.
-void MpiExchange::halo(std::vector<double>& values, int width, const HaloPlan& plan) {
+// Receives posted first, then each neighbour's slots packed and sent; one message per neighbour and direction. The
+// buffers of a halo are kept for the next cycle's (the same plans come back every cycle).
+void MpiExchange::halo_start(std::vector<double>& values, int width, const HaloPlan& plan) {
+  if (started_ == halos_.size()) halos_.emplace_back();
+  Halo& h = halos_[started_++];
   const std::size_t neighbours = plan.neighbours.size(), w = static_cast<std::size_t>(width);
-  halo_send_.resize(neighbours), halo_receive_.resize(neighbours);
+  h.values = &values, h.width = w, h.plan = &plan;
+  h.send.resize(neighbours), h.receive.resize(neighbours);
   std::vector<MPI_Request>& pending = requests_->pending;
-  pending.clear();
   constexpr int kTag = 7;
   for (std::size_t i = 0; i < neighbours; ++i) {
-    halo_receive_[i].resize(plan.receive[i].size() * w);
-    if (halo_receive_[i].empty()) continue;
+    h.receive[i].resize(plan.receive[i].size() * w);
+    if (h.receive[i].empty()) continue;
     pending.emplace_back();
-    MPI_Irecv(halo_receive_[i].data(), static_cast<int>(halo_receive_[i].size()), MPI_DOUBLE, plan.neighbours[i], kTag,
+    MPI_Irecv(h.receive[i].data(), static_cast<int>(h.receive[i].size()), MPI_DOUBLE, plan.neighbours[i], kTag,
               MPI_COMM_WORLD, &pending.back());
   }
   for (std::size_t i = 0; i < neighbours; ++i) {
-    std::vector<double>& buffer = halo_send_[i];
+    std::vector<double>& buffer = h.send[i];
     buffer.resize(plan.send[i].size() * w);
     if (buffer.empty()) continue;
     for (std::size_t j = 0; j < plan.send[i].size(); ++j)
@@ -62,11 +64,22 @@ void MpiExchange::halo(std::vector<double>& values, int width, const HaloPlan& p
     MPI_Isend(buffer.data(), static_cast<int>(buffer.size()), MPI_DOUBLE, plan.neighbours[i], kTag, MPI_COMM_WORLD,
               &pending.back());
   }
+}
+
+// Messages between two ranks arrive in the order they were sent (same tag), so the halos started in the same order
+// on every rank match up.
+void MpiExchange::halo_finish() {
+  std::vector<MPI_Request>& pending = requests_->pending;
   MPI_Waitall(static_cast<int>(pending.size()), pending.data(), MPI_STATUSES_IGNORE);
-  for (std::size_t i = 0; i < neighbours; ++i)
-    for (std::size_t j = 0; j < plan.receive[i].size(); ++j)
-      std::copy_n(halo_receive_[i].begin() + static_cast<std::ptrdiff_t>(j * w), w,
-                  values.begin() + static_cast<std::ptrdiff_t>(plan.receive[i][j] * w));
+  pending.clear();
+  for (std::size_t k = 0; k < started_; ++k) {
+    Halo& h = halos_[k];
+    for (std::size_t i = 0; i < h.plan->neighbours.size(); ++i)
+      for (std::size_t j = 0; j < h.plan->receive[i].size(); ++j)
+        std::copy_n(h.receive[i].begin() + static_cast<std::ptrdiff_t>(j * h.width), h.width,
+                    h.values->begin() + static_cast<std::ptrdiff_t>(h.plan->receive[i][j] * h.width));
+  }
+  started_ = 0;
 }
 
 const MpiExchange::Layout& MpiExchange::layout(const std::vector<std::int32_t>& owner, int width) {

@@ -66,7 +66,19 @@ void ThreadExchange::min_with_index(std::vector<double>& value, std::vector<std:
   value = std::move(best_value), index = std::move(best_index);
 }
 
-void ThreadExchange::halo(std::vector<double>& values, int width, const HaloPlan& plan) {
+// The threads meet at halo_finish: every domain then offers each started halo in turn (the same order everywhere).
+// A receive slot is another domain's element, which this domain's kernels never write, so copying at the finish
+// gives what a copy at the start would have.
+void ThreadExchange::halo_start(std::vector<double>& values, int width, const HaloPlan& plan) {
+  started_.push_back({&values, width, &plan});
+}
+
+void ThreadExchange::halo_finish() {
+  for (const Halo& h : started_) exchange_halo(*h.values, h.width, *h.plan);
+  started_.clear();
+}
+
+void ThreadExchange::exchange_halo(std::vector<double>& values, int width, const HaloPlan& plan) {
   board_.offered_[static_cast<std::size_t>(domain_)] = &values;
   board_.barrier_.arrive_and_wait();
   const auto w = static_cast<std::size_t>(width);

@@ -282,10 +282,9 @@ void share_group_results(const Model& m, SolverState& s, Exchange& exchange) {
 void share_element_results(const Model& m, SolverState& s, Exchange& exchange) {
   const Domain& d = s.domain;
   const bool critical_steps = critical_steps_needed(m.run);
+  exchange.halo_finish();  // the records' halo, started by run_element_kernels
   for (int k = 0; k < kElementKinds; ++k) {
     ElementStateView v = element_view(s, static_cast<ElementKind>(k));
-    exchange.halo(v.records.load, v.records.nodes_per_element * v.records.values_per_node,
-                  d.record_halo[static_cast<std::size_t>(k)]);
     if (critical_steps) exchange.share(v.critical_dt, 1, d.owner[static_cast<std::size_t>(k)]);
   }
   share_group_results(m, s, exchange);
@@ -436,12 +435,27 @@ void share_node_state(const Model& m, SolverState& s, Exchange& exchange, bool r
   }
 }
 
-void run_element_kernels(const Model& m, SolverState& s) {
+void run_element_kernels(const Model& m, SolverState& s, Exchange* exchange) {
   NodalState& n = s.nodes;
   if (!s.domain.several()) n.clear_forces();
   else
     for_each_local_node(s.domain, n.size(), [&n](std::size_t k) { n.fx[k] = n.fy[k] = n.fz[k] = n.mx[k] = n.my[k] = n.mz[k] = 0.0; });
-  for (std::size_t g = 0; g < m.element_groups.size(); ++g) s.group_results[g] = group_forces(m, s, g);
+  // Several domains: the records' halo starts as soon as the last group with a sent element is computed, and the
+  // groups after it are computed while it travels (share_element_results completes it). The groups keep their
+  // model order, so every node's sum does too.
+  const std::int32_t last_sending = s.domain.last_sending_group;
+  auto start_halo = [&] {
+    for (int k = 0; k < kElementKinds; ++k) {
+      ElementStateView v = element_view(s, static_cast<ElementKind>(k));
+      exchange->halo_start(v.records.load, v.records.nodes_per_element * v.records.values_per_node,
+                           s.domain.record_halo[static_cast<std::size_t>(k)]);
+    }
+  };
+  if (exchange != nullptr && last_sending < 0) start_halo();
+  for (std::size_t g = 0; g < m.element_groups.size(); ++g) {
+    s.group_results[g] = group_forces(m, s, g);
+    if (exchange != nullptr && static_cast<std::int32_t>(g) == last_sending) start_halo();
+  }
 }
 
 namespace {
@@ -484,7 +498,7 @@ StepBound combine_group_results(const Model& m, SolverState& s, RunEvents& event
 
 StepBound compute_element_forces(const Model& m, SolverState& s, RunEvents& events, bool& elements_deleted,
                                   Exchange* exchange) {
-  run_element_kernels(m, s);
+  run_element_kernels(m, s, s.domain.several() ? exchange : nullptr);
   if (s.domain.several()) share_element_results(m, s, *exchange);
   return combine_group_results(m, s, events, elements_deleted);
 }

@@ -42,9 +42,11 @@ double step_scale(const RunControl& run);
 StepBound compute_element_forces(const Model& model, SolverState& state, RunEvents& events, bool& elements_deleted,
                                   Exchange* exchange);
 // Its two halves: every group's kernel (SolverState::group_results, the nodal sums), then the groups' results in
-// model order: energies, stops, the per-type step control and the bound. A group's step control touches only its
-// own elements, so the halves give what one pass group by group gives.
-void run_element_kernels(const Model& model, SolverState& state);
+// model order: stops, the per-type step control and the bound. A group's step control touches only its own
+// elements, so the halves give what one pass group by group gives. With `exchange` (several domains) the first half
+// also starts the records' halo (Exchange::halo_start) once it has computed the last group with a sent element;
+// share_element_results completes it.
+void run_element_kernels(const Model& model, SolverState& state, Exchange* exchange = nullptr);
 // Between them in a run of several domains (docs/parallel.md, "Assembly"): what each domain computed of its own
 // elements reaches every domain, and every node's sum is assembled in the model's order.
 void share_element_results(const Model& model, SolverState& state, Exchange& exchange);

@@ -59,6 +59,9 @@ struct Domain {
   std::vector<NodeLoadRef> loads;
   // Per element kind: the loads of the elements at shared nodes, sent to the neighbours that assemble those nodes.
   std::array<HaloPlan, kElementKinds> record_halo;
+  // The last element group, in model order, with an element whose loads are sent (-1: none): the element phase
+  // starts the records' halo once it has computed that group, and computes the groups after it meanwhile.
+  std::int32_t last_sending_group = -1;
 
   bool several() const { return count > 1; }
   bool mine(ElementKind kind, std::size_t element) const {

@@ -24,8 +24,16 @@ class Exchange {
   virtual void share(std::vector<std::uint8_t>& values, int width, const std::vector<std::int32_t>& owner) = 0;
 
   // Point to point with the neighbours of `plan`: this domain's send slots to each neighbour, the neighbours' into
-  // its receive slots (`width` values per slot). Non-blocking sends and receives, completed before it returns.
-  virtual void halo(std::vector<double>& values, int width, const HaloPlan& plan) = 0;
+  // its receive slots (`width` values per slot). `halo_start` posts the receives and sends the send slots as they
+  // are now (non-blocking); `halo_finish` completes every started halo and fills the receive slots. In between the
+  // caller may compute anything that writes neither the send nor the receive slots: the element phase overlaps the
+  // exchange with its remaining groups (docs/parallel.md, "Exchange"). Several halos may be started at once.
+  virtual void halo_start(std::vector<double>& values, int width, const HaloPlan& plan) = 0;
+  virtual void halo_finish() = 0;
+  void halo(std::vector<double>& values, int width, const HaloPlan& plan) {
+    halo_start(values, width, plan);
+    halo_finish();
+  }
   // `owner` has changed since its last share (its slots travel differently): forget what was made of it.
   virtual void renew(const std::vector<std::int32_t>& owner) = 0;
   // Every owner array may have changed (a new partition): forget everything made of them.

@@ -40,7 +40,8 @@ class MpiExchange final : public Exchange {
   int domains() const override { return size_; }
   void share(std::vector<double>& values, int width, const std::vector<std::int32_t>& owner) override;
   void share(std::vector<std::uint8_t>& values, int width, const std::vector<std::int32_t>& owner) override;
-  void halo(std::vector<double>& values, int width, const HaloPlan& plan) override;
+  void halo_start(std::vector<double>& values, int width, const HaloPlan& plan) override;
+  void halo_finish() override;
   void renew(const std::vector<std::int32_t>& owner) override;
   void renew_all() override { layouts_.clear(); }
   void gather(const std::vector<double>& mine, std::vector<double>& all) override;
@@ -73,7 +74,15 @@ class MpiExchange final : public Exchange {
   std::vector<DoubleInt> pairs_;
   std::vector<std::int64_t> digits_;  // exact sums' digits, packed
   std::vector<int> gather_counts_, gather_displacements_;
-  std::vector<std::vector<double>> halo_send_, halo_receive_;  // per neighbour
+  // The started halos: where their received slots go, and per neighbour the packed send and receive buffers.
+  struct Halo {
+    std::vector<double>* values = nullptr;
+    std::size_t width = 0;
+    const HaloPlan* plan = nullptr;
+    std::vector<std::vector<double>> send, receive;  // per neighbour
+  };
+  std::vector<Halo> halos_;
+  std::size_t started_ = 0;  // halos_[0 .. started_) are in flight
   struct Requests;  // MPI_Request storage (mpi.h stays out of this header)
   std::unique_ptr<Requests> requests_;
   std::vector<double> non_finite_;

@@ -29,7 +29,8 @@ class ThreadExchange final : public Exchange {
   int domains() const override { return board_.domains(); }
   void share(std::vector<double>& values, int width, const std::vector<std::int32_t>& owner) override;
   void share(std::vector<std::uint8_t>& values, int width, const std::vector<std::int32_t>& owner) override;
-  void halo(std::vector<double>& values, int width, const HaloPlan& plan) override;
+  void halo_start(std::vector<double>& values, int width, const HaloPlan& plan) override;
+  void halo_finish() override;
   void renew(const std::vector<std::int32_t>& owner) override;
   void renew_all() override {}
   void gather(const std::vector<double>& mine, std::vector<double>& all) override;
@@ -40,6 +41,7 @@ class ThreadExchange final : public Exchange {
   void sum(std::vector<ExactSum>& sums) override;
 
  private:
+  void exchange_halo(std::vector<double>& values, int width, const HaloPlan& plan);
   template <class T>
   void share_slots(std::vector<T>& values, int width, const std::vector<std::int32_t>& owner);
   template <class T, class Combine>
@@ -47,6 +49,13 @@ class ThreadExchange final : public Exchange {
 
   ThreadBoard& board_;
   int domain_;
+  // The started halos, exchanged one after the other at halo_finish (the board holds one offer per domain).
+  struct Halo {
+    std::vector<double>* values;
+    int width;
+    const HaloPlan* plan;
+  };
+  std::vector<Halo> started_;
 };
 
 }  // namespace crumple
