@@ -36,13 +36,13 @@ std::vector<double> interleave(const std::vector<double>& x, const std::vector<d
 }
 
 // A per-node result the cycle keeps only when asked for (SolverState::recorded): 3 per node when there.
-void add_recorded(std::vector<FrameField>& out, const char* name, const std::vector<double>& values, std::size_t n) {
+void add_recorded(FieldSink& out, const char* name, const std::vector<double>& values, std::size_t n) {
   if (values.empty()) return;
   require_size(values, 3 * n, fmt::format("the recorded {}", name));
   out.push_back(field(name, -1, 3, values));
 }
 
-void add_nodal_fields(std::vector<FrameField>& out, const Model& m, const SolverState& s) {
+void add_nodal_fields(FieldSink& out, const Model& m, const SolverState& s) {
   const std::size_t n = m.nodes.size();
   const NodalState& ns = s.nodes;
   const FrameRequests& want = m.run.anim;
@@ -72,7 +72,7 @@ void add_nodal_fields(std::vector<FrameField>& out, const Model& m, const Solver
 
 // The deleted flag (1 for a failed element; an element carried by a rigid body is there, only not computed) and
 // VTK's ghost flags that hide it in ParaView, last of the kind's fields.
-void add_status_fields(std::vector<FrameField>& out, ElementKind kind, const std::vector<std::uint8_t>& status) {
+void add_status_fields(FieldSink& out, ElementKind kind, const std::vector<std::uint8_t>& status) {
   FrameField deleted, ghost;
   deleted.name = "deleted", ghost.name = "vtkGhostType";
   for (FrameField* f : {&deleted, &ghost}) f->kind = static_cast<int>(kind), f->is_bytes = true;
@@ -85,7 +85,7 @@ void add_status_fields(std::vector<FrameField>& out, ElementKind kind, const std
 }
 
 // The per-element energies and step that ENER, HOURG and DT ask for.
-void add_element_scalars(std::vector<FrameField>& out, const FrameRequests& want, int kind, std::size_t n,
+void add_element_scalars(FieldSink& out, const FrameRequests& want, int kind, std::size_t n,
                          const std::vector<double>& internal_energy, const std::vector<double>& mass,
                          const std::vector<double>& hourglass_energy, const std::vector<double>& critical_dt) {
   if (want.energy_density) {
@@ -213,7 +213,7 @@ std::vector<double> row(const std::vector<ShellValues>& values, Stress3 ShellVal
   return out;
 }
 
-void add_shell_fields(std::vector<FrameField>& out, const Model& m, const SolverState& state, ElementKind kind) {
+void add_shell_fields(FieldSink& out, const Model& m, const SolverState& state, ElementKind kind) {
   const std::size_t n = m.elements[static_cast<std::size_t>(kind)].size();
   if (n == 0) return;
   const ShellState& s = kind == ElementKind::Shell4 ? state.shells : state.shells3;
@@ -277,7 +277,7 @@ double von_mises(const double* s) {
   return std::sqrt(0.5 * (a * a + b * b + c * c) + 3.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]));
 }
 
-void add_brick_fields(std::vector<FrameField>& out, const Model& m, const SolverState& state) {
+void add_brick_fields(FieldSink& out, const Model& m, const SolverState& state) {
   const std::size_t n = m.elements[static_cast<std::size_t>(ElementKind::Brick8)].size();
   if (n == 0) return;
   const BrickState& b = state.bricks;
@@ -317,13 +317,20 @@ void add_brick_fields(std::vector<FrameField>& out, const Model& m, const Solver
 
 }  // namespace
 
-std::vector<FrameField> frame_fields(const Model& model, const SolverState& state) {
-  std::vector<FrameField> out;
+void frame_fields(const Model& model, const SolverState& state, FieldSink& out) {
   add_nodal_fields(out, model, state);
   add_shell_fields(out, model, state, ElementKind::Shell4);
   add_shell_fields(out, model, state, ElementKind::Shell3);
   add_brick_fields(out, model, state);
-  return out;
+}
+
+std::vector<FrameField> frame_fields(const Model& model, const SolverState& state) {
+  struct Collect final : FieldSink {
+    std::vector<FrameField> fields;
+    void push_back(FrameField&& field) override { fields.push_back(std::move(field)); }
+  } collect;
+  frame_fields(model, state, collect);
+  return std::move(collect.fields);
 }
 
 }  // namespace crumple

@@ -24,9 +24,20 @@ struct FrameField {
   std::vector<std::uint8_t> bytes;
 };
 
+// Where the fields of a frame go, one at a time: a frame holds one field's buffers at once, not all of them (the
+// frame is the run's peak of memory otherwise: about 200 bytes per shell).
+class FieldSink {
+ public:
+  virtual ~FieldSink() = default;
+  virtual void push_back(FrameField&& field) = 0;
+};
+
 // Every field of a frame of `state`, nodal fields first, then per element kind present (shell4, shell3, brick8)
-// its cell fields, the kind's vtkGhostType last. Throws std::runtime_error when an array the frame needs does not
-// fit the model (its message says which), before anything is written.
+// its cell fields, the kind's vtkGhostType last, each handed to `sink` as soon as it is made. Throws
+// std::runtime_error when an array the frame needs does not fit the model (its message says which); the fields
+// handed over before it are then the caller's to discard.
+void frame_fields(const Model& model, const SolverState& state, FieldSink& sink);
+// The same, collected.
 std::vector<FrameField> frame_fields(const Model& model, const SolverState& state);
 
 }  // namespace crumple

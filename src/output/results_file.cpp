@@ -463,39 +463,46 @@ struct ResultsFile::Impl {
                            element_groups));
   }
 
-  std::vector<FrameField> fields_of(const Model& model, const SolverState& state) const {
-    check_state(model);
-    try {
-      return frame_fields(model, state);
-    } catch (const std::runtime_error& e) {
-      throw std::runtime_error("results file " + path.string() + ": the solver state does not match the mesh: " +
-                               e.what());
-    }
-  }
-
   // /frames/NNNN: the nodal fields in the group, the cell fields in a subgroup per element kind
-  // (docs/output-format.md). Every field is computed before anything is written, so a state that does not fit
-  // leaves no partial frame.
+  // (docs/output-format.md). Each field is written as soon as it is made, so that a frame holds one field's buffers
+  // at a time; a state that does not fit the mesh leaves no frame (the group written so far is removed).
   void write_frame(double time, long long cycle, const Model& model, const SolverState& state) {
-    const std::vector<FrameField> fields = fields_of(model, state);
+    check_state(model);
     Frame f{fmt::format("{:04}", frames.size()), time, cycle, {}};
     Handle frames_group(check(H5Gopen2(file.get(), "frames", H5P_DEFAULT), "cannot open /frames"), H5Gclose);
-    Handle frame = group(frames_group.get(), f.name);
-    attribute(frame.get(), "time", time);
-    attribute(frame.get(), "cycle", static_cast<std::int64_t>(cycle));
-    std::array<Handle, kElementKinds> kind_groups;
-    for (const FrameField& field : fields) {
-      hid_t at = frame.get();
-      std::size_t rows = nodes;
-      if (field.kind >= 0) {
-        const auto k = static_cast<std::size_t>(field.kind);
-        if (!kind_groups[k].valid()) kind_groups[k] = group(frame.get(), kMeshKinds[k].group);
-        at = kind_groups[k].get(), rows = elements[k];
+    {
+      Handle frame = group(frames_group.get(), f.name);
+      attribute(frame.get(), "time", time);
+      attribute(frame.get(), "cycle", static_cast<std::int64_t>(cycle));
+      struct Writer final : FieldSink {
+        Impl& file;
+        hid_t frame;
+        Frame& entry;
+        std::array<Handle, kElementKinds> kind_groups;
+        Writer(Impl& i, hid_t g, Frame& e) : file(i), frame(g), entry(e) {}
+        void push_back(FrameField&& field) override {
+          hid_t at = frame;
+          std::size_t rows = file.nodes;
+          if (field.kind >= 0) {
+            const auto k = static_cast<std::size_t>(field.kind);
+            if (!kind_groups[k].valid()) kind_groups[k] = file.group(frame, kMeshKinds[k].group);
+            at = kind_groups[k].get(), rows = file.elements[k];
+          }
+          if (field.is_bytes) file.dataset(at, field.name, field.bytes.data(), {rows});
+          else if (field.width == 1) file.dataset(at, field.name, field.values.data(), {rows});
+          else file.dataset(at, field.name, field.values.data(), {rows, field.width});
+          entry.fields.push_back({field.name, field.kind, field.width, field.is_bytes});
+        }
+      } writer(*this, frame.get(), f);
+      try {
+        frame_fields(model, state, writer);
+      } catch (const std::runtime_error& e) {
+        for (Handle& g : writer.kind_groups) g = Handle();
+        frame = Handle();
+        H5Ldelete(frames_group.get(), f.name.c_str(), H5P_DEFAULT);
+        throw std::runtime_error("results file " + path.string() + ": the solver state does not match the mesh: " +
+                                 e.what());
       }
-      if (field.is_bytes) dataset(at, field.name, field.bytes.data(), {rows});
-      else if (field.width == 1) dataset(at, field.name, field.values.data(), {rows});
-      else dataset(at, field.name, field.values.data(), {rows, field.width});
-      f.fields.push_back({field.name, field.kind, field.width, field.is_bytes});
     }
     frames.push_back(std::move(f));
 
