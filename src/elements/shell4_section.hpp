@@ -155,7 +155,7 @@ inline void update_points(const ShellGroupParameters& p, const materials::PlaneS
     state.eps_rate[ip] = rate;
     const auto return_to_yield = p.radial_return ? materials::plane_stress_radial_return : materials::plane_stress_update;
     const auto r = return_to_yield(elastic, p.hardening, ex, ey, g, rate, state.eps_p[ip], sxx, syy, sxy,
-                                   &state.static_yield[ip]);
+                                   &state.hardening_term[ip]);
     state.eps_p[ip] += r.plastic_strain_increment;
     if (r.plastic_strain_increment > 0.0 && p.physical_hourglass) {
       // Elastic-plastic tangent of the point, E H' / (E + H'), for the hourglass modes (eq. S-12).

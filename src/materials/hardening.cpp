@@ -15,9 +15,8 @@ double jc_rate_factor(const JohnsonCookParameters& p, double rate) {
   return 1.0 + p.c * std::log(rate / p.eps_dot_0);
 }
 
-double jc_static(const JohnsonCookParameters& p, double eps_p) {
-  return p.a + (eps_p > 0.0 ? p.b * std::pow(eps_p, p.n) : 0.0);
-}
+double jc_term(const JohnsonCookParameters& p, double eps_p) { return eps_p > 0.0 ? p.b * std::pow(eps_p, p.n) : 0.0; }
+double jc_static(const JohnsonCookParameters& p, double eps_p) { return p.a + jc_term(p, eps_p); }
 
 // The cap follows the strain rate too unless ICC = 2 (ICC 0 is 1): sigma_max = sig_max0 (1 + c ln(...)).
 double cap(const JohnsonCookParameters& p, double rate_factor) {
@@ -70,12 +69,12 @@ double Hardening::yield(double eps_p, double eps_rate) const {
   return std::numeric_limits<double>::infinity();
 }
 
-double Hardening::static_part(double eps_p) const { return jc_static(*johnson_cook, eps_p); }
+double Hardening::hardening_term(double eps_p) const { return jc_term(*johnson_cook, eps_p); }
 
-double Hardening::yield_from_static(double static_part, double eps_rate) const {
+double Hardening::yield_from_term(double term, double eps_rate) const {
   const auto& p = *johnson_cook;
   const double factor = jc_rate_factor(p, eps_rate);
-  return capped(p, static_part * factor, factor);  // the expression of yield, from the kept part
+  return capped(p, (p.a + term) * factor, factor);  // the expression of yield, from the kept term
 }
 
 double Hardening::slope(double eps_p, double eps_rate) const {
@@ -105,19 +104,22 @@ double Hardening::slope(double eps_p, double eps_rate) const {
   return 0.0;
 }
 
-double Hardening::yield_and_slope(double eps_p, double eps_rate, double& slope_out, double* static_part_out) const {
+double Hardening::yield_and_slope(double eps_p, double eps_rate, double& slope_out, double* term_out,
+                                  const double* term_in) const {
   if (law != MaterialLaw::JohnsonCook) {
     slope_out = slope(eps_p, eps_rate);
     return yield(eps_p, eps_rate);
   }
   const auto& p = *johnson_cook;
   const double factor = jc_rate_factor(p, eps_rate);
-  // b eps^n and its derivative b n eps^(n-1) = n (b eps^n) / eps from one power (slope evaluated a little above 0).
+  // b eps^n and its derivative b n eps^(n-1) = n (b eps^n) / eps from one power (slope evaluated a little above 0),
+  // or none when the caller keeps b eps_p^n and eps_p is where the slope is evaluated.
   const double e = std::max(eps_p, 1e-6);
-  const double power = p.b * std::pow(e, p.n);
+  const bool known = term_in != nullptr && eps_p == e;
+  const double power = known ? *term_in : p.b * std::pow(e, p.n);
   const double hardening = eps_p > 0.0 ? (eps_p == e ? power : p.b * std::pow(eps_p, p.n)) : 0.0;
   const double static_value = p.a + hardening;  // jc_static's expression, term for term
-  if (static_part_out != nullptr) *static_part_out = static_value;
+  if (term_out != nullptr) *term_out = hardening;
   const double sigma = static_value * factor;
   if (p.sig_max0 > 0.0 && sigma >= cap(p, factor)) {
     slope_out = 0.0;

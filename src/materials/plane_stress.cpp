@@ -14,12 +14,12 @@ struct Predictor {
   PlaneStressResult elastic;  // the step's result if it is elastic
   double old_sum = 0.0;       // sxx + syy before the step
   double trial = 0.0;         // von Mises stress of the trial stress
-  bool kept = false;          // the static part of the yield stress is kept in *static_yield
+  bool kept = false;          // Johnson-Cook's b eps_p^n is kept in *kept_term
   bool plastic = false;
 };
 
 Predictor predict(const PlaneStressElastic& el, const Hardening& hardening, double dexx, double deyy, double dgxy,
-                  double rate, double eps_p, double& sxx, double& syy, double& sxy, double* static_yield) {
+                  double rate, double eps_p, double& sxx, double& syy, double& sxy, double* kept_term) {
   const double E = el.young, nu = el.poisson;
   const double G = E / (2.0 * (1.0 + nu));
   const double c = E / (1.0 - nu * nu);
@@ -31,9 +31,9 @@ Predictor predict(const PlaneStressElastic& el, const Hardening& hardening, doub
   sxx = txx, syy = tyy, sxy = txy;
   pr.elastic = {0.0, -nu / E * ((txx + tyy) - pr.old_sum)};
   if (!hardening.plastic()) return pr;
-  pr.kept = static_yield != nullptr && hardening.has_static_part();
-  if (pr.kept && std::isnan(*static_yield)) *static_yield = hardening.static_part(eps_p);
-  const double yield0 = pr.kept ? hardening.yield_from_static(*static_yield, rate) : hardening.yield(eps_p, rate);
+  pr.kept = kept_term != nullptr && hardening.has_kept_term();
+  if (pr.kept && std::isnan(*kept_term)) *kept_term = hardening.hardening_term(eps_p);
+  const double yield0 = pr.kept ? hardening.yield_from_term(*kept_term, rate) : hardening.yield(eps_p, rate);
   pr.trial = von_mises_plane_stress(txx, tyy, txy);
   pr.plastic = !(pr.trial <= yield0);
   return pr;
@@ -43,11 +43,11 @@ Predictor predict(const PlaneStressElastic& el, const Hardening& hardening, doub
 
 PlaneStressResult plane_stress_update(const PlaneStressElastic& el, const Hardening& hardening, double dexx,
                                       double deyy, double dgxy, double rate, double eps_p, double& sxx, double& syy,
-                                      double& sxy, double* static_yield) {
+                                      double& sxy, double* kept_term) {
   const double E = el.young;
   const double nu = el.poisson;
   const double G = E / (2.0 * (1.0 + nu));
-  const Predictor pr = predict(el, hardening, dexx, deyy, dgxy, rate, eps_p, sxx, syy, sxy, static_yield);
+  const Predictor pr = predict(el, hardening, dexx, deyy, dgxy, rate, eps_p, sxx, syy, sxy, kept_term);
   PlaneStressResult result = pr.elastic;
   if (!pr.plastic) return result;
   const double txx = sxx, tyy = syy, txy = sxy, old_sum = pr.old_sum;
@@ -96,7 +96,7 @@ PlaneStressResult plane_stress_update(const PlaneStressElastic& el, const Harden
   syy = 0.5 * (new_p + new_q);
   sxy = r * b;
   result.plastic_strain_increment = 2.0 / 3.0 * g * von_mises_plane_stress(sxx, syy, sxy);
-  if (kept) *static_yield = hardening.static_part(eps_p + result.plastic_strain_increment);
+  if (kept) *kept_term = hardening.hardening_term(eps_p + result.plastic_strain_increment);
   // Through-thickness strain: elastic part from the stress change, plastic part from incompressibility
   // (d eps_p_zz = -(d eps_p_xx + d eps_p_yy) = -g (sxx + syy) / 3).
   result.thickness_strain = -nu / E * ((sxx + syy) - old_sum) - g * (sxx + syy) / 3.0;
@@ -105,23 +105,24 @@ PlaneStressResult plane_stress_update(const PlaneStressElastic& el, const Harden
 
 PlaneStressResult plane_stress_radial_return(const PlaneStressElastic& el, const Hardening& hardening, double dexx,
                                              double deyy, double dgxy, double rate, double eps_p, double& sxx,
-                                             double& syy, double& sxy, double* static_yield) {
+                                             double& syy, double& sxy, double* kept_term) {
   const double E = el.young, nu = el.poisson;
   const double G = E / (2.0 * (1.0 + nu));
-  const Predictor pr = predict(el, hardening, dexx, deyy, dgxy, rate, eps_p, sxx, syy, sxy, static_yield);
+  const Predictor pr = predict(el, hardening, dexx, deyy, dgxy, rate, eps_p, sxx, syy, sxy, kept_term);
   PlaneStressResult result = pr.elastic;
   if (!pr.plastic) return result;
   const double txx = sxx, tyy = syy, txy = sxy, old_sum = pr.old_sum, trial = pr.trial;
   const bool kept = pr.kept;
   // PS-5: f(d) = trial - 3 G d - sigma_y(eps_p + d) = 0, decreasing in d; Newton from d = 0, safeguarded.
   double d = 0.0, lo = 0.0, hi = trial / (3.0 * G);
-  // The last strain the hardening was evaluated at and its static part: when the iteration ends on the residual
-  // there, the kept static part needs no second power.
-  double evaluated = -1.0, evaluated_static = 0.0;
+  // The last strain the hardening was evaluated at and its term: when the iteration ends on the residual there,
+  // the kept term needs no second power. The first step, at eps_p itself, takes the kept term: no power at all.
+  double evaluated = -1.0, evaluated_term = 0.0;
   for (int it = 0; it < 50; ++it) {
     double slope = 0.0;
     evaluated = eps_p + d;
-    const double yield = hardening.yield_and_slope(evaluated, rate, slope, kept ? &evaluated_static : nullptr);
+    const double yield = hardening.yield_and_slope(evaluated, rate, slope, kept ? &evaluated_term : nullptr,
+                                                   kept && it == 0 ? kept_term : nullptr);
     const double f = trial - 3.0 * G * d - yield;
     if (std::abs(f) <= 1e-12 * yield) break;
     if (f > 0.0) lo = d; else hi = d;
@@ -136,7 +137,7 @@ PlaneStressResult plane_stress_radial_return(const PlaneStressElastic& el, const
   const double scale = (trial - 3.0 * G * d) / trial;
   sxx = txx * scale, syy = tyy * scale, sxy = txy * scale;
   result.plastic_strain_increment = d;
-  if (kept) *static_yield = eps_p + d == evaluated ? evaluated_static : hardening.static_part(eps_p + d);
+  if (kept) *kept_term = eps_p + d == evaluated ? evaluated_term : hardening.hardening_term(eps_p + d);
   // Plastic flow along the normal (3/2) s / sigma_vm: through the thickness -d (sxx + syy) / (2 sigma_vm).
   const double vm = von_mises_plane_stress(sxx, syy, sxy);
   result.thickness_strain = -nu / E * ((sxx + syy) - old_sum) - (vm > 0.0 ? d * (sxx + syy) / (2.0 * vm) : 0.0);

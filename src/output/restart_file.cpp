@@ -19,7 +19,7 @@ namespace {
 using hdf5::Handle;
 using hdf5::H5Types;
 
-constexpr int kRestartFormat = 2;  // 2: marks/deleted_inverted and marks/step_drop_warned
+constexpr int kRestartFormat = 3;  // 2: marks/deleted_inverted and marks/step_drop_warned; 3: shells' hardening_term
 
 // The counts a snapshot's arrays are sized by; a restart file is read only by a model with the same counts.
 std::array<long long, 6> model_counts(const Model& m, const SolverState& s) {

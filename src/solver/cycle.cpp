@@ -353,7 +353,7 @@ void share_element_state(SolverState& s, Exchange& exchange, ElementStateNeed ne
   auto shells = [](auto& v, const std::string& at, ShellState& st) { snapshot_detail::visit_shells(v, at, st); };
   auto bricks = [](auto& v, const std::string& at, BrickState& st) { snapshot_detail::visit_bricks(v, at, st); };
   const auto shell_points = {std::string_view("sxx"), std::string_view("syy"), std::string_view("sxy"),
-                             std::string_view("eps_p"), std::string_view("eps_rate"), std::string_view("static_yield")};
+                             std::string_view("eps_p"), std::string_view("eps_rate"), std::string_view("hardening_term")};
   const auto brick_points = {std::string_view("sxx"), std::string_view("syy"), std::string_view("szz"),
                              std::string_view("sxy"), std::string_view("syz"), std::string_view("szx"),
                              std::string_view("eps_p"), std::string_view("eps_rate")};

@@ -53,10 +53,10 @@ TEST(Hardening, RateFilterIsAFirstOrderLowPass) {
   EXPECT_DOUBLE_EQ(Hardening::of(infinite, none).filtered_rate(100.0, 50.0, dt), 100.0);
 }
 
-TEST(Hardening, KeptStaticPartGivesTheSameReturnToTheLastBit) {
+TEST(Hardening, KeptTermGivesTheSameReturnToTheLastBit) {
   // A plane-stress point driven through loading, unloading and reloading at a varying rate, once with the kept
-  // Johnson-Cook part a + b eps_p^n (no power in the elastic check) and once without: identical stresses and
-  // plastic strains, bit for bit, and the kept part equal to a + b eps_p^n of the current strain throughout.
+  // Johnson-Cook term b eps_p^n (no power in the elastic check) and once without: identical stresses and plastic
+  // strains, bit for bit, and the kept term equal to b eps_p^n of the current strain throughout.
   Material m = johnson_cook(0, 0.0);
   m.johnson_cook.sig_max0 = 6e8;  // the cap on the way as well
   m.young = 2.1e11, m.poisson = 0.3;
@@ -73,9 +73,36 @@ TEST(Hardening, KeptStaticPartGivesTheSameReturnToTheLastBit) {
     eps_a += ra.plastic_strain_increment, eps_b += rb.plastic_strain_increment;
     for (int k = 0; k < 3; ++k) ASSERT_EQ(a[k], b[k]) << step;
     ASSERT_EQ(eps_a, eps_b) << step;
-    ASSERT_EQ(kept, h.static_part(eps_a)) << step;
+    ASSERT_EQ(kept, h.hardening_term(eps_a)) << step;
   }
   EXPECT_GT(eps_a, 0.01);  // it did yield, several times
+}
+
+TEST(Hardening, KeptTermGivesTheSameRadialReturnToTheLastBit) {
+  // The same with the radial return (Iplas 2), whose first Newton step takes the kept term instead of a power:
+  // identical stresses and plastic strains, bit for bit, from a start below eps_p = 1e-6 (where the slope is
+  // evaluated at 1e-6, not at eps_p) to strains well above it.
+  Material m = johnson_cook(0, 0.0);
+  m.young = 2.1e11, m.poisson = 0.3;
+  const std::vector<Function> none;
+  const auto h = Hardening::of(m, none);
+  const PlaneStressElastic el{m.young, m.poisson};
+  double a[3] = {0, 0, 0}, b[3] = {0, 0, 0}, eps_a = 0.0, eps_b = 0.0;
+  double kept = std::numeric_limits<double>::quiet_NaN();
+  int plastic_steps = 0;
+  for (int step = 0; step < 4000; ++step) {
+    const double phase = std::sin(step * 0.004), de = 2e-5 * (phase > 0.0 ? 1.0 : -0.7);
+    const double rate = 1.0 + 100.0 * std::abs(phase);
+    const auto ra = plane_stress_radial_return(el, h, de, -0.3 * de, 0.5 * de, rate, eps_a, a[0], a[1], a[2], &kept);
+    const auto rb = plane_stress_radial_return(el, h, de, -0.3 * de, 0.5 * de, rate, eps_b, b[0], b[1], b[2]);
+    plastic_steps += ra.plastic_strain_increment > 0.0 ? 1 : 0;
+    eps_a += ra.plastic_strain_increment, eps_b += rb.plastic_strain_increment;
+    for (int k = 0; k < 3; ++k) ASSERT_EQ(a[k], b[k]) << step;
+    ASSERT_EQ(eps_a, eps_b) << step;
+    ASSERT_EQ(kept, h.hardening_term(eps_a)) << step;
+  }
+  EXPECT_GT(eps_a, 0.01);
+  EXPECT_GT(plastic_steps, 100);
 }
 
 }  // namespace

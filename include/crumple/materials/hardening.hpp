@@ -21,15 +21,18 @@ struct Hardening {
   double yield(double eps_p, double eps_rate) const;
   // d sigma_y / d eps_p at fixed rate (for the return mapping's Newton iteration).
   double slope(double eps_p, double eps_rate) const;
-  // Johnson-Cook's rate-independent part a + b eps_p^n changes only with eps_p: a point keeps it with its plastic
-  // strain, and its elastic check, yield_from_static, then costs no power (the same value to the last bit as
-  // yield). Other laws have no such part.
-  bool has_static_part() const { return law == MaterialLaw::JohnsonCook; }
-  double static_part(double eps_p) const;
-  double yield_from_static(double static_part, double eps_rate) const;
-  // Both at once (one power evaluation for Johnson-Cook): returns sigma_y, writes the slope and, when asked for
-  // Johnson-Cook, the static part at eps_p (the value static_part gives, to the last bit).
-  double yield_and_slope(double eps_p, double eps_rate, double& slope, double* static_part_out = nullptr) const;
+  // Johnson-Cook's strain-hardening term b eps_p^n changes only with eps_p: a point keeps it with its plastic
+  // strain. With it the elastic check (yield_from_term) and the first step of a return (yield_and_slope at the
+  // kept strain) cost no power, and give the values of yield and yield_and_slope to the last bit. Other laws have
+  // no such term.
+  bool has_kept_term() const { return law == MaterialLaw::JohnsonCook; }
+  double hardening_term(double eps_p) const;  // b eps_p^n, 0 for eps_p <= 0 [stress]
+  double yield_from_term(double term, double eps_rate) const;
+  // Both at once (one power evaluation for Johnson-Cook, none when `term_in` gives b eps_p^n at this eps_p):
+  // returns sigma_y, writes the slope and, when asked for, Johnson-Cook's term at eps_p (hardening_term's value,
+  // to the last bit).
+  double yield_and_slope(double eps_p, double eps_rate, double& slope, double* term_out = nullptr,
+                         const double* term_in = nullptr) const;
   // Strain rate the yield stress sees (docs/theory/materials.md, eq. RF): with Fsmooth on and a cut-off Fcut, the
   // first-order low-pass rate_f = a rate + (1 - a) previous with a = min(1, 2 pi Fcut dt); otherwise `rate`.
   double filtered_rate(double rate, double previous, double dt) const;

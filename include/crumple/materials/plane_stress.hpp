@@ -18,11 +18,11 @@ struct PlaneStressResult {
 // elastic predictor and, when the trial stress is outside the von Mises cylinder, the exact plane-stress
 // return of Simo and Taylor (one scalar equation in the plastic multiplier, solved by safeguarded Newton).
 // eps_p is the point's equivalent plastic strain; rate the equivalent strain rate used by the hardening law.
-// static_yield, when given, is the point's kept Johnson-Cook part a + b eps_p^n (NaN: not yet computed): read for
-// the elastic check and renewed after a plastic step (Hardening::static_part).
+// kept_term, when given, is the point's kept Johnson-Cook term b eps_p^n (NaN: not yet computed): read for the
+// elastic check and the return's first step, renewed after a plastic step (Hardening::hardening_term).
 PlaneStressResult plane_stress_update(const PlaneStressElastic& elastic, const Hardening& hardening, double dexx,
                                       double deyy, double dgxy, double rate, double eps_p, double& sxx, double& syy,
-                                      double& sxy, double* static_yield = nullptr);
+                                      double& sxy, double* kept_term = nullptr);
 
 // The same elastic predictor with the radial return of Iplas 2, the reference's default for explicit decks
 // (docs/theory/materials.md, PS-5): the plastic strain increment solves sigma_vm_trial - 3 G d_eps_p =
@@ -30,7 +30,7 @@ PlaneStressResult plane_stress_update(const PlaneStressElastic& elastic, const H
 // it plane but is not the exact plane-stress projection of plane_stress_update.
 PlaneStressResult plane_stress_radial_return(const PlaneStressElastic& elastic, const Hardening& hardening,
                                              double dexx, double deyy, double dgxy, double rate, double eps_p,
-                                             double& sxx, double& syy, double& sxy, double* static_yield = nullptr);
+                                             double& sxx, double& syy, double& sxy, double* kept_term = nullptr);
 
 inline double von_mises_plane_stress(double sxx, double syy, double sxy) {
   const double v = sxx * sxx - sxx * syy + syy * syy + 3.0 * sxy * sxy;

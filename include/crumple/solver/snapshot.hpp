@@ -46,7 +46,7 @@ template <class V>
 void visit_shells(V& v, const std::string& at, ShellState& s) {
   for (auto [name, field] :
        {std::pair{"sxx", &s.sxx}, {"syy", &s.syy}, {"sxy", &s.sxy}, {"eps_p", &s.eps_p}, {"eps_rate", &s.eps_rate},
-        {"static_yield", &s.static_yield}, {"qx", &s.qx}, {"qy", &s.qy}, {"thickness", &s.thickness},
+        {"hardening_term", &s.hardening_term}, {"qx", &s.qx}, {"qy", &s.qy}, {"thickness", &s.thickness},
         {"bending_stress", &s.bending_stress}, {"hourglass", &s.hourglass}, {"internal_energy", &s.internal_energy},
         {"critical_dt", &s.critical_dt}, {"initial_length", &s.initial_length}, {"initial_shape", &s.initial_shape},
         {"gauss_shear", &s.gauss_shear}, {"gauss_bending", &s.gauss_bending}, {"mass", &s.mass},

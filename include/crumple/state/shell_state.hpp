@@ -20,7 +20,7 @@ struct ShellState {
   std::vector<double> sxx, syy, sxy;
   std::vector<double> eps_p;     // equivalent plastic strain
   std::vector<double> eps_rate;  // strain rate the yield stress saw last cycle, filtered (eq. RF) [1/T]
-  std::vector<double> static_yield;  // Johnson-Cook a + b eps_p^n kept with eps_p (NaN until first used) [stress]
+  std::vector<double> hardening_term;  // Johnson-Cook b eps_p^n kept with eps_p (NaN until first used) [stress]
 
   // Per element (index in the kind's ElementTable).
   std::vector<double> qx, qy;           // transverse shear resultants (per unit length) [M T^-2]
@@ -51,10 +51,10 @@ struct ShellState {
     deleted.assign(n, 0);
     small_strain.assign(n, 0);
   }
-  // Sizes the per-point arrays for `total` through-thickness points, every value zero (the kept yield part NaN).
+  // Sizes the per-point arrays for `total` through-thickness points, every value zero (the kept term NaN).
   void resize_points(std::size_t total) {
     for (auto* v : {&sxx, &syy, &sxy, &eps_p, &eps_rate}) v->assign(total, 0.0);
-    static_yield.assign(total, std::numeric_limits<double>::quiet_NaN());
+    hardening_term.assign(total, std::numeric_limits<double>::quiet_NaN());
   }
 };
 
