@@ -258,6 +258,8 @@ class BallPlateSetup:
     penetration: float = 0.0  # > 0: the ball's lowest node starts this share of the gap inside it instead
     inacti: int = 0  # the interface's Inacti (what it does with initial penetrations)
     plate_modulus_ratio: float = 1.0  # > 1: the plate is elastic, its Young's modulus the steel's over this
+    stamp_side: float = 0.0  # > 0: a flat square stamp of this side [mm] instead of the ball (wide contact)
+    press: float = 0.0  # > 0: a constant acceleration [mm/ms^2] on the ball or stamp towards the plate (/GRAV)
     steel: JohnsonCook = field(default_factory=JohnsonCook)
     ishell: int = 24
     points: int = 5
@@ -325,6 +327,18 @@ def ball_mesh(s, first_id):
     return points, quads
 
 
+def stamp_mesh(s, first_id):
+    """Nodes and quads of a flat square stamp of side stamp_side centred above the plate, the contact gap plus
+    clearance above it: every node of it meets the plate at once (a contact as wide as the stamp)."""
+    m = max(1, int(round(s.stamp_side / s.element_size)))
+    clearance = -s.penetration * s.gapmin if s.penetration > 0.0 else s.clearance
+    h, x0, z = s.stamp_side / m, -0.5 * s.stamp_side, s.gapmin + clearance
+    points = [(x0 + i * h, x0 + j * h, z) for j in range(m + 1) for i in range(m + 1)]
+    node = lambda i, j: first_id + j * (m + 1) + i
+    quads = [(node(i, j), node(i + 1, j), node(i + 1, j + 1), node(i, j + 1)) for j in range(m) for i in range(m)]
+    return points, quads
+
+
 def plate_mesh(s):
     """Nodes of the plate row by row, its quads, and the ids of its edge nodes."""
     m, h = s.plate_divisions, s.plate_side / s.plate_divisions
@@ -338,7 +352,7 @@ def plate_mesh(s):
 
 def ball_plate_starter(s):
     plate_points, plate_quads, edge = plate_mesh(s)
-    ball_points, ball_quads = ball_mesh(s, 1 + len(plate_points))
+    ball_points, ball_quads = (stamp_mesh if s.stamp_side > 0.0 else ball_mesh)(s, 1 + len(plate_points))
     out = begin_cards(s.name, s.title, s.origin)
     out += johnson_cook_cards(1, "mild steel", s.steel)
     plate_material = 1
@@ -355,6 +369,9 @@ def ball_plate_starter(s):
     out += ["/BCS/1\nclamped edge\n", "   111 111         0        10\n"]
     out += ["/GRNOD/PART/11\nball\n", i10(2) + "\n"]
     out += initial_velocity_cards(1, "drop speed", (0.0, 0.0, -s.speed), 11)
+    if s.press > 0.0:  # keeps the contact closed: the ball or stamp pressed onto the plate
+        out += ["/GRAV/1\npressed onto the plate\n",
+                i10(0) + "{:>10}".format("Z") + i10(0) + i10(0) + i10(11) + " " * 10 + r20(1.0) + r20(-s.press) + "\n"]
     if s.contact:
         out += type7_cards(1, "ball on plate", "plate surface", 1, [1], 11, s.fric, s.gapmin, s.inacti)
         out += history_cards("INTER", 1, "ball on plate", 1)
@@ -442,7 +459,8 @@ def write_tube(directory, t, with_meta=True):
 
 
 def setup_for(family, elements=None, size=None, end_time=0.1, contact=True, ishell=24, points=5, isolid=24,
-              speed=10.0, gap=0.0, penetration=0.0, inacti=0, plate_modulus_ratio=1.0, noda_cst=0.0):
+              speed=10.0, gap=0.0, penetration=0.0, inacti=0, plate_modulus_ratio=1.0, noda_cst=0.0, stamp=0.0,
+              press=0.0):
     """The setup of one family at a target element count or an element size [mm]."""
     if family == "tube":
         n = tube_elements_per_side(elements) if elements else max(1, int(round(50.0 / size)))
@@ -452,7 +470,7 @@ def setup_for(family, elements=None, size=None, end_time=0.1, contact=True, ishe
         h = size if size else ball_plate_element_size(elements)
         return BallPlateSetup(element_size=h, end_time=end_time, contact=contact, ishell=ishell, points=points,
                               speed=speed, penetration=penetration, inacti=inacti,
-                              plate_modulus_ratio=plate_modulus_ratio)
+                              plate_modulus_ratio=plate_modulus_ratio, stamp_side=stamp, press=press)
     if family == "brick_block":
         n = brick_block_divisions(elements) if elements else max(1, int(round(50.0 / size)))
         return BrickBlockSetup(divisions=n, end_time=end_time, isolid=isolid, speed=speed)
@@ -495,6 +513,12 @@ def parse_arguments():
     p.add_argument("--plate-modulus-ratio", type=float, default=1.0,
                    help="ball_plate: an elastic plate whose Young's modulus is the steel's over this (default 1: "
                         "the ball's steel)")
+    p.add_argument("--stamp", type=float, default=0.0,
+                   help="ball_plate: a flat square stamp of this side [mm] instead of the ball, so that a wide contact "
+                        "(about a quarter of the nodes at 87 mm) closes at once (default 0: the ball)")
+    p.add_argument("--press", type=float, default=0.0,
+                   help="ball_plate: a constant acceleration [mm/ms^2] pressing the ball or stamp onto the plate (/GRAV), "
+                        "so that the contact stays closed (default 0: none)")
     return p.parse_args()
 
 
@@ -505,16 +529,19 @@ def main():
     if a.noda_cst and a.family != "tube":
         sys.exit(f"generate_bench.py: --noda-cst is the tube's; {a.family} has none to set")
     ball_only = {"--penetration": a.penetration != 0.0, "--inacti": a.inacti != 0,
-                 "--plate-modulus-ratio": a.plate_modulus_ratio != 1.0}
+                 "--plate-modulus-ratio": a.plate_modulus_ratio != 1.0, "--stamp": a.stamp != 0.0,
+                 "--press": a.press != 0.0}
     for option, given in ball_only.items():
         if given and a.family != "ball_plate":
             sys.exit(f"generate_bench.py: {option} is the ball_plate's; {a.family} has none to set")
-    if not 0.0 <= a.penetration < 1.0 or a.plate_modulus_ratio <= 0.0:
-        sys.exit("generate_bench.py: --penetration takes 0 to below 1, --plate-modulus-ratio a positive number")
+    if not 0.0 <= a.penetration < 1.0 or a.plate_modulus_ratio <= 0.0 or not 0.0 <= a.stamp < 150.0 or a.press < 0.0:
+        sys.exit("generate_bench.py: --penetration takes 0 to below 1, --plate-modulus-ratio a positive number, "
+                 "--stamp a side from 0 to below the plate's 150 mm, --press a positive acceleration")
     starter = write_family(a.family, a.out, elements=int(a.elements) if a.elements else None, size=a.size,
                            end_time=a.end_time, contact=not a.no_contact, ishell=a.ishell, points=a.points,
                            isolid=a.isolid, speed=a.speed, gap=a.gap, penetration=a.penetration, inacti=a.inacti,
-                           plate_modulus_ratio=a.plate_modulus_ratio, noda_cst=a.noda_cst)
+                           plate_modulus_ratio=a.plate_modulus_ratio, noda_cst=a.noda_cst, stamp=a.stamp,
+                           press=a.press)
     counts = json.loads(starter.with_name(starter.name.replace("_0000.rad", ".bench.json")).read_text())["counts"]
     print(f"wrote {starter}: " + ", ".join(f"{k} {v}" for k, v in counts.items()))
 
