@@ -7,8 +7,8 @@
     loaded machine disturbs less than wall time;
   - contact ns per secondary node-cycle (contact phase / (secondary nodes x contact passes)), the nodes in
     contact (ACTIVE_NODES of the interface histories in NAME.h5, read with h5py) and the contact's,
-    the output's share of the cycle (the phases of NAME.summary.json); the contact sort is not timed apart by
-    the solver, so its share is reported as not separated;
+    the output's share of the cycle (the phases of NAME.summary.json), and the share of the contact's searches
+    (`contact_sort`: the bucket sorts);
   - peak memory (the run's peak RSS, from /usr/bin/time) per element, and its slope against the element count;
   - the exponent of the cost per cycle against the element count, fitted by least squares on log-log;
   - each time figure also against a memory-bandwidth probe run in the same invocation (a numpy copy of a
@@ -153,6 +153,7 @@ def figures(r):
             "element_phase_ns": 1e9 * p["elements"] / element_cycles,
             "contact_ns_per_node_cycle": 1e9 * p["contact"] / (secondary * passes) if secondary and passes else None,
             "contact_share": p["contact"] / cycle if passes else None,
+            "sort_share": p.get("contact_sort", 0.0) / cycle if passes else None,
             "output_share": p["output"] / cycle,
             "bytes_per_element": r["peak_rss"] / r["elements"],
             "seconds_per_cycle": r["wall"] / r["cycles"]}
@@ -233,11 +234,11 @@ def contact_table(runs, probe):
     rows = []
     for r in runs:
         f = figures(r)
-        contact, share = f["contact_ns_per_node_cycle"], f["contact_share"]
+        contact, share, sort = f["contact_ns_per_node_cycle"], f["contact_share"], f["sort_share"]
         rows.append(f"| {r['family']} {r['target']:.0e} | {r['secondary_nodes'] or '-'} | {in_contact(r)} "
                     f"| {r['profile']['contact_passes']} | {text(r['largest_p_over_g'], '{:.4f}')} "
                     f"| {text(contact, '{:.1f}')} | {text(contact and contact * gbps)} "
-                    f"| {text(share and 100 * share, '{:.1f} %')} | {'not separated' if contact is not None else '-'} "
+                    f"| {text(share and 100 * share, '{:.1f} %')} | {text(sort and 100 * sort, '{:.1f} %')} "
                     f"| {100 * f['output_share']:.1f} % |")
     return head + "\n".join(rows) + "\n"
 

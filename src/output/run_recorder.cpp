@@ -312,10 +312,10 @@ RunSummary RunRecorder::finish(const SolverState& s, const RunEvents& events, co
   const double cycle_time = phases.elements + phases.contact + phases.loads + phases.update + phases.output;
   auto share = [&](double t) { return cycle_time > 0.0 ? 100.0 * t / cycle_time : 0.0; };
   listing_.line(fmt::format("TIME PROFILE (s, % of the cycles): elements {:.3f} ({:.1f} %)  contact {:.3f} ({:.1f} %, "
-                            "{} passes)  loads and step {:.3f} ({:.1f} %)  nodal update {:.3f} ({:.1f} %)  "
-                            "output {:.3f} ({:.1f} %)",
+                            "{} passes; searches {:.3f}, {} sorts)  loads and step {:.3f} ({:.1f} %)  nodal update "
+                            "{:.3f} ({:.1f} %)  output {:.3f} ({:.1f} %)",
                             phases.elements, share(phases.elements), phases.contact, share(phases.contact),
-                            phases.contact_passes, phases.loads, share(phases.loads), phases.update,
+                            phases.contact_passes, phases.contact_sort, phases.contact_sorts, phases.loads, share(phases.loads), phases.update,
                             share(phases.update), phases.output, share(phases.output)));
   RunSummary summary = summarize_run(model_, name_, s, events, phases, dt, wall);
   summary.approximations = run_.approximations;

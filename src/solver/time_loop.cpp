@@ -83,6 +83,9 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunObse
   if (options.resume == nullptr) write_first_frame(m, s, observer, schedule);
   VelocityScratch scratch(s.nodes.size());
   PhaseTimes phases;
+  const double sort_seconds_before = s.contact.sort_seconds;  // this engine deck's searches only
+  long long sorts_before = 0;
+  for (const ContactInterface& in : s.contact.interfaces) sorts_before += in.sorts;
   PhaseClock clock;
   double dt_next = 0.0;
   StepControl control;
@@ -158,6 +161,9 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunObse
   const bool resumable = !events.stop.stopped() || events.stop.requested() || events.stop.is_limit();
   if (resumable && (m.run.restart_every > 0 || events.stop.requested()))
     write_snapshot(observer, s, options, events, schedule);
+  phases.contact_sort = s.contact.sort_seconds - sort_seconds_before;
+  phases.contact_sorts = -sorts_before;
+  for (const ContactInterface& in : s.contact.interfaces) phases.contact_sorts += in.sorts;
   return observer.finish(s, events, phases, dt_next, wall);
 }
 

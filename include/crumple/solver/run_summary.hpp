@@ -30,6 +30,8 @@ struct PhaseTimes {
   double update = 0.0;    // velocities, kinematic conditions, energy terms, positions
   double output = 0.0;    // energy records, listing, histories, frames
   long long contact_passes = 0;
+  double contact_sort = 0.0;  // of `contact`: the searches (nodes' positions gathered, bucket sort)
+  long long contact_sorts = 0;  // searches, over all interfaces
 };
 
 // One file of the deck as read (includes too), to tell later which deck a result came from.

@@ -193,6 +193,7 @@ struct ContactState {
   // so its step is the body's, and its own elements (carried by the body) add no stiffness (eq. C-11). The solver
   // keeps it as bodies switch on and off.
   std::vector<double> rigid_body_mass;
+  double sort_seconds = 0.0;  // wall time of the searches so far (the positions gathered and the bucket sort) [s]
   contact::PairBatch batch;  // scratch of the pass: one batch of gathered pairs (eq. C-1)
   // Scratch of the pass: the forces of this domain's pairs in contact and the masses its nodes took (records of
   // kRecordWidth values, contact/contact_pass.cpp), those that travel, the other domains', and all in pair order.
