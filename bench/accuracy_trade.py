@@ -40,8 +40,10 @@ Knobs, one at a time from the default deck (/DT 0.9, 5 points, Ishell 24, Stfac 
   --accuracy    the default deck run with `crumple run --accuracy draft` and `--accuracy fine`: the presets as a
                 user meets them (src/app/accuracy.hpp; on this deck draft takes 3 points and /DT/NODA/CST at the
                 first step, fine the /DT scale 0.6).
-Single precision and /PARITH/OFF are not knobs of Crumple: it computes in double only (summary "precision") and
-/PARITH/OFF is accepted with a warning and changes nothing (docs/deck-format.md), so neither is measured.
+  precision     the default deck run by the mixed-precision build (--mixed-crumple, `cmake --preset mixed`:
+                the integration points' state stored in single precision, docs/theory/precision.md) against
+                the double build (--crumple). Build both from the same commit.
+/PARITH/OFF is not a knob of Crumple: it is accepted with a warning and changes nothing (docs/deck-format.md).
 
 End time: per mesh, long enough for WINDOW mm of travel of every variant, from first runs of the default deck (at
 10 mm the sled stops at 46.5 mm at 9.6 ms; at 5 mm it reaches 50 mm at 7.45 ms, at 2.5 mm at 6.96 ms):
@@ -90,6 +92,7 @@ class Variant:
     stfac: float = None          # None: the generator's 0 (= 1.0)
     dtmin_factor: float = None   # /DT/NODA/CST DTMIN = factor x the default run's first step
     preset: str = None           # crumple run --accuracy PRESET on the default deck
+    build: str = None            # "mixed": the default deck run by the mixed-precision build (--mixed-crumple)
     default_only_off_reference: bool = False  # repeats the default deck: skipped on the reference mesh
 
     @property
@@ -98,9 +101,10 @@ class Variant:
 
 
 KNOB_LABELS = {"default": "default deck", "dt_scale": "/DT scale", "mass_scaling": "/DT/NODA/CST",
-               "points": "points", "ishell": "Ishell", "stfac": "TYPE7 Stfac", "preset": "--accuracy"}
+               "points": "points", "ishell": "Ishell", "stfac": "TYPE7 Stfac", "preset": "--accuracy",
+               "precision": "precision"}
 KNOB_MARKERS = {"default": "o", "dt_scale": "s", "mass_scaling": "^", "points": "D", "ishell": "v", "stfac": "P",
-                "preset": "*"}
+                "preset": "*", "precision": "X"}
 VARIANTS = [
     Variant("default", "/DT 0.9, 5 points, Ishell 24, Stfac 1"),
     Variant("dt_scale", "0.6", dt_scale=0.6),
@@ -113,6 +117,7 @@ VARIANTS = [
     Variant("stfac", "0.1", stfac=0.1),
     Variant("preset", "draft", preset="draft"),
     Variant("preset", "fine", preset="fine"),
+    Variant("precision", "mixed", build="mixed"),
     Variant("stfac", "1.0", stfac=1.0, default_only_off_reference=True),
 ]
 
@@ -267,7 +272,8 @@ def measure(a, work, size, end_time, v, dt0):
         deck_dir = work / f"tube_{size:g}mm" / v.tag
         deck, dtmin = write_variant(deck_dir, size, end_time, v, dt0, a.th_interval)
         load = os.getloadavg()[0]
-        summary, cpu = run_crumple(a.crumple, deck, deck_dir / "out", a.timeout, v.preset)
+        summary, cpu = run_crumple(a.mixed_crumple if v.build == "mixed" else a.crumple, deck, deck_dir / "out",
+                                   a.timeout, v.preset)
         h5 = next((deck_dir / "out").glob("*.h5"))
         m = crush_metrics(h5, a.windows[0], a.cfc, a.th_interval)
         if m["status"] != "short" or summary["status"] != "normal" or extensions >= 2:
@@ -412,6 +418,8 @@ def parse_arguments():
     p.add_argument("--cfc", type=float, default=1000.0, help="filter class of the peak force (default CFC 1000)")
     p.add_argument("--th-interval", type=float, default=TH_INTERVAL, help="history interval [ms] (default 0.01)")
     p.add_argument("--crumple", default=str(ROOT / "build/release/src/crumple"))
+    p.add_argument("--mixed-crumple", default=str(ROOT / "build/mixed/src/crumple"),
+                   help="the mixed-precision build (cmake --preset mixed) for the precision knob")
     p.add_argument("--work", default="/tmp/crumple-accuracy-trade", help="decks and results")
     p.add_argument("--table", help="Markdown file (default WORK/accuracy_trade.md)")
     p.add_argument("--plot", help="PNG file (default WORK/speed_accuracy.png)")
@@ -480,6 +488,9 @@ def main():
         for v in VARIANTS:
             wanted = v.knob in a.knobs or (size == finest and v.knob in ("default", "dt_scale"))
             if v.knob != "default" and not wanted:
+                continue
+            if v.build == "mixed" and not Path(a.mixed_crumple).is_file():
+                skipped.append(f"{size:g} mm precision mixed (no {a.mixed_crumple}: cmake --preset mixed)")
                 continue
             if v.default_only_off_reference and size == finest and not a.all:
                 skipped.append(f"{size:g} mm {KNOB_LABELS[v.knob]} {v.value} (the default deck again)")

@@ -2,6 +2,7 @@
 # Quick start, command 2: build and run the whole test suite through ctest.
 #  1. Release build: every test.
 #  2. Debug build with AddressSanitizer and UndefinedBehaviorSanitizer: unit, bad-input and fuzz tests.
+#  3. The mixed-precision build (docs/theory/precision.md): the verification, stability and MPI tests.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
@@ -15,4 +16,10 @@ if [ "${CRUMPLE_SKIP_SANITIZERS:-0}" != "1" ]; then
   cmake --preset debug
   cmake --build --preset debug -j "$jobs"
   ctest --preset debug -L "unit|badinput|fuzz|cli"
+fi
+
+if [ "${CRUMPLE_SKIP_MIXED:-0}" != "1" ]; then
+  cmake --preset mixed
+  cmake --build --preset mixed -j "$jobs"
+  ctest --preset mixed -L "verification|stability|mpi"
 fi

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "crumple/core/precision.hpp"
 #include "crumple/model/summary.hpp"
 
 namespace crumple::app {
@@ -119,6 +120,13 @@ std::vector<std::string> apply_accuracy_preset(AccuracyPreset preset, Model& mod
   else set_shell_points(model, kDraftShellPoints, false, changes);
   for (std::string& c : changes) c = fmt::format("--accuracy {}: {}", accuracy_preset_name(preset), c);
   return changes;
+}
+
+std::vector<std::string> precision_approximations() {
+  if (std::string(kPrecision) == "double") return {};
+  return {fmt::format("precision {}: the integration points' stresses, plastic strains and strain rates are stored in "
+                      "single precision (docs/theory/precision.md); coordinates, velocities, forces and energies in double",
+                      kPrecision)};
 }
 
 }  // namespace crumple::app

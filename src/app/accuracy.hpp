@@ -28,4 +28,7 @@ inline constexpr double kDraftMassScaledShare = 0.01;  // draft: /DT/NODA/CST up
 // engine deck's, then the continued runs'). Returns one line per change, empty for `standard`.
 std::vector<std::string> apply_accuracy_preset(AccuracyPreset preset, Model& model, std::vector<RunControl*> runs);
 
+// The approximation the build itself makes (core/precision.hpp): one line for the mixed build, none for double.
+std::vector<std::string> precision_approximations();
+
 }  // namespace crumple::app

@@ -142,7 +142,8 @@ int run_deck_as(const RunOptions& options, Deck& deck, std::ostream& out, std::o
   return kExitNormal;
 }
 
-// Reads the deck and applies the --accuracy preset to it; `preset_changes` gets one line per knob it moved.
+// Reads the deck and applies the --accuracy preset to it; `preset_changes` gets one line per knob it moved, and
+// the build's own approximation (the mixed precision).
 Deck read_run_deck(const RunOptions& options, std::ostream& err, std::vector<std::string>& preset_changes) {
   ReadOptions read;
   read.skip_unknown = options.skip_unknown;
@@ -152,6 +153,7 @@ Deck read_run_deck(const RunOptions& options, std::ostream& err, std::vector<std
   std::vector<RunControl*> runs{&deck.model.run};
   for (RunControl& r : deck.continued_runs) runs.push_back(&r);
   preset_changes = apply_accuracy_preset(options.accuracy, deck.model, runs);
+  for (const std::string& p : precision_approximations()) preset_changes.push_back(p);
   for (const auto& c : preset_changes) fmt::print(err, "note: {}\n", c);
   return deck;
 }

@@ -213,11 +213,13 @@ PointUpdate update_point(const BrickGroupParameters& p, const materials::SolidEl
   double old[6], de[6];
   for (int k = 0; k < 6; ++k) old[k] = s[k], de[k] = r.d[k] * dt;
   const double rate = p.hardening.filtered_rate(materials::equivalent_strain(de) / dt, st.eps_rate[ip], dt);  // eq. RF
-  st.eps_rate[ip] = rate;
+  st.eps_rate[ip] = stored(rate);
   const auto res = materials::solid_update(elastic, p.hardening, de, rate, st.eps_p[ip], s);  // eq. SU-1, SU-3
-  st.eps_p[ip] += res.plastic_strain_increment;
+  st.eps_p[ip] = stored(st.eps_p[ip] + res.plastic_strain_increment);
   if (p.failure_strain > 0.0 && st.eps_p[ip] >= p.failure_strain) u.failed = true;
-  st.sxx[ip] = s[0], st.syy[ip] = s[1], st.szz[ip] = s[2], st.sxy[ip] = s[3], st.syz[ip] = s[4], st.szx[ip] = s[5];
+  // The stored stress carries on, also into this step's work (eq. PR-2).
+  point_real* const stress[6] = {&st.sxx[ip], &st.syy[ip], &st.szz[ip], &st.sxy[ip], &st.syz[ip], &st.szx[ip]};
+  for (int k = 0; k < 6; ++k) *stress[k] = stored(s[k]), s[k] = *stress[k];
   for (int k = 0; k < 6; ++k) u.power += 0.5 * (old[k] + s[k]) * r.d[k];  // engineering shears: no factor 2
   return u;
 }

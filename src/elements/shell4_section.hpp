@@ -129,16 +129,16 @@ inline void update_resultants(const ShellGroupParameters& p, const materials::Pl
     return std::sqrt(2.0 / 3.0 * (ex * ex + ey * ey + (ex + ey) * (ex + ey) + 0.5 * g * g)) / dt;
   };
   const double rate = p.hardening.filtered_rate(std::max(fibre_rate(1.0), fibre_rate(-1.0)), state.eps_rate[first], dt);
-  state.eps_rate[first] = rate;
+  state.eps_rate[first] = stored(rate);
   const auto r = materials::resultant_update(elastic, p.hardening, d, rate, state.eps_p[first], membrane, bending);
-  state.eps_p[first] += r.plastic_strain_increment;
+  state.eps_p[first] = stored(state.eps_p[first] + r.plastic_strain_increment);
   if (r.plastic_strain_increment > 0.0 && p.physical_hourglass) {
     const double slope = std::max(p.hardening.slope(state.eps_p[first], rate), 0.0);
     u.tangent_ratio = slope / (p.young + slope);  // eq. S-12
   }
   u.thickness_strain = r.thickness_strain;
   if (p.failure_strain > 0.0 && state.eps_p[first] >= p.failure_strain) u.failed = true;
-  state.sxx[first] = membrane[0], state.syy[first] = membrane[1], state.sxy[first] = membrane[2];
+  state.sxx[first] = stored(membrane[0]), state.syy[first] = stored(membrane[1]), state.sxy[first] = stored(membrane[2]);
 }
 
 // The stresses at the through-thickness points, updated over dt > 0 by the plane-stress return (eq. S-4).
@@ -152,11 +152,11 @@ inline void update_points(const ShellGroupParameters& p, const materials::PlaneS
     const double ex = (s.dxx + z * s.kxx) * dt, ey = (s.dyy + z * s.kyy) * dt, g = (s.gxy + z * s.kxy) * dt;
     const double increment_rate = std::sqrt(2.0 / 3.0 * (ex * ex + ey * ey + (ex + ey) * (ex + ey) + 0.5 * g * g)) / dt;
     const double rate = p.hardening.filtered_rate(increment_rate, state.eps_rate[ip], dt);  // eq. RF
-    state.eps_rate[ip] = rate;
+    state.eps_rate[ip] = stored(rate);
     const auto return_to_yield = p.radial_return ? materials::plane_stress_radial_return : materials::plane_stress_update;
     const auto r = return_to_yield(elastic, p.hardening, ex, ey, g, rate, state.eps_p[ip], sxx, syy, sxy,
                                    &state.hardening_term[ip]);
-    state.eps_p[ip] += r.plastic_strain_increment;
+    state.eps_p[ip] = stored(state.eps_p[ip] + r.plastic_strain_increment);
     if (r.plastic_strain_increment > 0.0 && p.physical_hourglass) {
       // Elastic-plastic tangent of the point, E H' / (E + H'), for the hourglass modes (eq. S-12).
       const double slope = std::max(p.hardening.slope(state.eps_p[ip], rate), 0.0);
@@ -164,7 +164,7 @@ inline void update_points(const ShellGroupParameters& p, const materials::PlaneS
     }
     u.thickness_strain += p.membrane_weight[k] * r.thickness_strain;
     if (p.failure_strain > 0.0 && state.eps_p[ip] >= p.failure_strain) u.failed = true;
-    state.sxx[ip] = sxx, state.syy[ip] = syy, state.sxy[ip] = sxy;
+    state.sxx[ip] = stored(sxx), state.syy[ip] = stored(syy), state.sxy[ip] = stored(sxy);
   }
 }
 

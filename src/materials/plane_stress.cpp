@@ -19,7 +19,7 @@ struct Predictor {
 };
 
 Predictor predict(const PlaneStressElastic& el, const Hardening& hardening, double dexx, double deyy, double dgxy,
-                  double rate, double eps_p, double& sxx, double& syy, double& sxy, double* kept_term) {
+                  double rate, double eps_p, double& sxx, double& syy, double& sxy, point_real* kept_term) {
   const double E = el.young, nu = el.poisson;
   const double G = E / (2.0 * (1.0 + nu));
   const double c = E / (1.0 - nu * nu);
@@ -32,7 +32,7 @@ Predictor predict(const PlaneStressElastic& el, const Hardening& hardening, doub
   pr.elastic = {0.0, -nu / E * ((txx + tyy) - pr.old_sum)};
   if (!hardening.plastic()) return pr;
   pr.kept = kept_term != nullptr && hardening.has_kept_term();
-  if (pr.kept && std::isnan(*kept_term)) *kept_term = hardening.hardening_term(eps_p);
+  if (pr.kept && std::isnan(*kept_term)) *kept_term = stored(hardening.hardening_term(eps_p));
   const double yield0 = pr.kept ? hardening.yield_from_term(*kept_term, rate) : hardening.yield(eps_p, rate);
   pr.trial = von_mises_plane_stress(txx, tyy, txy);
   pr.plastic = !(pr.trial <= yield0);
@@ -43,7 +43,7 @@ Predictor predict(const PlaneStressElastic& el, const Hardening& hardening, doub
 
 PlaneStressResult plane_stress_update(const PlaneStressElastic& el, const Hardening& hardening, double dexx,
                                       double deyy, double dgxy, double rate, double eps_p, double& sxx, double& syy,
-                                      double& sxy, double* kept_term) {
+                                      double& sxy, point_real* kept_term) {
   const double E = el.young;
   const double nu = el.poisson;
   const double G = E / (2.0 * (1.0 + nu));
@@ -96,7 +96,7 @@ PlaneStressResult plane_stress_update(const PlaneStressElastic& el, const Harden
   syy = 0.5 * (new_p + new_q);
   sxy = r * b;
   result.plastic_strain_increment = 2.0 / 3.0 * g * von_mises_plane_stress(sxx, syy, sxy);
-  if (kept) *kept_term = hardening.hardening_term(eps_p + result.plastic_strain_increment);
+  if (kept) *kept_term = stored(hardening.hardening_term(eps_p + result.plastic_strain_increment));
   // Through-thickness strain: elastic part from the stress change, plastic part from incompressibility
   // (d eps_p_zz = -(d eps_p_xx + d eps_p_yy) = -g (sxx + syy) / 3).
   result.thickness_strain = -nu / E * ((sxx + syy) - old_sum) - g * (sxx + syy) / 3.0;
@@ -105,7 +105,7 @@ PlaneStressResult plane_stress_update(const PlaneStressElastic& el, const Harden
 
 PlaneStressResult plane_stress_radial_return(const PlaneStressElastic& el, const Hardening& hardening, double dexx,
                                              double deyy, double dgxy, double rate, double eps_p, double& sxx,
-                                             double& syy, double& sxy, double* kept_term) {
+                                             double& syy, double& sxy, point_real* kept_term) {
   const double E = el.young, nu = el.poisson;
   const double G = E / (2.0 * (1.0 + nu));
   const Predictor pr = predict(el, hardening, dexx, deyy, dgxy, rate, eps_p, sxx, syy, sxy, kept_term);
@@ -118,11 +118,12 @@ PlaneStressResult plane_stress_radial_return(const PlaneStressElastic& el, const
   // The last strain the hardening was evaluated at and its term: when the iteration ends on the residual there,
   // the kept term needs no second power. The first step, at eps_p itself, takes the kept term: no power at all.
   double evaluated = -1.0, evaluated_term = 0.0;
+  const double kept_in = kept ? static_cast<double>(*kept_term) : 0.0;  // the stored term, widened
   for (int it = 0; it < 50; ++it) {
     double slope = 0.0;
     evaluated = eps_p + d;
     const double yield = hardening.yield_and_slope(evaluated, rate, slope, kept ? &evaluated_term : nullptr,
-                                                   kept && it == 0 ? kept_term : nullptr);
+                                                   kept && it == 0 ? &kept_in : nullptr);
     const double f = trial - 3.0 * G * d - yield;
     if (std::abs(f) <= 1e-12 * yield) break;
     if (f > 0.0) lo = d; else hi = d;
@@ -137,7 +138,7 @@ PlaneStressResult plane_stress_radial_return(const PlaneStressElastic& el, const
   const double scale = (trial - 3.0 * G * d) / trial;
   sxx = txx * scale, syy = tyy * scale, sxy = txy * scale;
   result.plastic_strain_increment = d;
-  if (kept) *kept_term = eps_p + d == evaluated ? evaluated_term : hardening.hardening_term(eps_p + d);
+  if (kept) *kept_term = stored(eps_p + d == evaluated ? evaluated_term : hardening.hardening_term(eps_p + d));
   // Plastic flow along the normal (3/2) s / sigma_vm: through the thickness -d (sxx + syy) / (2 sigma_vm).
   const double vm = von_mises_plane_stress(sxx, syy, sxy);
   result.thickness_strain = -nu / E * ((sxx + syy) - old_sum) - (vm > 0.0 ? d * (sxx + syy) / (2.0 * vm) : 0.0);

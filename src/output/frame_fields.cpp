@@ -160,7 +160,7 @@ ShellValues shell_values(const ShellState& s, const ShellSections& r, std::size_
       const double b = r.bending != nullptr ? 6.0 * r.bending[j] : 0.0;
       for (int d = 0; d < 3; ++d) v.membrane[d] += share * w * point[d], v.bending[d] += share * b * point[d];
       v.von_mises = std::max(v.von_mises, plane_von_mises(point));
-      v.plastic_strain = std::max(v.plastic_strain, s.eps_p[k]);
+      v.plastic_strain = std::max(v.plastic_strain, static_cast<double>(s.eps_p[k]));
     }
     const std::size_t top = base + r.per_section - 1;
     const Stress3 lower{s.sxx[base], s.syy[base], s.sxy[base]}, upper{s.sxx[top], s.syy[top], s.sxy[top]};
@@ -295,7 +295,7 @@ void add_brick_fields(FieldSink& out, const Model& m, const SolverState& state) 
       for (std::size_t k = first; k < first + points; ++k) {
         const std::array<double, 6> point{b.sxx[k], b.syy[k], b.szz[k], b.sxy[k], b.syz[k], b.szx[k]};
         for (std::size_t d = 0; d < 6; ++d) stress[6 * ue + d] += share * point[d];
-        eps[ue] = std::max(eps[ue], b.eps_p[k]);
+        eps[ue] = std::max(eps[ue], static_cast<double>(b.eps_p[k]));
       }
     }
   }

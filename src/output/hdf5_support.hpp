@@ -74,6 +74,12 @@ struct H5Types<double> {
   static constexpr const char* xdmf = R"(NumberType="Float" Precision="8")";
 };
 template <>
+struct H5Types<float> {  // the integration points' state of the mixed build (core/precision.hpp)
+  static hid_t memory() { return H5T_NATIVE_FLOAT; }
+  static hid_t file() { return H5T_IEEE_F32LE; }
+  static constexpr const char* xdmf = R"(NumberType="Float" Precision="4")";
+};
+template <>
 struct H5Types<std::int32_t> {
   static hid_t memory() { return H5T_NATIVE_INT32; }
   static hid_t file() { return H5T_STD_I32LE; }

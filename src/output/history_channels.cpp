@@ -250,7 +250,7 @@ BrickValues brick_values(const Model& m, const SolverState& s, std::size_t group
   const auto np = static_cast<std::size_t>(b.points[group]);
   const std::size_t first = b.point_offset[group] + static_cast<std::size_t>(e - m.element_groups[group].begin) * np;
   BrickValues out{};
-  const std::vector<double>* components[6] = {&b.sxx, &b.syy, &b.szz, &b.sxy, &b.syz, &b.szx};
+  const std::vector<point_real>* components[6] = {&b.sxx, &b.syy, &b.szz, &b.sxy, &b.syz, &b.szx};
   for (std::size_t k = 0; k < np; ++k) {  // the element's stress: the mean of its points
     for (std::size_t c = 0; c < 6; ++c) out.s[c] += (*components[c])[first + k] / static_cast<double>(np);
     out.plastic_strain += b.eps_p[first + k] / static_cast<double>(np);

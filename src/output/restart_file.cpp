@@ -9,6 +9,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "crumple/core/precision.hpp"
 #include "crumple/output/build_info.hpp"
 #include "crumple/state/element_status.hpp"
 #include "hdf5_support.hpp"
@@ -156,6 +157,7 @@ void write_restart(const std::filesystem::path& file, const Model& model, Solver
     write_count(h5.get(), "format", kRestartFormat);
     const auto counts = model_counts(model, state);
     for (std::size_t k = 0; k < counts.size(); ++k) write_count(h5.get(), kCountNames[k], counts[k]);
+    write_count(h5.get(), "point_bytes", static_cast<long long>(sizeof(point_real)));
     Handle root(H5Gcreate2(h5.get(), "state", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
     Writer writer(root.get());
     visit_state(writer, state, marks);
@@ -179,6 +181,13 @@ ResumeMarks read_restart(const std::filesystem::path& file, const Model& model, 
     if (const long long found = read_count(h5.get(), kCountNames[k], path); found != counts[k])
       throw RestartError(fmt::format("restart file {} was written for another model: {} {} in the file, {} in the "
                                      "deck", path, found, kCountNames[k], counts[k]));
+  // The integration points' state as the build that wrote the file stored it (core/precision.hpp): a run goes on
+  // in the precision it started in. A file without the attribute comes from a double build.
+  const long long point_bytes = H5Aexists(h5.get(), "point_bytes") > 0 ? read_count(h5.get(), "point_bytes", path) : 8;
+  if (point_bytes != static_cast<long long>(sizeof(point_real)))
+    throw RestartError(fmt::format("restart file {} was written by the {} build of Crumple, and this is the {} build: "
+                                   "resume it with the build that wrote it (docs/theory/precision.md)",
+                                   path, point_bytes == 4 ? "mixed" : "double", kPrecision));
   Handle root(H5Gopen2(h5.get(), "state", H5P_DEFAULT), H5Gclose);
   if (!root.valid()) throw RestartError(fmt::format("restart file {}: no /state group", path));
   ResumeMarks marks;

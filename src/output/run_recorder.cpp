@@ -9,6 +9,7 @@
 #include <csignal>
 #include <ctime>
 
+#include "crumple/core/precision.hpp"
 #include "crumple/output/build_info.hpp"
 #include "crumple/output/restart_file.hpp"
 #include "crumple/state/element_status.hpp"
@@ -182,6 +183,7 @@ void RunRecorder::header(const RunStart& run) {
                             count(ElementKind::Brick8), m.element_groups.size(), m.parts.size(),
                             m.type7_interfaces.size(), m.rigid_bodies.size(), m.rigid_walls.size()));
   listing_.line("ACCURACY PRESET " + run.accuracy);
+  listing_.line(std::string("PRECISION ") + kPrecision);
   if (!run.approximations.empty()) listing_.line("OPTIONS SKIPPED OR APPROXIMATED:");
   for (const auto& option : run.approximations) listing_.line("  " + option);
 }
@@ -329,6 +331,7 @@ RunSummary summarize_run(const Model& m, const std::string& name, const SolverSt
   summary.name = name;
   summary.crumple_version = build::version();
   summary.commit = build::commit();
+  summary.precision = kPrecision;
   summary.deleted_elements =
       deleted_count(s.shells.deleted) + deleted_count(s.shells3.deleted) + deleted_count(s.bricks.deleted);
   summary.phases = phases;

@@ -8,6 +8,7 @@
 #include <iterator>
 #include <cstdlib>
 #include <limits>
+#include <type_traits>
 
 namespace crumple {
 
@@ -110,7 +111,8 @@ void MpiExchange::share_slots(std::vector<T>& values, int width, const std::vect
   for (std::size_t i = 0; i < mine; ++i)
     for (std::size_t c = 0; c < w; ++c) send[i * w + c] = values[l.slots[first + i] * w + c];
   gathered.resize(l.slots.size() * w);
-  const MPI_Datatype type = sizeof(T) == sizeof(double) ? MPI_DOUBLE : MPI_UINT8_T;
+  static_assert(std::is_same_v<T, double> || std::is_same_v<T, float> || std::is_same_v<T, std::uint8_t>);
+  const MPI_Datatype type = std::is_same_v<T, double> ? MPI_DOUBLE : std::is_same_v<T, float> ? MPI_FLOAT : MPI_UINT8_T;
   MPI_Allgatherv(send.data(), static_cast<int>(send.size()), type, gathered.data(), l.counts.data(),
                  l.displacements.data(), type, MPI_COMM_WORLD);
   for (std::size_t i = 0; i < l.slots.size(); ++i)
@@ -124,6 +126,10 @@ void MpiExchange::share(std::vector<double>& values, int width, const std::vecto
 void MpiExchange::share(std::vector<std::uint8_t>& values, int width, const std::vector<std::int32_t>& owner) {
   if (values.empty()) return;
   share_slots(values, width, owner, send_byte_, gathered_byte_);
+}
+void MpiExchange::share(std::vector<float>& values, int width, const std::vector<std::int32_t>& owner) {
+  if (values.empty()) return;
+  share_slots(values, width, owner, send_float_, gathered_float_);
 }
 
 void MpiExchange::renew(const std::vector<std::int32_t>& owner) {

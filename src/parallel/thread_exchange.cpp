@@ -27,6 +27,9 @@ void ThreadExchange::share(std::vector<double>& values, int width, const std::ve
 void ThreadExchange::share(std::vector<std::uint8_t>& values, int width, const std::vector<std::int32_t>& owner) {
   share_slots(values, width, owner);
 }
+void ThreadExchange::share(std::vector<float>& values, int width, const std::vector<std::int32_t>& owner) {
+  share_slots(values, width, owner);
+}
 
 // Every domain combines the offered buffers in domain order into a copy, then takes it: all domains end equal.
 template <class T, class Combine>

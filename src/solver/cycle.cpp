@@ -301,7 +301,8 @@ void share_kind_state(Exchange& exchange, State& state, Visit visit, const std::
   const std::size_t n = owner.size();
   auto share = [&](const std::string& name, auto& values) {
     using Values = std::remove_reference_t<decltype(values)>;
-    if constexpr (std::is_same_v<Values, std::vector<double>> || std::is_same_v<Values, std::vector<std::uint8_t>>) {
+    if constexpr (std::is_same_v<Values, std::vector<double>> || std::is_same_v<Values, std::vector<float>> ||
+                  std::is_same_v<Values, std::vector<std::uint8_t>>) {
       if (values.empty() || name == "deleted") return;
       if (std::find(point_fields.begin(), point_fields.end(), name) != point_fields.end()) {
         exchange.share(values, 1, point_owner);

@@ -20,6 +20,10 @@
 namespace crumple::verification {
 namespace {
 
+// Relative round-off of one step: a few hundred ulps of double; in the mixed build the point stresses are rounded
+// to single when stored (docs/theory/precision.md, eq. PR-2), a few ulps of single.
+constexpr double kRoundOff = sizeof(point_real) == sizeof(double) ? 1e-12 : 1e-6;
+
 constexpr double kYoung = 1.0e6, kNu = 0.25, kRho = 1.0, kThickness = 0.001;
 
 // MacNeal-Harder patch: corners 1-4, interior nodes 5-8, five elements numbered counter-clockwise.
@@ -133,7 +137,6 @@ TEST_P(PatchTest, MembraneConstantStrainOnDistortedMesh) {
   const std::array<double, 3> sigma = plane_stress(strain);
   const double scale = std::max({std::abs(sigma[0]), std::abs(sigma[1]), std::abs(sigma[2])});
   const double force_scale = scale * kThickness * 0.24;
-  constexpr double kRoundOff = 1e-12;  // relative; a few hundred ulps
 
   double worst_stress = 0.0, worst_interior = 0.0, worst_boundary = 0.0, worst_hourglass = 0.0;
   for (long long id = 1; id <= 5; ++id) {
@@ -201,7 +204,6 @@ TEST_P(PatchTest, BendingConstantCurvatureOnDistortedMesh) {
   const double scale = std::max({std::abs(unit_stress[0]), std::abs(unit_stress[1]), std::abs(unit_stress[2])}) *
                        0.5 * kThickness;  // surface stress
   const double moment_scale = scale * kThickness * kThickness / 6.0 * 0.24;
-  constexpr double kRoundOff = 1e-12;
 
   double worst_stress = 0.0, worst_interior = 0.0, worst_boundary = 0.0, worst_force = 0.0;
   for (long long id = 1; id <= 5; ++id) {
@@ -295,9 +297,15 @@ TEST_P(PatchTest, MembranePatchThroughTheSolver) {
     const auto global = to_global({last.shells.sxx[ip], last.shells.syy[ip], last.shells.sxy[ip]}, c, s);
     for (int i = 0; i < 3; ++i) worst_stress = std::max(worst_stress, std::abs(global[i] - sigma[i]) / scale);
   }
-  EXPECT_LT(worst_velocity, 1e-7) << "interior nodes were accelerated: the patch is not in equilibrium";
+  // The mixed build rounds every stored stress to single each cycle (docs/theory/precision.md, PR-2): a random walk
+  // of about u sqrt(N) of the stress (u = 2^-24, N cycles; bound 4 u sqrt(N), 1.6e-5 here), and the interior nodes
+  // feel their elements' different round-off as a force, 3e-4 to 5e-4 of this 1e-7 strain patch's velocity field
+  // (3e-7 m/s) by the end, measured (PR-3). Positions keep their double accuracy.
+  const bool mixed = sizeof(point_real) != sizeof(double);
+  const double u = 0x1p-24, cycles = static_cast<double>(run.summary.cycles);
+  EXPECT_LT(worst_velocity, mixed ? 1e-3 : 1e-7) << "interior nodes were accelerated: the patch is not in equilibrium";
   EXPECT_LT(worst_position, 1e-5) << "interior nodes left the linear field";
-  EXPECT_LT(worst_stress, 1e-6) << "element stresses differ from the constant state";
+  EXPECT_LT(worst_stress, mixed ? 4.0 * u * std::sqrt(cycles) : 1e-6) << "element stresses differ from the constant state";
   // Energy: the corner reactions' work becomes strain energy. The balance compares the internal energy at t^n
   // with the external work through t^(n+1/2) (the impulse of the last cycle acts over the mean step): for an
   // energy growing like t^2 that lag alone is about 1/cycles relative (0.05 % here), inside the 0.1 % bound.

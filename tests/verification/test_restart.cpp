@@ -8,12 +8,14 @@
 // accelerometers, whose filters and integrals carry over (accel_strip), and cut sections, whose work integrals
 // carry over and whose loads the first cycle after the restart records again (section_strip).
 #include <gtest/gtest.h>
+#include <hdf5.h>
 
 #include <cstring>
 #include <map>
 #include <sstream>
 
 #include "app/run.hpp"
+#include "crumple/core/precision.hpp"
 #include "crumple/output/restart_file.hpp"
 #include "crumple/solver/snapshot.hpp"
 #include "crumple/solver/solver_state.hpp"
@@ -144,6 +146,35 @@ TEST(Restart, FileOfAnotherModelIsRefusedWithItsCounts) {
   }
   EXPECT_THROW(read_restart(dir.path() / "none.rst", other.model, state), RestartError);
   EXPECT_THROW(read_restart(dir.path() / "RUN.out", other.model, state), RestartError);
+}
+
+// A run goes on in the precision it started in (docs/theory/precision.md): a restart file records the bytes of
+// the integration points' state, and the build of the other precision refuses it, naming both builds.
+TEST(Restart, FileOfTheOtherPrecisionIsRefused) {
+  TempDir dir;
+  run(kDecks / "tube_impact" / "TUBE_0000.rad", dir, 10);
+  const Deck deck = read_deck(kDecks / "tube_impact" / "TUBE_0000.rad");
+  std::vector<std::string> notes;
+  SolverState state = initial_state(deck.model, notes);
+  ASSERT_NO_THROW(read_restart(dir.path() / "RUN.rst", deck.model, state));
+  {  // the file as the other build writes it
+    const hid_t file = H5Fopen((dir.path() / "RUN.rst").c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+    ASSERT_GE(file, 0);
+    const hid_t attribute = H5Aopen(file, "point_bytes", H5P_DEFAULT);
+    ASSERT_GE(attribute, 0);
+    const long long other = sizeof(point_real) == 8 ? 4 : 8;
+    EXPECT_GE(H5Awrite(attribute, H5T_NATIVE_LLONG, &other), 0);
+    H5Aclose(attribute);
+    H5Fclose(file);
+  }
+  try {
+    read_restart(dir.path() / "RUN.rst", deck.model, state);
+    FAIL() << "a restart file of the other precision was read";
+  } catch (const RestartError& e) {
+    const std::string expected = std::string("written by the ") + (sizeof(point_real) == 8 ? "mixed" : "double") +
+                                 " build of Crumple, and this is the " + kPrecision + " build";
+    EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

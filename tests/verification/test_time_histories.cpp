@@ -62,7 +62,8 @@ std::string starter() {
 struct Snapshot {
   double time, internal, hourglass, kinetic;
   std::vector<double> x, y, z, vx, fx, mass;
-  std::vector<double> sxx, syy, sxy, thickness;  // shells
+  std::vector<point_real> sxx, syy, sxy;  // shells
+  std::vector<double> thickness;
   std::array<double, 6> brick_stress;
   std::array<Vec3, 8> brick_nodes;
   double brick_volume0;

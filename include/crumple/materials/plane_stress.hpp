@@ -1,5 +1,6 @@
 #pragma once
 // Plane-stress J2 plasticity with isotropic hardening for shells (docs/theory/materials.md, "Plane stress").
+#include "crumple/core/precision.hpp"
 #include "crumple/materials/hardening.hpp"
 
 namespace crumple::materials {
@@ -22,7 +23,7 @@ struct PlaneStressResult {
 // elastic check and the return's first step, renewed after a plastic step (Hardening::hardening_term).
 PlaneStressResult plane_stress_update(const PlaneStressElastic& elastic, const Hardening& hardening, double dexx,
                                       double deyy, double dgxy, double rate, double eps_p, double& sxx, double& syy,
-                                      double& sxy, double* kept_term = nullptr);
+                                      double& sxy, point_real* kept_term = nullptr);
 
 // The same elastic predictor with the radial return of Iplas 2, the reference's default for explicit decks
 // (docs/theory/materials.md, PS-5): the plastic strain increment solves sigma_vm_trial - 3 G d_eps_p =
@@ -30,7 +31,7 @@ PlaneStressResult plane_stress_update(const PlaneStressElastic& elastic, const H
 // it plane but is not the exact plane-stress projection of plane_stress_update.
 PlaneStressResult plane_stress_radial_return(const PlaneStressElastic& elastic, const Hardening& hardening,
                                              double dexx, double deyy, double dgxy, double rate, double eps_p,
-                                             double& sxx, double& syy, double& sxy, double* kept_term = nullptr);
+                                             double& sxx, double& syy, double& sxy, point_real* kept_term = nullptr);
 
 inline double von_mises_plane_stress(double sxx, double syy, double sxy) {
   const double v = sxx * sxx - sxx * syy + syy * syy + 3.0 * sxy * sxy;

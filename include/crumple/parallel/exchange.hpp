@@ -22,6 +22,7 @@ class Exchange {
   // every owner's slots.
   virtual void share(std::vector<double>& values, int width, const std::vector<std::int32_t>& owner) = 0;
   virtual void share(std::vector<std::uint8_t>& values, int width, const std::vector<std::int32_t>& owner) = 0;
+  virtual void share(std::vector<float>& values, int width, const std::vector<std::int32_t>& owner) = 0;  // mixed build
 
   // Point to point with the neighbours of `plan`: this domain's send slots to each neighbour, the neighbours' into
   // its receive slots (`width` values per slot). `halo_start` posts the receives and sends the send slots as they

@@ -40,6 +40,7 @@ class MpiExchange final : public Exchange {
   int domains() const override { return size_; }
   void share(std::vector<double>& values, int width, const std::vector<std::int32_t>& owner) override;
   void share(std::vector<std::uint8_t>& values, int width, const std::vector<std::int32_t>& owner) override;
+  void share(std::vector<float>& values, int width, const std::vector<std::int32_t>& owner) override;
   void halo_start(std::vector<double>& values, int width, const HaloPlan& plan) override;
   void halo_finish() override;
   void renew(const std::vector<std::int32_t>& owner) override;
@@ -67,6 +68,7 @@ class MpiExchange final : public Exchange {
   std::map<std::pair<const void*, int>, Layout> layouts_;
   std::vector<double> send_double_, gathered_double_;
   std::vector<std::uint8_t> send_byte_, gathered_byte_;
+  std::vector<float> send_float_, gathered_float_;
   struct DoubleInt {  // MPI_DOUBLE_INT
     double value;
     int index;

@@ -29,6 +29,7 @@ class ThreadExchange final : public Exchange {
   int domains() const override { return board_.domains(); }
   void share(std::vector<double>& values, int width, const std::vector<std::int32_t>& owner) override;
   void share(std::vector<std::uint8_t>& values, int width, const std::vector<std::int32_t>& owner) override;
+  void share(std::vector<float>& values, int width, const std::vector<std::int32_t>& owner) override;
   void halo_start(std::vector<double>& values, int width, const HaloPlan& plan) override;
   void halo_finish() override;
   void renew(const std::vector<std::int32_t>& owner) override;

@@ -44,9 +44,11 @@ void visit_nodes(V& v, const std::string& at, NodalState& n) {
 
 template <class V>
 void visit_shells(V& v, const std::string& at, ShellState& s) {
+  for (auto [name, field] : {std::pair{"sxx", &s.sxx}, {"syy", &s.syy}, {"sxy", &s.sxy}, {"eps_p", &s.eps_p},
+                             {"eps_rate", &s.eps_rate}, {"hardening_term", &s.hardening_term}})
+    v(at + name, *field);  // point_real
   for (auto [name, field] :
-       {std::pair{"sxx", &s.sxx}, {"syy", &s.syy}, {"sxy", &s.sxy}, {"eps_p", &s.eps_p}, {"eps_rate", &s.eps_rate},
-        {"hardening_term", &s.hardening_term}, {"qx", &s.qx}, {"qy", &s.qy}, {"thickness", &s.thickness},
+       {std::pair{"qx", &s.qx}, {"qy", &s.qy}, {"thickness", &s.thickness},
         {"bending_stress", &s.bending_stress}, {"hourglass", &s.hourglass}, {"internal_energy", &s.internal_energy},
         {"critical_dt", &s.critical_dt}, {"initial_length", &s.initial_length}, {"initial_shape", &s.initial_shape},
         {"gauss_shear", &s.gauss_shear}, {"gauss_bending", &s.gauss_bending}, {"mass", &s.mass},
@@ -59,9 +61,11 @@ void visit_shells(V& v, const std::string& at, ShellState& s) {
 
 template <class V>
 void visit_bricks(V& v, const std::string& at, BrickState& b) {
+  for (auto [name, field] : {std::pair{"sxx", &b.sxx}, {"syy", &b.syy}, {"szz", &b.szz}, {"sxy", &b.sxy},
+                             {"syz", &b.syz}, {"szx", &b.szx}, {"eps_p", &b.eps_p}, {"eps_rate", &b.eps_rate}})
+    v(at + name, *field);  // point_real
   for (auto [name, field] :
-       {std::pair{"sxx", &b.sxx}, {"syy", &b.syy}, {"szz", &b.szz}, {"sxy", &b.sxy}, {"syz", &b.syz},
-        {"szx", &b.szx}, {"eps_p", &b.eps_p}, {"eps_rate", &b.eps_rate}, {"volume0", &b.volume0},
+       {std::pair{"volume0", &b.volume0},
         {"hourglass", &b.hourglass}, {"internal_energy", &b.internal_energy},
         {"hourglass_energy", &b.hourglass_energy}, {"critical_dt", &b.critical_dt}, {"mass", &b.mass},
         {"reference_shape", &b.reference_shape}, {"reference_frame", &b.reference_frame}})
@@ -122,7 +126,7 @@ void visit_histories(V& v, HistoryIntegrals& h) {
 }  // namespace snapshot_detail
 
 // Calls v(name, field) for every field of the snapshot: std::vector<T>, std::array<T, N> and scalars (double,
-// int32, int, long long, bool). Names are paths ("nodes/vx", "bodies/0/omega").
+// int32, int, long long, bool); the integration points' state is std::vector<point_real> (float in the mixed build). Names are paths ("nodes/vx", "bodies/0/omega").
 template <class V>
 void visit_state(V& v, SolverState& s, ResumeMarks& marks) {
   using namespace snapshot_detail;

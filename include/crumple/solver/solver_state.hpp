@@ -140,7 +140,7 @@ struct SolverState {
   // Several domains, rebalancing (solver/rebalance.cpp): per element kind, every point's plastic strain at the last
   // check (its growth since tells which points flow).
   struct Rebalancing {
-    std::array<std::vector<double>, kElementKinds> eps_p_at_check;
+    std::array<std::vector<point_real>, kElementKinds> eps_p_at_check;
   } rebalancing;
 };
 

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "crumple/core/precision.hpp"
 #include "crumple/state/element_records.hpp"
 
 namespace crumple {
@@ -14,10 +15,11 @@ struct BrickState {
   std::vector<std::size_t> point_offset;  // index of the group's first point
   std::vector<int> points;                // integration points per element of the group
 
-  // Per integration point: Cauchy stress in the global frame [stress], equivalent plastic strain.
-  std::vector<double> sxx, syy, szz, sxy, syz, szx;
-  std::vector<double> eps_p;
-  std::vector<double> eps_rate;  // strain rate the yield stress saw last cycle, filtered (eq. RF) [1/T]
+  // Per integration point: Cauchy stress in the global frame [stress], equivalent plastic strain; stored in
+  // point_real (double, or single in the mixed build: core/precision.hpp).
+  std::vector<point_real> sxx, syy, szz, sxy, syz, szx;
+  std::vector<point_real> eps_p;
+  std::vector<point_real> eps_rate;  // strain rate the yield stress saw last cycle, filtered (eq. RF) [1/T]
 
   // Per element (index in the Brick8 ElementTable).
   std::vector<double> volume0;           // initial volume (eq. B-2) for the current density rho0 V0 / V [L^3]
@@ -47,7 +49,7 @@ struct BrickState {
   }
   // Sizes the per-point arrays for `total` integration points, every value zero.
   void resize_points(std::size_t total) {
-    for (auto* v : {&sxx, &syy, &szz, &sxy, &syz, &szx, &eps_p, &eps_rate}) v->assign(total, 0.0);
+    for (auto* v : {&sxx, &syy, &szz, &sxy, &syz, &szx, &eps_p, &eps_rate}) v->assign(total, point_real{0});
   }
 };
 

@@ -7,6 +7,7 @@
 #include <limits>
 #include <vector>
 
+#include "crumple/core/precision.hpp"
 #include "crumple/state/element_records.hpp"
 
 namespace crumple {
@@ -16,11 +17,12 @@ struct ShellState {
   std::vector<std::size_t> point_offset;  // index of the group's first point
   std::vector<int> points;                // through-thickness points of the group's elements
 
-  // Per through-thickness point, in the element's co-rotational frame [stress].
-  std::vector<double> sxx, syy, sxy;
-  std::vector<double> eps_p;     // equivalent plastic strain
-  std::vector<double> eps_rate;  // strain rate the yield stress saw last cycle, filtered (eq. RF) [1/T]
-  std::vector<double> hardening_term;  // Johnson-Cook b eps_p^n kept with eps_p (NaN until first used) [stress]
+  // Per through-thickness point, in the element's co-rotational frame [stress]; stored in point_real (double, or
+  // single in the mixed build: core/precision.hpp).
+  std::vector<point_real> sxx, syy, sxy;
+  std::vector<point_real> eps_p;     // equivalent plastic strain
+  std::vector<point_real> eps_rate;  // strain rate the yield stress saw last cycle, filtered (eq. RF) [1/T]
+  std::vector<point_real> hardening_term;  // Johnson-Cook b eps_p^n kept with eps_p (NaN until first used) [stress]
 
   // Per element (index in the kind's ElementTable).
   std::vector<double> qx, qy;           // transverse shear resultants (per unit length) [M T^-2]
@@ -53,8 +55,8 @@ struct ShellState {
   }
   // Sizes the per-point arrays for `total` through-thickness points, every value zero (the kept term NaN).
   void resize_points(std::size_t total) {
-    for (auto* v : {&sxx, &syy, &sxy, &eps_p, &eps_rate}) v->assign(total, 0.0);
-    hardening_term.assign(total, std::numeric_limits<double>::quiet_NaN());
+    for (auto* v : {&sxx, &syy, &sxy, &eps_p, &eps_rate}) v->assign(total, point_real{0});
+    hardening_term.assign(total, std::numeric_limits<point_real>::quiet_NaN());
   }
 };
 
