@@ -159,7 +159,10 @@ inline void update_points(const ShellGroupParameters& p, const materials::PlaneS
     state.eps_p[ip] = stored(state.eps_p[ip] + r.plastic_strain_increment);
     if (r.plastic_strain_increment > 0.0 && p.physical_hourglass) {
       // Elastic-plastic tangent of the point, E H' / (E + H'), for the hourglass modes (eq. S-12).
-      const double slope = std::max(p.hardening.slope(state.eps_p[ip], rate), 0.0);
+      const double slope = std::max(p.hardening.has_kept_term()
+                                        ? p.hardening.slope_from_term(state.eps_p[ip], state.hardening_term[ip], rate)
+                                        : p.hardening.slope(state.eps_p[ip], rate),
+                                    0.0);
       u.tangent_ratio -= p.membrane_weight[k] * E / (E + slope);
     }
     u.thickness_strain += p.membrane_weight[k] * r.thickness_strain;

@@ -47,6 +47,8 @@ Hardening Hardening::of(const Material& material, const std::vector<Function>& f
   h.johnson_cook = &material.johnson_cook;
   h.tabulated = &material.tabulated;
   h.functions = &functions_of_model;
+  double c = 1.0;  // C(n, k) = C(n, k - 1) (n - k + 1) / k
+  for (int k = 1; k <= kSeriesTerms; ++k) c *= (material.johnson_cook.n - (k - 1)) / k, h.binomial[k - 1] = c;
   return h;
 }
 
@@ -104,8 +106,28 @@ double Hardening::slope(double eps_p, double eps_rate) const {
   return 0.0;
 }
 
+double Hardening::term_near(const KeptTerm& kept, double eps_p) const {
+  if (eps_p == kept.eps_p) return kept.term;
+  const double u = (eps_p - kept.eps_p) * kept.inverse_eps_p;
+  if (!(kept.eps_p > 0.0) || !(std::abs(u) <= kSeriesReach)) return jc_term(*johnson_cook, eps_p);
+  // 1 + u (C1 + u C2 + ... + u^7 C8) (eq. JC-2), in Estrin's order: four products deep instead of eight.
+  const auto& c = binomial;
+  const double u2 = u * u, u4 = u2 * u2;
+  const double low = (c[0] + u * c[1]) + u2 * (c[2] + u * c[3]);
+  const double high = (c[4] + u * c[5]) + u2 * (c[6] + u * c[7]);
+  return kept.term * (1.0 + u * (low + u4 * high));
+}
+
+double Hardening::slope_from_term(double eps_p, double term, double eps_rate) const {
+  if (law != MaterialLaw::JohnsonCook || !(eps_p >= 1e-6)) return slope(eps_p, eps_rate);
+  const auto& p = *johnson_cook;
+  const double factor = jc_rate_factor(p, eps_rate);
+  if (p.sig_max0 > 0.0 && (p.a + term) * factor >= cap(p, factor)) return 0.0;
+  return p.n * term / eps_p * factor;
+}
+
 double Hardening::yield_and_slope(double eps_p, double eps_rate, double& slope_out, double* term_out,
-                                  const double* term_in) const {
+                                  const KeptTerm* kept) const {
   if (law != MaterialLaw::JohnsonCook) {
     slope_out = slope(eps_p, eps_rate);
     return yield(eps_p, eps_rate);
@@ -115,8 +137,8 @@ double Hardening::yield_and_slope(double eps_p, double eps_rate, double& slope_o
   // b eps^n and its derivative b n eps^(n-1) = n (b eps^n) / eps from one power (slope evaluated a little above 0),
   // or none when the caller keeps b eps_p^n and eps_p is where the slope is evaluated.
   const double e = std::max(eps_p, 1e-6);
-  const bool known = term_in != nullptr && eps_p == e;
-  const double power = known ? *term_in : p.b * std::pow(e, p.n);
+  const bool known = kept != nullptr && eps_p == e;
+  const double power = known ? term_near(*kept, e) : p.b * std::pow(e, p.n);
   const double hardening = eps_p > 0.0 ? (eps_p == e ? power : p.b * std::pow(eps_p, p.n)) : 0.0;
   const double static_value = p.a + hardening;  // jc_static's expression, term for term
   if (term_out != nullptr) *term_out = hardening;

@@ -8,6 +8,17 @@ namespace crumple::materials {
 
 namespace {
 
+// Johnson-Cook's term kept for the next cycle at eps_new (eq. JC-2). In double, the series from this cycle's kept
+// term carries it (or the value the return already evaluated there): its round-off walks about 1e-16 of the term a
+// plastic cycle, 1e-14 over 10^4 cycles. Stored in single, each rounding would walk 3e-8 a cycle and never come
+// back, so the mixed build takes a fresh power (eq. PR-2).
+double term_to_keep(const Hardening& hardening, const Hardening::KeptTerm* near, double eps_new,
+                    const double* evaluated) {
+  if constexpr (sizeof(point_real) < sizeof(double)) return hardening.hardening_term(eps_new);
+  if (evaluated != nullptr) return *evaluated;
+  return near != nullptr ? hardening.term_near(*near, eps_new) : hardening.hardening_term(eps_new);
+}
+
 // The elastic predictor (docs/theory/materials.md, eq. PS-1) and the yield check that both returns start with: the
 // stress becomes the trial stress; `plastic` says whether its von Mises stress `trial` is above the yield stress.
 struct Predictor {
@@ -71,12 +82,15 @@ PlaneStressResult plane_stress_update(const PlaneStressElastic& el, const Harden
   // decreases with g, so the iteration needs a handful of steps; bisection guards the rare overshoot.
   double lo = 0.0, hi = std::numeric_limits<double>::infinity();
   double g = 0.0;
+  // The stored term, widened: every iterate's term comes from it without a power (eq. JC-2).
+  const Hardening::KeptTerm base{eps_p, kept ? static_cast<double>(*kept_term) : 0.0, eps_p > 0.0 ? 1.0 / eps_p : 0.0};
+  const Hardening::KeptTerm* near = kept && eps_p > 0.0 ? &base : nullptr;
   for (int it = 0; it < 50; ++it) {
     double dvm = 0.0;
     const double s_vm = vm(g, dvm);
     const double eps = eps_p + 2.0 / 3.0 * g * s_vm;
     double hardening_slope = 0.0;
-    const double yield = hardening.yield_and_slope(eps, rate, hardening_slope);
+    const double yield = hardening.yield_and_slope(eps, rate, hardening_slope, nullptr, near);
     const double f = s_vm - yield;
     if (std::abs(f) <= 1e-12 * yield) break;
     if (f > 0.0) lo = g; else hi = g;
@@ -96,7 +110,8 @@ PlaneStressResult plane_stress_update(const PlaneStressElastic& el, const Harden
   syy = 0.5 * (new_p + new_q);
   sxy = r * b;
   result.plastic_strain_increment = 2.0 / 3.0 * g * von_mises_plane_stress(sxx, syy, sxy);
-  if (kept) *kept_term = stored(hardening.hardening_term(eps_p + result.plastic_strain_increment));
+  const double eps_new = eps_p + result.plastic_strain_increment;
+  if (kept) *kept_term = stored(term_to_keep(hardening, near, eps_new, nullptr));
   // Through-thickness strain: elastic part from the stress change, plastic part from incompressibility
   // (d eps_p_zz = -(d eps_p_xx + d eps_p_yy) = -g (sxx + syy) / 3).
   result.thickness_strain = -nu / E * ((sxx + syy) - old_sum) - g * (sxx + syy) / 3.0;
@@ -118,12 +133,13 @@ PlaneStressResult plane_stress_radial_return(const PlaneStressElastic& el, const
   // The last strain the hardening was evaluated at and its term: when the iteration ends on the residual there,
   // the kept term needs no second power. The first step, at eps_p itself, takes the kept term: no power at all.
   double evaluated = -1.0, evaluated_term = 0.0;
-  const double kept_in = kept ? static_cast<double>(*kept_term) : 0.0;  // the stored term, widened
+  // The stored term, widened: every iterate's term comes from it without a power (eq. JC-2).
+  const Hardening::KeptTerm base{eps_p, kept ? static_cast<double>(*kept_term) : 0.0, eps_p > 0.0 ? 1.0 / eps_p : 0.0};
   for (int it = 0; it < 50; ++it) {
     double slope = 0.0;
     evaluated = eps_p + d;
     const double yield = hardening.yield_and_slope(evaluated, rate, slope, kept ? &evaluated_term : nullptr,
-                                                   kept && it == 0 ? &kept_in : nullptr);
+                                                   kept && eps_p > 0.0 ? &base : nullptr);
     const double f = trial - 3.0 * G * d - yield;
     if (std::abs(f) <= 1e-12 * yield) break;
     if (f > 0.0) lo = d; else hi = d;
@@ -138,7 +154,9 @@ PlaneStressResult plane_stress_radial_return(const PlaneStressElastic& el, const
   const double scale = (trial - 3.0 * G * d) / trial;
   sxx = txx * scale, syy = tyy * scale, sxy = txy * scale;
   result.plastic_strain_increment = d;
-  if (kept) *kept_term = stored(eps_p + d == evaluated ? evaluated_term : hardening.hardening_term(eps_p + d));
+  if (kept)
+    *kept_term = stored(term_to_keep(hardening, eps_p > 0.0 ? &base : nullptr, eps_p + d,
+                                     eps_p + d == evaluated ? &evaluated_term : nullptr));
   // Plastic flow along the normal (3/2) s / sigma_vm: through the thickness -d (sxx + syy) / (2 sigma_vm).
   const double vm = von_mises_plane_stress(sxx, syy, sxy);
   result.thickness_strain = -nu / E * ((sxx + syy) - old_sum) - (vm > 0.0 ? d * (sxx + syy) / (2.0 * vm) : 0.0);
