@@ -2,6 +2,7 @@
 // penetration, the penalty and damping force, friction, the interface step; forces go to the nodes equal and
 // opposite, the segment's share by the shape functions of the contact point.
 #include <algorithm>
+#include <bit>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -77,14 +78,36 @@ void divide_pairs(ContactInterface& in, std::size_t nodes, ContactDomains* domai
   for (std::size_t k = 0; k < nodes; ++k) ghost[k] = ghost[k] != 0 ? (*scope.node_owner)[k] : -1;
 }
 
-// /TH/INTER |FNX| .. ||F||: one pair's normal force fn n and whole force into the interface's sums.
-void add_pair_forces(std::vector<ExactSum>& sum, double fn, const double (&normal)[3], const double (&force)[3]) {
-  for (std::size_t k = 0; k < 3; ++k) {
-    sum[kPairNormalAbs + k].add(std::abs(fn * normal[k]));
-    sum[kPairForceAbs + k].add(std::abs(force[k]));
+// One secondary node's share of the interface's cycle sums: its pairs' values summed in plain doubles in pair order,
+// then added to the exact sums once (docs/parallel.md, "Sums over many domains"). A node's pairs are contiguous
+// (the search lists them node by node) and all run, in the same order, in the domain of the node, so these partial
+// sums do not depend on the partition; a node with four pairs makes a quarter of the exact additions.
+struct NodeSums {
+  static_assert(kCycleSums <= 32, "one bit per sum");
+  std::size_t node = std::numeric_limits<std::size_t>::max();
+  double value[kCycleSums] = {};
+  std::uint32_t used = 0;  // bit s: value[s] has a term
+  void add(std::size_t s, double term) { value[s] += term, used |= 1u << s; }
+  // The pass moves on to pair q of node i: the previous node's sums go into the exact ones.
+  void at_node(std::size_t i, std::vector<ExactSum>& sum) {
+    if (i != node) flush(sum), node = i;
   }
-  sum[kPairNormalNorm].add(std::abs(fn));
-  sum[kPairForceNorm].add(std::sqrt(force[0] * force[0] + force[1] * force[1] + force[2] * force[2]));
+  void flush(std::vector<ExactSum>& sum) {
+    for (; used != 0; used &= used - 1) {
+      const auto s = static_cast<std::size_t>(std::countr_zero(used));
+      sum[s].add(value[s]), value[s] = 0.0;
+    }
+  }
+};
+
+// /TH/INTER |FNX| .. ||F||: one pair's normal force fn n and whole force into its node's sums.
+void add_pair_forces(NodeSums& sum, double fn, const double (&normal)[3], const double (&force)[3]) {
+  for (std::size_t k = 0; k < 3; ++k) {
+    sum.add(kPairNormalAbs + k, std::abs(fn * normal[k]));
+    sum.add(kPairForceAbs + k, std::abs(force[k]));
+  }
+  sum.add(kPairNormalNorm, std::abs(fn));
+  sum.add(kPairForceNorm, std::sqrt(force[0] * force[0] + force[1] * force[1] + force[2] * force[2]));
 }
 
 // What one interface's pass has of the cycle besides its records: the sums, the deepest penetration, the step.
@@ -131,6 +154,7 @@ void compute_pairs(ContactState& c, ContactInterface& in, const NodalState& node
   const double alpha = filtered ? friction_filter_weight(in.friction_filter, in.filter_value, ps.dt_previous) : 1.0;
   const double scale = ps.scale, dt_previous = ps.dt_previous, dt_estimate = ps.dt_estimate;
   PairBatch& batch = c.batch;
+  NodeSums node_sums;
   screen_pairs(in, ps);
   const std::size_t mine = in.live_pairs.size();
   for (std::size_t first = 0; first < mine; first += PairBatch::kSize) {
@@ -151,6 +175,7 @@ void compute_pairs(ContactState& c, ContactInterface& in, const NodalState& node
       in.pair_distance[q] = batch.distance[j], in.pair_motion[q] = in.motion;
       const auto i = static_cast<std::size_t>(in.candidate_node[q]);
       const auto s = static_cast<std::size_t>(in.candidate_segment[q]);
+      node_sums.at_node(i, out.sum);
       double* friction[3] = {&in.friction_x[q], &in.friction_y[q], &in.friction_z[q]};
       // Out of contact: the pair forgets its friction force.
       auto forget = [&] { *friction[0] = *friction[1] = *friction[2] = 0.0; };
@@ -214,7 +239,7 @@ void compute_pairs(ContactState& c, ContactInterface& in, const NodalState& node
       const double pair_step = std::min(scale * kinematic_step(g, p, penetration_rate),
                                         scaled_stiffness_step(step_mass, kt, ct, viss, scale));
       if (ps.release_step > 0.0 && pair_step < ps.release_step) {
-        out.sum[kReleased].add(1.0);
+        node_sums.add(kReleased, 1.0);
         forget();
         continue;
       }
@@ -233,8 +258,8 @@ void compute_pairs(ContactState& c, ContactInterface& in, const NodalState& node
       const double elastic = penalty_force(k0, g, p);
       const double damping = damping_force(viss, kt, mass, penetration_rate, elastic);
       const double fn = elastic + damping;
-      out.sum[kElasticEnergy].add(elastic_energy(k0, g, p));
-      out.sum[kDampingWork].add(damping * penetration_rate * dt_previous);
+      node_sums.add(kElasticEnergy, elastic_energy(k0, g, p));
+      node_sums.add(kDampingWork, damping * penetration_rate * dt_previous);
       out.max_ratio = std::max(out.max_ratio, p / g);
       // Friction (eq. C-9): trial force in the tangent plane, capped by the Coulomb cone.
       double ft[3] = {0.0, 0.0, 0.0};
@@ -262,17 +287,17 @@ void compute_pairs(ContactState& c, ContactInterface& in, const NodalState& node
           for (int k = 0; k < 3; ++k) ft[k] = -ct * vt[k];
         }
         friction_cone(ft, mu * fn);
-        out.sum[kFrictionWork].add(-(ft[0] * vt[0] + ft[1] * vt[1] + ft[2] * vt[2]) * dt_previous);
+        node_sums.add(kFrictionWork, -(ft[0] * vt[0] + ft[1] * vt[1] + ft[2] * vt[2]) * dt_previous);
       }
       *friction[0] = ft[0], *friction[1] = ft[1], *friction[2] = ft[2];
       const double force[3] = {fn * normal[0] + ft[0], fn * normal[1] + ft[1], fn * normal[2] + ft[2]};
       for (std::size_t k = 0; k < 3; ++k) {
-        out.sum[kNormalForce + k].add(fn * normal[k]);
-        out.sum[kTangentialForce + k].add(ft[k]);
+        node_sums.add(kNormalForce + k, fn * normal[k]);
+        node_sums.add(kTangentialForce + k, ft[k]);
       }
-      if (in.sum_pair_forces) add_pair_forces(out.sum, fn, normal, force);
+      if (in.sum_pair_forces) add_pair_forces(node_sums, fn, normal, force);
       if (in.node_touched[i] == 0) in.touched_list.push_back(static_cast<std::int32_t>(i));
-      if (in.node_touched[i] != 2) in.node_touched[i] = 2, out.sum[kActiveNodes].add(1.0);
+      if (in.node_touched[i] != 2) in.node_touched[i] = 2, node_sums.add(kActiveNodes, 1.0);
       const bool releases = in.release_bc != 0 && !in.node_impacted[i];
       in.node_impacted[i] = 1;
       // Equal and opposite: the node gets `force`, the segment nodes -weight_a force (momentum conserved).
@@ -281,6 +306,7 @@ void compute_pairs(ContactState& c, ContactInterface& in, const NodalState& node
       c.own_records.insert(c.own_records.end(), record, record + kRecordWidth);
     }
   }
+  node_sums.flush(out.sum);
 }
 
 // Stiffness step per node (eq. C-11) on the sum of its pairs' tangent stiffnesses plus the stiffness of its own
