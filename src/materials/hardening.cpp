@@ -49,6 +49,7 @@ Hardening Hardening::of(const Material& material, const std::vector<Function>& f
   h.functions = &functions_of_model;
   double c = 1.0;  // C(n, k) = C(n, k - 1) (n - k + 1) / k
   for (int k = 1; k <= kSeriesTerms; ++k) c *= (material.johnson_cook.n - (k - 1)) / k, h.binomial[k - 1] = c;
+  h.floor_term = material.johnson_cook.b * std::pow(kSlopeFloor, material.johnson_cook.n);
   return h;
 }
 
@@ -87,7 +88,7 @@ double Hardening::slope(double eps_p, double eps_rate) const {
       const double factor = jc_rate_factor(p, eps_rate);
       if (p.sig_max0 > 0.0 && jc_static(p, eps_p) * factor >= cap(p, factor)) return 0.0;
       // d/d eps (b eps^n) = b n eps^(n-1), unbounded at 0 for n < 1: evaluate a little above zero.
-      const double e = std::max(eps_p, 1e-6);
+      const double e = std::max(eps_p, kSlopeFloor);
       return p.b * p.n * std::pow(e, p.n - 1.0) * factor;
     }
     case MaterialLaw::Tabulated: {
@@ -119,7 +120,7 @@ double Hardening::term_near(const KeptTerm& kept, double eps_p) const {
 }
 
 double Hardening::slope_from_term(double eps_p, double term, double eps_rate) const {
-  if (law != MaterialLaw::JohnsonCook || !(eps_p >= 1e-6)) return slope(eps_p, eps_rate);
+  if (law != MaterialLaw::JohnsonCook || !(eps_p >= kSlopeFloor)) return slope(eps_p, eps_rate);
   const auto& p = *johnson_cook;
   const double factor = jc_rate_factor(p, eps_rate);
   if (p.sig_max0 > 0.0 && (p.a + term) * factor >= cap(p, factor)) return 0.0;
@@ -136,9 +137,9 @@ double Hardening::yield_and_slope(double eps_p, double eps_rate, double& slope_o
   const double factor = jc_rate_factor(p, eps_rate);
   // b eps^n and its derivative b n eps^(n-1) = n (b eps^n) / eps from one power (slope evaluated a little above 0),
   // or none when the caller keeps b eps_p^n and eps_p is where the slope is evaluated.
-  const double e = std::max(eps_p, 1e-6);
+  const double e = std::max(eps_p, kSlopeFloor);
   const bool known = kept != nullptr && eps_p == e;
-  const double power = known ? term_near(*kept, e) : p.b * std::pow(e, p.n);
+  const double power = known ? term_near(*kept, e) : e == kSlopeFloor ? floor_term : p.b * std::pow(e, p.n);
   const double hardening = eps_p > 0.0 ? (eps_p == e ? power : p.b * std::pow(eps_p, p.n)) : 0.0;
   const double static_value = p.a + hardening;  // jc_static's expression, term for term
   if (term_out != nullptr) *term_out = hardening;

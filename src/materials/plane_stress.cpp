@@ -133,13 +133,19 @@ PlaneStressResult plane_stress_radial_return(const PlaneStressElastic& el, const
   // The last strain the hardening was evaluated at and its term: when the iteration ends on the residual there,
   // the kept term needs no second power. The first step, at eps_p itself, takes the kept term: no power at all.
   double evaluated = -1.0, evaluated_term = 0.0;
-  // The stored term, widened: every iterate's term comes from it without a power (eq. JC-2).
-  const Hardening::KeptTerm base{eps_p, kept ? static_cast<double>(*kept_term) : 0.0, eps_p > 0.0 ? 1.0 / eps_p : 0.0};
+  // The stored term, widened: every iterate's term comes from it without a power (eq. JC-2). A point that yields
+  // for the first time has none: its first power becomes the base, and is replaced only when an iterate goes out of
+  // the series' reach of it.
+  Hardening::KeptTerm base{eps_p, kept ? static_cast<double>(*kept_term) : 0.0, eps_p > 0.0 ? 1.0 / eps_p : 0.0};
+  bool based = kept && eps_p > 0.0;
   for (int it = 0; it < 50; ++it) {
     double slope = 0.0;
     evaluated = eps_p + d;
     const double yield = hardening.yield_and_slope(evaluated, rate, slope, kept ? &evaluated_term : nullptr,
-                                                   kept && eps_p > 0.0 ? &base : nullptr);
+                                                   based ? &base : nullptr);
+    if (kept && evaluated >= Hardening::kSlopeFloor &&
+        !(based && std::abs(evaluated - base.eps_p) <= Hardening::kSeriesReach * base.eps_p))
+      base = {evaluated, evaluated_term, 1.0 / evaluated}, based = true;
     const double f = trial - 3.0 * G * d - yield;
     if (std::abs(f) <= 1e-12 * yield) break;
     if (f > 0.0) lo = d; else hi = d;
@@ -155,7 +161,7 @@ PlaneStressResult plane_stress_radial_return(const PlaneStressElastic& el, const
   sxx = txx * scale, syy = tyy * scale, sxy = txy * scale;
   result.plastic_strain_increment = d;
   if (kept)
-    *kept_term = stored(term_to_keep(hardening, eps_p > 0.0 ? &base : nullptr, eps_p + d,
+    *kept_term = stored(term_to_keep(hardening, based ? &base : nullptr, eps_p + d,
                                      eps_p + d == evaluated ? &evaluated_term : nullptr));
   // Plastic flow along the normal (3/2) s / sigma_vm: through the thickness -d (sxx + syy) / (2 sigma_vm).
   const double vm = von_mises_plane_stress(sxx, syy, sxy);

@@ -56,6 +56,9 @@ struct Hardening {
 
   // The binomial coefficients C(n, k), k = 1..kSeriesTerms, of Johnson-Cook's exponent (set by of()).
   std::array<double, kSeriesTerms> binomial{};
+  // Johnson-Cook's slope is taken no lower than this strain, where b eps^n is kept too (set by of()).
+  static constexpr double kSlopeFloor = 1e-6;
+  double floor_term = 0.0;  // b kSlopeFloor^n [stress]
 };
 
 }  // namespace crumple::materials
