@@ -260,6 +260,8 @@ class BallPlateSetup:
     plate_modulus_ratio: float = 1.0  # > 1: the plate is elastic, its Young's modulus the steel's over this
     stamp_side: float = 0.0  # > 0: a flat square stamp of this side [mm] instead of the ball (wide contact)
     press: float = 0.0  # > 0: a constant acceleration [mm/ms^2] on the ball or stamp towards the plate (/GRAV)
+    drive: bool = False  # the ball or stamp driven at `speed` all through the run (/IMPVEL), not only launched
+    die: bool = False  # every plate node held: the plate is a fixed die the ball or stamp lands on
     steel: JohnsonCook = field(default_factory=JohnsonCook)
     ishell: int = 24
     points: int = 5
@@ -367,8 +369,14 @@ def ball_plate_starter(s):
     out += element_cards("SHELL", 1, plate_quads) + element_cards("SHELL", 2, ball_quads, 1 + len(plate_quads))
     out += ["/GRNOD/NODE/10\nplate edge\n"] + id_list(edge)
     out += ["/BCS/1\nclamped edge\n", "   111 111         0        10\n"]
+    if s.die:
+        out += ["/GRNOD/PART/12\nplate\n", i10(1) + "\n", "/BCS/2\nfixed die\n", "   111 111         0        12\n"]
     out += ["/GRNOD/PART/11\nball\n", i10(2) + "\n"]
     out += initial_velocity_cards(1, "drop speed", (0.0, 0.0, -s.speed), 11)
+    if s.drive:  # keeps the contact closed quasi-statically: the ball or stamp pushed into the plate at its speed
+        out += ["/FUNCT/1\nconstant\n", r20(0.0) + r20(1.0) + "\n", r20(1e3 * max(s.end_time, 1.0)) + r20(1.0) + "\n"]
+        out += ["/IMPVEL/1\ndriven at the drop speed\n", i10(1) + "{:>10}".format("Z") + i10(0) + i10(0) + i10(11) + "\n",
+                r20(0.0) + r20(-s.speed) + r20(0.0) + r20(0.0) + "\n"]
     if s.press > 0.0:  # keeps the contact closed: the ball or stamp pressed onto the plate
         out += ["/GRAV/1\npressed onto the plate\n",
                 i10(0) + "{:>10}".format("Z") + i10(0) + i10(0) + i10(11) + " " * 10 + r20(1.0) + r20(-s.press) + "\n"]
@@ -460,7 +468,7 @@ def write_tube(directory, t, with_meta=True):
 
 def setup_for(family, elements=None, size=None, end_time=0.1, contact=True, ishell=24, points=5, isolid=24,
               speed=10.0, gap=0.0, penetration=0.0, inacti=0, plate_modulus_ratio=1.0, noda_cst=0.0, stamp=0.0,
-              press=0.0):
+              press=0.0, drive=False, die=False):
     """The setup of one family at a target element count or an element size [mm]."""
     if family == "tube":
         n = tube_elements_per_side(elements) if elements else max(1, int(round(50.0 / size)))
@@ -470,7 +478,7 @@ def setup_for(family, elements=None, size=None, end_time=0.1, contact=True, ishe
         h = size if size else ball_plate_element_size(elements)
         return BallPlateSetup(element_size=h, end_time=end_time, contact=contact, ishell=ishell, points=points,
                               speed=speed, penetration=penetration, inacti=inacti,
-                              plate_modulus_ratio=plate_modulus_ratio, stamp_side=stamp, press=press)
+                              plate_modulus_ratio=plate_modulus_ratio, stamp_side=stamp, press=press, drive=drive, die=die)
     if family == "brick_block":
         n = brick_block_divisions(elements) if elements else max(1, int(round(50.0 / size)))
         return BrickBlockSetup(divisions=n, end_time=end_time, isolid=isolid, speed=speed)
@@ -519,6 +527,11 @@ def parse_arguments():
     p.add_argument("--press", type=float, default=0.0,
                    help="ball_plate: a constant acceleration [mm/ms^2] pressing the ball or stamp onto the plate (/GRAV), "
                         "so that the contact stays closed (default 0: none)")
+    p.add_argument("--drive", action="store_true",
+                   help="ball_plate: the ball or stamp driven at --speed all through the run (/IMPVEL), so that the "
+                        "contact stays closed without a press (default: launched at --speed, then free)")
+    p.add_argument("--die", action="store_true",
+                   help="ball_plate: every plate node held, so that the plate is a fixed die (default: clamped edges)")
     return p.parse_args()
 
 
@@ -530,7 +543,7 @@ def main():
         sys.exit(f"generate_bench.py: --noda-cst is the tube's; {a.family} has none to set")
     ball_only = {"--penetration": a.penetration != 0.0, "--inacti": a.inacti != 0,
                  "--plate-modulus-ratio": a.plate_modulus_ratio != 1.0, "--stamp": a.stamp != 0.0,
-                 "--press": a.press != 0.0}
+                 "--press": a.press != 0.0, "--drive": a.drive, "--die": a.die}
     for option, given in ball_only.items():
         if given and a.family != "ball_plate":
             sys.exit(f"generate_bench.py: {option} is the ball_plate's; {a.family} has none to set")
@@ -541,7 +554,7 @@ def main():
                            end_time=a.end_time, contact=not a.no_contact, ishell=a.ishell, points=a.points,
                            isolid=a.isolid, speed=a.speed, gap=a.gap, penetration=a.penetration, inacti=a.inacti,
                            plate_modulus_ratio=a.plate_modulus_ratio, noda_cst=a.noda_cst, stamp=a.stamp,
-                           press=a.press)
+                           press=a.press, drive=a.drive, die=a.die)
     counts = json.loads(starter.with_name(starter.name.replace("_0000.rad", ".bench.json")).read_text())["counts"]
     print(f"wrote {starter}: " + ", ".join(f"{k} {v}" for k, v in counts.items()))
 

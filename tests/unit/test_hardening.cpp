@@ -148,7 +148,8 @@ TEST(Hardening, SeriesCarriedOverManyCyclesStaysOnThePower) {
   // A term carried from cycle to cycle by the series only, 10^5 plastic increments of up to 1 % of the strain:
   // its round-off walks, but stays within 1e-13 of b eps^n (measured: 1.6e-14, a random walk of about an ulp a cycle).
   const std::vector<Function> none;
-  const auto h = Hardening::of(johnson_cook(0, 0.0), none);
+  const Material m = johnson_cook(0, 0.0);  // Hardening keeps a pointer to its parameters
+  const auto h = Hardening::of(m, none);
   double eps = 1e-4, term = h.hardening_term(eps);
   double worst = 0.0;
   for (int cycle = 0; cycle < 100000; ++cycle) {
