@@ -123,9 +123,10 @@ std::vector<std::string> apply_accuracy_preset(AccuracyPreset preset, Model& mod
 }
 
 std::vector<std::string> precision_approximations() {
-  if (std::string(kPrecision) == "double") return {};
-  return {fmt::format("precision {}: the integration points' stresses, plastic strains and strain rates are stored in "
-                      "single precision (docs/theory/precision.md); coordinates, velocities, forces and energies in double",
+  if (!kMixedPrecision) return {};
+  return {fmt::format("precision {}: the integration points' stresses, plastic strains, strain rates and kept "
+                      "hardening terms are stored in single precision (docs/theory/precision.md); coordinates, "
+                      "velocities, forces and energies in double",
                       kPrecision)};
 }
 

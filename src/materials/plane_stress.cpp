@@ -14,7 +14,7 @@ namespace {
 // back, so the mixed build takes a fresh power (eq. PR-2).
 double term_to_keep(const Hardening& hardening, const Hardening::KeptTerm* near, double eps_new,
                     const double* evaluated) {
-  if constexpr (sizeof(point_real) < sizeof(double)) return hardening.hardening_term(eps_new);
+  if constexpr (kMixedPrecision) return hardening.hardening_term(eps_new);
   if (evaluated != nullptr) return *evaluated;
   return near != nullptr ? hardening.term_near(*near, eps_new) : hardening.hardening_term(eps_new);
 }

@@ -56,7 +56,7 @@ TEST(Hardening, RateFilterIsAFirstOrderLowPass) {
 // The kept term follows b eps_p^n of the current strain: in double by the series (eq. JC-2), whose round-off walks
 // about an ulp a plastic cycle, so 1e-13 bounds it over these few thousand cycles with a margin of 10; in the
 // mixed build, stored in single, to a float's rounding (eq. PR-2).
-constexpr double kKeptTermTolerance = sizeof(point_real) < sizeof(double) ? 1e-7 : 1e-13;
+constexpr double kKeptTermTolerance = kMixedPrecision ? 1e-7 : 1e-13;
 // Stresses and strains from the series' terms against the powers': the Newton iteration stops at a residual of
 // 1e-12 of the yield stress, and both follow the same path to within the terms' round-off.
 constexpr double kReturnTolerance = 1e-12;

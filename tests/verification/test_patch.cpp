@@ -22,7 +22,7 @@ namespace {
 
 // Relative round-off of one step: a few hundred ulps of double; in the mixed build the point stresses are rounded
 // to single when stored (docs/theory/precision.md, eq. PR-2), a few ulps of single.
-constexpr double kRoundOff = sizeof(point_real) == sizeof(double) ? 1e-12 : 1e-6;
+constexpr double kRoundOff = kMixedPrecision ? 1e-6 : 1e-12;
 
 constexpr double kYoung = 1.0e6, kNu = 0.25, kRho = 1.0, kThickness = 0.001;
 
@@ -301,7 +301,7 @@ TEST_P(PatchTest, MembranePatchThroughTheSolver) {
   // of about u sqrt(N) of the stress (u = 2^-24, N cycles; bound 4 u sqrt(N), 1.6e-5 here), and the interior nodes
   // feel their elements' different round-off as a force, 3e-4 to 5e-4 of this 1e-7 strain patch's velocity field
   // (3e-7 m/s) by the end, measured (PR-3). Positions keep their double accuracy.
-  const bool mixed = sizeof(point_real) != sizeof(double);
+  const bool mixed = kMixedPrecision;
   const double u = 0x1p-24, cycles = static_cast<double>(run.summary.cycles);
   EXPECT_LT(worst_velocity, mixed ? 1e-3 : 1e-7) << "interior nodes were accelerated: the patch is not in equilibrium";
   EXPECT_LT(worst_position, 1e-5) << "interior nodes left the linear field";

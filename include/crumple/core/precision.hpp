@@ -9,11 +9,11 @@ namespace crumple {
 
 #if defined(CRUMPLE_MIXED_PRECISION)
 using point_real = float;  // an integration point's stored state
-inline constexpr const char* kPrecision = "mixed";
 #else
 using point_real = double;
-inline constexpr const char* kPrecision = "double";
 #endif
+inline constexpr bool kMixedPrecision = sizeof(point_real) < sizeof(double);
+inline constexpr const char* kPrecision = kMixedPrecision ? "mixed" : "double";
 
 // A point value rounded to what is stored (eq. PR-2): explicit, so that the narrowing shows in the kernels.
 constexpr point_real stored(double value) { return static_cast<point_real>(value); }

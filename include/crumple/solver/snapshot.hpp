@@ -126,7 +126,8 @@ void visit_histories(V& v, HistoryIntegrals& h) {
 }  // namespace snapshot_detail
 
 // Calls v(name, field) for every field of the snapshot: std::vector<T>, std::array<T, N> and scalars (double,
-// int32, int, long long, bool); the integration points' state is std::vector<point_real> (float in the mixed build). Names are paths ("nodes/vx", "bodies/0/omega").
+// int32, int, long long, bool); the integration points' state is std::vector<point_real> (float in the mixed
+// build). Names are paths ("nodes/vx", "bodies/0/omega").
 template <class V>
 void visit_state(V& v, SolverState& s, ResumeMarks& marks) {
   using namespace snapshot_detail;
