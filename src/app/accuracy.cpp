@@ -44,6 +44,16 @@ void remove_mass_scaling(RunControl& run, const std::string& where, std::vector<
   }
 }
 
+// fine: TYPE7 nodes closing in count K0 in the step kFineContactEntryWindow steps before they enter the gap.
+void anticipate_contact_entry(const Model& model, RunControl& run, const std::string& where,
+                              std::vector<std::string>& changes) {
+  if (model.type7_interfaces.empty() || run.contact_entry_window >= kFineContactEntryWindow) return;
+  changes.push_back(fmt::format("TYPE7 contact steps count K0 from {} steps before a node enters the gap (standard: "
+                                "from the cycle it is in the gap){}",
+                                kFineContactEntryWindow, where));
+  run.contact_entry_window = kFineContactEntryWindow;
+}
+
 // The unscaled step below which `share` of the elements lie, on the initial geometry (T-1).
 double element_step_quantile(const Model& m, double share) {
   std::vector<double> steps;
@@ -112,6 +122,7 @@ std::vector<std::string> apply_accuracy_preset(AccuracyPreset preset, Model& mod
     if (preset == AccuracyPreset::Fine) {
       cap_step_scales(*runs[k], where, changes);
       remove_mass_scaling(*runs[k], where, changes);
+      anticipate_contact_entry(model, *runs[k], where, changes);
     } else {
       scale_smallest_elements(model, *runs[k], where, changes);
     }

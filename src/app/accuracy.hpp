@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "crumple/contact/kernels.hpp"
 #include "crumple/model/model.hpp"
 #include "crumple/model/run_control.hpp"
 
@@ -20,6 +21,7 @@ const char* accuracy_preset_name(AccuracyPreset preset);
 inline constexpr double kFineStepScale = 0.6;       // fine: every /DT scale at most this
 inline constexpr int kFineShellPoints = 5;          // fine: shells with 1 to 4 points get 5 (N = 0 stays resultant)
 inline constexpr int kDraftShellPoints = 3;         // draft: shells with more points get 3
+inline constexpr int kFineContactEntryWindow = contact::kAnticipatedEntrySteps;  // fine: TYPE7 entry anticipated
 inline constexpr double kDraftMassScaledShare = 0.01;  // draft: /DT/NODA/CST up to the step of the elements'
                                                        // 1st percentile at the start (the smallest 1 % are mass
                                                        // scaled, and no step falls below it as the mesh deforms)

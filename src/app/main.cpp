@@ -57,7 +57,8 @@ int main(int argc, char** argv) {
   run->add_option("--accuracy", accuracy,
                   "Speed-accuracy preset: draft (3 shell points, mass scaling up to the step of the 1 % smallest "
                   "elements at the start), standard (the deck as written, the default) or fine (step scale 0.6, no "
-                  "added mass, 5 shell points); every change is listed (docs/performance.md)")
+                  "added mass, 5 shell points, contact steps that anticipate a node's entry into the gap); every "
+                  "change is listed (docs/performance.md)")
       ->check(CLI::IsMember({"draft", "standard", "fine"}));
   run->add_option("--restart", run_options.restart,
                   "Resume from a restart file (NAME.rst, written with /RFILE or when a run is stopped)");

@@ -119,6 +119,7 @@ struct InterfaceCycle {
 
 struct PassSettings {
   double time, dt_previous, dt_estimate, scale, release_step, mass_step;
+  double entry_window;  // RunControl::contact_entry_window [steps]
   double speed = 0.0;  // the interface's largest nodal speed this pass [L/T]
 };
 
@@ -214,14 +215,23 @@ void compute_pairs(ContactState& c, ContactInterface& in, const NodalState& node
         forget();
         const double approach = scale * kinematic_step(g, p, penetration_rate);
         if (!(ps.release_step > 0.0 && approach < ps.release_step)) out.step.consider(approach, q);
-        // A node within three steps of its normal motion of the gap may enter it within the next steps (or turn
-        // back into it as it leaves) and meet the penalty's initial stiffness K0: its first force acts over the
-        // mean of that step and the one before, so both must already be stable for K0, and the entry is better
-        // resolved with a step of margin (eq. C-11). A node at rest near the gap does not count.
-        if (d - g < 3.0 * std::abs(penetration_rate) * dt_estimate) {
+        // With an entry window (`--accuracy fine`), a node within that many steps of its normal motion of the gap
+        // may enter it within the next steps (or turn back into it as it leaves) and meets the penalty's initial
+        // stiffness K0: its first force acts over the mean of that step and the one before, so both are made
+        // stable for K0 and the entry is resolved with a step of margin (eq. C-11). Without (the deck as written,
+        // as the reference solver), the node counts its stiffness from the cycle it is in the gap, unless
+        // /DT/INTER/CST will mass scale it there: its added mass must be in place before its first force, so
+        // its K0 is kept aside and taken where it would need mass (node_steps, C-11c). A node at rest near the gap
+        // never counts.
+        const double window = ps.entry_window > 0.0 ? ps.entry_window : ps.mass_step > 0.0 ? kAnticipatedEntrySteps : 0.0;
+        if (window > 0.0 && d - g < window * std::abs(penetration_rate) * dt_estimate) {
           if (in.node_touched[i] == 0) in.node_touched[i] = 1, in.touched_list.push_back(static_cast<std::int32_t>(i));
-          in.node_tangent_sum[i] += in.pair_stiffness(i, s);
-          if (ps.mass_step > 0.0) in.node_reach_stiffness[i] += in.pair_stiffness(i, s);
+          if (ps.entry_window > 0.0) {
+            in.node_tangent_sum[i] += in.pair_stiffness(i, s);
+            if (ps.mass_step > 0.0) in.node_reach_stiffness[i] += in.pair_stiffness(i, s);
+          } else {
+            in.node_entry_stiffness[i] += in.pair_stiffness(i, s);
+          }
         }
         continue;
       }
@@ -325,8 +335,16 @@ void node_steps(ContactState& c, ContactInterface& in, NodalState& nodes, const 
     // A node carried by a rigid body: the springs act on the body's mass, its elements are not computed.
     const double body_mass = c.rigid_body_mass.empty() ? 0.0 : c.rigid_body_mass[n];
     const double element = body_mass > 0.0 ? 0.0 : in.node_element_stiffness[ui];
-    const double stiffness = in.node_tangent_sum[ui] + element;
+    double stiffness = in.node_tangent_sum[ui] + element;
     const double viscosity = in.node_friction_viscosity[ui];
+    // Pairs about to enter (/DT/INTER/CST without an entry window): anticipated where their K0 needs mass, and
+    // still once it was added, which brought that step up to the minimum (to rounding: the 1e-6).
+    const double entry = in.node_entry_stiffness[ui];
+    if (entry > 0.0 && scaled_stiffness_step(body_mass > 0.0 ? body_mass : nodes.mass[n], stiffness + entry,
+                                             viscosity, viss, ps.scale) < ps.mass_step * (1.0 + 1e-6)) {
+      stiffness += entry;
+      in.node_reach_stiffness[ui] += entry;
+    }
     double node_step = scaled_stiffness_step(body_mass > 0.0 ? body_mass : nodes.mass[n], stiffness, viscosity,
                                              viss, ps.scale);
     if (ps.mass_step > 0.0 && node_step < ps.mass_step) {
@@ -462,8 +480,13 @@ ContactStep contact_forces(const Model& m, ContactState& c, NodalState& nodes, d
   }
   c.touched.clear();
   const RunControl& rc = m.run;
-  const PassSettings settings{time, dt_previous, dt_estimate, scale, 0.0,
-                              rc.dt_inter_cst.given ? rc.dt_inter_cst.minimum : 0.0};
+  const PassSettings settings{time,
+                              dt_previous,
+                              dt_estimate,
+                              scale,
+                              0.0,
+                              rc.dt_inter_cst.given ? rc.dt_inter_cst.minimum : 0.0,
+                              static_cast<double>(rc.contact_entry_window)};
   for (std::size_t f = 0; f < c.interfaces.size(); ++f) {
     ContactInterface& in = c.interfaces[f];
     InterfaceResult& res = c.results[f];
@@ -501,6 +524,7 @@ ContactStep contact_forces(const Model& m, ContactState& c, NodalState& nodes, d
       in.node_touched[static_cast<std::size_t>(i)] = 0;
       in.node_tangent_sum[static_cast<std::size_t>(i)] = 0.0;
       in.node_reach_stiffness[static_cast<std::size_t>(i)] = 0.0;
+      in.node_entry_stiffness[static_cast<std::size_t>(i)] = 0.0;
       in.node_friction_viscosity[static_cast<std::size_t>(i)] = 0.0;
     }
     in.touched_list.clear();

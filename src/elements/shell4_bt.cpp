@@ -46,6 +46,31 @@ double hourglass_yield_stress(const ShellGroupParameters& p, const ShellState& s
   return p.hardening.yield(eps_p, state.eps_rate[first]);
 }
 
+// The rotation modes of the one-point quadrilateral (Ishell 1 to 3) have no stiffness, only moments recomputed each
+// cycle from the nodes' rotation rates tx, ty about the element axes, on g = 4 gamma (h for a parallelogram) so
+// that a linear rotation field (constant curvature) is not resisted: Ishell 1, 2 quadratic (eqs. S-19, S-20),
+// Ishell 3 linear and quadratic (eq. S-18b). Sets each node's moments, returns their work over dt.
+double rotation_mode_moments(const ShellGroupParameters& p, const double (&gamma)[4], const double (&tx)[4],
+                             const double (&ty)[4], double t, double area, double dt, double (&moment_x)[4],
+                             double (&moment_y)[4]) {
+  const double inertia = shell_node_rotational_inertia(p.density * t * area, t, area, 4);
+  double g_norm = 0.0, q[2] = {0.0, 0.0};
+  for (int a = 0; a < 4; ++a) {
+    const double g = 4.0 * gamma[a];
+    g_norm += g * g;
+    q[0] += g * tx[a], q[1] += g * ty[a];
+  }
+  double moment[2];
+  for (int r = 0; r < 2; ++r) {
+    using namespace shell_hourglass;
+    moment[r] = p.elastoplastic_hourglass
+                    ? viscous_rotation_moment(p.hr, p.density, p.young, t, area, q[r], inertia, g_norm, dt)
+                    : rotation_damping_moment(p.hr, p.density, t, area, q[r], inertia, g_norm, dt);
+  }
+  for (int a = 0; a < 4; ++a) moment_x[a] = 4.0 * gamma[a] * moment[0], moment_y[a] = 4.0 * gamma[a] * moment[1];
+  return (moment[0] * q[0] + moment[1] * q[1]) * dt;
+}
+
 // One kernel for the 4-node Belytschko-Tsay shell and the 3-node C0 triangle (docs/theory/shell4.md,
 // shell3 section): they differ in the element frame, the gradient operator and the hourglass modes only.
 template <int NN>
@@ -180,7 +205,8 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
     double* hq = nullptr;
     double damping[5] = {0, 0, 0, 0, 0};                  // viscous hourglass forces of the cycle (Ishell 24)
     double shear_moment_x[NN] = {}, shear_moment_y[NN] = {};  // rotation coefficients of the shear mode (eq. S-13)
-    double rotation_damping_x[NN] = {}, rotation_damping_y[NN] = {};  // Ishell 1, 2 rotation modes (eq. S-19)
+    double rotation_damping_x[NN] = {}, rotation_damping_y[NN] = {};  // Ishell 1 to 3 rotation modes (S-18b, S-19)
+    double warping = 0.0;  // Ishell 3: warping height W of eq. S-18a [L]
     double hourglass_work = 0.0;
     if constexpr (NN == 4) {
       shell_hourglass::hourglass_vector(lx, ly, b1, b2, p.orthogonal_hourglass, gamma);
@@ -193,6 +219,14 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
         rates[2] += gamma[a] * vz[a];
         rates[3] += gamma[a] * tx[a];
         rates[4] += gamma[a] * ty[a];
+      }
+      if (p.elastoplastic_hourglass) {
+        // Ishell 3 (eq. S-18a): the in-plane motion a rigid rotation gives the nodes of a warped element is no
+        // membrane hourglass rate; the forces take the matching transverse part (below).
+        double z[4], slope_x = 0.0, slope_y = 0.0;  // nodes' heights off the frame plane [L]; dvz/dx, dvz/dy [T^-1]
+        for (int a = 0; a < 4; ++a) z[a] = dot(x[a] - centre, e3), slope_x += b1[a] * vz[a], slope_y += b2[a] * vz[a];
+        warping = shell_hourglass::warping_height(gamma, z);
+        rates[0] += warping * slope_x, rates[1] += warping * slope_y;
       }
       hq = &state.hourglass[ue * 5];
       if (p.physical_hourglass) {
@@ -224,40 +258,23 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
         for (int a = 0; a < 4; ++a) shear_moment_x[a] = cx[a], shear_moment_y[a] = cy[a];
       } else {
         // Each coefficient is the fraction of the element's own stiffness for the matching deformation:
-        // membrane E t A |B|^2, bending D A |B|^4 for the transverse mode and D A |B|^2 for the rotation modes;
-        // Ishell 1 and 2 damp their rotation modes instead (eq. S-19, below).
+        // membrane E t A |B|^2, bending D A |B|^4 for the transverse mode; the rotation modes have none (below).
         const double plate = E * t * t * t / 12.0;
         const double membrane = p.hm * E * t * area * bb;
         const double bending = p.hf * plate * area * bb * bb;
-        const double rotation = p.viscous_rotation_hourglass ? 0.0 : p.hr * plate * area * bb;
-        const double stiffness[5] = {membrane, membrane, bending, rotation, rotation};
+        const double stiffness[3] = {membrane, membrane, bending};
         // Ishell 3 (eq. S-18): the membrane and transverse modes carry at most what the section's yield stress
         // allows.
         const double limit = p.elastoplastic_hourglass ? hourglass_yield_stress(p, state, first) : 0.0;
-        const double cap[5] = {2.0 * p.hm * limit * t * std::sqrt(area), 2.0 * p.hm * limit * t * std::sqrt(area),
-                               p.hf * limit * t * t, 0.0, 0.0};
-        for (int m = 0; m < 5; ++m) {
+        const double cap[3] = {2.0 * p.hm * limit * t * std::sqrt(area), 2.0 * p.hm * limit * t * std::sqrt(area),
+                               p.hf * limit * t * t};
+        for (int m = 0; m < 3; ++m) {
           const double old = hq[m];
           hq[m] += stiffness[m] * rates[m] * dt;
           if (cap[m] > 0.0) hq[m] = std::clamp(hq[m], -cap[m], cap[m]);
           hourglass_work += 0.5 * (old + hq[m]) * rates[m] * dt;
         }
-        if (p.viscous_rotation_hourglass) {
-          // Ishell 1, 2 (eqs. S-19, S-20): the reference's hr damps the rotation modes, on g = 4 gamma (h for a
-          // parallelogram), so that a linear rotation field (constant curvature) is not resisted.
-          const double inertia = shell_node_rotational_inertia(p.density * t * area, t, area, 4);
-          double q_rotation[2] = {0.0, 0.0}, g_norm = 0.0;
-          for (int a = 0; a < 4; ++a) {
-            q_rotation[0] += 4.0 * gamma[a] * tx[a], q_rotation[1] += 4.0 * gamma[a] * ty[a];
-            g_norm += 16.0 * gamma[a] * gamma[a];
-          }
-          double moment[2];
-          for (int r = 0; r < 2; ++r)
-            moment[r] = shell_hourglass::rotation_damping_moment(p.hr, p.density, t, area, q_rotation[r], inertia, g_norm, dt);
-          hourglass_work += (moment[0] * q_rotation[0] + moment[1] * q_rotation[1]) * dt;
-          for (int a = 0; a < 4; ++a)
-            rotation_damping_x[a] = 4.0 * gamma[a] * moment[0], rotation_damping_y[a] = 4.0 * gamma[a] * moment[1];
-        }
+        hourglass_work += rotation_mode_moments(p, gamma, tx, ty, t, area, dt, rotation_damping_x, rotation_damping_y);
       }
     }
 
@@ -271,7 +288,8 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
       if constexpr (NN == 4) {
         const double q[5] = {hq[0] + damping[0], hq[1] + damping[1], hq[2] + damping[2], hq[3] + damping[3],
                              hq[4] + damping[4]};
-        fx += gamma[a] * q[0], fy += gamma[a] * q[1], fz += gamma[a] * q[2];
+        fx += gamma[a] * q[0], fy += gamma[a] * q[1];
+        fz += gamma[a] * q[2] + warping * (b1[a] * q[0] + b2[a] * q[1]);  // eq. S-18a's transverse part
         mx += gamma[a] * q[3] + shear_moment_x[a] * q[2] + rotation_damping_x[a];
         my += gamma[a] * q[4] + shear_moment_y[a] * q[2] + rotation_damping_y[a];
       }

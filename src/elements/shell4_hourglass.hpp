@@ -1,9 +1,11 @@
 #pragma once
 // Physical hourglass stabilisation of the one-point 4-node shell, Ishell 24 (docs/theory/shell4.md, "Physical
-// stabilisation", eqs. S-10 to S-14), and the damped rotation modes of Ishell 1 and 2 (eqs. S-19, S-20). Plain
-// functions over one element's local data, used by the shell kernel.
+// stabilisation", eqs. S-10 to S-14), the damped rotation modes of Ishell 1 and 2 (eqs. S-19, S-20), and the
+// warping-free rates and viscous rotation modes of Ishell 3 (eqs. S-18a, S-18b). Plain functions over one
+// element's local data, used by the shell kernel.
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace crumple::shell_hourglass {
 
@@ -22,6 +24,27 @@ inline double rotation_damping_moment(double hr, double density, double thicknes
   if (!(dt > 0.0)) return viscous;
   const double limit = inertia * std::abs(q) / (g_norm * dt);
   return std::clamp(viscous, -limit, limit);
+}
+
+// Moment of a rotation hourglass mode of Ishell 3 for its rate q = sum_a g_a theta_a [T^-1], g = 4 gamma as in S-19
+// (eq. S-18b): purely viscous, nothing stored, q (c_l + c_q |q|) with c_l = sqrt(hr) rho t^2 A c / (32 sqrt 3),
+// c = sqrt(E / rho) the bar speed, and c_q = 100 hr rho t^2 A / (32 sqrt 3) in the deck's working units, as the
+// reference solver takes them. Node a gets g_a times it. Capped as S-19 (eq. S-20, g_norm = |g|^2).
+inline double viscous_rotation_moment(double hr, double density, double young, double thickness, double area,
+                                      double q, double inertia, double g_norm, double dt) {
+  const double scale = density * thickness * thickness * area / (32.0 * std::numbers::sqrt3);  // rho t^2 A / (32 sqrt 3)
+  const double linear = std::sqrt(hr) * scale * std::sqrt(young / density), quadratic = 100.0 * hr * scale;
+  const double viscous = q * (linear + quadratic * std::abs(q));
+  if (!(dt > 0.0)) return viscous;
+  const double limit = inertia * std::abs(q) / (g_norm * dt);
+  return std::clamp(viscous, -limit, limit);
+}
+
+// Warping height W = sum_a gamma_a z_a of a quadrilateral whose nodes stand z_a off its frame plane (eq. S-18a):
+// a rigid rotation of the element about its in-plane axes moves its nodes in the plane by the rotation times z_a,
+// which gamma reads as a membrane hourglass rate W dvz/dx (W dvz/dy) unless it is taken off.
+inline double warping_height(const double gamma[4], const double z[4]) {
+  return gamma[0] * z[0] + gamma[1] * z[1] + gamma[2] * z[2] + gamma[3] * z[3];
 }
 
 // The hourglass vector gamma of a quadrilateral (eq. S-5), from its local node coordinates and gradient operator

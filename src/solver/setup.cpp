@@ -74,7 +74,6 @@ void setup_shells(const Model& m, SolverState& s, ElementKind kind) {
     // Ismstr 1 (small strain from t = 0, eq. S-15).
     p.orthogonal_hourglass = f.ishell != 2 && !(f.ishell == 1 && f.ismstr == 1);
     p.elastoplastic_hourglass = f.ishell == 3;
-    p.viscous_rotation_hourglass = f.ishell == 1 || f.ishell == 2;  // hr damps the rotation modes (eq. S-19)
     // N = 0: stress-resultant (global) plasticity, one membrane point plus the element's bending stress.
     const int np = f.n_points == 0 ? 1 : f.n_points;
     p.resultant_plasticity = f.n_points == 0;
@@ -205,7 +204,7 @@ void rebind_domain(const Model& m, SolverState& s, Domain domain) {
   for (ContactInterface& in : s.contact.interfaces) {
     in.divided = false;
     std::fill(in.node_touched.begin(), in.node_touched.end(), 0);
-    for (auto* v : {&in.node_tangent_sum, &in.node_reach_stiffness, &in.node_friction_viscosity})
+    for (auto* v : {&in.node_tangent_sum, &in.node_reach_stiffness, &in.node_entry_stiffness, &in.node_friction_viscosity})
       std::fill(v->begin(), v->end(), 0.0);
     in.touched_list.clear();
   }

@@ -53,7 +53,6 @@ struct Element {
     p.fully_integrated = false;
     p.orthogonal_hourglass = ishell != 2;
     p.elastoplastic_hourglass = ishell == 3;
-    p.viscous_rotation_hourglass = ishell == 1 || ishell == 2;
     p.hm = p.hr = ishell == 3 ? 0.1 : 0.01;
     p.hf = 0.01;
     state.resize_points(static_cast<std::size_t>(p.points));

@@ -113,6 +113,22 @@ TEST(AccuracyPreset, DraftKeepsADeckThatMassScalesFurther) {
   EXPECT_DOUBLE_EQ(r.deck.model.run.dt_nodal_cst.minimum, 1.0);
 }
 
+// fine also counts K0 in the TYPE7 steps three steps before a node enters the gap (docs/theory/contact.md, C-11);
+// a deck without contact is not told about it, and the deck as written keeps the reference's rule.
+TEST(AccuracyPreset, FineAnticipatesContactEntryWhenThereIsContact) {
+  Read plain(strip(4, 3, false), kEngine);
+  EXPECT_FALSE(any_contains(plain.apply(app::AccuracyPreset::Fine), "TYPE7"));
+  EXPECT_EQ(plain.deck.model.run.contact_entry_window, 0);
+  const std::string contact = "/GRNOD/NODE/10\nnodes\n" + I(1) + I(2) + "\n/SURF/PART/20\nsurface\n" + I(1) +
+                              "\n/INTER/TYPE7/5\ncontact\n" + I(10) + I(20) + "\n\n\n\n       000\n\n";
+  Read standard(strip(4, 3, false) + contact, kEngine);
+  EXPECT_TRUE(standard.apply(app::AccuracyPreset::Standard).empty());
+  EXPECT_EQ(standard.deck.model.run.contact_entry_window, 0);
+  Read fine(strip(4, 3, false) + contact, kEngine);
+  EXPECT_TRUE(any_contains(fine.apply(app::AccuracyPreset::Fine), "TYPE7 contact steps count K0 from 3 steps"));
+  EXPECT_EQ(fine.deck.model.run.contact_entry_window, app::kFineContactEntryWindow);
+}
+
 TEST(AccuracyPreset, NamesAreTheThreePresets) {
   EXPECT_EQ(app::accuracy_preset("draft"), app::AccuracyPreset::Draft);
   EXPECT_EQ(app::accuracy_preset("fine"), app::AccuracyPreset::Fine);

@@ -192,7 +192,8 @@ struct TwoSegments {
     ContactInterface in;
     in.secondary_nodes = {6};
     in.node_gap = {0.0}, in.gap_reduction = {0.0}, in.gap_clearance = {0.0}, in.node_active = {1}, in.node_touched = {0}, in.node_impacted = {0};
-    in.node_tangent_sum = {0.0}, in.node_reach_stiffness = {0.0}, in.node_friction_viscosity = {0.0}, in.node_element_stiffness = {0.0};
+    in.node_tangent_sum = {0.0}, in.node_reach_stiffness = {0.0}, in.node_entry_stiffness = {0.0};
+    in.node_friction_viscosity = {0.0}, in.node_element_stiffness = {0.0};
     in.segments = {{0, 1, 4, 3}, {1, 2, 5, 4}};
     in.segment_gap = {0.1, 0.1}, in.segment_stiffness = {1000.0, 1000.0};
     in.segment_active = {1, 1}, in.segment_owner = {-1, -1}, in.segment_owner_kind = {0, 0};
@@ -305,7 +306,7 @@ TEST(ContactPass, PairSumsDoNotCancelWhereTheForcesDo) {
   ContactInterface& in = s.contact.interfaces[0];
   in.secondary_nodes = {6, 7};
   for (auto* v : {&in.node_gap, &in.gap_reduction, &in.gap_clearance, &in.node_tangent_sum, &in.node_reach_stiffness,
-                  &in.node_friction_viscosity, &in.node_element_stiffness})
+                  &in.node_entry_stiffness, &in.node_friction_viscosity, &in.node_element_stiffness})
     v->assign(2, 0.0);
   in.node_active = {1, 1}, in.node_touched = {0, 0}, in.node_impacted = {0, 0};
   in.friction = true, in.friction_law.fric = 0.2, in.friction_damping = 1e3, in.friction_form = 1;

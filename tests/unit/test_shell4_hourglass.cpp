@@ -1,6 +1,7 @@
-// Hourglass treatments of the one-point 4-node shell (docs/theory/shell4.md, S-5, S-17, S-18): Ishell 1
+// Hourglass treatments of the one-point 4-node shell (docs/theory/shell4.md, S-5, S-17 to S-20): Ishell 1
 // orthogonalises the hourglass vector against the linear fields, Ishell 2 does not, Ishell 3 limits the hourglass
-// stresses by the yield stress of the section.
+// stresses by the yield stress of the section, takes the rigid rotation of a warped element off its rates and
+// damps its rotation modes viscously.
 #include "elements/shell4_hourglass.hpp"  // kRotationHourglassViscosity (eq. S-19)
 #include "shell4_element.hpp"
 
@@ -69,7 +70,7 @@ TEST(Shell4Hourglass, Ishell2ResistsTheHourglassModeAsIshell1) {
 // rho = 7800, hr = 0.01) has the rate q = h . theta = 4 omega and gets at each node h_a M about the local x axis,
 // M = C hr rho t^2 A q^2 = 0.9021 * 0.01 * 7800 * 1e-4 * 0.02 * 16 = 2.2517e-3 for omega = 1; nothing is stored, so the
 // mode at rest again carries no moment (an elastic stiffness would hold a restoring one), and the work of the
-// moments, M q dt, is hourglass energy. The other rotation axis and Ishell 3, which keeps its stiffness, for contrast.
+// moments, M q dt, is hourglass energy. The other rotation axis too.
 TEST(Shell4Hourglass, Ishell1And2DampTheirRotationModes) {
   constexpr double h[4] = {1, -1, 1, -1};
   const double t = 0.01, area = 0.02, dt = 1e-6;
@@ -100,12 +101,84 @@ TEST(Shell4Hourglass, Ishell1And2DampTheirRotationModes) {
       }
     }
   }
-  Element stiff(kRectangle, t, 3);
-  stiff.one_point(3);
-  stiff.p.zeta = stiff.zeta, stiff.p.membrane_weight = stiff.wn, stiff.p.bending_weight = stiff.wb;
-  for (std::size_t k = 0; k < 4; ++k) stiff.nodes.wx[k] = h[k];
-  shell4_forces(stiff.table, stiff.group, stiff.p, stiff.nodes, stiff.state, dt);
-  EXPECT_NE(stiff.state.hourglass[3], 0.0) << "Ishell 3 keeps the elastic rotation stiffness of S-5";
+}
+
+// Ishell 3's rotation modes are purely viscous, linear and quadratic in the rate, as the reference solver's
+// (eq. S-18b): the mode theta_x = h omega (omega = 1) on the 0.2 x 0.1 rectangle (t = 0.01, rho = 7800, E = 2e11,
+// hr = 0.1) has q = 4 and gets h_a M at node a with M = q (c_l + c_q |q|), rho t^2 A / (32 sqrt 3) = 2.81458e-4,
+// c_l = sqrt(0.1) 2.81458e-4 sqrt(2e11 / 7800) = 0.450693, c_q = 100 * 0.1 * 2.81458e-4 = 2.81458e-3: M = 1.847806.
+// Nothing is stored, the mode at rest carries no moment, the work M q dt is hourglass energy; a linear rotation
+// field (constant curvature) has h . theta = 0 on the rectangle and no hourglass moment.
+TEST(Shell4Hourglass, Ishell3RotationModesAreViscous) {
+  constexpr double h[4] = {1, -1, 1, -1};
+  const double dt = 1e-6, expected = 1.847806;
+  for (const int axis : {0, 1}) {
+    Element el(kRectangle, 0.01, 3);
+    el.one_point(3);
+    el.p.zeta = el.zeta, el.p.membrane_weight = el.wn, el.p.bending_weight = el.wb;
+    for (std::size_t k = 0; k < 4; ++k) (axis == 0 ? el.nodes.wx : el.nodes.wy)[k] = h[k];
+    const GroupStepResult moving = shell4_forces(el.table, el.group, el.p, el.nodes, el.state, dt);
+    for (std::size_t k = 0; k < 4; ++k)
+      EXPECT_NEAR(-(axis == 0 ? el.nodes.mx : el.nodes.my)[k], h[k] * expected, 1e-5 * expected) << "node " << k;
+    EXPECT_NEAR(moving.hourglass_energy, expected * 4.0 * dt, 1e-5 * expected * 4.0 * dt);
+    EXPECT_EQ(el.state.hourglass[3 + static_cast<std::size_t>(axis)], 0.0);
+    el.nodes.clear_forces();
+    for (std::size_t k = 0; k < 4; ++k) el.nodes.wx[k] = el.nodes.wy[k] = 0.0;
+    shell4_forces(el.table, el.group, el.p, el.nodes, el.state, dt);
+    for (std::size_t k = 0; k < 4; ++k) EXPECT_EQ((axis == 0 ? el.nodes.mx : el.nodes.my)[k], 0.0);
+  }
+  Element bent(kRectangle, 0.01, 3);
+  bent.one_point(3);
+  bent.p.zeta = bent.zeta, bent.p.membrane_weight = bent.wn, bent.p.bending_weight = bent.wb;
+  for (std::size_t k = 0; k < 4; ++k) bent.nodes.wy[k] = 2.0 * bent.nodes.x[k] + 0.5;
+  EXPECT_EQ(shell4_forces(bent.table, bent.group, bent.p, bent.nodes, bent.state, dt).hourglass_energy, 0.0);
+}
+
+// A rigid rotation of a warped element (corners 6 mm off its mean plane) about in-plane axes moves its corners in
+// the plane by the rotation times their heights, a membrane hourglass pattern: Ishell 1 reads it as hourglass
+// deformation and pushes back; Ishell 3 takes it off the rates (eq. S-18a) and, like the element's strains, sees
+// nothing. Its hourglass forces on a warped element are self-equilibrated, moments included, for any motion.
+TEST(Shell4Hourglass, Ishell3IgnoresTheRigidRotationOfAWarpedElement) {
+  const double omega[3] = {1.0, 0.5, 0.0}, dt = 1e-6;
+  double membrane[2];
+  for (const int ishell : {1, 3}) {
+    Element el(kWarped, 0.01, 3);
+    el.one_point(ishell);
+    el.p.zeta = el.zeta, el.p.membrane_weight = el.wn, el.p.bending_weight = el.wb;
+    double centre[3] = {0, 0, 0};
+    for (std::size_t k = 0; k < 4; ++k)
+      centre[0] += el.nodes.x[k] / 4, centre[1] += el.nodes.y[k] / 4, centre[2] += el.nodes.z[k] / 4;
+    for (std::size_t k = 0; k < 4; ++k) {
+      const double r[3] = {el.nodes.x[k] - centre[0], el.nodes.y[k] - centre[1], el.nodes.z[k] - centre[2]};
+      el.nodes.vx[k] = omega[1] * r[2] - omega[2] * r[1];
+      el.nodes.vy[k] = omega[2] * r[0] - omega[0] * r[2];
+      el.nodes.vz[k] = omega[0] * r[1] - omega[1] * r[0];
+      el.nodes.wx[k] = omega[0], el.nodes.wy[k] = omega[1], el.nodes.wz[k] = omega[2];
+    }
+    shell4_forces(el.table, el.group, el.p, el.nodes, el.state, dt);
+    membrane[ishell == 1 ? 0 : 1] = std::hypot(el.state.hourglass[0], el.state.hourglass[1]);
+  }
+  EXPECT_GT(membrane[0], 1e-2) << "Ishell 1 loads its membrane hourglass modes in a rigid rotation";
+  EXPECT_LT(membrane[1], 1e-9 * membrane[0]) << "Ishell 3 does not";
+
+  Element el(kWarped, 0.01, 3);
+  el.one_point(3);
+  std::array<double, 24> u{};
+  for (std::size_t j = 0; j < 24; ++j) u[j] = std::sin(1.7 * static_cast<double>(j) + 0.3);
+  const auto f = el.response(u, 1e-4);
+  double force[3] = {0, 0, 0}, moment[3] = {0, 0, 0}, largest = 0.0;
+  for (std::size_t k = 0; k < 4; ++k) {
+    const double x[3] = {el.nodes.x[k], el.nodes.y[k], el.nodes.z[k]}, *fk = &f[6 * k], *mk = &f[6 * k + 3];
+    for (int i = 0; i < 3; ++i) force[i] += fk[i], moment[i] += mk[i], largest = std::max(largest, std::abs(fk[i]));
+    moment[0] += x[1] * fk[2] - x[2] * fk[1];
+    moment[1] += x[2] * fk[0] - x[0] * fk[2];
+    moment[2] += x[0] * fk[1] - x[1] * fk[0];
+  }
+  ASSERT_GT(largest, 0.0);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_NEAR(force[i], 0.0, 1e-12 * largest) << "force " << i;
+    EXPECT_NEAR(moment[i], 0.0, 1e-12 * largest) << "moment " << i;
+  }
 }
 
 // The damper never reverses the motion it resists (eq. S-20): at a rotation rate where C hr rho t^2 A q^2 would

@@ -32,6 +32,10 @@ inline double damping_force(double viss, double kt, double mass, double penetrat
 // Viscous friction (eq. C-9, Iform 1): the dashpot C_t = VisF sqrt(2 Kt M) on the sliding velocity [F T/L].
 inline double friction_viscosity(double visf, double kt, double mass) { return visf * std::sqrt(2.0 * kt * mass); }
 
+// Steps ahead of its entry into the gap that a node closing in counts K0 in its step when the entry is anticipated
+// (eq. C-11): with `--accuracy fine`, and for a node that /DT/INTER/CST mass scales at its entry (C-11c).
+inline constexpr int kAnticipatedEntrySteps = 3;
+
 // Interface steps (eq. C-11): kinematic 0.5 (g - p) / (dp/dt) while closing; stiffness sqrt(2 M / Kt) reduced by
 // the damping fraction xi as for a damped oscillator, (sqrt(1 + xi^2) - xi).
 inline double kinematic_step(double g, double p, double penetration_rate) {

@@ -23,8 +23,10 @@ struct ShellGroupParameters {
   bool fully_integrated = false;           // Ishell 12 (QBAT): four Gauss points, assumed shear (eqs.)
   bool physical_hourglass = false;         // Ishell 24 (QEPH): stiffness from the material, eqs. S-10 to S-14
   bool orthogonal_hourglass = true;        // false for Ishell 2: hourglass vector not orthogonalised (eq. S-17)
-  bool elastoplastic_hourglass = false;    // Ishell 3: hourglass stresses limited by the yield stress (eq. S-18)
-  bool viscous_rotation_hourglass = false; // Ishell 1, 2: rotation modes damped by hr, without stiffness (eq. S-19)
+  // Ishell 3 (eqs. S-18 to S-18b): membrane and transverse hourglass stresses limited by the yield stress, their
+  // rates free of the rigid rotation of a warped element, and purely viscous rotation modes; Ishell 1, 2 damp
+  // their rotation modes instead (eq. S-19). Neither has a rotation hourglass stiffness.
+  bool elastoplastic_hourglass = false;
   double numerical_damping = 0.015;        // dn: viscous fraction on the physical hourglass modes (eq. S-14), or
                                            // on the membrane and bending resultants of Ishell 12 (eq. Q-8)
   int points = 1;                          // through-thickness integration points (1 when resultant_plasticity)

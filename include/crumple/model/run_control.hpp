@@ -59,6 +59,9 @@ struct RunControl {
   TimeStepControl dt_nodal_cst;   // /DT/NODA/CST
   TimeStepControl dt_shell, dt_brick, dt_sh3n;
   TimeStepControl dt_inter_del, dt_inter_cst;
+  // Steps ahead of its entry into the gap that a TYPE7 node closing in counts K0 in its step (eq. C-11). 0: from
+  // the cycle it is in the gap, as the reference solver (the deck as written); 3 with `--accuracy fine`.
+  int contact_entry_window = 0;
   bool parith = true;
   bool monitor = false;
   double stop_energy_error = 0.0;      // /STOP Emax: energy error ratio (0: no limit)
