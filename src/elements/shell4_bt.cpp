@@ -63,9 +63,9 @@ double rotation_mode_moments(const ShellGroupParameters& p, const double (&gamma
   double moment[2];
   for (int r = 0; r < 2; ++r) {
     using namespace shell_hourglass;
-    moment[r] = p.elastoplastic_hourglass
-                    ? viscous_rotation_moment(p.hr, p.density, p.young, t, area, q[r], inertia, g_norm, dt)
-                    : rotation_damping_moment(p.hr, p.density, t, area, q[r], inertia, g_norm, dt);
+    const double viscous = p.elastoplastic_hourglass ? viscous_rotation_moment(p.hr, p.density, p.young, t, area, q[r])
+                                                     : rotation_damping_moment(p.hr, p.density, t, area, q[r]);
+    moment[r] = within_stopping_moment(viscous, q[r], inertia, g_norm, dt);
   }
   for (int a = 0; a < 4; ++a) moment_x[a] = 4.0 * gamma[a] * moment[0], moment_y[a] = 4.0 * gamma[a] * moment[1];
   return (moment[0] * q[0] + moment[1] * q[1]) * dt;

@@ -15,29 +15,29 @@ inline constexpr double kRotationHourglassViscosity = 25.0 / (16.0 * 1.732050807
 
 // Moment of a rotation hourglass mode of Ishell 1, 2 for its rate q = sum_a g_a theta_a [T^-1], g = 4 gamma the
 // hourglass vector of S-5 (h = (1, -1, 1, -1) when not orthogonalised) (eq. S-19): C hr rho t^2 A |q| q, given to
-// node a as g_a times it, in the deck's working units as the reference does. At most the moment that stops the
-// mode within the step dt on the element's share `inertia` of each node's rotational inertia,
-// I |q| / (|g|^2 dt) with g_norm = |g|^2 (4 for h) (eq. S-20): a damper never reverses the motion it resists.
-inline double rotation_damping_moment(double hr, double density, double thickness, double area, double q,
-                                      double inertia, double g_norm, double dt) {
-  const double viscous = kRotationHourglassViscosity * hr * density * thickness * thickness * area * std::abs(q) * q;
-  if (!(dt > 0.0)) return viscous;
-  const double limit = inertia * std::abs(q) / (g_norm * dt);
-  return std::clamp(viscous, -limit, limit);
+// node a as g_a times it, in the deck's working units as the reference does.
+inline double rotation_damping_moment(double hr, double density, double thickness, double area, double q) {
+  return kRotationHourglassViscosity * hr * density * thickness * thickness * area * std::abs(q) * q;
 }
 
 // Moment of a rotation hourglass mode of Ishell 3 for its rate q = sum_a g_a theta_a [T^-1], g = 4 gamma as in S-19
 // (eq. S-18b): purely viscous, nothing stored, q (c_l + c_q |q|) with c_l = sqrt(hr) rho t^2 A c / (32 sqrt 3),
 // c = sqrt(E / rho) the bar speed, and c_q = 100 hr rho t^2 A / (32 sqrt 3) in the deck's working units, as the
-// reference solver takes them. Node a gets g_a times it. Capped as S-19 (eq. S-20, g_norm = |g|^2).
+// reference solver takes them. Node a gets g_a times it.
 inline double viscous_rotation_moment(double hr, double density, double young, double thickness, double area,
-                                      double q, double inertia, double g_norm, double dt) {
+                                      double q) {
   const double scale = density * thickness * thickness * area / (32.0 * std::numbers::sqrt3);  // rho t^2 A / (32 sqrt 3)
   const double linear = std::sqrt(hr) * scale * std::sqrt(young / density), quadratic = 100.0 * hr * scale;
-  const double viscous = q * (linear + quadratic * std::abs(q));
-  if (!(dt > 0.0)) return viscous;
+  return q * (linear + quadratic * std::abs(q));
+}
+
+// A damper never reverses the motion it resists (eq. S-20): the moment of a rotation mode of rate q is at most the
+// one that stops the mode within the step dt on the element's share `inertia` of each node's rotational inertia,
+// I |q| / (|g|^2 dt) with g_norm = |g|^2 (4 for h).
+inline double within_stopping_moment(double moment, double q, double inertia, double g_norm, double dt) {
+  if (!(dt > 0.0)) return moment;
   const double limit = inertia * std::abs(q) / (g_norm * dt);
-  return std::clamp(viscous, -limit, limit);
+  return std::clamp(moment, -limit, limit);
 }
 
 // Warping height W = sum_a gamma_a z_a of a quadrilateral whose nodes stand z_a off its frame plane (eq. S-18a):
