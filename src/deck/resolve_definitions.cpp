@@ -161,16 +161,18 @@ void check_plasticity_algorithm(Resolver& r, const Property& p, const ResolvedFo
 
 // Flags whose effect depends on the material of a part that uses the property (docs/theory/shell4.md,
 // "Formulation flags"): membrane damping dm, the default P_thick_fail and the default Iplas.
-void check_shell_material(Resolver& r, const Property& p, const ResolvedFormulation& f, const Material& mat) {
+void check_shell_material(Resolver& r, const Property& p, const ResolvedFormulation& f, const Material& mat,
+                          const PropertyUse& use) {
   const ShellSection& s = p.shell;
   const bool tabulated = mat.law == MaterialLaw::Tabulated, plastic = mat.law != MaterialLaw::Elastic;
   const bool qeph_or_qbat = f.ishell == 12 || f.ishell == 24;
-  // dm acts with law 36 and, with any law, in Ishell 12 and 24: Crumple has no membrane damping.
-  if (s.dm != 0.0 && (tabulated || qeph_or_qbat))
+  // dm acts with law 36 and, with any law, in Ishell 12 and 24: Crumple's 4-node shells have no membrane damping.
+  // The triangles have it (docs/theory/shell4.md, eq. S-9d).
+  if (s.dm != 0.0 && use.quads && (tabulated || qeph_or_qbat))
     r.error(s.damping_where, keyword_of(p), "dm (columns 61-80)",
             "0: membrane damping (active for Ishell 12, 24 and /MAT/PLAS_TAB) is not supported by Crumple",
             fmt::format("'{}'", s.dm));
-  if (s.dm == 0.0 && tabulated && f.ishell == 24)
+  if (s.dm == 0.0 && use.quads && tabulated && f.ishell == 24)
     r.context.warn(s.damping_where, keyword_of(p),
                    "dm 0: the reference's default membrane damping for Ishell 24 with /MAT/PLAS_TAB is 1.5 %; Crumple "
                    "applies none");
@@ -228,7 +230,7 @@ void check_shell_formulations(Resolver& r) {
     if (p.kind != PropertyKind::Shell || !(use[ip].quads || use[ip].triangles) || checked[ip * m.materials.size() + im])
       continue;
     checked[ip * m.materials.size() + im] = 1;
-    check_shell_material(r, p, m.formulations[ip], m.materials[im]);
+    check_shell_material(r, p, m.formulations[ip], m.materials[im], use[ip]);
   }
 }
 

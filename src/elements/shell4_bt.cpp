@@ -78,9 +78,11 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
                              NodalState& nodes, ShellState& state, double dt) {
   GroupStepResult result;
   const double E = p.young, nu = p.poisson, G = E / (2.0 * (1.0 + nu));
-  // Ishell 1 to 4 and the triangle: the bar speed sqrt(E / rho), as the reference takes (eq. T-1a: its printed
-  // element steps are L / sqrt(E / rho) to all their digits); Ishell 24 the plate speed [L/T].
-  const double wave_speed = p.physical_hourglass ? std::sqrt(E / (p.density * (1.0 - nu * nu))) : std::sqrt(E / p.density);
+  // The bar speed sqrt(E / rho), as the reference takes for these elements (eq. T-1a: its printed element steps are
+  // L / sqrt(E / rho) to all their digits) [L/T].
+  const double wave_speed = std::sqrt(E / p.density);
+  // The viscous fraction that shortens the step (eq. T-1c): dm, and for Ishell 24 also dn.
+  const double step_damping = p.physical_hourglass ? std::max(p.membrane_damping, p.numerical_damping) : p.membrane_damping;
   const materials::PlaneStressElastic elastic{E, nu};
   const int np = p.points;
   constexpr double mean = 1.0 / NN;  // shape function value at the element centre
@@ -168,15 +170,24 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
       gxz += b1[a] * vz[a] + mean * ty[a];
       gyz += b2[a] * vz[a] - mean * tx[a];
     }
+    // Triangle: the mean shear of the linked deflection field (eq. S-9a), so that a constant curvature carries no
+    // transverse shear and a thin triangle does not lock in bending.
+    double link[NN] = {};
+    if constexpr (NN == 3) {
+      shell_section::linked_shear_terms(lx, ly, tx, ty, link);
+      for (int k = 0; k < 3; ++k) gxz -= b1[k] * link[k] / 6.0, gyz -= b2[k] * link[k] / 6.0;
+    }
     const double t = state.thickness[ue];
 
     // Stress update at the through-thickness points, resultants per unit length (eq. S-4), and the internal energy:
     // mid-step resultants times the generalized strain increments (eq. S-6).
     const std::size_t first = p.first_point + static_cast<std::size_t>(e - group.begin) * static_cast<std::size_t>(np);
+    // Ishell 24: the points' yield stress at the start of the step, for its elastic-plastic hourglass (eq. S-12).
+    const double hourglass_yield = p.physical_hourglass && NN == 4 ? hourglass_yield_stress(p, state, first) : 0.0;
     const shell_section::StrainRates section_rates{dxx, dyy, gxy, kxx, kyy, kxy};
     double* bending_stress = p.resultant_plasticity ? &state.bending_stress[3 * ue] : nullptr;
     const shell_section::Update section = shell_section::update(p, elastic, state, first, bending_stress, t, section_rates, dt);
-    const double nxx = section.n[0], nyy = section.n[1], nxy = section.n[2];
+    double nxx = section.n[0], nyy = section.n[1], nxy = section.n[2];
     const double mxx = section.m[0], myy = section.m[1], mxy = section.m[2];
     const double thickness_strain = section.thickness_strain, tangent_ratio = section.tangent_ratio;
     const bool failed = section.failed;
@@ -190,14 +201,21 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
     const double qx = state.qx[ue], qy = state.qy[ue];
     work += 0.5 * (old_qx + qx) * gxz * dt + 0.5 * (old_qy + qy) * gyz * dt;
     if (p.thickness_update && dt > 0.0) state.thickness[ue] = t * std::exp(thickness_strain);
+    if (p.membrane_damping > 0.0) {
+      // Membrane damping dm (eq. S-9d): a viscous mean stress, not stored; its work is internal energy.
+      const shell_section::MembraneForces d =
+          shell_section::membrane_damping(p.membrane_damping, p.density, wave_speed, area, t, dxx, dyy, gxy);
+      nxx += d.xx, nyy += d.yy, nxy += d.xy;
+      work += (d.xx * dxx + d.yy * dyy + d.xy * gxy) * dt;
+    }
 
-    // Critical step: eq. T-1b for Ishell 1 to 4, T-1 for Ishell 24 and the triangle.
-    double length = shell_section::characteristic_length<NN>(lx, ly, area, !p.physical_hourglass);
+    // Critical step: eq. T-1b for Ishell 1 to 4, T-1d for Ishell 24, T-1 for the triangle.
+    double length = shell_section::one_point_length<NN>(p, lx, ly, area);
     if (small_strain) {  // eq. S-15: the step of the initial geometry
       if (state.initial_length[ue] == 0.0) state.initial_length[ue] = length;
       length = state.initial_length[ue];
     }
-    const double step = length / wave_speed;
+    const double step = length * shell_section::damped_step_factor(step_damping) / wave_speed;  // eq. T-1c
 
     // Hourglass stiffness on the five one-point hourglass modes of the quadrilateral (eq. S-5); the linear
     // triangle has none.
@@ -207,7 +225,8 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
     double shear_moment_x[NN] = {}, shear_moment_y[NN] = {};  // rotation coefficients of the shear mode (eq. S-13)
     double rotation_damping_x[NN] = {}, rotation_damping_y[NN] = {};  // Ishell 1 to 3 rotation modes (S-18b, S-19)
     double warping = 0.0;  // Ishell 3: warping height W of eq. S-18a [L]
-    double hourglass_work = 0.0;
+    double hourglass_work = 0.0;  // dissipated in the hourglass modes
+    double hourglass_stored = 0.0;  // Ishell 24: the work of its hourglass stresses, internal energy (eq. S-12a)
     if constexpr (NN == 4) {
       shell_hourglass::hourglass_vector(lx, ly, b1, b2, p.orthogonal_hourglass, gamma);
       double bb = 0.0;
@@ -220,9 +239,9 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
         rates[3] += gamma[a] * tx[a];
         rates[4] += gamma[a] * ty[a];
       }
-      if (p.elastoplastic_hourglass) {
-        // Ishell 3 (eq. S-18a): the in-plane motion a rigid rotation gives the nodes of a warped element is no
-        // membrane hourglass rate; the forces take the matching transverse part (below).
+      if (p.elastoplastic_hourglass || p.physical_hourglass) {
+        // Ishell 3 and 24 (eq. S-18a): the in-plane motion a rigid rotation gives the nodes of a warped element is
+        // no membrane hourglass rate; the forces take the matching transverse part (below).
         double z[4], slope_x = 0.0, slope_y = 0.0;  // nodes' heights off the frame plane [L]; dvz/dx, dvz/dy [T^-1]
         for (int a = 0; a < 4; ++a) z[a] = dot(x[a] - centre, e3), slope_x += b1[a] * vz[a], slope_y += b2[a] * vz[a];
         warping = shell_hourglass::warping_height(gamma, z);
@@ -237,23 +256,38 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
         double cx[4], cy[4];
         shell_hourglass::shear_rotation_coefficients(shell_hourglass::quadratic_moments(gamma, lx, ly), b1, b2, cx, cy);
         for (int a = 0; a < 4; ++a) rates[2] += cx[a] * tx[a] + cy[a] * ty[a];
-        const double membrane = E * t, plate = E * t * t * t / 12.0;
+        // The plane-stress modulus E / (1 - nu^2) of the section (eq. S-11).
+        const double a11 = E / (1.0 - nu * nu);
+        const double membrane = a11 * t, plate = a11 * t * t * t / 12.0;
         const double shear = p.shear_factor * G * t * (H.xx + H.yy);
-        double increment[5] = {
+        const double increment[5] = {
             membrane * (H.xx * rates[0] + H.xy * rates[1]) * dt, membrane * (H.xy * rates[0] + H.yy * rates[1]) * dt,
             shear * rates[2] * dt, -plate * (H.xy * rates[4] - H.yy * rates[3]) * dt,
             plate * (H.xx * rates[4] - H.xy * rates[3]) * dt};
-        // A yielding element loads its hourglass modes with its tangent modulus and unloads them elastically
-        // (eq. S-12): a softer unloading would give back more than was stored.
-        for (int m = 0; m < 5; ++m)
-          if (hq[m] * increment[m] > 0.0) increment[m] *= std::max(tangent_ratio, 0.0);
-        // Viscous part dn: the elastic increment over the element's own transit time, not stored (eq. S-14).
+        // The elastic-plastic hourglass (eq. S-12): a yielding section keeps part of the elastic increment.
+        shell_hourglass::HourglassYieldCheck check;
+        check.yield = hourglass_yield;
+        check.mean_ratio = tangent_ratio, check.min_ratio = section.min_tangent_ratio;
+        for (int c = 0; c < 3; ++c) check.mean_stress[c] = section.n[c] / t, check.mean_moment[c] = section.m[c] / (t * t);
+        const double lever_x = std::sqrt(H.xx * area / 3.0), lever_y = std::sqrt(H.yy * area / 3.0);
+        check.membrane_peak[0] = (hq[0] + increment[0]) / (t * lever_x);
+        check.membrane_peak[1] = (hq[1] + increment[1]) / (t * lever_y);
+        check.bending_peak[0] = (hq[4] + increment[4]) / (t * t * t / 12.0 * lever_x);
+        check.bending_peak[1] = (hq[3] + increment[3]) / (t * t * t / 12.0 * lever_y);
+        check.thickness = t, check.poisson = nu;
+        check.moment_weight = p.resultant_plasticity ? 16.0 : 25.0;
+        check.membrane_power = hq[0] * rates[0] + hq[1] * rates[1];
+        check.bending_power = hq[3] * rates[3] + hq[4] * rates[4];
+        const shell_hourglass::HourglassKept kept = shell_hourglass::qeph_hourglass_kept(check);
+        const double keep[5] = {kept.membrane, kept.membrane, 1.0, kept.bending, kept.bending};
+        // Numerical damping dn: the elastic increment over the element's own transit time, not stored (eq. S-14).
         const double viscous = dt > 0.0 ? p.numerical_damping * step / dt : 0.0;
         for (int m = 0; m < 5; ++m) {
           const double old = hq[m];
-          hq[m] += increment[m];
-          hourglass_work += 0.5 * (old + hq[m]) * rates[m] * dt + viscous * increment[m] * rates[m] * dt;
+          hq[m] += keep[m] * increment[m];
+          hourglass_stored += 0.5 * (old + hq[m]) * rates[m] * dt;
           damping[m] = viscous * increment[m];
+          hourglass_work += damping[m] * rates[m] * dt;
         }
         for (int a = 0; a < 4; ++a) shear_moment_x[a] = cx[a], shear_moment_y[a] = cy[a];
       } else {
@@ -293,6 +327,7 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
         mx += gamma[a] * q[3] + shear_moment_x[a] * q[2] + rotation_damping_x[a];
         my += gamma[a] * q[4] + shear_moment_y[a] * q[2] + rotation_damping_y[a];
       }
+      if constexpr (NN == 3) shell_section::add_linked_shear_moments(lx, ly, b1, b2, qx, qy, area, a, mx, my);
       const Vec3 force{fx * e1.x + fy * e2.x + fz * e3.x, fx * e1.y + fy * e2.y + fz * e3.y,
                        fx * e1.z + fy * e2.z + fz * e3.z};
       const Vec3 moment{mx * e1.x + my * e2.x, mx * e1.y + my * e2.y, mx * e1.z + my * e2.z};
@@ -301,7 +336,7 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
     }
     // A NaN or an infinity anywhere in the element shows in the sum of its resultants: the run stops at once.
     if (!std::isfinite(nxx + nyy + nxy + mxx + myy + mxy + qx + qy + work)) result.non_finite = e;
-    const double internal = work * area;
+    const double internal = work * area + hourglass_stored;
     state.internal_energy[ue] += internal;
     state.hourglass_energy[ue] += hourglass_work;
     result.internal_energy += internal;
@@ -365,7 +400,10 @@ double inertia_share(const ShellGroupParameters& p, const Vec3* x, double thickn
   double lx[NN], ly[NN];
   for (int a = 0; a < NN; ++a) lx[a] = dot(x[a] - centre, e1), ly[a] = dot(x[a] - centre, e2);
   const double area = shell_section::local_area<NN>(lx, ly);
-  const double reference = thickness * thickness / 12.0 + area / 9.0;  // eq. S-8
+  // eq. S-8; the triangle's m (t^2 / 12 + 2 A / 9), the reference's, shared by its corner angles (eq. S-9c)
+  // (QEPH, Ishell 24: m (t^2 + A) / 48 per node, the reference's, eq. S-8c)
+  const double reference = NN == 4 && p.physical_hourglass ? (thickness * thickness + area) / 12.0
+                                                           : thickness * thickness / 12.0 + (NN == 3 ? 2.0 : 1.0) * area / 9.0;
   if (!(area > 0.0) || !(p.shear_factor > 0.0)) return reference;
   // The gradient operator (eq. S-2, S-9) and the Gram matrix of the two shear modes' deflection patterns.
   double b11 = 0.0, b22 = 0.0, b12 = 0.0;
@@ -377,9 +415,13 @@ double inertia_share(const ShellGroupParameters& p, const Vec3* x, double thickn
   const double lambda = 0.5 * (b11 + b22) + std::sqrt(0.25 * (b11 - b22) * (b11 - b22) + b12 * b12);
   // The element's critical step, as its kernel takes it (eq. T-1a, T-1b; the plate speed for Ishell 12 and 24).
   const double E = p.young, nu = p.poisson;
-  const bool plate = p.physical_hourglass || p.fully_integrated;
+  const bool plate = p.fully_integrated;
   const double speed = plate ? std::sqrt(E / (p.density * (1.0 - nu * nu))) : std::sqrt(E / p.density);
-  const double length = shell_section::characteristic_length<NN>(lx, ly, area, NN == 4 && !plate);
+  double length = shell_section::characteristic_length<NN>(lx, ly, area, NN == 4 && !plate);
+  if constexpr (NN == 4)
+    if (p.physical_hourglass) length = geometry::qeph_length(lx, ly, area);  // eq. T-1d
+  const double damping = p.physical_hourglass ? std::max(p.membrane_damping, p.numerical_damping) : p.membrane_damping;
+  length *= shell_section::damped_step_factor(damping);  // eq. T-1c
   const double step = kShearModeMargin * scale * length / speed;
   // eq. S-8a: omega^2 = (kappa G / rho) (n lambda + 1 / X) <= (2 / step)^2.
   const double shear = p.shear_factor * E / (2.0 * (1.0 + nu)) / p.density;

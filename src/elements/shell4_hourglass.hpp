@@ -100,4 +100,59 @@ inline void shear_rotation_coefficients(const QuadraticMoments& g, const double 
   }
 }
 
+// The QEPH shell's elastic-plastic hourglass (docs/theory/shell4.md, eq. S-12): the fractions of the elastic
+// increment of the membrane and of the rotation (bending) hourglass stresses an element keeps in the cycle. The
+// transverse-shear mode always keeps all of it.
+struct HourglassKept {
+  double membrane = 1.0, bending = 1.0;
+};
+// What the reduction reads of the element in the cycle.
+struct HourglassYieldCheck {
+  double yield = 0.0;                  // mean yield stress of the points at the start of the step [F/L^2]; 0: elastic law
+  double mean_ratio = 1.0;             // plain mean over the points of their tangent over E (1 for an elastic point)
+  double min_ratio = 1.0;              // the smallest of them
+  double mean_stress[3] = {0, 0, 0};   // N / t [F/L^2] (xx, yy, xy)
+  double mean_moment[3] = {0, 0, 0};   // M / t^2 [F/L^2]
+  double membrane_peak[2] = {0, 0};    // peak stress of the trial membrane modes, x and y [F/L^2]
+  double bending_peak[2] = {0, 0};     // peak curvature stress of the trial rotation modes, x and y [F/L^3]
+  double thickness = 0.0, poisson = 0.0;
+  double moment_weight = 25.0;         // 25 with points through the thickness, 16 on the resultants (N = 0)
+  double membrane_power = 0.0;         // old hourglass stresses times this cycle's rates: < 0 while unloading
+  double bending_power = 0.0;
+};
+// Von Mises square a^2 + b^2 - a b + 3 c^2 of a plane stress.
+inline double von_mises_squared(double a, double b, double c) { return a * a + b * b - a * b + 3.0 * c * c; }
+// The hourglass modes' share of a section's von Mises square: the x mode's peak stress s_x comes with -nu s_x
+// across, the y mode's likewise, and the two couple; each taken at 0.85 of its peak, as the reference does.
+inline double hourglass_von_mises_squared(const double (&peak)[2], double nu) {
+  const double own = (1.0 + nu + nu * nu) * (peak[0] * peak[0] + peak[1] * peak[1]);
+  const double coupled = (1.0 + 4.0 * nu + nu * nu) * std::abs(peak[0] * peak[1]);
+  return 0.85 * 0.85 * (own + coupled);
+}
+inline HourglassKept qeph_hourglass_kept(const HourglassYieldCheck& c) {
+  HourglassKept kept;
+  if (!(c.yield > 0.0)) return kept;  // an elastic law: the hourglass stays elastic
+  const double y2 = c.yield * c.yield;
+  double membrane_cut = 0.0, bending_cut = 0.0;
+  bool plastic = 1.0 - c.min_ratio >= 1e-18;  // a point yielded in the cycle
+  if (!plastic) {
+    // Every point elastic: the section's mean membrane and bending stresses with the hourglass stresses added
+    // must stay inside the yield surface, N^2 + K M^2 <= sigma_y^2.
+    const double bending_scale[2] = {c.bending_peak[0] * c.thickness / 16.0, c.bending_peak[1] * c.thickness / 16.0};
+    const double sn = von_mises_squared(c.mean_stress[0], c.mean_stress[1], c.mean_stress[2]) +
+                      hourglass_von_mises_squared(c.membrane_peak, c.poisson);
+    const double sm = von_mises_squared(c.mean_moment[0], c.mean_moment[1], c.mean_moment[2]) +
+                      hourglass_von_mises_squared(bending_scale, c.poisson);
+    if (sn + c.moment_weight * sm > y2) plastic = true, membrane_cut = 0.999 * std::min(sn / y2, 1.0);
+  }
+  if (plastic) {
+    membrane_cut = std::max(membrane_cut, 1.0 - c.mean_ratio);
+    bending_cut = std::max(0.999, 1.0 - c.min_ratio);
+  }
+  if (c.membrane_power < 0.0) membrane_cut = 0.0;  // unloading is elastic
+  if (c.bending_power < 0.0) bending_cut = 0.0;
+  kept.membrane = 1.0 - membrane_cut, kept.bending = 1.0 - bending_cut;
+  return kept;
+}
+
 }  // namespace crumple::shell_hourglass

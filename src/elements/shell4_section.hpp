@@ -4,6 +4,7 @@
 // N = 0, eqs. RP-1 to RP-3). Plain inline functions, used inside the element loops.
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <cstddef>
 
 #include "crumple/elements/shell4.hpp"
@@ -70,6 +71,16 @@ inline double characteristic_length(const double (&lx)[NN], const double (&ly)[N
   return (NN == 4 ? area : 2.0 * area) / std::sqrt(longest);
 }
 
+// The one-point shells' characteristic length (docs/theory/time-step.md): eq. T-1b for Ishell 1 to 4, T-1d for the
+// QEPH shell (Ishell 24), T-1 for the triangle; the kernel's and the small-strain switch's [L].
+template <int NN>
+inline double one_point_length(const ShellGroupParameters& p, const double (&lx)[NN], const double (&ly)[NN],
+                               double area) {
+  if constexpr (NN == 4)
+    if (p.physical_hourglass) return geometry::qeph_length(lx, ly, area);
+  return characteristic_length<NN>(lx, ly, area, true);
+}
+
 // Generalised strain rates of a section in its frame: membrane (dxx, dyy, gxy = 2 dxy) [1/T] and curvature
 // (kxx, kyy, kxy = 2 kxy) [1/(L T)] (eq. S-3).
 struct StrainRates {
@@ -109,7 +120,8 @@ struct Update {
   double n[3] = {0.0, 0.0, 0.0}, m[3] = {0.0, 0.0, 0.0};
   double old_n[3] = {0.0, 0.0, 0.0}, old_m[3] = {0.0, 0.0, 0.0};
   double thickness_strain = 0.0;  // membrane-weighted through-thickness strain increment
-  double tangent_ratio = 1.0;     // through-thickness mean of the points' tangent over E (eq. S-12)
+  double tangent_ratio = 1.0;     // plain mean over the points of their tangent over E (eq. S-12)
+  double min_tangent_ratio = 1.0; // the smallest of them
   bool failed = false;            // a point reached the failure strain
 };
 
@@ -134,7 +146,7 @@ inline void update_resultants(const ShellGroupParameters& p, const materials::Pl
   state.eps_p[first] = stored(state.eps_p[first] + r.plastic_strain_increment);
   if (r.plastic_strain_increment > 0.0 && p.physical_hourglass) {
     const double slope = std::max(p.hardening.slope(state.eps_p[first], rate), 0.0);
-    u.tangent_ratio = slope / (p.young + slope);  // eq. S-12
+    u.tangent_ratio = u.min_tangent_ratio = slope / (p.young + slope);  // eq. S-12
   }
   u.thickness_strain = r.thickness_strain;
   if (p.failure_strain > 0.0 && state.eps_p[first] >= p.failure_strain) u.failed = true;
@@ -163,7 +175,8 @@ inline void update_points(const ShellGroupParameters& p, const materials::PlaneS
                                         ? p.hardening.slope_from_term(state.eps_p[ip], state.hardening_term[ip], rate)
                                         : p.hardening.slope(state.eps_p[ip], rate),
                                     0.0);
-      u.tangent_ratio -= p.membrane_weight[k] * E / (E + slope);
+      u.tangent_ratio -= (E / (E + slope)) / p.points;
+      u.min_tangent_ratio = std::min(u.min_tangent_ratio, slope / (E + slope));
     }
     u.thickness_strain += p.membrane_weight[k] * r.thickness_strain;
     if (p.failure_strain > 0.0 && state.eps_p[ip] >= p.failure_strain) u.failed = true;
@@ -190,6 +203,48 @@ inline Update update(const ShellGroupParameters& p, const materials::PlaneStress
 inline double work(const Update& u, const StrainRates& s, double dt) {
   return 0.5 * dt * ((u.old_n[0] + u.n[0]) * s.dxx + (u.old_n[1] + u.n[1]) * s.dyy + (u.old_n[2] + u.n[2]) * s.gxy +
                      (u.old_m[0] + u.m[0]) * s.kxx + (u.old_m[1] + u.m[1]) * s.kyy + (u.old_m[2] + u.m[2]) * s.kxy);
+}
+
+// Membrane forces per unit length [F/L] (xx, yy, xy).
+struct MembraneForces {
+  double xx, yy, xy;
+};
+// Membrane damping dm of a section of thickness t [L] and area A [L^2] (docs/theory/shell4.md, eq. S-9d): the viscous
+// mean stress eta (d_xx + d_yy / 2, d_yy + d_xx / 2, g_xy / 3), eta = sqrt(2) dm rho c sqrt(A), c the element's
+// wave speed [L/T], times t; d the membrane strain rates [1/T].
+inline MembraneForces membrane_damping(double dm, double density, double wave_speed, double area, double t, double dxx,
+                                       double dyy, double gxy) {
+  const double eta = std::numbers::sqrt2 * dm * density * wave_speed * std::sqrt(area) * t;
+  return {eta * (dxx + 0.5 * dyy), eta * (dyy + 0.5 * dxx), eta * gxy / 3.0};
+}
+// The factor a viscous fraction nu takes off an element's critical step, sqrt(1 + nu^2) - nu (docs/theory/
+// time-step.md, eq. T-1c): the stable step of a damped oscillator, 0.98511 for nu = 0.015.
+inline double damped_step_factor(double nu) { return std::sqrt(1.0 + nu * nu) - nu; }
+
+// The linked deflection of the 3-node shell (docs/theory/shell4.md, eq. S-9a): along each side i-j the deflection
+// takes the quadratic term (1/2) N_i N_j (x_j - x_i) . (beta_j - beta_i), beta = (theta_y, -theta_x) the fibre's
+// tilt, so that the mean transverse shear over the element is grad w + mean beta - (1/6) sum_k grad N_k s_k with
+// s_k that term's amplitude on the side opposite node k. Fills s_k [L/T] from the local coordinates lx, ly [L]
+// and the rotation rates tx, ty [1/T].
+inline void linked_shear_terms(const double (&lx)[3], const double (&ly)[3], const double (&tx)[3],
+                               const double (&ty)[3], double (&s)[3]) {
+  for (int k = 0; k < 3; ++k) {
+    const int i = (k + 1) % 3, j = (k + 2) % 3;
+    s[k] = (lx[j] - lx[i]) * (ty[j] - ty[i]) - (ly[j] - ly[i]) * (tx[j] - tx[i]);
+  }
+}
+// The moments at node `a` that the linked terms of eq. S-9a give the shear resultants (qx, qy) [F/L]: the transpose
+// of linked_shear_terms, so that their power is A (qx, qy) . (the shear they take off). Adds to mx, my [F L].
+inline void add_linked_shear_moments(const double (&lx)[3], const double (&ly)[3], const double (&b1)[3],
+                                     const double (&b2)[3], double qx, double qy, double area, int a, double& mx,
+                                     double& my) {
+  for (int k = 0; k < 3; ++k) {
+    const int i = (k + 1) % 3, j = (k + 2) % 3;
+    if (a != i && a != j) continue;
+    const double c = -area * (b1[k] * qx + b2[k] * qy) / 6.0, sign = a == j ? 1.0 : -1.0;
+    my += sign * c * (lx[j] - lx[i]);
+    mx -= sign * c * (ly[j] - ly[i]);
+  }
 }
 
 }  // namespace crumple::shell_section

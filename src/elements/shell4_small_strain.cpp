@@ -30,7 +30,8 @@ bool freeze_shape(const ElementTable& table, const ShellGroupParameters& p, cons
   double* shape = &state.initial_shape[2 * NN * element];
   for (int a = 0; a < NN; ++a) shape[a] = lx[a], shape[NN + a] = ly[a];
   // The step of the frozen shape is the element's step from now on (the step "becomes constant", S-16).
-  state.initial_length[element] = shell_section::characteristic_length<NN>(lx, ly, area, !p.physical_hourglass);
+  state.initial_length[element] = p.fully_integrated ? shell_section::characteristic_length<NN>(lx, ly, area, true)
+                                                     : shell_section::one_point_length<NN>(p, lx, ly, area);
   state.small_strain[element] = 1;
   return true;
 }

@@ -11,6 +11,19 @@ const Part& part_of(const Model& model, ElementKind kind, std::size_t element) {
 
 }  // namespace
 
+std::array<double, 8> corner_mass_fractions(const Model& model, ElementKind kind, const std::int32_t* nodes) {
+  std::array<double, 8> share{};
+  const int n = nodes_per_element(kind);
+  if (kind == ElementKind::Shell3) {  // by the corner angles (docs/theory/shell4.md, eq. S-9c)
+    const Nodes& x = model.nodes;
+    const auto f = geometry::triangle_corner_fractions(x.position(nodes[0]), x.position(nodes[1]), x.position(nodes[2]));
+    std::copy(f.begin(), f.end(), share.begin());
+  } else {
+    std::fill(share.begin(), share.begin() + n, 1.0 / n);
+  }
+  return share;
+}
+
 double element_mass(const Model& model, ElementKind kind, std::size_t element) {
   const Part& part = part_of(model, kind, element);
   const Material& material = model.materials[static_cast<std::size_t>(part.material)];
@@ -44,7 +57,8 @@ void compute_mass(Model& model) {
       const double mass = element_mass(model, g.kind, static_cast<std::size_t>(e));
       model.element_mass += mass;
       const std::int32_t* nodes = table.nodes_of(static_cast<std::size_t>(e));
-      for (int a = 0; a < n; ++a) model.nodal_mass[static_cast<std::size_t>(nodes[a])] += mass / n;
+      const std::array<double, 8> share = corner_mass_fractions(model, g.kind, nodes);
+      for (int a = 0; a < n; ++a) model.nodal_mass[static_cast<std::size_t>(nodes[a])] += mass * share[static_cast<std::size_t>(a)];
     }
   }
   for (const AddedMass& a : model.added_masses) {

@@ -17,6 +17,7 @@ namespace {
 
 constexpr double kDefaultHourglass = 0.01;    // Radioss default hm, hf, hr for 4-node shells
 constexpr double kDefaultQbatDamping = 0.001; // Radioss default dn of Ishell 12 (QBAT)
+constexpr double kDefaultTriangleMembraneDamping = 0.015;  // dm of the 3-node shell when blank (eq. S-9d)
 constexpr double kDefaultElastoplasticHourglass = 0.1;  // Radioss default hm, hr of Ishell 3
 
 void setup_nodes(const Model& m, SolverState& s) {
@@ -85,6 +86,9 @@ void setup_shells(const Model& m, SolverState& s, ElementKind kind) {
     p.small_strain_switchable = f.ismstr == 2;  // eq. S-16; Ismstr 4 never switches
     if ((p.small_strain || p.small_strain_switchable) && st.initial_shape.empty())
       st.initial_shape.assign(2 * static_cast<std::size_t>(nodes_per) * n, 0.0);
+    // The triangle's membrane damping dm: 0.015 when blank, as the reference runs it (its listing prints 0, but its
+    // steps are sqrt(1 + 0.015^2) - 0.015 of 2A / longest side and a deck with dm 0.015 gives the same rows).
+    if (kind == ElementKind::Shell3) p.membrane_damping = prop.shell.dm > 0.0 ? prop.shell.dm : kDefaultTriangleMembraneDamping;
     if (prop.shell.dn > 0.0) p.numerical_damping = prop.shell.dn;
     else if (p.fully_integrated) p.numerical_damping = kDefaultQbatDamping;
     // Ishell 12 keeps a section per Gauss point (docs/theory/shell4.md, eq. Q-2).
@@ -108,8 +112,8 @@ void setup_shells(const Model& m, SolverState& s, ElementKind kind) {
     const double scale = type.given && type.scale > 0.0 ? type.scale : m.run.dt.scale > 0.0 ? m.run.dt.scale : 0.9;
     for (std::int32_t e = group.begin; e < group.end; ++e) {
       st.thickness[static_cast<std::size_t>(e)] = prop.shell.thickness;
-      // Lumped rotational inertia of the shell's nodes: (m/n) (t^2/12 + A/9) (docs/theory/shell4.md, eq. S-8),
-      // raised where the element's transverse-shear mode would not be stable at its step (eq. S-8a).
+      // Lumped rotational inertia of the shell's nodes: m (t^2/12 + A/9) / 4 (docs/theory/shell4.md, eq. S-8), for
+      // a triangle m (t^2/12 + 2A/9) shared by the corner angles (eq. S-9c), raised where the element's transverse-shear mode would not be stable at its step (eq. S-8a).
       const double mass = element_mass(m, kind, static_cast<std::size_t>(e));
       st.mass[static_cast<std::size_t>(e)] = mass;
       const std::int32_t* nodes = table.nodes_of(static_cast<std::size_t>(e));
@@ -119,7 +123,9 @@ void setup_shells(const Model& m, SolverState& s, ElementKind kind) {
         x[a] = {s.nodes.x[k], s.nodes.y[k], s.nodes.z[k]};
       }
       const double share = shell_rotational_inertia_share(p, nodes_per, x, prop.shell.thickness, scale);
-      for (int a = 0; a < nodes_per; ++a) s.nodes.inertia[static_cast<std::size_t>(nodes[a])] += mass / nodes_per * share;
+      const std::array<double, 8> corner = corner_mass_fractions(m, kind, nodes);
+      for (int a = 0; a < nodes_per; ++a)
+        s.nodes.inertia[static_cast<std::size_t>(nodes[a])] += mass * corner[static_cast<std::size_t>(a)] * share;
     }
   }
   st.resize_points(total_points);

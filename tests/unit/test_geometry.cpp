@@ -1,4 +1,5 @@
-// Characteristic lengths of the shell time step (docs/theory/time-step.md, eqs. T-1, T-1b).
+// Characteristic lengths of the shell time step (docs/theory/time-step.md, eqs. T-1, T-1b, T-1d) and the
+// triangle's mass shares (docs/theory/shell4.md, eq. S-9c).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -35,6 +36,44 @@ TEST(Geometry, BelytschkoTsayLengthOfASkewedElementIsItsHeight) {
   const double a = 1.0, s = std::sin(M_PI / 6.0), c = std::cos(M_PI / 6.0);
   const Vec3 p1{0, 0, 0}, p2{a, 0, 0}, p3{a + a * c, a * s, 0}, p4{a * c, a * s, 0};
   EXPECT_NEAR(belytschko_tsay_length(p1, p2, p3, p4), 0.5 * a, 1e-14);
+}
+
+// The QEPH length (eq. T-1d) on eight single elements, against the steps the reference solver's starter printed
+// for them (generate_probe.py mode --corners ..., /MAT/ELAST steel E 210, rho 7.85e-6, dn 0.015: its step is
+// L (sqrt(1 + dn^2) - dn) / sqrt(E / rho), eq. T-1c). Squares 2:1 and 4:1, two parallelograms, a trapezoid,
+// two warped squares and a rectangle with one short side: aspect, skew, taper and warp, to 6 digits.
+TEST(Geometry, QephLengthIsTheReferences) {
+  struct Case {
+    Vec3 p[4];
+    double step;
+  };
+  const Case cases[] = {
+      {{{0, 0, 0}, {10, 0, 0}, {10, 5, 0}, {0, 5, 0}}, 9.6378151793608e-04},
+      {{{0, 0, 0}, {20, 0, 0}, {20, 5, 0}, {0, 5, 0}}, 9.5428590195074e-04},
+      {{{0, 0, 0}, {5, 0, 0}, {7, 5, 0}, {2, 5, 0}}, 7.4143986959001e-04},
+      {{{0, 0, 0}, {5, 0, 0}, {9, 5, 0}, {4, 5, 0}}, 6.3886912782992e-04},
+      {{{0, 0, 0}, {6, 0, 0}, {4, 5, 0}, {2, 5, 0}}, 6.6650218474819e-04},
+      {{{0, 0, 0}, {5, 0, 0}, {5, 5, 0.5}, {0, 5, 0}}, 8.5102716832952e-04},
+      {{{0, 0, 0}, {5, 0, 0}, {5, 5, 1.5}, {0, 5, 0}}, 8.4485745916379e-04},
+      {{{0, 0, 0}, {5, 0, 0}, {5, 5, 0}, {0, 8, 0}}, 8.0460255509106e-04},
+  };
+  const double c = std::sqrt(210.0 / 7.85e-6), damping = std::sqrt(1.0 + 0.015 * 0.015) - 0.015;
+  for (const Case& k : cases) {
+    const double step = qeph_length(k.p[0], k.p[1], k.p[2], k.p[3]) * damping / c;
+    EXPECT_NEAR(step, k.step, 2e-6 * k.step);
+  }
+  // A square of side a: 0.894 a (the 5/4 of T-1d; f_sk is 0.9998 there, not 1, with the reference's rounded
+  // constants 3.413 and 0.7071), whatever its frame.
+  EXPECT_NEAR(qeph_length({0, 0, 0}, {5, 0, 0}, {5, 5, 0}, {0, 5, 0}), 5.0 / std::sqrt(1.25), 2e-4 * 5.0);
+}
+
+// The corner-angle shares of a triangle's mass (docs/theory/shell4.md, eq. S-9c): a right isosceles triangle gives
+// its right-angled corner a half and each other corner a quarter.
+TEST(Geometry, TriangleCornerFractionsAreTheAnglesOverPi) {
+  const auto f = triangle_corner_fractions({0, 0, 0}, {5, 0, 0}, {0, 5, 0});
+  EXPECT_NEAR(f[0], 0.5, 1e-14);
+  EXPECT_NEAR(f[1], 0.25, 1e-14);
+  EXPECT_NEAR(f[2], 0.25, 1e-14);
 }
 
 }  // namespace

@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include "crumple/core/geometry.hpp"
+
 #include "crumple/model/summary.hpp"
 #include "deck_files.hpp"
 
@@ -58,7 +60,10 @@ TEST(MeshKeywords, SmallestTimeStepNamesTheElement) {
   test::TempDir dir;
   const Deck d = read_deck(test::write_deck(dir));
   const ControllingElement c = smallest_element_time_step(d.model);
-  const double wave = std::sqrt(2.1e11 / (7800.0 * (1 - 0.09)));
-  EXPECT_NEAR(c.time_step, 0.01 / wave, 1e-12);
+  // The plate's 10 mm squares are Ishell 24 (QEPH): the reference's length (eq. T-1d) times the factor of its
+  // default dn 0.015 (eq. T-1c) over the bar speed.
+  const double wave = std::sqrt(2.1e11 / 7800.0), damping = std::sqrt(1.0 + 0.015 * 0.015) - 0.015;
+  const double length = geometry::qeph_length({0, 0, 0}, {0.01, 0, 0}, {0.01, 0.01, 0}, {0, 0.01, 0});
+  EXPECT_NEAR(c.time_step, length * damping / wave, 1e-12);
   EXPECT_EQ(c.part_user_id, 1);
 }

@@ -1,6 +1,7 @@
 // The small-strain switch of Ismstr 2 (docs/theory/shell4.md, eq. S-16): shell_switch_to_small_strain freezes the
 // element's current shape as its reference; from then on its strain rates, forces and critical step are those of
 // that shape, whatever it becomes. Ismstr 1 (small strain from the start) and 4 (never switched) refuse it.
+#include "crumple/core/geometry.hpp"
 #include "shell4_element.hpp"
 
 using namespace crumple;
@@ -42,7 +43,13 @@ TEST(ShellSmallStrain, SwitchFreezesTheShapeOfTheSwitch) {
     // Plane stress with e_xx = 0: sigma_yy = E / (1 - nu^2) e_yy, e_yy = c (0.25 / 0.5) dt.
     const double expected = kPlateModulus * c * 0.5 * dt;
     EXPECT_NEAR(el.state.syy[0], expected, 1e-9 * std::abs(expected)) << "Ishell " << ishell;
-    EXPECT_NEAR(r.min_dt, 0.5 / wave_speed, 1e-12 * r.min_dt) << "Ishell " << ishell;
+    // Ishell 24: the reference's QEPH length of the 1 x 0.5 shape (eq. T-1d) times dn's factor (T-1c) over the
+    // bar speed; Ishell 12: area over the longest side over the plate speed.
+    const double dn = el.p.numerical_damping, damping = std::sqrt(1.0 + dn * dn) - dn;
+    const double step = ishell == 24 ? geometry::qeph_length({0, 0, 0}, {1, 0, 0}, {1, 0.5, 0}, {0, 0.5, 0}) * damping /
+                                           std::sqrt(kE / kRho)
+                                     : 0.5 / wave_speed;
+    EXPECT_NEAR(r.min_dt, step, 1e-12 * r.min_dt) << "Ishell " << ishell;
   }
 }
 

@@ -20,6 +20,23 @@ inline double triangle_area(const Vec3& p1, const Vec3& p2, const Vec3& p3) {
   return 0.5 * norm(cross(p2 - p1, p3 - p1));
 }
 
+// The share of a triangle's mass and rotational inertia each corner takes: its interior angle over pi (the
+// reference solver's lumping of the 3-node shell, docs/theory/shell4.md, eq. S-9c); the three add up to 1. A
+// degenerate triangle (a side of zero length) shares equally.
+inline std::array<double, 3> triangle_corner_fractions(const Vec3& p1, const Vec3& p2, const Vec3& p3) {
+  const Vec3 p[3] = {p1, p2, p3};
+  std::array<double, 3> f{};
+  double sum = 0.0;
+  for (int a = 0; a < 3; ++a) {
+    const Vec3 u = p[(a + 1) % 3] - p[a], v = p[(a + 2) % 3] - p[a];
+    f[static_cast<std::size_t>(a)] = std::atan2(norm(cross(u, v)), dot(u, v));
+    sum += f[static_cast<std::size_t>(a)];
+  }
+  if (!(sum > 0.0)) return {1.0 / 3.0, 1.0 / 3.0, 1.0 / 3.0};
+  for (double& x : f) x /= sum;
+  return f;
+}
+
 // Exact signed volume of an 8-node brick, the integral of det J over the trilinear map (docs/theory/brick8.md,
 // eq. B-2), Radioss numbering (1-4 one face, 5-8 the opposite one). Exact also for the degenerate shapes written
 // with repeated nodes (prism, pyramid, tetrahedron). Negative for an inverted element.
@@ -59,6 +76,37 @@ inline double triangle_characteristic_length(const Vec3& p1, const Vec3& p2, con
   const double longest_side = std::max(std::max(norm(p2 - p1), norm(p3 - p2)), norm(p1 - p3));
   return 2.0 * area / longest_side;
 }
+// The QEPH shell's (Ishell 24) characteristic length [L] (docs/theory/time-step.md, eq. T-1d): the reference's
+// A / sqrt(2 f_ar f_sk (5/4 + w) D^2 / 4), D the longest diagonal, f_ar = 1 + min(1/2, (c_max / c_min - 1) / 4) on
+// the two mid-line lengths c, f_sk = 0.78 + 0.22 (3.413 max(0, s - 0.7071))^3 on the sine s = 4 A / (c_1 c_2) of
+// their angle, w = max(|x2 x y4|, |x1 x y3|) / A the taper (0 for a parallelogram). lx, ly from the centroid.
+inline double qeph_length(const double* lx, const double* ly, double area) {
+  const double d13 = (lx[0] - lx[2]) * (lx[0] - lx[2]) + (ly[0] - ly[2]) * (ly[0] - ly[2]);
+  const double d24 = (lx[1] - lx[3]) * (lx[1] - lx[3]) + (ly[1] - ly[3]) * (ly[1] - ly[3]);
+  const double half_diagonal2 = 0.25 * std::max(d13, d24);
+  const double c1 = std::hypot(lx[1] + lx[2] - lx[3] - lx[0], ly[1] + ly[2] - ly[3] - ly[0]);
+  const double c2 = std::hypot(lx[2] + lx[3] - lx[1] - lx[0], ly[2] + ly[3] - ly[1] - ly[0]);
+  const double aspect = 1.0 + std::min(0.5, (std::max(c1, c2) / std::min(c1, c2) - 1.0) / 4.0);
+  const double skew_term = 3.413 * std::max(0.0, 4.0 * area / (c1 * c2) - 0.7071);
+  const double skew = 0.78 + 0.22 * skew_term * skew_term * skew_term;
+  const double taper = std::max(std::abs(lx[1] * ly[3] - ly[1] * lx[3]), std::abs(lx[0] * ly[2] - ly[0] * lx[2])) / area;
+  return area / std::sqrt(2.0 * aspect * skew * (1.25 + taper) * half_diagonal2);
+}
+
+// The same from the corners: the plane of the diagonals, coordinates from the centroid.
+inline double qeph_length(const Vec3& p1, const Vec3& p2, const Vec3& p3, const Vec3& p4) {
+  const Vec3 normal = cross(p3 - p1, p4 - p2);
+  const double n = norm(normal);
+  if (!(n > 0.0)) return 0.0;
+  const Vec3 e3 = scaled(normal, 1.0 / n), side = p2 - p1;
+  const Vec3 e1 = unit(side - scaled(e3, dot(side, e3))), e2 = cross(e3, e1);
+  const Vec3 centre = scaled(p1 + p2 + p3 + p4, 0.25);
+  const Vec3 p[4] = {p1, p2, p3, p4};
+  double lx[4], ly[4];
+  for (int a = 0; a < 4; ++a) lx[a] = dot(p[a] - centre, e1), ly[a] = dot(p[a] - centre, e2);
+  return qeph_length(lx, ly, 0.5 * n);
+}
+
 // Brick: volume over the largest face area.
 inline double brick_characteristic_length(const std::array<Vec3, 8>& p) {
   constexpr int faces[6][4] = {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};

@@ -1,11 +1,19 @@
 #pragma once
+#include <array>
+#include <cstdint>
+
 #include "crumple/model/model.hpp"
 
 namespace crumple {
 
-// Lumped nodal mass (docs/theory/mass.md): each element's mass rho*t*A (shells) or rho*V (bricks) shared equally
-// by its nodes, plus /ADMAS masses and /RBODY masses at the main node. Fills nodal_mass, element_mass, added_mass.
+// Lumped nodal mass (docs/theory/mass.md): each element's mass rho*t*A (shells) or rho*V (bricks) shared by its
+// nodes (corner_mass_fractions), plus /ADMAS masses and /RBODY masses at the main node. Fills nodal_mass, element_mass, added_mass.
 void compute_mass(Model& model);
+
+// The share of an element's mass (and, for shells, of its rotational inertia) each of its nodes takes, in node
+// order: equal for quadrilaterals and bricks, by the corner angles for 3-node shells (docs/theory/shell4.md,
+// eq. S-9c). `nodes`: the element's node indices.
+std::array<double, 8> corner_mass_fractions(const Model& model, ElementKind kind, const std::int32_t* nodes);
 
 // Mass of one element [M].
 double element_mass(const Model& model, ElementKind kind, std::size_t element);

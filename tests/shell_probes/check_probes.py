@@ -1,0 +1,92 @@
+#!/usr/bin/env python3
+"""The shell probes against the reference solver's figures (docs/theory/shell4.md, "Probes").
+
+  check_probes.py CRUMPLE WORK_DIR [NAME ...]
+
+Each probe deck is written by generate_probe.py into WORK_DIR, run by Crumple, and its listing read at the
+reference's time: the internal energy (and where given the rotational kinetic energy and the step) must be within
+the stated tolerance of the reference solver's value. The reference figures were obtained on 2026-12-04 by running
+the same decks through the reference solver of ../shared/peer/ (OpenRadioss bd4557b, one thread) and reading the
+last printed row of its engine listing. The tolerances are the differences measured at landing plus a margin for
+round-off; the probes each isolate one mechanism, so a formulation that lacks it misses by far more (the figure
+"before" is what Crumple gave without the mechanism).
+Prints one line per probe and 'N passed, N failed'; exit code 1 when one fails.
+"""
+import os
+import subprocess
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+from compare_listings import at, rows  # noqa: E402
+
+# name, generator arguments, reference time [ms], reference IE [kJ = J in kg mm ms], tolerance [%], before,
+# optional checks: ("KR", value, tol %) rotational kinetic energy, ("DT", value, tol %) the printed step.
+PROBES = [
+    ("tria_elastic", "strip --tria", 0.9697, 6.194e-3, 1.0, "1.225e-2 (+98 %): shear locking", []),
+    ("tria_plastic", "strip --tria --law 2 --speed 20", 0.9696, 0.6357, 2.0, "2.129 (+235 %)",
+     [("DT", 6.058e-4, 0.3)]),
+    ("tria_dm", "strip --tria --law 2 --speed 20 --dm 0.05", 0.9947, 0.6550, 2.0, "refused",
+     [("DT", 5.850e-4, 0.3)]),
+    ("qeph_membrane_elastic", "mode --mode membrane --speed 0.1 --time 0.2 --print-every 20", 0.1992, 0.05088, 1.0,
+     "0.0463 as hourglass energy", []),
+    ("qeph_membrane_plastic", "mode --mode membrane --law 2 --speed 5 --time 0.2 --print-every 20", 0.1951, 0.8232,
+     2.0, "110 as hourglass energy", []),
+    ("qeph_bending_elastic", "mode --mode bending --speed 0.1 --time 0.2 --print-every 20", 0.1993, 5.323e-3, 2.0,
+     "4.34e-3 internal + 0.94e-3 hourglass", []),
+    ("qeph_bending_plastic", "mode --mode bending --law 2 --speed 5 --time 0.2 --print-every 20", 0.1993, 0.5455,
+     4.0, "0.525 internal", []),
+    ("qeph_twist_elastic", "mode --mode twist --speed 0.01 --time 0.2 --print-every 20", 0.1993, 9.551e-5, 1.0,
+     "8.68e-5 as hourglass energy, KR 4.36e-8", [("KR", 3.34e-8, 2.0), ("DT", 7.667e-4, 0.3)]),
+    ("qeph_twist_plastic", "mode --mode twist --law 2 --speed 0.5 --time 0.2 --print-every 20", 0.1993, 0.02992,
+     2.0, "0.217 as hourglass energy", []),
+    ("qeph_strip_plastic", "strip --law 2 --speed 20", 0.9966, 0.6487, 2.5, "0.6401", []),
+    ("qeph_fold", "fold --law 2 --nx 20 --ny 4 --length 100 --width 20 --speed 5 --time 4 --print-every 500",
+     3.664, 80.17, 2.0, "", []),
+]
+
+
+def run(crumple, work, probe):
+    name, args, time, ie_ref, tol, before, extra = probe
+    folder = os.path.join(work, name)
+    subprocess.run([sys.executable, os.path.join(HERE, "generate_probe.py"), *args.split(), "--out", folder],
+                   check=True)
+    out = os.path.join(folder, "out")
+    done = subprocess.run([crumple, "run", os.path.join(folder, "PROBE_0000.rad"), "-o", out, "--quiet"],
+                          capture_output=True, text=True)
+    if done.returncode != 0:
+        return False, f"crumple run failed ({done.returncode}): {done.stderr.strip()[-300:]}"
+    row = at(rows(os.path.join(out, "PROBE.out"), True), time)
+    if row is None:
+        return False, f"no listing row at {time}"
+    checks = [("IE", row["ie"], ie_ref, tol)]
+    for kind, value, t in extra:
+        checks.append((kind, row["ker"] if kind == "KR" else row["dt"], value, t))
+    ok, words = True, []
+    for kind, got, want, t in checks:
+        diff = 100.0 * (got - want) / want
+        good = abs(diff) <= t
+        ok &= good
+        words.append(f"{kind} {got:.4g} against {want:.4g} ({diff:+.2f} %, tolerance {t} %){'' if good else ' FAIL'}")
+    return ok, "; ".join(words) + (f" [before: {before}]" if before and not ok else "")
+
+
+def main():
+    if len(sys.argv) < 3:
+        sys.exit(__doc__)
+    crumple, work, names = sys.argv[1], sys.argv[2], sys.argv[3:]
+    os.makedirs(work, exist_ok=True)
+    passed = failed = 0
+    for probe in PROBES:
+        if names and probe[0] not in names:
+            continue
+        ok, message = run(crumple, work, probe)
+        print(f"{probe[0]:24} {'pass' if ok else 'FAIL'}  {message}")
+        passed += ok
+        failed += not ok
+    print(f"{passed} passed, {failed} failed")
+    sys.exit(0 if failed == 0 and passed > 0 else 1)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,210 @@
+#!/usr/bin/env python3
+"""Small shell decks that probe one mechanism of a shell formulation (docs/theory/shell4.md, "Probes").
+
+Each deck is a flat sheet in the x-y plane (kg, mm, ms, GPa), clamped or free, driven by imposed velocities on
+chosen nodes, so that the same deck runs through Crumple and through the reference solver and their energy rows
+can be compared. Kinds:
+
+  strip      a cantilever strip nx x ny, clamped at x = 0; the tip nodes (x = L) driven along --drive
+             (z: bending, x: membrane, y: in-plane bending) at --speed mm/ms for --time ms.
+  mode       one element whose four nodes are driven in an hourglass pattern (--mode membrane, bending, twist,
+             shear): each node's velocity is --speed times the pattern's sign.
+  fold       a strip nx x ny, clamped at x = 0, its far edge pushed along -x (buckling into a fold) at --speed.
+
+--tria splits each quadrilateral on its 1-3 diagonal into two 3-node shells. --law 1 is elastic steel, --law 2
+Johnson-Cook steel (a 0.21, b 0.45, n 0.45, the shared rails' sheet). --skew s moves the free corner nodes of
+the mesh by s times the element size (distorted elements).
+
+  generate_probe.py strip --tria --law 2 --out DIR     # writes DIR/PROBE_0000.rad and DIR/PROBE_0001.rad
+"""
+import argparse
+import os
+
+
+def fmt_row(values, width=20):
+    return "".join(f"{v:>{width}}" for v in values)
+
+
+def ints(values):
+    return "".join(f"{v:>10}" for v in values)
+
+
+def mesh(nx, ny, dx, dy, skew):
+    nodes = {}
+    nid = 0
+    for j in range(ny + 1):
+        for i in range(nx + 1):
+            nid += 1
+            x, y = i * dx, j * dy
+            if skew and 0 < i < nx and 0 < j < ny:
+                x += skew * dx * (1 if (i + j) % 2 else -1)
+                y += 0.5 * skew * dy * (1 if i % 2 else -1)
+            nodes[nid] = (x, y, 0.0)
+    quads = []
+    for j in range(ny):
+        for i in range(nx):
+            n1 = j * (nx + 1) + i + 1
+            quads.append((n1, n1 + 1, n1 + nx + 2, n1 + nx + 1))
+    return nodes, quads
+
+
+def material(law):
+    if law == 1:
+        return """/MAT/ELAST/1
+steel
+#              RHO_I
+            7.85e-06
+#                  E                  Nu
+                 210                 0.3
+"""
+    return """/MAT/PLAS_JOHNS/1
+deep-drawing steel
+#              RHO_I
+            7.85e-06                   0
+#                  E                  Nu     Iflag
+                 210                 0.3         0
+#                  a                   b                   n           EPS_p_max            SIG_max0
+                0.21                0.45                0.45                   0                   0
+#                  c           EPS_DOT_0       ICC   Fsmooth               F_cut               Chard
+                   0                   0         0         0                   0                   0
+#                  m              T_melt              rhoC_p                 T_r
+                   0                   0                   0                   0
+"""
+
+
+def prop(a):
+    return f"""/PROP/TYPE1/1
+sheet
+#   Ishell    Ismstr     Ish3n    Idrill                            P_thick_fail
+{ints([a.ishell, a.ismstr, a.ish3n, 0])}                                       0
+#                 hm                  hf                  hr                  dm                  dn
+{fmt_row([a.hm, a.hf, a.hr, a.dm, a.dn])}
+#        N   Istrain               Thick              Ashear              Ithick     Iplas
+{ints([a.npt, 0])}{fmt_row([a.thick, 0])}{ints([0, 0])}
+"""
+
+
+def grnod(gid, title, ids):
+    rows = [ints(ids[k:k + 10]) for k in range(0, len(ids), 10)]
+    return f"/GRNOD/NODE/{gid}\n{title}\n" + "\n".join(rows) + "\n"
+
+
+def impvel(iid, fid, direction, gid, scale):
+    return f"""/IMPVEL/{iid}
+drive {iid}
+#funct_IDT       Dir   skew_ID sensor_ID  grnod_ID
+{ints([fid])}{direction:>10}{ints([0, 0, gid])}
+#           Ascale_x            Fscale_Y              Tstart               Tstop
+{fmt_row([0, scale, 0, 0])}
+"""
+
+
+MODES = {  # node signs of the hourglass pattern (1, -1, 1, -1) and the dof it drives
+    "membrane": ("X", (1, -1, 1, -1)),
+    "bending": ("Z", (1, -1, 1, -1)),
+    "twist": ("XX", (1, -1, 1, -1)),
+    "twisty": ("YY", (1, -1, 1, -1)),
+}
+
+
+def build(a):
+    dx = a.length / a.nx
+    dy = a.width / a.ny
+    nodes, quads = mesh(a.nx, a.ny, dx, dy, a.skew)
+    if a.corners:  # one element of given corners "x,y,z;x,y,z;x,y,z;x,y,z" (nodes 1, 2, 4, 3 of the 1x1 mesh)
+        xyz = [tuple(float(v) for v in c.split(",")) for c in a.corners.split(";")]
+        for nid, c in zip(quads[0], xyz):
+            nodes[nid] = c
+    out = ["#RADIOSS STARTER", f"# Crumple shell probe: {a.kind} {' '.join(a.note)}", "/BEGIN", "PROBE",
+           "      2019         0",
+           "                  kg                  mm                  ms",
+           "                  kg                  mm                  ms", "/TITLE", f"shell probe {a.kind}"]
+    text = "\n".join(out) + "\n" + material(a.law) + prop(a)
+    text += "/PART/1\nsheet\n         1         1         0\n/NODE\n"
+    for nid, (x, y, z) in nodes.items():
+        text += f"{nid:>10}{fmt_row([f'{x:.10g}', f'{y:.10g}', f'{z:.10g}'])}\n"
+    if a.tria:
+        text += "/SH3N/1\n"
+        eid = 0
+        for q in quads:
+            for tri in ((q[0], q[1], q[2]), (q[0], q[2], q[3])):
+                eid += 1
+                text += ints([eid, *tri]) + "\n"
+    else:
+        text += "/SHELL/1\n"
+        for k, q in enumerate(quads):
+            text += ints([k + 1, *q]) + "\n"
+    text += """/FUNCT/1
+ramp to 1 over the rise time, then held
+                   0                   0
+""" + fmt_row([a.rise, 1]) + "\n" + fmt_row([1e6, 1]) + "\n"
+    row = a.nx + 1
+    root = [j * row + 1 for j in range(a.ny + 1)]
+    tip = [j * row + row for j in range(a.ny + 1)]
+    if a.kind in ("strip", "fold"):
+        text += grnod(1, "root", root) + "/BCS/1\nclamp\n   111 111         0         1\n"
+        text += grnod(2, "tip", tip)
+        if a.kind == "strip":
+            text += impvel(1, 1, a.drive.upper(), 2, a.speed)
+        else:
+            text += impvel(1, 1, "X", 2, -a.speed)
+            text += "/BCS/2\ntip guide\n   011 111         0         2\n"
+    else:
+        direction, signs = MODES[a.mode]
+        for k, (nid, s) in enumerate(zip(quads[0], signs)):
+            text += grnod(10 + k, f"node {nid}", [nid]) + impvel(10 + k, 1, direction, 10 + k, s * a.speed)
+    text += "/END\n"
+    engine = f"""#RADIOSS ENGINE
+/RUN/PROBE/1
+{fmt_row([a.time])}
+/PRINT/-{a.print_every}
+/TFILE/4
+{fmt_row([a.time / 50])}
+"""
+    if a.dtscale:
+        engine += f"/DT\n{fmt_row([a.dtscale, 0])}\n"
+    return text, engine
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("kind", choices=["strip", "mode", "fold"])
+    p.add_argument("--out", required=True)
+    p.add_argument("--nx", type=int, default=10)
+    p.add_argument("--ny", type=int, default=2)
+    p.add_argument("--length", type=float, default=50.0)
+    p.add_argument("--width", type=float, default=10.0)
+    p.add_argument("--thick", type=float, default=1.5)
+    p.add_argument("--skew", type=float, default=0.0)
+    p.add_argument("--tria", action="store_true")
+    p.add_argument("--law", type=int, default=1, choices=[1, 2])
+    p.add_argument("--ishell", type=int, default=24)
+    p.add_argument("--ismstr", type=int, default=0)
+    p.add_argument("--ish3n", type=int, default=0)
+    p.add_argument("--npt", type=int, default=5)
+    p.add_argument("--hm", type=float, default=0)
+    p.add_argument("--hf", type=float, default=0)
+    p.add_argument("--hr", type=float, default=0)
+    p.add_argument("--dm", type=float, default=0)
+    p.add_argument("--dn", type=float, default=0)
+    p.add_argument("--drive", default="z")
+    p.add_argument("--mode", default="membrane", choices=sorted(MODES))
+    p.add_argument("--speed", type=float, default=1.0, help="mm/ms")
+    p.add_argument("--rise", type=float, default=0.1, help="ms")
+    p.add_argument("--time", type=float, default=1.0, help="ms")
+    p.add_argument("--print-every", type=int, default=100)
+    p.add_argument("--dtscale", type=float, default=0)
+    p.add_argument("--corners", default="", help="one element's corners, x,y,z;x,y,z;x,y,z;x,y,z (kind mode)")
+    p.add_argument("note", nargs="*")
+    a = p.parse_args()
+    if a.kind == "mode":
+        a.nx = a.ny = 1
+        a.length = a.width = a.length if a.length != 50.0 else 5.0
+    starter, engine = build(a)
+    os.makedirs(a.out, exist_ok=True)
+    open(os.path.join(a.out, "PROBE_0000.rad"), "w").write(starter)
+    open(os.path.join(a.out, "PROBE_0001.rad"), "w").write(engine)
+
+
+if __name__ == "__main__":
+    main()
