@@ -182,8 +182,6 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
     // Stress update at the through-thickness points, resultants per unit length (eq. S-4), and the internal energy:
     // mid-step resultants times the generalized strain increments (eq. S-6).
     const std::size_t first = p.first_point + static_cast<std::size_t>(e - group.begin) * static_cast<std::size_t>(np);
-    // Ishell 24: the points' yield stress at the start of the step, for its elastic-plastic hourglass (eq. S-12).
-    const double hourglass_yield = p.physical_hourglass && NN == 4 ? hourglass_yield_stress(p, state, first) : 0.0;
     const shell_section::StrainRates section_rates{dxx, dyy, gxy, kxx, kyy, kxy};
     double* bending_stress = p.resultant_plasticity ? &state.bending_stress[3 * ue] : nullptr;
     const shell_section::Update section = shell_section::update(p, elastic, state, first, bending_stress, t, section_rates, dt);
@@ -266,7 +264,10 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
             plate * (H.xx * rates[4] - H.xy * rates[3]) * dt};
         // The elastic-plastic hourglass (eq. S-12): a yielding section keeps part of the elastic increment.
         shell_hourglass::HourglassYieldCheck check;
-        check.yield = hourglass_yield;
+        // The yield stress is read only when every point stayed elastic (then the points' plastic strains are
+        // those of the start of the step), for the section check of eq. S-12.
+        check.plastic_law = p.hardening.plastic();
+        if (check.plastic_law && section.min_tangent_ratio >= 1.0) check.yield = hourglass_yield_stress(p, state, first);
         check.mean_ratio = tangent_ratio, check.min_ratio = section.min_tangent_ratio;
         for (int c = 0; c < 3; ++c) check.mean_stress[c] = section.n[c] / t, check.mean_moment[c] = section.m[c] / (t * t);
         const double lever_x = std::sqrt(H.xx * area / 3.0), lever_y = std::sqrt(H.yy * area / 3.0);

@@ -108,7 +108,9 @@ struct HourglassKept {
 };
 // What the reduction reads of the element in the cycle.
 struct HourglassYieldCheck {
-  double yield = 0.0;                  // mean yield stress of the points at the start of the step [F/L^2]; 0: elastic law
+  bool plastic_law = false;            // false: the hourglass stays elastic
+  double yield = 0.0;                  // mean yield stress of the points at the start of the step [F/L^2], read
+                                       // when every point stayed elastic
   double mean_ratio = 1.0;             // plain mean over the points of their tangent over E (1 for an elastic point)
   double min_ratio = 1.0;              // the smallest of them
   double mean_stress[3] = {0, 0, 0};   // N / t [F/L^2] (xx, yy, xy)
@@ -131,11 +133,11 @@ inline double hourglass_von_mises_squared(const double (&peak)[2], double nu) {
 }
 inline HourglassKept qeph_hourglass_kept(const HourglassYieldCheck& c) {
   HourglassKept kept;
-  if (!(c.yield > 0.0)) return kept;  // an elastic law: the hourglass stays elastic
+  if (!c.plastic_law) return kept;
   const double y2 = c.yield * c.yield;
   double membrane_cut = 0.0, bending_cut = 0.0;
   bool plastic = 1.0 - c.min_ratio >= 1e-18;  // a point yielded in the cycle
-  if (!plastic) {
+  if (!plastic && y2 > 0.0) {
     // Every point elastic: the section's mean membrane and bending stresses with the hourglass stresses added
     // must stay inside the yield surface, N^2 + K M^2 <= sigma_y^2.
     const double bending_scale[2] = {c.bending_peak[0] * c.thickness / 16.0, c.bending_peak[1] * c.thickness / 16.0};
