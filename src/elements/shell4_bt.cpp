@@ -46,6 +46,33 @@ double hourglass_yield_stress(const ShellGroupParameters& p, const ShellState& s
   return p.hardening.yield(eps_p, state.eps_rate[first]);
 }
 
+// What the QEPH shell's elastic-plastic hourglass (eq. S-12) reads of an element in the cycle: its section's
+// tangents and mean stresses after the update, the trial peak stresses of its hourglass modes (the stored ones plus
+// the elastic increment, over t sqrt(H A / 3), a mode's stress at the element's edge), and the power of the stored
+// ones. The yield stress is read only when every point stayed elastic (then the points' plastic strains are those of
+// the start of the step).
+shell_hourglass::HourglassYieldCheck qeph_yield_check(const ShellGroupParameters& p, const ShellState& state,
+                                                      std::size_t first, const shell_section::Update& section,
+                                                      const shell_hourglass::ShapeTensor& H, double area, double t,
+                                                      const double* hq, const double (&increment)[5],
+                                                      const double (&rates)[5]) {
+  shell_hourglass::HourglassYieldCheck check;
+  check.plastic_law = p.hardening.plastic();
+  if (check.plastic_law && section.min_tangent_ratio >= 1.0) check.yield = hourglass_yield_stress(p, state, first);
+  check.mean_ratio = section.tangent_ratio, check.min_ratio = section.min_tangent_ratio;
+  for (int c = 0; c < 3; ++c) check.mean_stress[c] = section.n[c] / t, check.mean_moment[c] = section.m[c] / (t * t);
+  const double lever_x = std::sqrt(H.xx * area / 3.0), lever_y = std::sqrt(H.yy * area / 3.0), plate = t * t * t / 12.0;
+  check.membrane_peak[0] = (hq[0] + increment[0]) / (t * lever_x);
+  check.membrane_peak[1] = (hq[1] + increment[1]) / (t * lever_y);
+  check.bending_peak[0] = (hq[4] + increment[4]) / (plate * lever_x);
+  check.bending_peak[1] = (hq[3] + increment[3]) / (plate * lever_y);
+  check.thickness = t, check.poisson = p.poisson;
+  check.moment_weight = p.resultant_plasticity ? 16.0 : 25.0;
+  check.membrane_power = hq[0] * rates[0] + hq[1] * rates[1];
+  check.bending_power = hq[3] * rates[3] + hq[4] * rates[4];
+  return check;
+}
+
 // The rotation modes of the one-point quadrilateral (Ishell 1 to 3) have no stiffness, only moments recomputed each
 // cycle from the nodes' rotation rates tx, ty about the element axes, on g = 4 gamma (h for a parallelogram) so
 // that a linear rotation field (constant curvature) is not resisted: Ishell 1, 2 quadratic (eqs. S-19, S-20),
@@ -187,7 +214,7 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
     const shell_section::Update section = shell_section::update(p, elastic, state, first, bending_stress, t, section_rates, dt);
     double nxx = section.n[0], nyy = section.n[1], nxy = section.n[2];
     const double mxx = section.m[0], myy = section.m[1], mxy = section.m[2];
-    const double thickness_strain = section.thickness_strain, tangent_ratio = section.tangent_ratio;
+    const double thickness_strain = section.thickness_strain;
     const bool failed = section.failed;
     double work = 0.0;
     work += shell_section::work(section, section_rates, dt);
@@ -248,7 +275,7 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
       hq = &state.hourglass[ue * 5];
       if (p.physical_hourglass) {
         // Ishell 24: stiffness of the assumed-strain field of each mode (eqs. S-10 to S-14). Membrane modes as
-        // in-plane bending E t H q, rotation modes as plate bending (E t^3 / 12) H on (q_ry, -q_rx), the
+        // in-plane bending A11 t H q, rotation modes as plate bending (A11 t^3 / 12) H on (q_ry, -q_rx), the
         // transverse mode as shear on the part of the bilinear w that the rotations do not explain.
         const shell_hourglass::ShapeTensor H = shell_hourglass::shape_tensor(lx, ly, area);
         double cx[4], cy[4];
@@ -263,23 +290,8 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
             shear * rates[2] * dt, -plate * (H.xy * rates[4] - H.yy * rates[3]) * dt,
             plate * (H.xx * rates[4] - H.xy * rates[3]) * dt};
         // The elastic-plastic hourglass (eq. S-12): a yielding section keeps part of the elastic increment.
-        shell_hourglass::HourglassYieldCheck check;
-        // The yield stress is read only when every point stayed elastic (then the points' plastic strains are
-        // those of the start of the step), for the section check of eq. S-12.
-        check.plastic_law = p.hardening.plastic();
-        if (check.plastic_law && section.min_tangent_ratio >= 1.0) check.yield = hourglass_yield_stress(p, state, first);
-        check.mean_ratio = tangent_ratio, check.min_ratio = section.min_tangent_ratio;
-        for (int c = 0; c < 3; ++c) check.mean_stress[c] = section.n[c] / t, check.mean_moment[c] = section.m[c] / (t * t);
-        const double lever_x = std::sqrt(H.xx * area / 3.0), lever_y = std::sqrt(H.yy * area / 3.0);
-        check.membrane_peak[0] = (hq[0] + increment[0]) / (t * lever_x);
-        check.membrane_peak[1] = (hq[1] + increment[1]) / (t * lever_y);
-        check.bending_peak[0] = (hq[4] + increment[4]) / (t * t * t / 12.0 * lever_x);
-        check.bending_peak[1] = (hq[3] + increment[3]) / (t * t * t / 12.0 * lever_y);
-        check.thickness = t, check.poisson = nu;
-        check.moment_weight = p.resultant_plasticity ? 16.0 : 25.0;
-        check.membrane_power = hq[0] * rates[0] + hq[1] * rates[1];
-        check.bending_power = hq[3] * rates[3] + hq[4] * rates[4];
-        const shell_hourglass::HourglassKept kept = shell_hourglass::qeph_hourglass_kept(check);
+        const shell_hourglass::HourglassKept kept = shell_hourglass::qeph_hourglass_kept(
+            qeph_yield_check(p, state, first, section, H, area, t, hq, increment, rates));
         const double keep[5] = {kept.membrane, kept.membrane, 1.0, kept.bending, kept.bending};
         // Numerical damping dn: the elastic increment over the element's own transit time, not stored (eq. S-14).
         const double viscous = dt > 0.0 ? p.numerical_damping * step / dt : 0.0;
