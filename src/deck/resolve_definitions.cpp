@@ -165,17 +165,13 @@ void check_shell_material(Resolver& r, const Property& p, const ResolvedFormulat
                           const PropertyUse& use) {
   const ShellSection& s = p.shell;
   const bool tabulated = mat.law == MaterialLaw::Tabulated, plastic = mat.law != MaterialLaw::Elastic;
-  const bool qeph_or_qbat = f.ishell == 12 || f.ishell == 24;
-  // dm acts with law 36 and, with any law, in Ishell 12 and 24: Crumple's 4-node shells have no membrane damping.
-  // The triangles have it (docs/theory/shell4.md, eq. S-9d).
-  if (s.dm != 0.0 && use.quads && (tabulated || qeph_or_qbat))
+  // dm acts with law 36 and, with any law, in Ishell 12 and 24. Crumple has it for the triangles and Ishell 24
+  // (docs/theory/shell4.md, eq. S-9d), not for the other 4-node shells.
+  if (s.dm != 0.0 && use.quads && f.ishell != 24 && (tabulated || f.ishell == 12))
     r.error(s.damping_where, keyword_of(p), "dm (columns 61-80)",
-            "0: membrane damping (active for Ishell 12, 24 and /MAT/PLAS_TAB) is not supported by Crumple",
+            "0: membrane damping (active for Ishell 12 and /MAT/PLAS_TAB) is not supported by Crumple for Ishell " +
+                std::to_string(f.ishell),
             fmt::format("'{}'", s.dm));
-  if (s.dm == 0.0 && use.quads && tabulated && f.ishell == 24)
-    r.context.warn(s.damping_where, keyword_of(p),
-                   "dm 0: the reference's default membrane damping for Ishell 24 with /MAT/PLAS_TAB is 1.5 %; Crumple "
-                   "applies none");
   // P_thick_fail 0: the reference deletes an element when all its points failed, Crumple at the first one; the
   // same with one point (N = 0, 1), not with several.
   const double failure = mat.law == MaterialLaw::JohnsonCook ? mat.johnson_cook.eps_p_max

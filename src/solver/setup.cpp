@@ -89,6 +89,11 @@ void setup_shells(const Model& m, SolverState& s, ElementKind kind) {
     // The triangle's membrane damping dm: 0.015 when blank, as the reference runs it (its listing prints 0, but its
     // steps are sqrt(1 + 0.015^2) - 0.015 of 2A / longest side and a deck with dm 0.015 gives the same rows).
     if (kind == ElementKind::Shell3) p.membrane_damping = prop.shell.dm > 0.0 ? prop.shell.dm : kDefaultTriangleMembraneDamping;
+    // QEPH's dm: as given; blank, 0.015 with /MAT/PLAS_TAB and 0 with the other laws, as the reference resolves it.
+    if (kind == ElementKind::Shell4 && f.ishell == 24)
+      p.membrane_damping = prop.shell.dm > 0.0                    ? prop.shell.dm
+                           : mat.law == MaterialLaw::Tabulated ? kDefaultTriangleMembraneDamping
+                                                               : 0.0;
     if (prop.shell.dn > 0.0) p.numerical_damping = prop.shell.dn;
     else if (p.fully_integrated) p.numerical_damping = kDefaultQbatDamping;
     // Ishell 12 keeps a section per Gauss point (docs/theory/shell4.md, eq. Q-2).

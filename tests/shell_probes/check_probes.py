@@ -47,6 +47,8 @@ PROBES = [
     ("qeph_twist_plastic", "mode --mode twist --law 2 --speed 0.5 --time 0.2 --print-every 20", 0.1993, 0.02992,
      2.0, "0.217 as hourglass energy", []),
     ("qeph_strip_plastic", "strip --law 2 --speed 20", 0.9966, 0.6487, 2.5, "0.6401", []),
+    ("qeph_strip_dm", "strip --law 2 --speed 20 --dm 0.05", 0.9624, 0.6233, 2.5, "refused",
+     [("DT", 7.401e-4, 0.3)]),
     ("qeph_fold", "fold --law 2 --nx 20 --ny 4 --length 100 --width 20 --speed 5 --time 4 --print-every 500",
      3.664, 80.17, 2.0, "", []),
 ]
