@@ -18,6 +18,7 @@ the mesh by s times the element size (distorted elements).
   generate_probe.py strip --tria --law 2 --out DIR     # writes DIR/PROBE_0000.rad and DIR/PROBE_0001.rad
 """
 import argparse
+import math
 import os
 
 
@@ -111,6 +112,9 @@ def build(a):
     dx = a.length / a.nx
     dy = a.width / a.ny
     nodes, quads = mesh(a.nx, a.ny, dx, dy, a.skew)
+    if a.imperfection:  # a half sine out of the plane along x, so that a strip pushed along x buckles one way
+        for nid, (x, y, z) in nodes.items():
+            nodes[nid] = (x, y, a.imperfection * math.sin(math.pi * x / a.length))
     if a.corners:  # one element of given corners "x,y,z;x,y,z;x,y,z;x,y,z" (nodes 1, 2, 4, 3 of the 1x1 mesh)
         xyz = [tuple(float(v) for v in c.split(",")) for c in a.corners.split(";")]
         for nid, c in zip(quads[0], xyz):
@@ -194,6 +198,7 @@ def main():
     p.add_argument("--time", type=float, default=1.0, help="ms")
     p.add_argument("--print-every", type=int, default=100)
     p.add_argument("--dtscale", type=float, default=0)
+    p.add_argument("--imperfection", type=float, default=0.0, help="mm: a half sine out of the plane along x")
     p.add_argument("--corners", default="", help="one element's corners, x,y,z;x,y,z;x,y,z;x,y,z (kind mode)")
     p.add_argument("note", nargs="*")
     a = p.parse_args()
