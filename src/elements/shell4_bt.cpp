@@ -249,7 +249,7 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
     double damping[5] = {0, 0, 0, 0, 0};                  // viscous hourglass forces of the cycle (Ishell 24)
     double shear_moment_x[NN] = {}, shear_moment_y[NN] = {};  // rotation coefficients of the shear mode (eq. S-13)
     double rotation_damping_x[NN] = {}, rotation_damping_y[NN] = {};  // Ishell 1 to 3 rotation modes (S-18b, S-19)
-    double warping = 0.0;  // Ishell 3: warping height W of eq. S-18a [L]
+    double warping = 0.0;  // Ishell 3 and 24: warping height W of eq. S-18a [L]
     double hourglass_work = 0.0;  // dissipated in the hourglass modes
     double hourglass_stored = 0.0;  // Ishell 24: the work of its hourglass stresses, internal energy (eq. S-12a)
     if constexpr (NN == 4) {
