@@ -157,6 +157,28 @@ ramp to 1 over the rise time, then held
         direction, signs = MODES[a.mode]
         for k, (nid, s) in enumerate(zip(quads[0], signs)):
             text += grnod(10 + k, f"node {nid}", [nid]) + impvel(10 + k, 1, direction, 10 + k, s * a.speed)
+    if a.type7:  # a self contact of the sheet that never closes: what the interface alone does to the step
+        text += f"""/GRNOD/PART/90
+sheet nodes
+         1
+/SURF/PART/91
+sheet surface
+         1
+/INTER/TYPE7/1
+self contact
+#  Slav_id   Mast_id      Istf      Ithe      Igap                Ibag      Idel     Icurv      Iadm
+        90        91         0         0         0                   0         0         0         0
+#          Fscalegap             Gap_max             Fpenmax
+                   0                   0                   0
+#              Stmin               Stmax          %mesh_size               dtmin  Irem_gap   Irem_i2
+                   0                   0                   0                   0         0         0
+#              Stfac                Fric              Gapmin              Tstart               Tstop
+                   0                   0{a.type7:>20}                   0                   0
+#      IBC                        Inacti                VisS                VisF              Bumult
+       000                             0                   0                   0                   0
+#    Ifric    Ifiltr               Xfreq     Iform   sens_ID   fct_IDf             AscaleF   fric_ID
+         0         0                   0         0         0         0                   0         0
+"""
     text += "/END\n"
     engine = f"""#RADIOSS ENGINE
 /RUN/PROBE/1
@@ -198,6 +220,7 @@ def main():
     p.add_argument("--time", type=float, default=1.0, help="ms")
     p.add_argument("--print-every", type=int, default=100)
     p.add_argument("--dtscale", type=float, default=0)
+    p.add_argument("--type7", type=float, default=0.0, help="a TYPE7 self contact of the sheet with this Gapmin [mm]")
     p.add_argument("--imperfection", type=float, default=0.0, help="mm: a half sine out of the plane along x")
     p.add_argument("--corners", default="", help="one element's corners, x,y,z;x,y,z;x,y,z;x,y,z (kind mode)")
     p.add_argument("note", nargs="*")
