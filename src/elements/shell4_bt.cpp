@@ -57,8 +57,7 @@ shell_hourglass::HourglassYieldCheck qeph_yield_check(const ShellGroupParameters
                                                       const double* hq, const double (&increment)[5],
                                                       const double (&rates)[5]) {
   shell_hourglass::HourglassYieldCheck check;
-  check.plastic_law = p.hardening.plastic();
-  if (check.plastic_law && section.min_tangent_ratio >= 1.0) check.yield = hourglass_yield_stress(p, state, first);
+  if (section.min_tangent_ratio >= 1.0) check.yield = hourglass_yield_stress(p, state, first);
   check.mean_ratio = section.tangent_ratio, check.min_ratio = section.min_tangent_ratio;
   for (int c = 0; c < 3; ++c) check.mean_stress[c] = section.n[c] / t, check.mean_moment[c] = section.m[c] / (t * t);
   const double lever_x = std::sqrt(H.xx * area / 3.0), lever_y = std::sqrt(H.yy * area / 3.0), plate = t * t * t / 12.0;
@@ -108,8 +107,7 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
   // The bar speed sqrt(E / rho), as the reference takes for these elements (eq. T-1a: its printed element steps are
   // L / sqrt(E / rho) to all their digits) [L/T].
   const double wave_speed = std::sqrt(E / p.density);
-  // The viscous fraction that shortens the step (eq. T-1c): dm, and for Ishell 24 also dn.
-  const double step_damping = p.physical_hourglass ? std::max(p.membrane_damping, p.numerical_damping) : p.membrane_damping;
+  const double step_factor = shell_section::damped_step_factor(shell_section::step_damping(p));  // eq. T-1c
   const materials::PlaneStressElastic elastic{E, nu};
   const int np = p.points;
   constexpr double mean = 1.0 / NN;  // shape function value at the element centre
@@ -240,7 +238,7 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
       if (state.initial_length[ue] == 0.0) state.initial_length[ue] = length;
       length = state.initial_length[ue];
     }
-    const double step = length * shell_section::damped_step_factor(step_damping) / wave_speed;  // eq. T-1c
+    const double step = length * step_factor / wave_speed;
 
     // Hourglass stiffness on the five one-point hourglass modes of the quadrilateral (eq. S-5); the linear
     // triangle has none.
@@ -290,8 +288,10 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
             shear * rates[2] * dt, -plate * (H.xy * rates[4] - H.yy * rates[3]) * dt,
             plate * (H.xx * rates[4] - H.xy * rates[3]) * dt};
         // The elastic-plastic hourglass (eq. S-12): a yielding section keeps part of the elastic increment.
-        const shell_hourglass::HourglassKept kept = shell_hourglass::qeph_hourglass_kept(
-            qeph_yield_check(p, state, first, section, H, area, t, hq, increment, rates));
+        const shell_hourglass::HourglassKept kept =
+            p.hardening.plastic()
+                ? shell_hourglass::qeph_hourglass_kept(qeph_yield_check(p, state, first, section, H, area, t, hq, increment, rates))
+                : shell_hourglass::HourglassKept{};
         const double keep[5] = {kept.membrane, kept.membrane, 1.0, kept.bending, kept.bending};
         // Numerical damping dn: the elastic increment over the element's own transit time, not stored (eq. S-14).
         const double viscous = dt > 0.0 ? p.numerical_damping * step / dt : 0.0;
@@ -430,11 +430,9 @@ double inertia_share(const ShellGroupParameters& p, const Vec3* x, double thickn
   const double E = p.young, nu = p.poisson;
   const bool plate = p.fully_integrated;
   const double speed = plate ? std::sqrt(E / (p.density * (1.0 - nu * nu))) : std::sqrt(E / p.density);
-  double length = shell_section::characteristic_length<NN>(lx, ly, area, NN == 4 && !plate);
-  if constexpr (NN == 4)
-    if (p.physical_hourglass) length = geometry::qeph_length(lx, ly, area);  // eq. T-1d
-  const double damping = p.physical_hourglass ? std::max(p.membrane_damping, p.numerical_damping) : p.membrane_damping;
-  length *= shell_section::damped_step_factor(damping);  // eq. T-1c
+  const double length = (plate ? shell_section::characteristic_length<NN>(lx, ly, area)
+                               : shell_section::one_point_length<NN>(p, lx, ly, area)) *
+                         shell_section::damped_step_factor(shell_section::step_damping(p));
   const double step = kShearModeMargin * scale * length / speed;
   // eq. S-8a: omega^2 = (kappa G / rho) (n lambda + 1 / X) <= (2 / step)^2.
   const double shear = p.shear_factor * E / (2.0 * (1.0 + nu)) / p.density;

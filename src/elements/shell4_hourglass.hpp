@@ -106,9 +106,8 @@ inline void shear_rotation_coefficients(const QuadraticMoments& g, const double 
 struct HourglassKept {
   double membrane = 1.0, bending = 1.0;
 };
-// What the reduction reads of the element in the cycle.
+// What the reduction reads of an element of a plastic law in the cycle.
 struct HourglassYieldCheck {
-  bool plastic_law = false;            // false: the hourglass stays elastic
   double yield = 0.0;                  // mean yield stress of the points at the start of the step [F/L^2], read
                                        // when every point stayed elastic
   double mean_ratio = 1.0;             // plain mean over the points of their tangent over E (1 for an elastic point)
@@ -133,7 +132,6 @@ inline double hourglass_von_mises_squared(const double (&peak)[2], double nu) {
 }
 inline HourglassKept qeph_hourglass_kept(const HourglassYieldCheck& c) {
   HourglassKept kept;
-  if (!c.plastic_law) return kept;
   const double y2 = c.yield * c.yield;
   double membrane_cut = 0.0, bending_cut = 0.0;
   bool plastic = 1.0 - c.min_ratio >= 1e-18;  // a point yielded in the cycle

@@ -220,6 +220,10 @@ inline MembraneForces membrane_damping(double dm, double density, double wave_sp
 // The factor a viscous fraction nu takes off an element's critical step, sqrt(1 + nu^2) - nu (docs/theory/
 // time-step.md, eq. T-1c): the stable step of a damped oscillator, 0.98511 for nu = 0.015.
 inline double damped_step_factor(double nu) { return std::sqrt(1.0 + nu * nu) - nu; }
+// The viscous fraction that shortens a one-point shell's step (eq. T-1c): dm, and for the QEPH shell also dn.
+inline double step_damping(const ShellGroupParameters& p) {
+  return p.physical_hourglass ? std::max(p.membrane_damping, p.numerical_damping) : p.membrane_damping;
+}
 
 // The linked deflection of the 3-node shell (docs/theory/shell4.md, eq. S-9a): along each side i-j the deflection
 // takes the quadratic term (1/2) N_i N_j (x_j - x_i) . (beta_j - beta_i), beta = (theta_y, -theta_x) the fibre's

@@ -15,13 +15,13 @@ double initial_element_time_step(const Model& model, ElementKind kind, std::size
   const Nodes& x = model.nodes;
   switch (kind) {
     case ElementKind::Shell4: {
-      // Ishell 1 to 4: the bar speed over eq. T-1b's length (T-1a); QEPH: over T-1d's, times T-1c's factor for its
-      // dn (0.015 when blank); QBAT: the plate speed over T-1's.
+      // Ishell 1 to 4: the bar speed over eq. T-1b's length (T-1a); QEPH: over T-1d's, times T-1c's factor for
+      // max(dm, dn); QBAT: the plate speed over T-1's.
       const int ishell = model.formulations[static_cast<std::size_t>(part.property)].ishell;
       const Vec3 a = x.position(n[0]), b = x.position(n[1]), c = x.position(n[2]), d = x.position(n[3]);
       if (ishell == 24) {
-        const double dn = model.properties[static_cast<std::size_t>(part.property)].shell.dn;
-        const double nu = dn > 0.0 ? dn : 0.015;
+        const ShellSection& s = model.properties[static_cast<std::size_t>(part.property)].shell;
+        const double nu = std::max(s.dm, s.dn > 0.0 ? s.dn : kDefaultQephNumericalDamping);
         return geometry::qeph_length(a, b, c, d) * (std::sqrt(1.0 + nu * nu) - nu) / std::sqrt(mat.young / mat.density);
       }
       if (ishell == 12)
@@ -31,7 +31,7 @@ double initial_element_time_step(const Model& model, ElementKind kind, std::size
     }
     case ElementKind::Shell3: {  // the bar speed (T-1a), T-1c's factor for dm (0.015 when blank)
       const double dm = model.properties[static_cast<std::size_t>(part.property)].shell.dm;
-      const double nu = dm > 0.0 ? dm : 0.015;
+      const double nu = dm > 0.0 ? dm : kDefaultMembraneDamping;
       return geometry::triangle_characteristic_length(x.position(n[0]), x.position(n[1]), x.position(n[2])) *
              (std::sqrt(1.0 + nu * nu) - nu) / std::sqrt(mat.young / mat.density);
     }

@@ -17,7 +17,6 @@ namespace {
 
 constexpr double kDefaultHourglass = 0.01;    // Radioss default hm, hf, hr for 4-node shells
 constexpr double kDefaultQbatDamping = 0.001; // Radioss default dn of Ishell 12 (QBAT)
-constexpr double kDefaultTriangleMembraneDamping = 0.015;  // dm of the 3-node shell when blank (eq. S-9d)
 constexpr double kDefaultElastoplasticHourglass = 0.1;  // Radioss default hm, hr of Ishell 3
 
 void setup_nodes(const Model& m, SolverState& s) {
@@ -88,13 +87,14 @@ void setup_shells(const Model& m, SolverState& s, ElementKind kind) {
       st.initial_shape.assign(2 * static_cast<std::size_t>(nodes_per) * n, 0.0);
     // The triangle's membrane damping dm: 0.015 when blank, as the reference runs it (its listing prints 0, but its
     // steps are sqrt(1 + 0.015^2) - 0.015 of 2A / longest side and a deck with dm 0.015 gives the same rows).
-    if (kind == ElementKind::Shell3) p.membrane_damping = prop.shell.dm > 0.0 ? prop.shell.dm : kDefaultTriangleMembraneDamping;
+    if (kind == ElementKind::Shell3) p.membrane_damping = prop.shell.dm > 0.0 ? prop.shell.dm : kDefaultMembraneDamping;
     // QEPH's dm: as given; blank, 0.015 with /MAT/PLAS_TAB and 0 with the other laws, as the reference resolves it.
     if (kind == ElementKind::Shell4 && f.ishell == 24)
       p.membrane_damping = prop.shell.dm > 0.0                    ? prop.shell.dm
-                           : mat.law == MaterialLaw::Tabulated ? kDefaultTriangleMembraneDamping
+                           : mat.law == MaterialLaw::Tabulated ? kDefaultMembraneDamping
                                                                : 0.0;
     if (prop.shell.dn > 0.0) p.numerical_damping = prop.shell.dn;
+    else if (p.physical_hourglass) p.numerical_damping = kDefaultQephNumericalDamping;
     else if (p.fully_integrated) p.numerical_damping = kDefaultQbatDamping;
     // Ishell 12 keeps a section per Gauss point (docs/theory/shell4.md, eq. Q-2).
     const int sections = p.fully_integrated ? 4 : 1;

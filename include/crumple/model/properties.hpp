@@ -8,6 +8,12 @@
 
 namespace crumple {
 
+// The shells' damping defaults where the property leaves them blank (docs/theory/shell4.md, S-9d, S-14; time-step.md,
+// T-1c): the QEPH shell's numerical damping dn, and the membrane damping dm of the 3-node shell and of the QEPH shell
+// with /MAT/PLAS_TAB, as the reference runs them.
+inline constexpr double kDefaultQephNumericalDamping = 0.015;
+inline constexpr double kDefaultMembraneDamping = 0.015;
+
 struct ShellSection {  // /PROP/TYPE1 (= /PROP/SHELL); flags and checks: docs/theory/shell4.md, "Formulation flags"
   int ishell = 0;          // 4-node formulation: 1, 2, 3 (Q4 hourglass variants), 12 QBAT, 24 QEPH (default)
   int ismstr = 0;          // small-strain flag: 1 from t = 0, 2 switchable (default), 4 never; 3 as 2
