@@ -29,9 +29,9 @@ double initial_element_time_step(const Model& model, ElementKind kind, std::size
                std::sqrt(mat.young / (mat.density * (1.0 - mat.poisson * mat.poisson)));
       return geometry::belytschko_tsay_length(a, b, c, d) / std::sqrt(mat.young / mat.density);
     }
-    case ElementKind::Shell3: {  // the bar speed (T-1a), T-1c's factor for dm (0.015 when blank)
-      const double dm = model.properties[static_cast<std::size_t>(part.property)].shell.dm;
-      const double nu = dm > 0.0 ? dm : kDefaultMembraneDamping;
+    case ElementKind::Shell3: {  // the bar speed (T-1a), T-1c's factor for dm (S-9d)
+      const auto q = static_cast<std::size_t>(part.property);
+      const double nu = triangle_membrane_damping(model.properties[q].shell, model.formulations[q]);
       return geometry::triangle_characteristic_length(x.position(n[0]), x.position(n[1]), x.position(n[2])) *
              (std::sqrt(1.0 + nu * nu) - nu) / std::sqrt(mat.young / mat.density);
     }

@@ -85,9 +85,7 @@ void setup_shells(const Model& m, SolverState& s, ElementKind kind) {
     p.small_strain_switchable = f.ismstr == 2;  // eq. S-16; Ismstr 4 never switches
     if ((p.small_strain || p.small_strain_switchable) && st.initial_shape.empty())
       st.initial_shape.assign(2 * static_cast<std::size_t>(nodes_per) * n, 0.0);
-    // The triangle's membrane damping dm: 0.015 when blank, as the reference runs it (its listing prints 0, but its
-    // steps are sqrt(1 + 0.015^2) - 0.015 of 2A / longest side and a deck with dm 0.015 gives the same rows).
-    if (kind == ElementKind::Shell3) p.membrane_damping = prop.shell.dm > 0.0 ? prop.shell.dm : kDefaultMembraneDamping;
+    if (kind == ElementKind::Shell3) p.membrane_damping = triangle_membrane_damping(prop.shell, f);
     // QEPH's dm: as given; blank, 0.015 with /MAT/PLAS_TAB and 0 with the other laws, as the reference resolves it.
     if (kind == ElementKind::Shell4 && f.ishell == 24)
       p.membrane_damping = prop.shell.dm > 0.0                    ? prop.shell.dm

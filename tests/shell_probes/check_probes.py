@@ -28,6 +28,9 @@ PROBES = [
      [("DT", 6.058e-4, 0.3)]),
     ("tria_dm", "strip --tria --law 2 --speed 20 --dm 0.05", 0.9947, 0.6550, 2.0, "refused",
      [("DT", 5.850e-4, 0.3)]),
+    # Blank dm is 0.015 for the triangles of an Ishell 24 property only (shell4.md, S-9d).
+    ("tria_ishell1_step", "strip --tria --ishell 1 --law 2 --speed 20", 0.9842, 0.6469, 2.0,
+     "dt 6.058e-4 (dm 0.015 whatever the Ishell)", [("DT", 6.150e-4, 0.3)]),
     ("tria_skewed_elastic", "strip --tria --skew 0.3 --ny 4 --width 20", 0.9887, 0.0133, 1.0, "",
      [("DT", 1.150e-4, 0.3)]),
     ("tria_skewed_plastic", "strip --tria --skew 0.3 --ny 4 --width 20 --law 2 --speed 20", 0.9887, 1.346, 2.0, "",

@@ -9,8 +9,8 @@
 namespace crumple {
 
 // The shells' damping defaults where the property leaves them blank (docs/theory/shell4.md, S-9d, S-14; time-step.md,
-// T-1c): the QEPH shell's numerical damping dn, and the membrane damping dm of the 3-node shell and of the QEPH shell
-// with /MAT/PLAS_TAB, as the reference runs them.
+// T-1c): the QEPH shell's numerical damping dn, and the membrane damping dm of the 3-node shell of a QEPH property and
+// of the QEPH shell with /MAT/PLAS_TAB, as the reference runs them.
 inline constexpr double kDefaultQephNumericalDamping = 0.015;
 inline constexpr double kDefaultMembraneDamping = 0.015;
 
@@ -74,5 +74,11 @@ struct ResolvedFormulation {
   int n_points = 0; // shells: through-thickness points; 0 = global (stress-resultant) plasticity
   int iplas = 2;    // shells, plastic points: 1 the iterative (exact) plane-stress return, 2 the radial return
 };
+
+// The 3-node shell's membrane damping dm (docs/theory/shell4.md, S-9d): as given; blank, 0.015 when the property's
+// 4-node formulation resolves to QEPH (Ishell 24) and 0 otherwise, as the reference runs it.
+inline double triangle_membrane_damping(const ShellSection& s, const ResolvedFormulation& f) {
+  return s.dm > 0.0 ? s.dm : f.ishell == 24 ? kDefaultMembraneDamping : 0.0;
+}
 
 }  // namespace crumple
