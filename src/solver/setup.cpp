@@ -86,14 +86,14 @@ void setup_shells(const Model& m, SolverState& s, ElementKind kind) {
     if ((p.small_strain || p.small_strain_switchable) && st.initial_shape.empty())
       st.initial_shape.assign(2 * static_cast<std::size_t>(nodes_per) * n, 0.0);
     if (kind == ElementKind::Shell3) p.membrane_damping = triangle_membrane_damping(prop.shell, f);
-    // QEPH's dm: as given; blank, 0.015 with /MAT/PLAS_TAB and 0 with the other laws, as the reference resolves it.
-    if (kind == ElementKind::Shell4 && f.ishell == 24)
-      p.membrane_damping = prop.shell.dm > 0.0                    ? prop.shell.dm
-                           : mat.law == MaterialLaw::Tabulated ? kDefaultMembraneDamping
-                                                               : 0.0;
-    if (prop.shell.dn > 0.0) p.numerical_damping = prop.shell.dn;
-    else if (p.physical_hourglass) p.numerical_damping = kDefaultQephNumericalDamping;
-    else if (p.fully_integrated) p.numerical_damping = kDefaultQbatDamping;
+    if (p.physical_hourglass) {
+      p.membrane_damping = qeph_membrane_damping(prop.shell, mat.law == MaterialLaw::Tabulated);
+      p.numerical_damping = qeph_numerical_damping(prop.shell);
+    } else if (prop.shell.dn > 0.0) {
+      p.numerical_damping = prop.shell.dn;
+    } else if (p.fully_integrated) {
+      p.numerical_damping = kDefaultQbatDamping;
+    }
     // Ishell 12 keeps a section per Gauss point (docs/theory/shell4.md, eq. Q-2).
     const int sections = p.fully_integrated ? 4 : 1;
     if (p.fully_integrated && st.gauss_shear.empty()) st.gauss_shear.assign(8 * n, 0.0);
@@ -116,7 +116,8 @@ void setup_shells(const Model& m, SolverState& s, ElementKind kind) {
     for (std::int32_t e = group.begin; e < group.end; ++e) {
       st.thickness[static_cast<std::size_t>(e)] = prop.shell.thickness;
       // Lumped rotational inertia of the shell's nodes: m (t^2/12 + A/9) / 4 (docs/theory/shell4.md, eq. S-8), for
-      // a triangle m (t^2/12 + 2A/9) shared by the corner angles (eq. S-9c), raised where the element's transverse-shear mode would not be stable at its step (eq. S-8a).
+      // a triangle m (t^2/12 + 2A/9) shared by the corner angles (eq. S-9c), raised where the element's
+      // transverse-shear mode would not be stable at its step (eq. S-8a).
       const double mass = element_mass(m, kind, static_cast<std::size_t>(e));
       st.mass[static_cast<std::size_t>(e)] = mass;
       const std::int32_t* nodes = table.nodes_of(static_cast<std::size_t>(e));

@@ -80,5 +80,11 @@ struct ResolvedFormulation {
 inline double triangle_membrane_damping(const ShellSection& s, const ResolvedFormulation& f) {
   return s.dm > 0.0 ? s.dm : f.ishell == 24 ? kDefaultMembraneDamping : 0.0;
 }
+// The QEPH shell's (Ishell 24) membrane damping dm and numerical damping dn (S-9d, S-14): as given; blank, dm is
+// 0.015 with /MAT/PLAS_TAB (`tabulated`) and 0 with the other laws, dn 0.015, as the reference resolves them.
+inline double qeph_membrane_damping(const ShellSection& s, bool tabulated) {
+  return s.dm > 0.0 ? s.dm : tabulated ? kDefaultMembraneDamping : 0.0;
+}
+inline double qeph_numerical_damping(const ShellSection& s) { return s.dn > 0.0 ? s.dn : kDefaultQephNumericalDamping; }
 
 }  // namespace crumple
