@@ -14,10 +14,10 @@
 namespace crumple::contact {
 namespace {
 
-// A record of the pass (ContactState scratch): a pair in contact, {q, force x y z, weights 0..3, IBC dofs}, its
-// force on the secondary node and, times -weight, on the segment's nodes; or a node's new /DT/INTER/CST mass,
-// {-1 - node, mass, 0 ...}.
-constexpr std::size_t kRecordWidth = 9;
+// A record of the pass (ContactState scratch): a pair in contact, {q, force x y z, weights 0..3, IBC dofs, tangent
+// stiffness Kt}, its force on the secondary node and, times -weight, on the segment's nodes; or a node's new
+// /DT/INTER/CST mass, {-1 - node, mass, 0 ...}.
+constexpr std::size_t kRecordWidth = 10;
 
 // The interface's sums of one cycle (ContactState::cycle_sums), exact so that the domains' shares combine into
 // one domain's result.
@@ -311,8 +311,9 @@ void compute_pairs(ContactState& c, ContactInterface& in, const NodalState& node
       const bool releases = in.release_bc != 0 && !in.node_impacted[i];
       in.node_impacted[i] = 1;
       // Equal and opposite: the node gets `force`, the segment nodes -weight_a force (momentum conserved).
-      const double record[kRecordWidth] = {static_cast<double>(q), force[0], force[1], force[2], cp.weight[0],
-                                           cp.weight[1], cp.weight[2], cp.weight[3], releases ? double(in.release_bc) : 0.0};
+      const double record[kRecordWidth] = {static_cast<double>(q), force[0],     force[1],     force[2],
+                                           cp.weight[0],           cp.weight[1], cp.weight[2], cp.weight[3],
+                                           releases ? double(in.release_bc) : 0.0, kt};
       c.own_records.insert(c.own_records.end(), record, record + kRecordWidth);
     }
   }
@@ -358,7 +359,7 @@ void node_steps(ContactState& c, ContactInterface& in, NodalState& nodes, const 
                                     (nodes.vx[n] * nodes.vx[n] + nodes.vy[n] * nodes.vy[n] + nodes.vz[n] * nodes.vz[n]));
       nodes.mass[n] = needed;
       if (!scope.only_here(n)) {
-        const double record[kRecordWidth] = {-1.0 - static_cast<double>(n), needed, 0, 0, 0, 0, 0, 0, 0};
+        const double record[kRecordWidth] = {-1.0 - static_cast<double>(n), needed, 0, 0, 0, 0, 0, 0, 0, 0};
         c.own_records.insert(c.own_records.end(), record, record + kRecordWidth);
       }
       node_step = ps.mass_step;
@@ -426,6 +427,8 @@ void apply_records(ContactState& c, ContactInterface& in, NodalState& nodes, con
     const auto& seg = in.segments[static_cast<std::size_t>(in.candidate_segment[q])];
     auto apply = [&](std::size_t k, double w) {
       if (!scope.is_local(k)) return;
+      // The pair's tangent stiffness at the node, by its share (eq. T-4).
+      if (!c.nodal_contact_stiffness.empty()) c.nodal_contact_stiffness[k] += std::abs(w) * rec[9];
       const double gx = w * rec[1], gy = w * rec[2], gz = w * rec[3];
       nodes.fx[k] += gx, nodes.fy[k] += gy, nodes.fz[k] += gz;
       if (c.fx[k] == 0.0 && c.fy[k] == 0.0 && c.fz[k] == 0.0) c.touched.push_back(static_cast<std::int32_t>(k));
@@ -479,6 +482,7 @@ ContactStep contact_forces(const Model& m, ContactState& c, NodalState& nodes, d
     c.fx[k] = c.fy[k] = c.fz[k] = 0.0;
   }
   c.touched.clear();
+  std::fill(c.nodal_contact_stiffness.begin(), c.nodal_contact_stiffness.end(), 0.0);
   const RunControl& rc = m.run;
   const PassSettings settings{time,
                               dt_previous,

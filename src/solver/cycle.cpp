@@ -286,6 +286,8 @@ void share_element_results(const Model& m, SolverState& s, Exchange& exchange) {
   for (int k = 0; k < kElementKinds; ++k) {
     ElementStateView v = element_view(s, static_cast<ElementKind>(k));
     if (critical_steps) exchange.share(v.critical_dt, 1, d.owner[static_cast<std::size_t>(k)]);
+    if (interface_nodal_step_on(m))
+      exchange.share(s.interface_stiffness[static_cast<std::size_t>(k)], 1, d.owner[static_cast<std::size_t>(k)]);
   }
   share_group_results(m, s, exchange);
   assemble_element_loads(d, s.shells, s.shells3, s.bricks, s.nodes);
@@ -500,7 +502,10 @@ StepBound combine_group_results(const Model& m, SolverState& s, RunEvents& event
 StepBound compute_element_forces(const Model& m, SolverState& s, RunEvents& events, bool& elements_deleted,
                                   Exchange* exchange) {
   run_element_kernels(m, s, s.domain.several() ? exchange : nullptr);
+  const bool interface_step = interface_nodal_step_on(m);
+  if (interface_step) element_interface_stiffness(m, s);
   if (s.domain.several()) share_element_results(m, s, *exchange);
+  if (interface_step) nodal_interface_stiffness(m, s);
   return combine_group_results(m, s, events, elements_deleted);
 }
 
@@ -597,6 +602,10 @@ double choose_time_step(const Model& m, SolverState& s, RunEvents& events, StepB
       bound.dt = nodal.dt, bound.control = StepControl::node(nodal.node);
       if (bound.contact_dt < bound.dt) bound.dt = bound.contact_dt, bound.control = bound.contact_control;
     }
+  } else if (interface_nodal_step_on(m)) {
+    // With a TYPE7 interface the reference also bounds the step by its nodal one (eq. T-4).
+    const NodalStep nodal = interface_nodal_step(m, s);
+    if (nodal.node >= 0 && nodal.dt < bound.dt) bound.dt = nodal.dt, bound.control = StepControl::node(nodal.node);
   }
   // /DTIX: never above DTmax; the first cycle of the engine deck at most DTini.
   if (rc.dt_max > 0.0 && !(bound.dt <= rc.dt_max)) bound = {rc.dt_max, {StepControl::Source::MaximumStep}};

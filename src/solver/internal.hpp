@@ -44,6 +44,13 @@ struct NodalStep {
   std::int32_t node;
 };
 NodalStep nodal_time_step(const Model& model, SolverState& state);
+// The reference's nodal step of a deck with a TYPE7 interface (docs/theory/time-step.md, eq. T-4): on when the
+// deck has one and neither /DT/NODA/CST nor /DT/INTER/CST; each element's stiffness (this domain's), their sums
+// per node (every node, after the exchange), and the step over this domain's nodes with the contact's, reduced.
+bool interface_nodal_step_on(const Model& model);
+void element_interface_stiffness(const Model& model, SolverState& state);
+void nodal_interface_stiffness(const Model& model, SolverState& state);
+NodalStep interface_nodal_step(const Model& model, SolverState& state);
 
 // The first output time start + k interval (k >= 0 whole) after t, with the loop's relative tolerance 1e-12 on
 // times, in O(1) whatever the ratio of the interval to the step (/ANIM/DT, /TFILE).

@@ -1,8 +1,11 @@
 // Nodal time step and mass scaling (/DT/NODA/CST) (docs/theory/time-step.md, "Nodal step").
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
+#include "crumple/core/geometry.hpp"
+#include "solver/cycle.hpp"
 #include "solver/internal.hpp"
 
 namespace crumple::solver {
@@ -21,7 +24,104 @@ void add_element_stiffness(const ElementTable& table, const State& st, std::vect
   }
 }
 
+// The factor beta of an element in the interface nodal step (eq. T-4): it gives each of its nodes the stiffness
+// k = beta rho V / dt_e^2, V its current volume and dt_e its unscaled critical step. Measured on the reference solver
+// one kind at a time (docs/theory/time-step.md, T-4); beta = 2 / n is T-2's estimate.
+double interface_stiffness_factor(ElementKind kind, const ResolvedFormulation& f, const Material& mat) {
+  const double plate = 1.0 / (1.0 - mat.poisson * mat.poisson);  // A11 / E
+  switch (kind) {
+    case ElementKind::Brick8: return 0.25;              // 2 (m_e / 8) / dt_e^2
+    case ElementKind::Shell3: return 0.6561 * plate;    // 0.6561 V A11 / L^2
+    case ElementKind::Shell4:
+      if (f.ishell == 24) return 0.5 * plate;           // (1/2) V A11 / L^2, QEPH
+      if (f.ishell == 12) return 2.0 / 3.0;             // (2/3) V A11 / L^2 on its plate-speed step
+      return 0.405;                                     // 0.81 (1/2) V E / L^2, Ishell 1 to 4
+  }
+  return 0.0;
+}
+
+Vec3 current_position(const NodalState& x, std::int32_t k) {
+  const auto i = static_cast<std::size_t>(k);
+  return {x.x[i], x.y[i], x.z[i]};
+}
+
+// The element's current volume: a shell's current area times its current thickness, a brick's exact volume.
+template <class State>
+double current_volume(ElementKind kind, const State& st, std::size_t e, const std::int32_t* c, const NodalState& x) {
+  if constexpr (requires { st.thickness; }) {
+    const double area = kind == ElementKind::Shell3
+                            ? geometry::triangle_area(current_position(x, c[0]), current_position(x, c[1]),
+                                                      current_position(x, c[2]))
+                            : geometry::quad_area(current_position(x, c[0]), current_position(x, c[1]),
+                                                  current_position(x, c[2]), current_position(x, c[3]));
+    return area * st.thickness[e];
+  } else {
+    return geometry::brick_volume(x.x, x.y, x.z, c);
+  }
+}
+
+// Each element of this domain: the stiffness it gives each of its nodes (eq. T-4), 0 when it is not active.
+template <class State>
+void element_stiffness(const Model& m, ElementKind kind, const State& st, SolverState& s) {
+  const ElementTable& table = m.elements[static_cast<std::size_t>(kind)];
+  std::vector<double>& k = s.interface_stiffness[static_cast<std::size_t>(kind)];
+  k.resize(table.size());
+  for (std::size_t e = 0; e < table.size(); ++e) {
+    if (s.domain.several() && !s.domain.mine(kind, e)) continue;
+    k[e] = 0.0;
+    if (element_condition(st.deleted[e]) != kElementActive || !(st.critical_dt[e] > 0.0)) continue;
+    const Part& part = m.parts[static_cast<std::size_t>(table.part[e])];
+    const Material& mat = m.materials[static_cast<std::size_t>(part.material)];
+    const double beta = interface_stiffness_factor(kind, m.formulations[static_cast<std::size_t>(part.property)], mat);
+    k[e] = beta * mat.density * current_volume(kind, st, e, table.nodes_of(e), s.nodes) /
+           (st.critical_dt[e] * st.critical_dt[e]);
+  }
+}
+
 }  // namespace
+
+// Off under mass scaling: /DT/NODA/CST has its own nodal step (T-2, T-3), /DT/INTER/CST sizes the contacts' masses on
+// their own step (C-11c).
+bool interface_nodal_step_on(const Model& m) {
+  return !m.type7_interfaces.empty() && !m.run.dt_nodal_cst.given && !m.run.dt_inter_cst.given;
+}
+
+void element_interface_stiffness(const Model& m, SolverState& s) {
+  element_stiffness(m, ElementKind::Shell4, s.shells, s);
+  element_stiffness(m, ElementKind::Shell3, s.shells3, s);
+  element_stiffness(m, ElementKind::Brick8, s.bricks, s);
+}
+
+void nodal_interface_stiffness(const Model& m, SolverState& s) {
+  std::vector<double>& k = s.nodal_stiffness;
+  k.assign(s.nodes.size(), 0.0);
+  s.contact.nodal_contact_stiffness.resize(s.nodes.size(), 0.0);
+  for (int kind = 0; kind < kElementKinds; ++kind) {
+    const ElementTable& table = m.elements[static_cast<std::size_t>(kind)];
+    const std::vector<double>& ke = s.interface_stiffness[static_cast<std::size_t>(kind)];
+    const int n = nodes_per_element(table.kind);
+    for (std::size_t e = 0; e < table.size(); ++e)
+      for (int a = 0; a < n; ++a) k[static_cast<std::size_t>(table.nodes_of(e)[a])] += ke[e];
+  }
+}
+
+NodalStep interface_nodal_step(const Model& m, SolverState& s) {
+  const std::vector<double>& element = s.nodal_stiffness;
+  const std::vector<double>& contact = s.contact.nodal_contact_stiffness;
+  const double scale = step_scale(m.run);
+  NodalStep step{std::numeric_limits<double>::infinity(), -1};
+  for_each_owned_node(s.domain, s.nodes.size(), [&](std::size_t node) {
+    const double k = element[node] + contact[node];
+    // A node moving with a rigid body: its springs push the body (C-11 takes its step), its elements are carried.
+    if (!(k > 0.0) || !(s.nodes.mass[node] > 0.0) || s.rigid_owner[node] >= 0) return;
+    const double dt = scale * std::sqrt(2.0 * s.nodes.mass[node] / k);
+    if (dt < step.dt) step = {dt, static_cast<std::int32_t>(node)};
+  });
+  Reducer& r = s.reducer;
+  r.values.assign(1, step.dt), r.indices.assign(1, step.node);
+  r.min_with_index(r.values, r.indices);  // one domain: as it is
+  return {r.values[0], r.indices[0]};
+}
 
 NodalStep nodal_time_step(const Model& m, SolverState& s) {
   const TimeStepControl& cst = m.run.dt_nodal_cst;

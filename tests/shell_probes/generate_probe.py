@@ -10,6 +10,8 @@ can be compared. Kinds:
   mode       one element whose four nodes are driven in an hourglass pattern (--mode membrane, bending, twist,
              shear): each node's velocity is --speed times the pattern's sign.
   fold       a strip nx x ny, clamped at x = 0, its far edge pushed along -x (buckling into a fold) at --speed.
+  pair       a free plate of side --top at --depth over a free 5 x 5 plate, inside a TYPE7 gap --type7: the first
+             cycle's step is the interface nodal step's (docs/theory/time-step.md, T-4).
 
 --tria splits each quadrilateral on its 1-3 diagonal into two 3-node shells. --law 1 is elastic steel, --law 2
 Johnson-Cook steel (a 0.21, b 0.45, n 0.45, the shared rails' sheet). --skew s moves the free corner nodes of
@@ -108,6 +110,62 @@ MODES = {  # node signs of the hourglass pattern (1, -1, 1, -1) and the dof it d
 }
 
 
+def type7(title, gapmin):
+    """A TYPE7 interface of the secondary nodes of /GRNOD 90 on the surface /SURF 91, defaults but Gapmin."""
+    return f"""/INTER/TYPE7/1
+{title}
+#  Slav_id   Mast_id      Istf      Ithe      Igap                Ibag      Idel     Icurv      Iadm
+        90        91         0         0         0                   0         0         0         0
+#          Fscalegap             Gap_max             Fpenmax
+                   0                   0                   0
+#              Stmin               Stmax          %mesh_size               dtmin  Irem_gap   Irem_i2
+                   0                   0                   0                   0         0         0
+#              Stfac                Fric              Gapmin              Tstart               Tstop
+                   0                   0{gapmin:>20}                   0                   0
+#      IBC                        Inacti                VisS                VisF              Bumult
+       000                             0                   0                   0                   0
+#    Ifric    Ifiltr               Xfreq     Iform   sens_ID   fct_IDf             AscaleF   fric_ID
+         0         0                   0         0         0         0                   0         0
+"""
+
+
+def header(a):
+    return "\n".join(["#RADIOSS STARTER", f"# Crumple shell probe: {a.kind} {' '.join(a.note)}", "/BEGIN", "PROBE",
+                      "      2019         0",
+                      "                  kg                  mm                  ms",
+                      "                  kg                  mm                  ms", "/TITLE",
+                      f"shell probe {a.kind}"]) + "\n"
+
+
+def engine_deck(a):
+    engine = f"""#RADIOSS ENGINE
+/RUN/PROBE/1
+{fmt_row([a.time])}
+/PRINT/-{a.print_every}
+/TFILE/4
+{fmt_row([a.time / 50])}
+"""
+    if a.dtscale:
+        engine += f"/DT\n{fmt_row([a.dtscale, 0])}\n"
+    return engine
+
+
+def build_pair(a):
+    """A free square plate of side --top at --depth above a free 5 x 5 plate (the main surface), both at rest, inside
+    the TYPE7 gap --type7: the step of its first cycle is the contact's. --light scales the lower plate's density."""
+    light = material(1).replace("/MAT/ELAST/1", "/MAT/ELAST/2").replace("7.85e-06", f"{7.85e-06 * a.light:.6g}")
+    text = header(a) + material(a.law) + light + prop(a)
+    text += "/PART/1\nmain plate\n         1         2         0\n/PART/2\ntop plate\n         1         1         0\n"
+    lo, hi = a.centre - a.top / 2, a.centre + a.top / 2
+    corners = [(0, 0, 0), (5, 0, 0), (5, 5, 0), (0, 5, 0), (lo, lo, a.depth), (hi, lo, a.depth), (hi, hi, a.depth),
+               (lo, hi, a.depth)]
+    text += "/NODE\n" + "".join(f"{k + 1:>10}{fmt_row([f'{x:.10g}', f'{y:.10g}', f'{z:.10g}'])}\n"
+                                 for k, (x, y, z) in enumerate(corners))
+    text += "/SHELL/1\n" + ints([1, 1, 2, 3, 4]) + "\n/SHELL/2\n" + ints([2, 5, 6, 7, 8]) + "\n"
+    text += "/GRNOD/PART/90\ntop nodes\n         2\n/SURF/PART/91\nmain surface\n         1\n"
+    return text + type7("pair", a.type7) + "/END\n", engine_deck(a)
+
+
 def build(a):
     dx = a.length / a.nx
     dy = a.width / a.ny
@@ -119,11 +177,7 @@ def build(a):
         xyz = [tuple(float(v) for v in c.split(",")) for c in a.corners.split(";")]
         for nid, c in zip(quads[0], xyz):
             nodes[nid] = c
-    out = ["#RADIOSS STARTER", f"# Crumple shell probe: {a.kind} {' '.join(a.note)}", "/BEGIN", "PROBE",
-           "      2019         0",
-           "                  kg                  mm                  ms",
-           "                  kg                  mm                  ms", "/TITLE", f"shell probe {a.kind}"]
-    text = "\n".join(out) + "\n" + material(a.law) + prop(a)
+    text = header(a) + material(a.law) + prop(a)
     text += "/PART/1\nsheet\n         1         1         0\n/NODE\n"
     for nid, (x, y, z) in nodes.items():
         text += f"{nid:>10}{fmt_row([f'{x:.10g}', f'{y:.10g}', f'{z:.10g}'])}\n"
@@ -158,43 +212,14 @@ ramp to 1 over the rise time, then held
         for k, (nid, s) in enumerate(zip(quads[0], signs)):
             text += grnod(10 + k, f"node {nid}", [nid]) + impvel(10 + k, 1, direction, 10 + k, s * a.speed)
     if a.type7:  # a self contact of the sheet that never closes: what the interface alone does to the step
-        text += f"""/GRNOD/PART/90
-sheet nodes
-         1
-/SURF/PART/91
-sheet surface
-         1
-/INTER/TYPE7/1
-self contact
-#  Slav_id   Mast_id      Istf      Ithe      Igap                Ibag      Idel     Icurv      Iadm
-        90        91         0         0         0                   0         0         0         0
-#          Fscalegap             Gap_max             Fpenmax
-                   0                   0                   0
-#              Stmin               Stmax          %mesh_size               dtmin  Irem_gap   Irem_i2
-                   0                   0                   0                   0         0         0
-#              Stfac                Fric              Gapmin              Tstart               Tstop
-                   0                   0{a.type7:>20}                   0                   0
-#      IBC                        Inacti                VisS                VisF              Bumult
-       000                             0                   0                   0                   0
-#    Ifric    Ifiltr               Xfreq     Iform   sens_ID   fct_IDf             AscaleF   fric_ID
-         0         0                   0         0         0         0                   0         0
-"""
-    text += "/END\n"
-    engine = f"""#RADIOSS ENGINE
-/RUN/PROBE/1
-{fmt_row([a.time])}
-/PRINT/-{a.print_every}
-/TFILE/4
-{fmt_row([a.time / 50])}
-"""
-    if a.dtscale:
-        engine += f"/DT\n{fmt_row([a.dtscale, 0])}\n"
-    return text, engine
+        text += "/GRNOD/PART/90\nsheet nodes\n         1\n/SURF/PART/91\nsheet surface\n         1\n"
+        text += type7("self contact", a.type7)
+    return text + "/END\n", engine_deck(a)
 
 
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("kind", choices=["strip", "mode", "fold"])
+    p.add_argument("kind", choices=["strip", "mode", "fold", "pair"])
     p.add_argument("--out", required=True)
     p.add_argument("--nx", type=int, default=10)
     p.add_argument("--ny", type=int, default=2)
@@ -223,12 +248,16 @@ def main():
     p.add_argument("--type7", type=float, default=0.0, help="a TYPE7 self contact of the sheet with this Gapmin [mm]")
     p.add_argument("--imperfection", type=float, default=0.0, help="mm: a half sine out of the plane along x")
     p.add_argument("--corners", default="", help="one element's corners, x,y,z;x,y,z;x,y,z;x,y,z (kind mode)")
+    p.add_argument("--top", type=float, default=2.0, help="mm: the upper plate's side (kind pair)")
+    p.add_argument("--centre", type=float, default=2.5, help="mm: the upper plate's centre, x = y (kind pair)")
+    p.add_argument("--depth", type=float, default=0.05, help="mm: the upper plate's height (kind pair)")
+    p.add_argument("--light", type=float, default=1.0, help="the main plate's density factor (kind pair)")
     p.add_argument("note", nargs="*")
     a = p.parse_args()
     if a.kind == "mode":
         a.nx = a.ny = 1
         a.length = a.width = a.length if a.length != 50.0 else 5.0
-    starter, engine = build(a)
+    starter, engine = build_pair(a) if a.kind == "pair" else build(a)
     os.makedirs(a.out, exist_ok=True)
     open(os.path.join(a.out, "PROBE_0000.rad"), "w").write(starter)
     open(os.path.join(a.out, "PROBE_0001.rad"), "w").write(engine)

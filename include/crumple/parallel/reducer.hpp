@@ -33,6 +33,8 @@ class Reducer {
   // Scratch the callers reuse, so that the cycle allocates nothing once warm.
   std::vector<ExactSum> sums;
   std::vector<std::int32_t> flags;
+  std::vector<double> values;
+  std::vector<std::int32_t> indices;
 
  private:
   Exchange* exchange_ = nullptr;

@@ -111,7 +111,10 @@ struct SolverState {
   EnergyBalanceState energy;
   double mass_initial = 0.0;
   double mass_added = 0.0;         // mass added by /DT/NODA/CST [M]
-  std::vector<double> nodal_stiffness;  // scratch of the nodal time step: sum of element stiffness estimates
+  std::vector<double> nodal_stiffness;  // scratch of the nodal time steps: sum of element stiffness estimates (T-2, T-4)
+  // The interface nodal step (TYPE7 decks, docs/theory/time-step.md, T-4): per element kind, per element, the
+  // stiffness it gives each of its nodes this cycle, from its owner [F/L].
+  std::array<std::vector<double>, kElementKinds> interface_stiffness;
   std::vector<GroupStepResult> group_results;  // scratch of the element phase: per element group of the model
   Domain domain;  // the elements this state computes: all of them, or one domain's of a run of several
   Reducer reducer;  // sums over the domains of a run of several (none for one domain)

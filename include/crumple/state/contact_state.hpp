@@ -195,6 +195,9 @@ struct ContactState {
   // so its step is the body's, and its own elements (carried by the body) add no stiffness (eq. C-11). The solver
   // keeps it as bodies switch on and off.
   std::vector<double> rigid_body_mass;
+  // Per node, for the interface nodal step (docs/theory/time-step.md, T-4; empty when it is off): the contact
+  // stiffness of the cycle, Kt of its pairs as a secondary node plus w Kt of each pair on a segment it carries.
+  std::vector<double> nodal_contact_stiffness;
   double sort_seconds = 0.0;  // wall time of the searches so far (the positions gathered and the bucket sort) [s]
   contact::PairBatch batch;  // scratch of the pass: one batch of gathered pairs (eq. C-1)
   // Scratch of the pass: the forces of this domain's pairs in contact and the masses its nodes took (records of
