@@ -120,6 +120,7 @@ struct InterfaceCycle {
 struct PassSettings {
   double time, dt_previous, dt_estimate, scale, release_step, mass_step;
   double entry_window;  // RunControl::contact_entry_window [steps]
+  double nodal_mass_step;  // /DT/NODA/CST's dt_min when alone: the nodal mass holds the contacts (time-step.md, T-2)
   double speed = 0.0;  // the interface's largest nodal speed this pass [L/T]
 };
 
@@ -259,11 +260,23 @@ void compute_pairs(ContactState& c, ContactInterface& in, const NodalState& node
       in.node_tangent_sum[i] += kt;
       // With /DT/INTER/CST: the penetration the node can reach within the step (at most half its remaining
       // distance, the kinematic bound), and the stiffness there, which the added mass must hold (eq. C-11c).
-      if (ps.mass_step > 0.0) {
-        const double reach = std::min(p + std::max(penetration_rate, 0.0) * dt_estimate, p + 0.5 * (g - p));
-        in.node_reach_stiffness[i] += tangent_stiffness(k0, g, reach);
+      if (ps.mass_step > 0.0 || ps.nodal_mass_step > 0.0) {
+        in.node_reach_stiffness[i] += tangent_stiffness(k0, g, reach_penetration(g, p, penetration_rate, dt_estimate));
       }
       in.node_friction_viscosity[i] += ct;
+      // What the pair gives its nodes' nodal step (time-step.md, T-4, T-4b): its tangent stiffness. Under
+      // /DT/NODA/CST the mass holds it, and the friction's dashpot where stiffer, for a pair the target step
+      // resolves (its kinematic step above it); one closing faster is left to its own step (T-3b): a mass held on
+      // a spring that stiffens without bound as the node closes in grows without bound.
+      double nodal = kt;
+      if (ps.nodal_mass_step > 0.0) {
+        const bool resolved = scale * kinematic_step(g, p, penetration_rate) >= ps.nodal_mass_step;
+        nodal = !resolved ? 0.0
+                : viscous_friction ? nodal_friction_stiffness(kt, k0, secant_stiffness(k0, g, p), in.friction_damping,
+                                                              mass, dt_previous)
+                                   : kt;
+        in.node_held_stiffness[i] += nodal;
+      }
       // Normal force: penalty plus damping, never attractive (eqs. C-5, C-8).
       const double elastic = penalty_force(k0, g, p);
       const double damping = damping_force(viss, kt, mass, penetration_rate, elastic);
@@ -313,7 +326,7 @@ void compute_pairs(ContactState& c, ContactInterface& in, const NodalState& node
       // Equal and opposite: the node gets `force`, the segment nodes -weight_a force (momentum conserved).
       const double record[kRecordWidth] = {static_cast<double>(q), force[0],     force[1],     force[2],
                                            cp.weight[0],           cp.weight[1], cp.weight[2], cp.weight[3],
-                                           releases ? double(in.release_bc) : 0.0, kt};
+                                           releases ? double(in.release_bc) : 0.0, nodal};
       c.own_records.insert(c.own_records.end(), record, record + kRecordWidth);
     }
   }
@@ -348,6 +361,16 @@ void node_steps(ContactState& c, ContactInterface& in, NodalState& nodes, const 
     }
     double node_step = scaled_stiffness_step(body_mass > 0.0 ? body_mass : nodes.mass[n], stiffness, viscosity,
                                              viss, ps.scale);
+    if (ps.nodal_mass_step > 0.0 && !(body_mass > 0.0)) {
+      // Under /DT/NODA/CST the node's mass holds its stiffness at the target step (T-2): the step left here is that
+      // mass's on the stiffness the node can reach within the step (C-11c), below the target only while the node
+      // closes in on a stiffening pair (T-3b).
+      const double c_unit = viscosity > 0.0 ? viscosity / std::sqrt(nodes.mass[n]) : 0.0;
+      const double held = std::max(nodes.mass[n], mass_for_step(in.node_held_stiffness[ui] + element, c_unit, viss,
+                                                                  ps.scale, ps.nodal_mass_step));
+      node_step = scaled_stiffness_step(held, in.node_reach_stiffness[ui] + element, c_unit * std::sqrt(held), viss,
+                                        ps.scale);
+    }
     if (ps.mass_step > 0.0 && node_step < ps.mass_step) {
       // The dashpots grow with sqrt(M): C = (C / sqrt(M)) sqrt(M).
       const double c_unit = viscosity > 0.0 ? viscosity / std::sqrt(nodes.mass[n]) : 0.0;
@@ -490,7 +513,8 @@ ContactStep contact_forces(const Model& m, ContactState& c, NodalState& nodes, d
                               scale,
                               0.0,
                               rc.dt_inter_cst.given ? rc.dt_inter_cst.minimum : 0.0,
-                              static_cast<double>(rc.contact_entry_window)};
+                              static_cast<double>(rc.contact_entry_window),
+                              rc.dt_nodal_cst.given && !rc.dt_inter_cst.given ? rc.dt_nodal_cst.minimum : 0.0};
   for (std::size_t f = 0; f < c.interfaces.size(); ++f) {
     ContactInterface& in = c.interfaces[f];
     InterfaceResult& res = c.results[f];
@@ -528,6 +552,7 @@ ContactStep contact_forces(const Model& m, ContactState& c, NodalState& nodes, d
       in.node_touched[static_cast<std::size_t>(i)] = 0;
       in.node_tangent_sum[static_cast<std::size_t>(i)] = 0.0;
       in.node_reach_stiffness[static_cast<std::size_t>(i)] = 0.0;
+      in.node_held_stiffness[static_cast<std::size_t>(i)] = 0.0;
       in.node_entry_stiffness[static_cast<std::size_t>(i)] = 0.0;
       in.node_friction_viscosity[static_cast<std::size_t>(i)] = 0.0;
     }

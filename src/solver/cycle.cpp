@@ -286,7 +286,7 @@ void share_element_results(const Model& m, SolverState& s, Exchange& exchange) {
   for (int k = 0; k < kElementKinds; ++k) {
     ElementStateView v = element_view(s, static_cast<ElementKind>(k));
     if (critical_steps) exchange.share(v.critical_dt, 1, d.owner[static_cast<std::size_t>(k)]);
-    if (interface_nodal_step_on(m))
+    if (nodal_stiffness_on(m))
       exchange.share(s.interface_stiffness[static_cast<std::size_t>(k)], 1, d.owner[static_cast<std::size_t>(k)]);
   }
   share_group_results(m, s, exchange);
@@ -502,10 +502,10 @@ StepBound combine_group_results(const Model& m, SolverState& s, RunEvents& event
 StepBound compute_element_forces(const Model& m, SolverState& s, RunEvents& events, bool& elements_deleted,
                                   Exchange* exchange) {
   run_element_kernels(m, s, s.domain.several() ? exchange : nullptr);
-  const bool interface_step = interface_nodal_step_on(m);
-  if (interface_step) element_interface_stiffness(m, s);
+  const bool nodal_stiffness = nodal_stiffness_on(m);
+  if (nodal_stiffness) element_interface_stiffness(m, s);
   if (s.domain.several()) share_element_results(m, s, *exchange);
-  if (interface_step) nodal_interface_stiffness(m, s);
+  if (nodal_stiffness) nodal_interface_stiffness(m, s);
   return combine_group_results(m, s, events, elements_deleted);
 }
 

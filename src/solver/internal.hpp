@@ -37,8 +37,9 @@ void setup_rigid_bodies(const Model& model, SolverState& state);
 void setup_bricks(const Model& model, SolverState& state);
 void setup_rigid_walls(const Model& model, SolverState& state);
 
-// Nodal time step of the cycle with mass scaling (/DT/NODA/CST): adds mass where the nodal step would fall
-// below the card's minimum and returns the smallest scaled nodal step and its node (docs/theory/time-step.md).
+// Nodal time step of the cycle with mass scaling (/DT/NODA/CST): adds mass where the nodal step (on the stiffness
+// of nodal_interface_stiffness and the contacts') would fall below the card's minimum and returns the smallest
+// scaled nodal step and its node, reduced over the domains (docs/theory/time-step.md, T-2, T-3).
 struct NodalStep {
   double dt;
   std::int32_t node;
@@ -48,6 +49,8 @@ NodalStep nodal_time_step(const Model& model, SolverState& state);
 // deck has one and neither /DT/NODA/CST nor /DT/INTER/CST; each element's stiffness (this domain's), their sums
 // per node (every node, after the exchange), and the step over this domain's nodes with the contact's, reduced.
 bool interface_nodal_step_on(const Model& model);
+// Whether the cycle computes the nodes' stiffness: for T-4 or for /DT/NODA/CST (T-2).
+bool nodal_stiffness_on(const Model& model);
 void element_interface_stiffness(const Model& model, SolverState& state);
 void nodal_interface_stiffness(const Model& model, SolverState& state);
 NodalStep interface_nodal_step(const Model& model, SolverState& state);

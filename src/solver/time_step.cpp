@@ -11,19 +11,6 @@
 namespace crumple::solver {
 namespace {
 
-// Each element gives each of its n nodes the stiffness estimate k = 2 (m_e / n) / dt_e^2, the stiffness for
-// which a mass m_e / n has the element's critical step (eq. T-2).
-template <class State>
-void add_element_stiffness(const ElementTable& table, const State& st, std::vector<double>& k) {
-  const int n = nodes_per_element(table.kind);
-  for (std::size_t e = 0; e < table.size(); ++e) {
-    if (element_condition(st.deleted[e]) != kElementActive || !(st.critical_dt[e] > 0.0)) continue;
-    const double share = 2.0 * st.mass[e] / n / (st.critical_dt[e] * st.critical_dt[e]);
-    const std::int32_t* nodes = table.nodes_of(e);
-    for (int a = 0; a < n; ++a) k[static_cast<std::size_t>(nodes[a])] += share;
-  }
-}
-
 // The factor beta of an element in the interface nodal step (eq. T-4): it gives each of its nodes the stiffness
 // k = beta rho V / dt_e^2, V its current volume and dt_e its unscaled critical step. Measured on the reference solver
 // one kind at a time (docs/theory/time-step.md, T-4); beta = 2 / n is T-2's estimate.
@@ -123,32 +110,46 @@ NodalStep interface_nodal_step(const Model& m, SolverState& s) {
   return {r.values[0], r.indices[0]};
 }
 
+
+// With /DT/NODA/CST the nodal step and its mass take the same stiffness as T-4 (docs/theory/time-step.md, T-2):
+// the elements' and, with a TYPE7, the contacts'; /DT/INTER/CST alone sizes the contacts' masses on their own step
+// (C-11c).
+bool nodal_stiffness_on(const Model& m) { return interface_nodal_step_on(m) || m.run.dt_nodal_cst.given; }
+
+// The smallest nodal mass that keeps scale sqrt(2 m / k) >= dt_min at every node this domain advances (eq. T-3),
+// with k the node's elements' and contacts' stiffness (T-2); the added mass summed over the owned nodes and the
+// smallest step over them, reduced, so that both are the same at any number of domains.
 NodalStep nodal_time_step(const Model& m, SolverState& s) {
   const TimeStepControl& cst = m.run.dt_nodal_cst;
   const double scale = cst.scale > 0.0 ? cst.scale : 0.9;
-  std::vector<double>& k = s.nodal_stiffness;
-  k.assign(s.nodes.size(), 0.0);
-  add_element_stiffness(m.elements[static_cast<int>(ElementKind::Shell4)], s.shells, k);
-  add_element_stiffness(m.elements[static_cast<int>(ElementKind::Shell3)], s.shells3, k);
-  add_element_stiffness(m.elements[static_cast<int>(ElementKind::Brick8)], s.bricks, k);
-  NodalStep step{std::numeric_limits<double>::infinity(), -1};
-  // The smallest nodal mass that keeps scale * sqrt(2 m / k) >= dt_min (eq. T-3).
+  const std::vector<double>& element = s.nodal_stiffness;
+  const std::vector<double>& contact = s.contact.nodal_contact_stiffness;
   const double target = cst.minimum / scale;
-  for (std::size_t node = 0; node < k.size(); ++node) {
-    if (!(k[node] > 0.0)) continue;
+  Reducer& r = s.reducer;
+  r.sums.assign(1, ExactSum{});
+  NodalStep step{std::numeric_limits<double>::infinity(), -1};
+  for_each_local_node(s.domain, s.nodes.size(), [&](std::size_t node) {
+    const double k = element[node] + (contact.empty() ? 0.0 : contact[node]);
+    // A node moving with a rigid body: its mass is the body's (C-11 takes the step of its springs).
+    if (!(k > 0.0) || s.rigid_owner[node] >= 0) return;
     double& mass = s.nodes.mass[node];
-    const double needed = 0.5 * k[node] * target * target;
+    const double needed = 0.5 * k * target * target;
+    const bool owned = !s.domain.several() || s.domain.owns(node);
     if (mass < needed) {
       // A shell node's rotational inertia grows in the same ratio (eq. T-3a): its element's rotation modes keep
       // their frequency ratio to the translational ones and stay stable at the step the mass now gives.
       if (mass > 0.0) s.nodes.inertia[node] *= needed / mass;
-      s.mass_added += needed - mass;
+      if (owned) r.sums[0].add(needed - mass);
       mass = needed;
     }
-    const double dt = scale * std::sqrt(2.0 * mass / k[node]);
-    if (dt < step.dt) step = {dt, static_cast<std::int32_t>(node)};
-  }
-  return step;
+    const double dt = scale * std::sqrt(2.0 * mass / k);
+    if (owned && dt < step.dt) step = {dt, static_cast<std::int32_t>(node)};
+  });
+  r.sum(r.sums);
+  s.mass_added += r.sums[0].value();
+  r.values.assign(1, step.dt), r.indices.assign(1, step.node);
+  r.min_with_index(r.values, r.indices);
+  return {r.values[0], r.indices[0]};
 }
 
 double next_output_time(double t, double start, double interval) {

@@ -32,6 +32,19 @@ inline double damping_force(double viss, double kt, double mass, double penetrat
 // Viscous friction (eq. C-9, Iform 1): the dashpot C_t = VisF sqrt(2 Kt M) on the sliding velocity [F T/L].
 inline double friction_viscosity(double visf, double kt, double mass) { return visf * std::sqrt(2.0 * kt * mass); }
 
+// The penetration a node can reach within the step dt: at most half its remaining distance, the kinematic bound
+// (eq. C-11c); the stiffness there is what an added mass must hold.
+inline double reach_penetration(double g, double p, double penetration_rate, double dt) {
+  return std::min(p + std::max(penetration_rate, 0.0) * dt, p + 0.5 * (g - p));
+}
+
+// What a pair with viscous friction gives its nodes' mass-scaled nodal step (time-step.md, eq. T-4b): its tangent
+// stiffness Kt, or the friction's dashpot over the last step, VisF sqrt((K0 + Ks) M) / dt, where that is larger
+// (Ks the secant stiffness K0 g / (g - p), M the secondary node's mass), as the reference solver counts it.
+inline double nodal_friction_stiffness(double kt, double k0, double ks, double visf, double mass, double dt) {
+  return dt > 0.0 ? std::max(kt, visf * std::sqrt((k0 + ks) * mass) / dt) : kt;
+}
+
 // Steps ahead of its entry into the gap that a node closing in counts K0 in its step when the entry is anticipated
 // (eq. C-11): with `--accuracy fine`, and for a node that /DT/INTER/CST mass scales at its entry (C-11c).
 inline constexpr int kAnticipatedEntrySteps = 3;
