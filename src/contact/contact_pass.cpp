@@ -270,12 +270,16 @@ void compute_pairs(ContactState& c, ContactInterface& in, const NodalState& node
       // a spring that stiffens without bound as the node closes in grows without bound.
       double nodal = kt;
       if (ps.nodal_mass_step > 0.0) {
+        // The mass holds a pair the target step resolves, at most as stiff as at half its gap (K_t 4 K0, K_s 2 K0):
+        // deeper the spring stiffens without bound, and so would the mass. The dashpot acts over the target step.
+        const double reach = tangent_stiffness(k0, g, reach_penetration(g, p, penetration_rate, dt_estimate));
         const bool resolved = scale * kinematic_step(g, p, penetration_rate) >= ps.nodal_mass_step;
-        nodal = !resolved ? 0.0
-                : viscous_friction ? nodal_friction_stiffness(kt, k0, secant_stiffness(k0, g, p), in.friction_damping,
-                                                              mass, dt_previous)
-                                   : kt;
-        in.node_held_stiffness[i] += nodal;
+        const double held = resolved ? std::min(kt, tangent_stiffness(k0, g, 0.5 * g)) : 0.0;
+        nodal = resolved && viscous_friction
+                    ? nodal_friction_stiffness(held, k0, std::min(secant_stiffness(k0, g, p), secant_stiffness(k0, g, 0.5 * g)),
+                                               in.friction_damping, mass, ps.nodal_mass_step)
+                    : held;
+        if (!resolved || kt > held) in.node_unresolved_stiffness[i] += reach - held;
       }
       // Normal force: penalty plus damping, never attractive (eqs. C-5, C-8).
       const double elastic = penalty_force(k0, g, p);
@@ -362,14 +366,13 @@ void node_steps(ContactState& c, ContactInterface& in, NodalState& nodes, const 
     double node_step = scaled_stiffness_step(body_mass > 0.0 ? body_mass : nodes.mass[n], stiffness, viscosity,
                                              viss, ps.scale);
     if (ps.nodal_mass_step > 0.0 && !(body_mass > 0.0)) {
-      // Under /DT/NODA/CST the node's mass holds its stiffness at the target step (T-2): the step left here is that
-      // mass's on the stiffness the node can reach within the step (C-11c), below the target only while the node
-      // closes in on a stiffening pair (T-3b).
-      const double c_unit = viscosity > 0.0 ? viscosity / std::sqrt(nodes.mass[n]) : 0.0;
-      const double held = std::max(nodes.mass[n], mass_for_step(in.node_held_stiffness[ui] + element, c_unit, viss,
-                                                                  ps.scale, ps.nodal_mass_step));
-      node_step = scaled_stiffness_step(held, in.node_reach_stiffness[ui] + element, c_unit * std::sqrt(held), viss,
-                                        ps.scale);
+      // Under /DT/NODA/CST the node's mass holds its elements and resolved pairs at the target step T (T-2), at
+      // most the stiffness 2 M (scale / T)^2; the pairs closing faster than T resolves add theirs at the depth they
+      // can reach (C-11c) and bound the step (T-3b); none: the nodal step is the node's.
+      const double unresolved = in.node_unresolved_stiffness[ui];
+      if (!(unresolved > 0.0)) continue;
+      const double held = 2.0 * nodes.mass[n] * (ps.scale / ps.nodal_mass_step) * (ps.scale / ps.nodal_mass_step);
+      node_step = ps.scale * std::sqrt(2.0 * nodes.mass[n] / (held + unresolved));
     }
     if (ps.mass_step > 0.0 && node_step < ps.mass_step) {
       // The dashpots grow with sqrt(M): C = (C / sqrt(M)) sqrt(M).
@@ -552,7 +555,7 @@ ContactStep contact_forces(const Model& m, ContactState& c, NodalState& nodes, d
       in.node_touched[static_cast<std::size_t>(i)] = 0;
       in.node_tangent_sum[static_cast<std::size_t>(i)] = 0.0;
       in.node_reach_stiffness[static_cast<std::size_t>(i)] = 0.0;
-      in.node_held_stiffness[static_cast<std::size_t>(i)] = 0.0;
+      in.node_unresolved_stiffness[static_cast<std::size_t>(i)] = 0.0;
       in.node_entry_stiffness[static_cast<std::size_t>(i)] = 0.0;
       in.node_friction_viscosity[static_cast<std::size_t>(i)] = 0.0;
     }

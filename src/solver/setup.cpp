@@ -214,7 +214,7 @@ void rebind_domain(const Model& m, SolverState& s, Domain domain) {
   for (ContactInterface& in : s.contact.interfaces) {
     in.divided = false;
     std::fill(in.node_touched.begin(), in.node_touched.end(), 0);
-    for (auto* v : {&in.node_tangent_sum, &in.node_reach_stiffness, &in.node_held_stiffness, &in.node_entry_stiffness,
+    for (auto* v : {&in.node_tangent_sum, &in.node_reach_stiffness, &in.node_unresolved_stiffness, &in.node_entry_stiffness,
                     &in.node_friction_viscosity})
       std::fill(v->begin(), v->end(), 0.0);
     in.touched_list.clear();
