@@ -32,11 +32,9 @@ long long deleted_count(const std::vector<std::uint8_t>& status) {
                        [](std::uint8_t st) { return element_condition(st) == kElementDeleted; });
 }
 
-double total_mass(const SolverState& s) {
-  double total = 0.0;
-  for (double mass : s.nodes.mass) total += mass;
-  return total;
-}
+// The model's mass: its initial mass and what mass scaling added (summed over the domains' own nodes), the same at
+// any number of domains (a domain scales only the nodes it advances).
+double total_mass(const SolverState& s) { return s.mass_initial + s.mass_added; }
 
 std::string signal_name(int signal) {
   if (signal == SIGINT) return "SIGINT";
