@@ -398,9 +398,10 @@ void share_contact_state(SolverState& s, Exchange& exchange) {
 void share_node_state(const Model& m, SolverState& s, Exchange& exchange, bool restart) {
   NodalState& n = s.nodes;
   const std::vector<std::int32_t>& owner = s.domain.node_owner;
-  // The mass too: /DT/INTER/CST adds it where the node's pairs are computed.
+  // The mass and rotational inertia too: /DT/INTER/CST adds mass where the node's pairs are computed, /DT/NODA/CST
+  // both where the node is advanced (time-step.md, T-3, T-3a).
   for (auto* v : {&n.x, &n.y, &n.z, &n.vx, &n.vy, &n.vz, &n.wx, &n.wy, &n.wz, &n.fx, &n.fy, &n.fz, &n.mx, &n.my, &n.mz,
-                  &n.mass})
+                  &n.mass, &n.inertia})
     exchange.share(*v, 1, owner);
   // Tied walls keep which nodes they hold, where the node is local.
   SolverState::GroupShare& w = s.group_share;
