@@ -110,8 +110,9 @@ MODES = {  # node signs of the hourglass pattern (1, -1, 1, -1) and the dof it d
 }
 
 
-def type7(title, gapmin):
-    """A TYPE7 interface of the secondary nodes of /GRNOD 90 on the surface /SURF 91, defaults but Gapmin."""
+def type7(title, gapmin, fric=0.0, visf=0.0):
+    """A TYPE7 interface of the secondary nodes of /GRNOD 90 on the surface /SURF 91, defaults but Gapmin, Fric and
+    VisF."""
     return f"""/INTER/TYPE7/1
 {title}
 #  Slav_id   Mast_id      Istf      Ithe      Igap                Ibag      Idel     Icurv      Iadm
@@ -121,9 +122,9 @@ def type7(title, gapmin):
 #              Stmin               Stmax          %mesh_size               dtmin  Irem_gap   Irem_i2
                    0                   0                   0                   0         0         0
 #              Stfac                Fric              Gapmin              Tstart               Tstop
-                   0                   0{gapmin:>20}                   0                   0
+                   0{fric:>20}{gapmin:>20}                   0                   0
 #      IBC                        Inacti                VisS                VisF              Bumult
-       000                             0                   0                   0                   0
+       000                             0                   0{visf:>20}                   0
 #    Ifric    Ifiltr               Xfreq     Iform   sens_ID   fct_IDf             AscaleF   fric_ID
          0         0                   0         0         0         0                   0         0
 """
@@ -147,6 +148,8 @@ def engine_deck(a):
 """
     if a.dtscale:
         engine += f"/DT\n{fmt_row([a.dtscale, 0])}\n"
+    if a.noda:  # nodal mass scaling: scale and target step
+        engine += f"/DT/NODA/CST/0\n{fmt_row(a.noda.split(','))}\n"
     return engine
 
 
@@ -163,7 +166,7 @@ def build_pair(a):
                                  for k, (x, y, z) in enumerate(corners))
     text += "/SHELL/1\n" + ints([1, 1, 2, 3, 4]) + "\n/SHELL/2\n" + ints([2, 5, 6, 7, 8]) + "\n"
     text += "/GRNOD/PART/90\ntop nodes\n         2\n/SURF/PART/91\nmain surface\n         1\n"
-    return text + type7("pair", a.type7) + "/END\n", engine_deck(a)
+    return text + type7("pair", a.type7, a.fric, a.visf) + "/END\n", engine_deck(a)
 
 
 def build(a):
@@ -252,6 +255,9 @@ def main():
     p.add_argument("--centre", type=float, default=2.5, help="mm: the upper plate's centre, x = y (kind pair)")
     p.add_argument("--depth", type=float, default=0.05, help="mm: the upper plate's height (kind pair)")
     p.add_argument("--light", type=float, default=1.0, help="the main plate's density factor (kind pair)")
+    p.add_argument("--fric", type=float, default=0.0, help="the TYPE7's Coulomb friction (kind pair)")
+    p.add_argument("--visf", type=float, default=0.0, help="the TYPE7's VisF, blank 1 (kind pair)")
+    p.add_argument("--noda", default="", help="/DT/NODA/CST scale,dtmin in the engine deck")
     p.add_argument("note", nargs="*")
     a = p.parse_args()
     if a.kind == "mode":
