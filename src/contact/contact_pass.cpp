@@ -271,13 +271,14 @@ void compute_pairs(ContactState& c, ContactInterface& in, const NodalState& node
       double nodal = kt;
       if (ps.nodal_mass_step > 0.0) {
         // The mass holds a pair the target step resolves, at most as stiff as at half its gap (K_t 4 K0, K_s 2 K0):
-        // deeper the spring stiffens without bound, and so would the mass. The dashpot acts over the target step.
+        // deeper the spring stiffens without bound, and so would the mass. The dashpot acts over the target step,
+        // from the second cycle on (the reference's first holds none).
         const double reach = tangent_stiffness(k0, g, reach_penetration(g, p, penetration_rate, dt_estimate));
         const bool resolved = scale * kinematic_step(g, p, penetration_rate) >= ps.nodal_mass_step;
         const double held = resolved ? std::min(kt, tangent_stiffness(k0, g, 0.5 * g)) : 0.0;
         nodal = resolved && viscous_friction
                     ? nodal_friction_stiffness(held, k0, std::min(secant_stiffness(k0, g, p), secant_stiffness(k0, g, 0.5 * g)),
-                                               in.friction_damping, mass, ps.nodal_mass_step)
+                                               in.friction_damping, mass, dt_previous > 0.0 ? ps.nodal_mass_step : 0.0)
                     : held;
         if (!resolved || kt > held) in.node_unresolved_stiffness[i] += reach - held;
       }
