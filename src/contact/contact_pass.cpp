@@ -264,23 +264,24 @@ void compute_pairs(ContactState& c, ContactInterface& in, const NodalState& node
         in.node_reach_stiffness[i] += tangent_stiffness(k0, g, reach_penetration(g, p, penetration_rate, dt_estimate));
       }
       in.node_friction_viscosity[i] += ct;
-      // What the pair gives its nodes' nodal step (time-step.md, T-4, T-4b): its tangent stiffness. Under
-      // /DT/NODA/CST the mass holds it, and the friction's dashpot where stiffer, for a pair the target step
-      // resolves (its kinematic step above it); one closing faster is left to its own step (T-3b): a mass held on
-      // a spring that stiffens without bound as the node closes in grows without bound.
+      // What the pair gives its nodes' nodal step (time-step.md, T-4): its tangent stiffness. Under /DT/NODA/CST
+      // the mass holds it (T-2) if the target step resolves the pair (its kinematic step above it), at most as stiff
+      // as at half its gap (deeper the spring, and the mass, would grow without bound), with the friction's dashpot
+      // over the target step where stiffer (T-4b; from the second cycle on, as the reference); the rest bounds the
+      // step (T-3b).
       double nodal = kt;
       if (ps.nodal_mass_step > 0.0) {
-        // The mass holds a pair the target step resolves, at most as stiff as at half its gap (K_t 4 K0, K_s 2 K0):
-        // deeper the spring stiffens without bound, and so would the mass. The dashpot acts over the target step,
-        // from the second cycle on (the reference's first holds none).
-        const double reach = tangent_stiffness(k0, g, reach_penetration(g, p, penetration_rate, dt_estimate));
+        const double half = 0.5 * g;
         const bool resolved = scale * kinematic_step(g, p, penetration_rate) >= ps.nodal_mass_step;
-        const double held = resolved ? std::min(kt, tangent_stiffness(k0, g, 0.5 * g)) : 0.0;
+        const double held = resolved ? std::min(kt, tangent_stiffness(k0, g, half)) : 0.0;
+        const double ks = std::min(secant_stiffness(k0, g, p), secant_stiffness(k0, g, half));
+        const double over = dt_previous > 0.0 ? ps.nodal_mass_step : 0.0;
         nodal = resolved && viscous_friction
-                    ? nodal_friction_stiffness(held, k0, std::min(secant_stiffness(k0, g, p), secant_stiffness(k0, g, 0.5 * g)),
-                                               in.friction_damping, mass, dt_previous > 0.0 ? ps.nodal_mass_step : 0.0)
+                    ? nodal_friction_stiffness(held, k0, ks, in.friction_damping, mass, over)
                     : held;
-        if (!resolved || kt > held) in.node_unresolved_stiffness[i] += reach - held;
+        if (!resolved || kt > held)
+          in.node_unresolved_stiffness[i] +=
+              tangent_stiffness(k0, g, reach_penetration(g, p, penetration_rate, dt_estimate)) - held;
       }
       // Normal force: penalty plus damping, never attractive (eqs. C-5, C-8).
       const double elastic = penalty_force(k0, g, p);

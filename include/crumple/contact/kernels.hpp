@@ -39,8 +39,9 @@ inline double reach_penetration(double g, double p, double penetration_rate, dou
 }
 
 // What a pair with viscous friction gives its nodes' mass-scaled nodal step (time-step.md, eq. T-4b): its tangent
-// stiffness Kt, or the friction's dashpot over the last step, VisF sqrt((K0 + Ks) M) / dt, where that is larger
-// (Ks the secant stiffness K0 g / (g - p), M the secondary node's mass), as the reference solver counts it.
+// stiffness Kt, or the friction's dashpot over the step dt, VisF sqrt((K0 + Ks) M) / dt, where that is larger
+// (Ks the secant stiffness K0 g / (g - p), M the secondary node's mass), as the reference solver counts it; dt = 0:
+// Kt.
 inline double nodal_friction_stiffness(double kt, double k0, double ks, double visf, double mass, double dt) {
   return dt > 0.0 ? std::max(kt, visf * std::sqrt((k0 + ks) * mass) / dt) : kt;
 }

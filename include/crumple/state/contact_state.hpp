@@ -125,7 +125,7 @@ struct ContactInterface {
   std::vector<std::int32_t> touched_list;       // scratch: those nodes (index into secondary_nodes)
   std::vector<double> node_tangent_sum;         // scratch: sum of the node's pairs' tangent stiffnesses [F/L]
   std::vector<double> node_reach_stiffness;     // scratch: the same at the depth each pair can reach in a step [F/L]
-  std::vector<double> node_unresolved_stiffness;      // scratch: at reach, of the pairs /DT/NODA/CST's target does not resolve (T-3b) [F/L]
+  std::vector<double> node_unresolved_stiffness;  // scratch: at reach, what /DT/NODA/CST's mass does not hold (T-3b) [F/L]
   std::vector<double> node_entry_stiffness;     // scratch: K0 of its pairs about to enter the gap (/DT/INTER/CST) [F/L]
   std::vector<double> node_friction_viscosity;  // scratch: sum of its pairs' friction dashpots C_t (Iform 1) [F T/L]
   // The pairs this domain computes (ascending; a run of one domain: all), fixed at each sort (docs/parallel.md,
@@ -159,8 +159,8 @@ struct ContactInterface {
   // gap reduction and (Ifiltr > 0, eq. C-9d) no filtered coefficient yet.
   void size_node_arrays() {
     const std::size_t n = secondary_nodes.size();
-    for (auto* v : {&gap_reduction, &gap_clearance, &node_tangent_sum, &node_reach_stiffness, &node_unresolved_stiffness, &node_entry_stiffness,
-                    &node_friction_viscosity})
+    for (auto* v : {&gap_reduction, &gap_clearance, &node_tangent_sum, &node_reach_stiffness,
+                    &node_unresolved_stiffness, &node_entry_stiffness, &node_friction_viscosity})
       v->assign(n, 0.0);
     node_active.assign(n, 1), node_touched.assign(n, 0), node_impacted.assign(n, 0);
     if (friction_filter > 0) friction_mu.assign(n, 0.0), friction_mu_pass.assign(n, -2);
