@@ -260,9 +260,8 @@ void compute_pairs(ContactState& c, ContactInterface& in, const NodalState& node
       in.node_tangent_sum[i] += kt;
       // With /DT/INTER/CST: the penetration the node can reach within the step (at most half its remaining
       // distance, the kinematic bound), and the stiffness there, which the added mass must hold (eq. C-11c).
-      if (ps.mass_step > 0.0 || ps.nodal_mass_step > 0.0) {
+      if (ps.mass_step > 0.0)
         in.node_reach_stiffness[i] += tangent_stiffness(k0, g, reach_penetration(g, p, penetration_rate, dt_estimate));
-      }
       in.node_friction_viscosity[i] += ct;
       // What the pair gives its nodes' nodal step (time-step.md, T-4): its tangent stiffness. Under /DT/NODA/CST
       // the mass holds it (T-2) if the target step resolves the pair (its kinematic step above it), at most as stiff
