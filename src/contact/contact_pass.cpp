@@ -147,6 +147,11 @@ void screen_pairs(ContactInterface& in, const PassSettings& ps) {
   }
 }
 
+// The mass a node's contact springs push for the step: its own, with selective mass scaling's diagonal (SM-7).
+double scaled_mass(const ContactState& c, const NodalState& nodes, std::size_t n) {
+  return nodes.mass[n] + (c.selective_mass_added != nullptr ? (*c.selective_mass_added)[n] : 0.0);
+}
+
 // The pairs of `in` this domain computes (eqs. C-1 to C-9, C-11): their forces into records (applied below, in pair
 // order), the node-local sums of their secondary nodes, the cycle's sums and step.
 void compute_pairs(ContactState& c, ContactInterface& in, const NodalState& nodes, const PassSettings& ps,
@@ -240,7 +245,7 @@ void compute_pairs(ContactState& c, ContactInterface& in, const NodalState& node
       const double kt = tangent_stiffness(k0, g, p);
       const double mass = nodes.mass[n];
       const double body_mass = c.rigid_body_mass.empty() ? 0.0 : c.rigid_body_mass[n];
-      const double step_mass = body_mass > 0.0 ? body_mass : mass;  // what the springs and dashpots push [M]
+      const double step_mass = body_mass > 0.0 ? body_mass : scaled_mass(c, nodes, n);  // what the springs push [M]
       // The viscous friction's dashpot (eq. C-9, Iform 1, on the node's own mass), which the step must hold too
       // (eq. C-11b).
       const bool viscous_friction = in.friction && in.friction_form != 2;
@@ -353,7 +358,7 @@ void node_steps(ContactState& c, ContactInterface& in, NodalState& nodes, const 
     const auto n = static_cast<std::size_t>(in.secondary_nodes[ui]);
     // A node carried by a rigid body: the springs act on the body's mass, its elements are not computed.
     const double body_mass = c.rigid_body_mass.empty() ? 0.0 : c.rigid_body_mass[n];
-    const double element = body_mass > 0.0 ? 0.0 : in.node_element_stiffness[ui];
+    const double element = body_mass > 0.0 || c.selective_mass_added != nullptr ? 0.0 : in.node_element_stiffness[ui];
     double stiffness = in.node_tangent_sum[ui] + element;
     const double viscosity = in.node_friction_viscosity[ui];
     // Pairs about to enter (/DT/INTER/CST without an entry window): anticipated where their K0 needs mass, and
@@ -364,8 +369,8 @@ void node_steps(ContactState& c, ContactInterface& in, NodalState& nodes, const 
       stiffness += entry;
       in.node_reach_stiffness[ui] += entry;
     }
-    double node_step = scaled_stiffness_step(body_mass > 0.0 ? body_mass : nodes.mass[n], stiffness, viscosity,
-                                             viss, ps.scale);
+    double node_step = scaled_stiffness_step(body_mass > 0.0 ? body_mass : scaled_mass(c, nodes, n), stiffness,
+                                             viscosity, viss, ps.scale);
     if (ps.nodal_mass_step > 0.0 && !(body_mass > 0.0)) {
       // Under /DT/NODA/CST the node's mass holds its elements and resolved pairs at the target step T (T-2), at
       // most the stiffness 2 M (scale / T)^2; the pairs closing faster than T resolves add theirs at the depth they

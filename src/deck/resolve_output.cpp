@@ -20,6 +20,7 @@ void convert_run_times(RunControl& run, const UnitSystem& units) {
   for (TimeStepControl* c : {&run.dt, &run.dt_nodal_cst, &run.dt_shell, &run.dt_brick, &run.dt_sh3n,
                              &run.dt_inter_del, &run.dt_inter_cst})
     c->minimum *= t;
+  run.dt_ams.minimum *= t;
   run.dt_initial *= t;
   run.dt_max *= t;
 }
@@ -58,11 +59,29 @@ void resolve_rigid_body_switches(Resolver& r, const std::vector<std::int64_t>& i
   }
 }
 
+// /DT/AMS needs the starter's /AMS (the reference stops: "WITH /DT/AMS, OPTION /AMS IS COMPULSORY"). Crumple
+// scales the whole model: the nodal and interface mass scalings, which the reference combines with it on the parts
+// /AMS leaves out, would act on the same nodes.
+void check_selective_mass(Resolver& r, const RunControl& run) {
+  const SelectiveMassControl& ams = run.dt_ams;
+  if (!ams.given) return;
+  if (!r.model.ams_selected)
+    r.error(ams.where, "/DT/AMS", "", "the starter's /AMS card, which selects the parts to scale",
+            "no /AMS in the starter deck");
+  for (const auto& [keyword, control] : {std::pair{"/DT/NODA/CST", &run.dt_nodal_cst}, {"/DT/INTER/CST", &run.dt_inter_cst}})
+    if (control->given)
+      r.context.unsupported(DeckError(control->where, keyword, "",
+                                      "no nodal mass scaling together with /DT/AMS on the whole model (Crumple does not "
+                                      "combine them)",
+                                      keyword));
+}
+
 void resolve_run_control(Resolver& r, RunControl& run) {
   Model& m = r.model;
   convert_run_times(run, m.units);
   resolve_rigid_body_switches(r, run.rbody_on, run.rbody_on_where, "/RBODY/ON", run.bodies_on);
   resolve_rigid_body_switches(r, run.rbody_off, run.rbody_off_where, "/RBODY/OFF", run.bodies_off);
+  check_selective_mass(r, run);
   // Radioss pairs the engine deck with the starter by run name; a different name usually means a stray file.
   if (run.present && !m.run_name.empty() && run.run_name != m.run_name)
     r.context.warn(run.where, "/RUN",

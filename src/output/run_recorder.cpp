@@ -97,6 +97,11 @@ std::string describe(const StopReason& r, const Model& m) {
                          r.minimum, r.cycle);
     case K::EnergyErrorLimit:
       return fmt::format("/STOP: energy error {:.3g} % exceeds the limit at cycle {}", 100.0 * r.value, r.cycle);
+    case K::MassScalingDiverged:
+      return fmt::format("/DT/AMS: the mass-scaled accelerations did not converge in {} iterations at cycle {} "
+                         "(residual {:.3g} against Tol_AMS {:.3g}): the scaling is likely diverging; lower DTmin of "
+                         "/DT/AMS, or raise Niter (/DT/AMS/2)",
+                         r.index, r.cycle, r.value, r.minimum);
     case K::Requested:
       return fmt::format("stopped by {} at the end of cycle {} (time {:.6g})", signal_name(r.index), r.cycle, r.time);
   }
@@ -300,6 +305,10 @@ RunSummary RunRecorder::finish(const SolverState& s, const RunEvents& events, co
                               s.energy.internal != 0.0 ? 100.0 * s.energy.hourglass / std::abs(s.energy.internal) : 0.0,
                               s.energy.internal, s.energy.hourglass > 0.1 * std::abs(s.energy.internal) ? " (WARNING: above 10 %)" : ""));
   if (s.mass_added > 0.0) listing_.line(fmt::format("MASS ADDED BY /DT/NODA/CST OR /DT/INTER/CST: {:.6g}", s.mass_added));
+  if (const SelectiveMassState& sm = s.selective_mass; sm.solves > 0)
+    listing_.line(fmt::format("SELECTIVE MASS SCALING (/DT/AMS): {} SOLVES, {:.1f} ITERATIONS EACH ON AVERAGE, AT MOST {}",
+                              sm.solves, static_cast<double>(sm.iterations) / static_cast<double>(sm.solves),
+                              sm.max_iterations));
   for (std::size_t f = 0; f < s.contact.results.size(); ++f) {
     const InterfaceResult& r = s.contact.results[f];
     listing_.line(fmt::format("INTER {}: largest p/g {:.4f}, absorbed energy {:.6g} (elastic now {:.6g}, damping "
@@ -348,6 +357,9 @@ RunSummary summarize_run(const Model& m, const std::string& name, const SolverSt
   summary.energy.error_percent = e.error_percent();
   summary.mass_total = total_mass(s);
   summary.mass_added = s.mass_added;
+  summary.selective_solves = s.selective_mass.solves;
+  summary.selective_iterations = s.selective_mass.iterations;
+  summary.selective_iterations_max = s.selective_mass.max_iterations;
   summary.wall_seconds = wall;
   std::size_t element_count = 0;
   for (const auto& table : m.elements) element_count += table.size();

@@ -94,6 +94,7 @@ std::string to_json(const RunSummary& s) {
       "    \"internal\": {},\n    \"kinetic_translational\": {},\n    \"kinetic_rotational\": {},\n"
       "    \"contact\": {},\n    \"hourglass\": {},\n    \"external_work\": {},\n    \"total\": {},\n"
       "    \"error_percent\": {}\n  }},\n  \"mass\": {{\n    \"total\": {},\n    \"added\": {}\n  }},\n"
+      "  \"selective_mass\": {{\n    \"solves\": {},\n    \"iterations\": {},\n    \"iterations_max\": {}\n  }},\n"
       "  \"wall_seconds\": {},\n  \"element_cycles_per_second\": {},\n"
       "  \"profile\": {{\n    \"elements\": {},\n    \"contact\": {},\n    \"contact_passes\": {},\n"
       "    \"contact_sort\": {},\n    \"contact_sorts\": {},\n"
@@ -101,7 +102,8 @@ std::string to_json(const RunSummary& s) {
       "  \"deleted_elements\": {},\n  \"status\": \"{}\",\n  \"message\": \"{}\",\n  \"accuracy\": \"{}\",\n  \"approximations\": {}\n}}\n",
       escaped(s.name), escaped(s.crumple_version), escaped(s.commit), escaped(s.date), file_array(s.deck_files), s.cycles, s.cycles_total, s.engine_decks, number(s.time), number(s.dt), number(e.internal), number(e.kinetic_translational),
       number(e.kinetic_rotational), number(e.contact), number(e.hourglass), number(e.external_work), number(e.total),
-      number(e.error_percent), number(s.mass_total), number(s.mass_added), number(s.wall_seconds),
+      number(e.error_percent), number(s.mass_total), number(s.mass_added), s.selective_solves, s.selective_iterations,
+      s.selective_iterations_max, number(s.wall_seconds),
       number(s.element_cycles_per_second), number(s.phases.elements), number(s.phases.contact),
       s.phases.contact_passes, number(s.phases.contact_sort), s.phases.contact_sorts, number(s.phases.loads), number(s.phases.update), number(s.phases.output), s.ranks, escaped(s.precision), s.deleted_elements, status_name(s.status), escaped(s.message),
       escaped(s.accuracy), string_array(s.approximations));

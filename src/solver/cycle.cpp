@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <initializer_list>
 #include <optional>
 #include <stdexcept>
@@ -163,7 +165,7 @@ void add_constraint_work(SolverState& s, const VelocityScratch& scratch, ExactSu
   for_each_owned_node(s.domain, n.size(), [&](std::size_t k) {
     for (std::size_t d = 0; d < 3; ++d) {
       const double dv = (*v[d])[k] - scratch.free[d][k];
-      if (dv != 0.0) work.add(n.mass[k] * dv * 0.5 * ((*v[d])[k] + scratch.before[d][k]));
+      if (dv != 0.0) work.add(velocity_change_mass(s, k, d) * dv * 0.5 * ((*v[d])[k] + scratch.before[d][k]));
     }
     if (n.inertia[k] > 0.0)
       for (std::size_t d = 3; d < 6; ++d) {
@@ -482,6 +484,7 @@ void report_inverted(ElementKind kind, const GroupStepResult& r, const SolverSta
 StepBound combine_group_results(const Model& m, SolverState& s, RunEvents& events, bool& elements_deleted) {
   StepBound bound;
   const double scale = step_scale(m.run);
+  const bool selective = selective_mass_on(m);
   for (std::size_t g = 0; g < m.element_groups.size(); ++g) {
     const ElementGroup& group = m.element_groups[g];
     GroupStepResult& r = s.group_results[g];  // r.min_dt: the unscaled critical step
@@ -492,9 +495,10 @@ StepBound combine_group_results(const Model& m, SolverState& s, RunEvents& event
     const TimeStepControl& type = type_control(m.run, group.kind);
     const double type_scale = type.given && type.scale > 0.0 ? type.scale : scale;
     if (control_group_step(m, g, s, events, type_scale, r) > 0) elements_deleted = true;
-    // A group whose elements are all deleted or inverted has no controlling element (controlling = -1).
-    if (r.controlling >= 0 && type_scale * r.min_dt < bound.dt)
-      bound = {type_scale * r.min_dt, StepControl::element(group.kind, r.controlling)};
+    // A group whose elements are all deleted or inverted has no controlling element (controlling = -1). Under
+    // selective mass scaling the smallest element is held at dt_min (eq. SM-0).
+    const double group_step = selective ? selective_mass_step(m, r.min_dt) : type_scale * r.min_dt;
+    if (r.controlling >= 0 && group_step < bound.dt) bound = {group_step, StepControl::element(group.kind, r.controlling)};
   }
   record_internal_forces(s);
   return bound;
@@ -503,6 +507,10 @@ StepBound combine_group_results(const Model& m, SolverState& s, RunEvents& event
 StepBound compute_element_forces(const Model& m, SolverState& s, RunEvents& events, bool& elements_deleted,
                                   Exchange* exchange) {
   run_element_kernels(m, s, s.domain.several() ? exchange : nullptr);
+  if (selective_mass_on(m)) {  // the elements' added mass from their steps (SM-1), which the contact step reads
+    scale_selective_mass(m, s);
+    s.contact.selective_mass_added = &s.selective_mass.node_added;
+  }
   const bool nodal_stiffness = nodal_stiffness_on(m);
   if (nodal_stiffness) element_interface_stiffness(m, s);
   if (s.domain.several()) share_element_results(m, s, *exchange);
@@ -631,21 +639,41 @@ double choose_time_step(const Model& m, SolverState& s, RunEvents& events, StepB
   return s.time + bound.dt > rc.end_time ? std::max(rc.end_time - s.time, 0.0) : bound.dt;
 }
 
+void solve_accelerations(const Model& m, SolverState& s, RunEvents& events, double dt_average, double dt_next) {
+  predict_wall_holds(m, s, dt_next);
+  const SelectiveSolve solve = solve_selective_mass(m, s, dt_average);
+  if (solve.converged || events.stop.stopped()) return;
+  StopReason& stop = events.stop;
+  stop.kind = StopReason::Kind::MassScalingDiverged, stop.cycle = s.cycle, stop.time = s.time;
+  stop.index = static_cast<std::int32_t>(solve.iterations), stop.value = solve.residual;
+  stop.minimum = m.run.dt_ams.tolerance_or_default();
+}
+
 // One pass over the local nodes: the velocities before the step into scratch.before, the update (CD-2), the free
 // velocities into scratch.free. One read of each array instead of three: the update is bound by memory traffic.
-void integrate(SolverState& s, VelocityScratch& scratch, double dt_average) {
+void integrate(SolverState& s, VelocityScratch& scratch, double dt_average, bool selective) {
   NodalState& n = s.nodes;
+  const SelectiveMassState& sm = s.selective_mass;
   auto& before = scratch.before;
   auto& free = scratch.free;
   for_each_local_node(s.domain, n.size(), [&](std::size_t k) {
     before[0][k] = n.vx[k], before[1][k] = n.vy[k], before[2][k] = n.vz[k];
     before[3][k] = n.wx[k], before[4][k] = n.wy[k], before[5][k] = n.wz[k];
-    const double inverse_mass = n.mass[k] > 0.0 ? 1.0 / n.mass[k] : 0.0;
-    n.vx[k] += dt_average * n.fx[k] * inverse_mass;
-    n.vy[k] += dt_average * n.fy[k] * inverse_mass;
-    n.vz[k] += dt_average * n.fz[k] * inverse_mass;
+    if (selective) {  // the accelerations of (M + dM) a = F (eq. SM-5)
+      n.vx[k] += dt_average * sm.ax[k], n.vy[k] += dt_average * sm.ay[k], n.vz[k] += dt_average * sm.az[k];
+    } else {
+      const double inverse_mass = n.mass[k] > 0.0 ? 1.0 / n.mass[k] : 0.0;
+      n.vx[k] += dt_average * n.fx[k] * inverse_mass;
+      n.vy[k] += dt_average * n.fy[k] * inverse_mass;
+      n.vz[k] += dt_average * n.fz[k] * inverse_mass;
+    }
     if (n.inertia[k] > 0.0) {
-      const double inverse_inertia = 1.0 / n.inertia[k];
+      const double factor = selective ? selective_inertia_factor(s, k) : 1.0;
+      if (selective) {  // the scaled inertia changed: the angular momentum is kept through the change (SM-5b)
+        const double kept = selective_inertia_factor_before(s, k) / factor;
+        n.wx[k] *= kept, n.wy[k] *= kept, n.wz[k] *= kept;
+      }
+      const double inverse_inertia = 1.0 / (n.inertia[k] * factor);
       n.wx[k] += dt_average * n.mx[k] * inverse_inertia;
       n.wy[k] += dt_average * n.my[k] * inverse_inertia;
       n.wz[k] += dt_average * n.mz[k] * inverse_inertia;
@@ -737,9 +765,11 @@ MonitorDue outputs_due(const Model& m, const SolverState& s, const OutputSchedul
   return due;
 }
 
-void update_energies(SolverState& s) {
+void update_energies(const Model& m, SolverState& s) {
   const auto [translational, rotational] = kinetic_energy(s);
-  s.energy.kinetic_translational = translational;
+  // Under selective mass scaling the deformation modes' added mass moves too (eq. SM-6), as the reference lists it.
+  s.energy.kinetic_translational = translational + selective_mass_kinetic_energy(m, s);
+  if (std::getenv("AMS_KE") && s.cycle % 250 == 0) fprintf(stderr, "cycle %lld KE_dM %g\n", s.cycle, selective_mass_kinetic_energy(m, s));
   s.energy.kinetic_rotational = rotational;
   const auto [internal, hourglass] = element_energies(s);
   s.energy.internal = internal;

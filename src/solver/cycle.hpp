@@ -77,8 +77,14 @@ void apply_loads(const Model& model, SolverState& state);
 // time. Records a stop in `events` when the step is below the minimum or nothing bounds it.
 double choose_time_step(const Model& model, SolverState& state, RunEvents& events, StepBound& bound);
 
-// 4. Free central-difference velocity update v^(n+1/2) = v^(n-1/2) + dt^n a^n (CD-2).
-void integrate(SolverState& state, VelocityScratch& scratch, double dt_average);
+// 3b. Selective mass scaling (/DT/AMS): the elements' added mass from their steps and the accelerations of
+// (M + dM) a^n = F^n (docs/theory/time-step.md, SM-1 to SM-5). A solve that does not converge stops the run.
+void solve_accelerations(const Model& model, SolverState& state, RunEvents& events, double dt_average,
+                         double dt_next);
+
+// 4. Free central-difference velocity update v^(n+1/2) = v^(n-1/2) + dt^n a^n (CD-2); with `selective`, the
+// translational accelerations of 3b and the scaled rotational inertia (SM-3a).
+void integrate(SolverState& state, VelocityScratch& scratch, double dt_average, bool selective);
 
 // 5. Kinematic conditions on v^(n+1/2) (rigid bodies, fixed and imposed dofs, rigid walls), and the work of the
 // loads, the kinematic conditions and the contact forces over the step.
@@ -111,7 +117,7 @@ bool frame_due(const SolverState& state, const OutputSchedule& schedule);
 // The balance's energies, when it is checked: kinetic energies of v^(n+1/2), and the internal and hourglass
 // energies as exact sums of each element's running energy (docs/theory/energy.md), combined over the domains
 // (every domain calls it at the same cycles).
-void update_energies(SolverState& state);
+void update_energies(const Model& model, SolverState& state);
 // NaN in the balance, /STOP added-mass and energy-error limits: recorded in `events.stop`.
 void check_run_limits(const Model& model, const SolverState& state, RunEvents& events);
 // Once per run: the step `dt` fell below 1/1000 of the elements' scaled step `element_step` (set by `control`).

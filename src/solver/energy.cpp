@@ -69,7 +69,8 @@ std::pair<double, double> kinetic_energy(SolverState& s, bool whole_model) {
   sums.assign(2, ExactSum{});
   auto add = [&](std::size_t k) {
     sums[0].add(0.5 * n.mass[k] * (n.vx[k] * n.vx[k] + n.vy[k] * n.vy[k] + n.vz[k] * n.vz[k]));
-    sums[1].add(0.5 * n.inertia[k] * (n.wx[k] * n.wx[k] + n.wy[k] * n.wy[k] + n.wz[k] * n.wz[k]));
+    sums[1].add(0.5 * n.inertia[k] * selective_inertia_factor(s, k) *
+                (n.wx[k] * n.wx[k] + n.wy[k] * n.wy[k] + n.wz[k] * n.wz[k]));
   };
   if (whole_model) {
     for (std::size_t k = 0; k < n.size(); ++k) add(k);

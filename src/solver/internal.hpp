@@ -55,6 +55,26 @@ void element_interface_stiffness(const Model& model, SolverState& state);
 void nodal_interface_stiffness(const Model& model, SolverState& state);
 NodalStep interface_nodal_step(const Model& model, SolverState& state);
 
+// Selective (advanced) mass scaling, /AMS with /DT/AMS (docs/theory/time-step.md, SM-1 to SM-6): whether the run
+// has it; the step an element of critical step dt_e allows under it, max(s dt_e, dt_min) (eq. SM-0); each cycle,
+// the elements' added mass from their steps (SM-1, SM-3) and the accelerations of (M + dM) a = F (SM-5); the
+// factor on a node's rotational inertia (SM-3a); the kinetic energy of dM, 1/2 v . dM v (SM-6).
+bool selective_mass_on(const Model& model);
+double selective_mass_step(const Model& model, double critical_dt);
+void scale_selective_mass(const Model& model, SolverState& state);
+struct SelectiveSolve {
+  long long iterations = 0;
+  bool converged = true;
+  double residual = 0.0;  // the last residual's D^-1 norm over the right-hand side's
+};
+SelectiveSolve solve_selective_mass(const Model& model, SolverState& state, double dt_average);
+double selective_inertia_factor(const SolverState& state, std::size_t node);
+double selective_inertia_factor_before(const SolverState& state, std::size_t node);  // the cycle before's
+// The mass a kinematic condition's velocity change of translation d at node k moves: its lumped mass, or under
+// selective mass scaling, for a dof the solve moved, the scaled diagonal (SM-4b).
+double velocity_change_mass(const SolverState& state, std::size_t node, std::size_t d);
+double selective_mass_kinetic_energy(const Model& model, const SolverState& state);
+
 // The first output time start + k interval (k >= 0 whole) after t, with the loop's relative tolerance 1e-12 on
 // times, in O(1) whatever the ratio of the interval to the step (/ANIM/DT, /TFILE).
 double next_output_time(double t, double start, double interval);
@@ -73,6 +93,8 @@ void add_external_forces(const Model& model, SolverState& state, double time);
 // The same forces into state.recorded.external_force (3 per node, moments left out), for the field frames.
 void record_external_forces(const Model& model, SolverState& state, double time);
 
+// A rigid body's inertia tensor about its centre in global axes, R J R^T (row by row).
+std::array<double, 9> body_inertia_global(const RigidBodyState& body);
 // Moves the secondary nodes' forces and moments to their rigid body's centre (after the element forces).
 void gather_rigid_body_forces(SolverState& state);
 // Rigid bodies after the free velocity update: new momentum, rotation and the secondary nodes' velocities. Fixed
@@ -91,5 +113,8 @@ std::optional<double> imposed_velocity(const Model& model, const SolverState& st
 // time t_next = t^(n+1) (the position the step reaches), then rigid walls.
 void impose_kinematics(const Model& model, SolverState& state, double time, double dt_next);
 void apply_rigid_walls(const Model& model, SolverState& state, double dt_average, double dt_next);
+// Before selective mass scaling's solve: the nodes each wall will hold over the step, from their velocities before
+// it, join those it held at the last (RigidWallState::active, held_normal; docs/theory/time-step.md, SM-4).
+void predict_wall_holds(const Model& model, SolverState& state, double dt_next);
 
 }  // namespace crumple::solver

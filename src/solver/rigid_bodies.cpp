@@ -289,6 +289,10 @@ void gather_rigid_body_forces(SolverState& s) {
   }
 }
 
+std::array<double, 9> body_inertia_global(const RigidBodyState& b) {
+  return mul(mul(b.rotation, b.inertia_body), transpose(b.rotation));
+}
+
 double update_rigid_bodies(const Model& m, SolverState& s, double dt_average, double dt_next) {
   NodalState& n = s.nodes;
   double work = 0.0;

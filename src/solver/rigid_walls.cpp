@@ -141,6 +141,8 @@ void setup_rigid_walls(const Model& m, SolverState& s) {
     state.nodes = w.secondary_nodes;
     state.tied.assign(state.nodes.size(), 0);
     state.active.assign(state.nodes.size(), 0);
+    state.held_normal.assign(state.nodes.size(), Vec3{});
+    state.held_tied.assign(state.nodes.size(), 0);
     state.origin = w.point;
     state.velocity = w.velocity0;
     if (w.node >= 0) {
@@ -151,6 +153,21 @@ void setup_rigid_walls(const Model& m, SolverState& s) {
       state.free_dofs = free_translation_dofs(m, s, w.node);
     }
     s.walls.push_back(std::move(state));
+  }
+}
+
+void predict_wall_holds(const Model& m, SolverState& s, double dt_next) {
+  for (std::size_t iw = 0; iw < m.rigid_walls.size(); ++iw) {
+    const RigidWall& w = m.rigid_walls[iw];
+    RigidWallState& st = s.walls[iw];
+    for (std::size_t i = 0; i < st.nodes.size(); ++i) {
+      Vec3 normal{};
+      double vn_new = 0.0;
+      if (!holds(w, st, i, s.nodes, st.velocity, dt_next, normal, vn_new) && !st.active[i]) continue;
+      if (!st.active[i]) st.held_normal[i] = normal;
+      st.active[i] = 1;
+      st.held_tied[i] = st.held_tied[i] || st.tied[i] != 0 || w.slide == WallSliding::Tied;
+    }
   }
 }
 
@@ -175,7 +192,10 @@ void apply_rigid_walls(const Model& m, SolverState& s, double dt_average, double
       if (!s.domain.is_local(k)) continue;
       Vec3 normal{};
       double vn_new = 0.0;
-      if (!holds(w, st, i, n, wall_velocity, dt_next, normal, vn_new)) continue;
+      st.active[i] = holds(w, st, i, n, wall_velocity, dt_next, normal, vn_new);
+      if (!st.active[i]) continue;
+      st.held_normal[i] = normal;
+      st.held_tied[i] = st.tied[i] != 0 || w.slide == WallSliding::Tied;
       const Vec3 before = node_velocity(n, k);
       const Vec3 rel = before - wall_velocity;
       Vec3 v = wall_velocity;  // tied
@@ -195,9 +215,11 @@ void apply_rigid_walls(const Model& m, SolverState& s, double dt_average, double
       }
       n.vx[k] = v[0], n.vy[k] = v[1], n.vz[k] = v[2];
       if (!s.domain.owns(k)) continue;
-      for (std::size_t c = 0; c < 3; ++c) sums[c].add(n.mass[k] * (v[c] - before[c]));
+      Vec3 impulse{};
+      for (std::size_t c = 0; c < 3; ++c) impulse[c] = velocity_change_mass(s, k, c) * (v[c] - before[c]);
+      for (std::size_t c = 0; c < 3; ++c) sums[c].add(impulse[c]);
       // Its part along the wall's normal at the node, for the normal and tangential wall forces of the outputs.
-      const double along_normal = n.mass[k] * dot(v - before, normal);
+      const double along_normal = dot(impulse, normal);
       for (std::size_t c = 0; c < 3; ++c) sums[3 + c].add(along_normal * normal[c]);
     }
     s.reducer.sum(sums);

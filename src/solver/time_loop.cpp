@@ -72,7 +72,9 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunObse
   const auto started = std::chrono::steady_clock::now();
   s.reducer = Reducer(options.exchange);
   if (options.resume == nullptr) switch_rigid_bodies(m, s);  // a resumed state has them switched already
-  update_energies(s);  // for the listing's row of cycle 0
+  const bool selective = selective_mass_on(m);
+  if (!selective) s.selective_mass = SelectiveMassState{}, s.contact.selective_mass_added = nullptr;  // after one with it
+  update_energies(m, s);  // for the listing's row of cycle 0
   observer.start(s, notes);
   RunEvents events;
   OutputSchedule schedule(m.run, s.time, options.max_cycles);
@@ -114,7 +116,11 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunObse
 
     // dt^n (CD-2); the very first cycle of a run is a half step from the initial velocities.
     const double dt_average = s.cycle + s.cycles_done == 0 ? 0.5 * dt_next : 0.5 * (s.dt + dt_next);
-    integrate(s, scratch, dt_average);
+    if (selective) {
+      solve_accelerations(m, s, events, dt_average, dt_next);
+      if (events.stop.stopped()) break;
+    }
+    integrate(s, scratch, dt_average, selective);
     apply_constraints(m, s, scratch, dt_average, dt_next);
     advance_positions(s, dt_next);
     clock.lap(phases.update);
@@ -123,7 +129,7 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunObse
     const bool show_progress = observer.progress_due();
     // The kinetic energy is a sum over the domains: every domain takes it at the same cycles, so a run of several
     // shows the progress line with the last one taken.
-    if (due.energies() || (show_progress && !s.domain.several())) update_energies(s);
+    if (due.energies() || (show_progress && !s.domain.several())) update_energies(m, s);
     if (due.energies()) {
       if (due.print) observer.row(s, dt_next, control);
       check_run_limits(m, s, events);
@@ -151,7 +157,7 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunObse
     if (due.finished || stop_requested(options.stop_request, s, events, options.exchange, due.energies())) break;
     if (rebalance_due(s)) rebalance(m, s, *options.exchange, events, options.repartition);
   }
-  update_energies(s);
+  update_energies(m, s);
   if (s.domain.several()) share_element_state(s, *options.exchange), share_node_state(m, s, *options.exchange, true);
   observer.events(events);
   observer.row(s, dt_next, control);  // the cycle the run ended at, unless its row is printed already

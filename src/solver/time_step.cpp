@@ -69,8 +69,10 @@ void element_stiffness(const Model& m, ElementKind kind, const State& st, Solver
 
 // Off under mass scaling: /DT/NODA/CST has its own nodal step (T-2, T-3), /DT/INTER/CST sizes the contacts' masses on
 // their own step (C-11c).
+// Off under selective mass scaling too: its mass holds the nodes at dt_min (SM-0).
 bool interface_nodal_step_on(const Model& m) {
-  return !m.type7_interfaces.empty() && !m.run.dt_nodal_cst.given && !m.run.dt_inter_cst.given;
+  return !m.type7_interfaces.empty() && !m.run.dt_nodal_cst.given && !m.run.dt_inter_cst.given &&
+         !selective_mass_on(m);
 }
 
 void element_interface_stiffness(const Model& m, SolverState& s) {

@@ -64,6 +64,9 @@ struct Model {
   std::vector<Accelerometer> accelerometers;
 
   RunControl run;
+  // /AMS: the parts /DT/AMS scales (the whole model: the only selection Crumple reads); `ams_where` its card.
+  bool ams_selected = false;
+  SourceLocation ams_where;
 
   // Lumped nodal mass [M]: element mass plus /ADMAS and /RBODY mass (model build, docs/theory/mass.md).
   std::vector<double> nodal_mass;

@@ -23,6 +23,20 @@ struct TimeStepControl {  // /DT, /DT/NODA/CST, /DT/SHELL, /DT/BRICK, /DT/INTER/
 
 // What the field frames hold beyond the fields every frame has (docs/output-format.md, "/frames/NNNN"): set by
 // the /ANIM cards that ask for them. A request for one element kind adds the field for every kind that has it.
+// /DT/AMS/Iflag: advanced (selective) mass scaling on the parts of the starter's /AMS (docs/theory/time-step.md,
+// "Selective mass scaling", SM-1 to SM-6). Zero means "not given"; the solver applies the defaults.
+struct SelectiveMassControl {
+  double scale = 0.0;               // Δt_sca in (0, 1] (0: default 0.9)
+  double minimum = 0.0;             // Δt_min: the step the scaled elements are held at [T] (0: no scaling)
+  double tolerance = 0.0;           // Tol_AMS, relative residual of the solve (0: default 1e-3)
+  std::int64_t max_iterations = 0;  // Niter (0: default 1000)
+  bool given = false;
+  SourceLocation where;             // the card
+  double scale_or_default() const { return scale > 0.0 ? scale : 0.9; }
+  double tolerance_or_default() const { return tolerance > 0.0 ? tolerance : 1e-3; }
+  std::int64_t max_iterations_or_default() const { return max_iterations > 0 ? max_iterations : 1000; }
+};
+
 struct FrameRequests {
   bool von_mises = false;         // /ANIM/ELEM/VONM (also /ANIM/SHELL/..., /ANIM/BRICK/...)
   bool pressure = false;          // P
@@ -59,6 +73,7 @@ struct RunControl {
   TimeStepControl dt_nodal_cst;   // /DT/NODA/CST
   TimeStepControl dt_shell, dt_brick, dt_sh3n;
   TimeStepControl dt_inter_del, dt_inter_cst;
+  SelectiveMassControl dt_ams;    // /DT/AMS
   // Steps ahead of its entry into the gap that a TYPE7 node closing in counts K0 in its step (eq. C-11). 0: from
   // the cycle it is in the gap, as the reference solver (the deck as written); 3 with `--accuracy fine`.
   int contact_entry_window = 0;

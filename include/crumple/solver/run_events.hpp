@@ -62,6 +62,8 @@ struct StopReason {
     AddedMassLimit,           // /STOP Mmax: value = added mass, minimum = the card's ratio
     EnergyErrorLimit,         // /STOP Emax: value = |error| ratio
     Requested,                // asked from outside (SolverOptions::stop_request): index = the signal number
+    MassScalingDiverged,      // /DT/AMS: the solve did not converge: index = iterations, value = residual ratio,
+                              // minimum = Tol_AMS
   };
   Kind kind = Kind::None;
   long long cycle = 0;

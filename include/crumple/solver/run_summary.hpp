@@ -55,6 +55,8 @@ struct RunSummary {
   EnergyBalance energy;
   double mass_total = 0.0;
   double mass_added = 0.0;  // mass added by time-step control (mass scaling)
+  // Selective mass scaling (/DT/AMS): the cycles solved and their conjugate-gradient iterations (0 without it).
+  long long selective_solves = 0, selective_iterations = 0, selective_iterations_max = 0;
   double wall_seconds = 0.0;
   double element_cycles_per_second = 0.0;
   PhaseTimes phases;

@@ -52,6 +52,10 @@ struct RigidWallState {
   std::vector<std::int32_t> nodes;   // candidate secondary nodes
   std::vector<std::uint8_t> tied;    // tied walls: 1 once the node touched
   std::vector<std::uint8_t> active;  // scratch of the cycle: 1 when the node is held by the wall
+  // Of the nodes it held this cycle: the wall's normal there, and whether it held every direction (tied). Read by
+  // selective mass scaling at the next cycle (docs/theory/time-step.md, SM-4).
+  std::vector<Vec3> held_normal;
+  std::vector<std::uint8_t> held_tied;
   Vec3 force{};     // force of the wall on the nodes during the last cycle [F]
   Vec3 normal_force{};  // its part along the wall's normal at each node it held [F]
   Vec3 velocity{};  // wall velocity v^(n+1/2) [L/T]
@@ -90,6 +94,41 @@ struct HistoryIntegrals {
   std::array<std::vector<std::int32_t>, kElementKinds> section_work_elements, section_record_owner;
 };
 
+// Selective (advanced) mass scaling, /AMS with /DT/AMS (docs/theory/time-step.md, SM-1 to SM-6): the mass matrix
+// M + dM, dM a sum of element matrices that leave rigid translation alone. Sized at the first cycle that scales;
+// every value is made again each cycle from the elements' steps, so nothing of it is carried by a restart.
+struct SelectiveMassState {
+  // Per element kind, per element: the mass the scaling gives its deformation modes this cycle (eq. SM-1),
+  // m_e ((dt_min / (s dt_e))^2 - 1) when its scaled step is below dt_min, else 0 [M]; and the elements it is
+  // positive for.
+  std::array<std::vector<double>, kElementKinds> element_added;
+  std::array<std::vector<std::int32_t>, kElementKinds> scaled;
+  // The same at the cycle before, the change since, and the elements it changed for (eq. SM-5a). `started`: the
+  // first cycle has been scaled (the one before is the state's own).
+  std::array<std::vector<double>, kElementKinds> element_added_before, element_change;
+  std::array<std::vector<std::int32_t>, kElementKinds> changed;
+  bool started = false;
+  // Per 3-node shell, its corners' shares of its mass (eq. S-9c), 3 each; the other kinds share evenly.
+  std::vector<double> shell3_fraction;
+  std::vector<double> shell4_step_factor;  // per 4-node shell: sqrt(1 - nu^2), its step on the plate wave speed (SM-1a)
+  std::vector<double> node_added;     // per node: the diagonal of dM, the sum of its elements' shares [M]
+  std::vector<double> node_added_before;  // the same at the cycle before (eq. SM-5b)
+  std::vector<std::uint8_t> solved;   // per node: bit d set when translation d is solved for (not held, eq. SM-4)
+  std::vector<double> wall_normal;    // per node, 3: the normal of the rigid wall that holds it, else 0 (SM-4)
+  std::vector<double> ax, ay, az;     // the accelerations of the cycle [L/T^2]
+  // The solve's vectors, 3 per node (eq. SM-5): solution, right-hand side, preconditioner, residual, its
+  // preconditioned form, search direction and its product.
+  std::vector<double> x, b, diagonal, r, z, p, q;
+  std::vector<double> velocity;  // v^(n-1/2), 3 per node, for the change of the matrix
+  std::vector<double> spread;    // a vector with the rigid bodies' values spread to their nodes (SM-4a)
+  std::vector<double> diagonal_mass;  // per node: the diagonal of M + dM (a body's whole at its main node) [M]
+  std::vector<double> body_inertia;   // per rigid body, 9: its inertia tensor in global axes this cycle [M L^2]
+  std::vector<std::uint8_t> body_rotation_solved;  // per rigid body: bit d when its rotation d is solved for
+  long long solved_cycle = -1;           // the cycle the accelerations are of (a rigid body reads its own there)
+  long long solves = 0, iterations = 0;  // cycles solved and their conjugate-gradient iterations, summed
+  long long max_iterations = 0;          // the most one cycle took
+};
+
 struct SolverState {
   NodalState nodes;
   std::vector<double> x0, y0, z0;                  // initial coordinates
@@ -103,6 +142,7 @@ struct SolverState {
   std::vector<RigidBodyState> bodies;
   std::vector<RigidWallState> walls;
   ContactState contact;                             // TYPE7 interfaces (empty without /INTER/TYPE7)
+  SelectiveMassState selective_mass;                // /DT/AMS (empty without it)
   std::vector<std::int32_t> rigid_owner;           // per node: rigid body index, -1 when none
   double time = 0.0;
   double dt = 0.0;        // step of the last position update dt^(n-1/2) [T]

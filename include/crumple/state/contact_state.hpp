@@ -196,6 +196,10 @@ struct ContactState {
   // so its step is the body's, and its own elements (carried by the body) add no stiffness (eq. C-11). The solver
   // keeps it as bodies switch on and off.
   std::vector<double> rigid_body_mass;
+  // Under selective mass scaling (/DT/AMS): per node, the mass the scaling adds to its diagonal this cycle, set by
+  // the solver before the pass (not owned; null without it). The pairs' and nodes' stiffness steps take it with the
+  // node's mass, and leave out its elements, which the scaling holds at its step (docs/theory/time-step.md, SM-7).
+  const std::vector<double>* selective_mass_added = nullptr;
   // Per node, for the interface nodal step (docs/theory/time-step.md, T-4; empty when it is off): the contact
   // stiffness of the cycle, Kt of its pairs as a secondary node plus w Kt of each pair on a segment it carries.
   std::vector<double> nodal_contact_stiffness;

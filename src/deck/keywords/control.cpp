@@ -166,6 +166,20 @@ void read_shfra(CardReader& reader, DeckContext& context) {
                    "the shell frame orients only orthotropic materials (none in Crumple) and element-frame output");
 }
 
+// /AMS: grpart_ID (1-10), the part group advanced mass scaling acts on when the engine deck has /DT/AMS; 0 or
+// blank: the whole model. Without /DT/AMS the card does nothing, as in the reference solver.
+void read_ams(CardReader& reader, DeckContext& context) {
+  if (context.model.ams_selected) reader.fail("", "a single /AMS card", "a second one");
+  if (const auto line = optional_line(reader, "grpart_ID")) {
+    const std::int64_t group = line->integer(1, 10, "grpart_ID");
+    if (group < 0) line->fail(1, 10, "grpart_ID", "a non-negative part group id (0 or blank: the whole model)");
+    if (group != 0)
+      context.unsupported(line->error(1, 10, "grpart_ID", default_only("selective mass scaling on a part group is")));
+  }
+  context.model.ams_selected = true;
+  context.model.ams_where = reader.card().where;
+}
+
 // /DEF_SHELL (docs/cards/starter-model.md §3): only the first card counts, as in the reference solver.
 void read_def_shell(CardReader& reader, DeckContext& context) {
   ShellDefaults& d = context.model.shell_defaults;
@@ -247,6 +261,7 @@ void register_control_keywords(KeywordTable& table) {
   table.push_back({"/MEMORY", DeckPart::Starter, read_performance_card});
   table.push_back({"/RANDOM", DeckPart::Starter, read_random});
   table.push_back({"/SHFRA", DeckPart::Starter, read_shfra});
+  table.push_back({"/AMS", DeckPart::Starter, read_ams});
   // A version stamp without data: accepted without effect (listed by `crumple check`).
   table.push_back({"/VERS", DeckPart::Starter, {}});
 }

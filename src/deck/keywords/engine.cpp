@@ -360,6 +360,39 @@ void read_dt_element(CardReader& reader, TimeStepControl& target, bool small_str
   read_dt_values(reader, target, action, false);
 }
 
+// /DT/AMS/Iflag: DTsca DTmin; with Iflag 1 or 2 a line Tol_AMS; with Iflag 2 a line Niter Nprint. Nprint only
+// prints the solve's iterations: output-only (Crumple reports them in the summary).
+void read_dt_ams(CardReader& reader, DeckContext& context) {
+  SelectiveMassControl& ams = context.model.run.dt_ams;
+  const Card& card = reader.card();
+  if (ams.given) reader.fail("", "a single /DT/AMS card", "a second one");
+  const std::int64_t iflag = path_integer(reader, 2, "Iflag").value_or(0);
+  if (iflag < 0 || iflag > 2) reader.fail("Iflag", "0, 1 or 2 (the number of extra lines)", fmt::format("{}", iflag));
+  path_at_most(reader, 3);
+  const Line line = required_line(reader, "DTsca, DTmin");
+  at_most(line, 2, "DTsca, DTmin");
+  ams.scale = checked_real(line, 0, "DTsca", 0.0, unit_interval, "a time-step scale in (0, 1] (0: default 0.9)");
+  ams.minimum = checked_real(line, 1, "DTmin", 0.0, not_negative, "a non-negative time step");
+  if (iflag >= 1) {
+    const Line tol = required_line(reader, "Tol_AMS");
+    at_most(tol, 1, "Tol_AMS");
+    ams.tolerance = checked_real(tol, 0, "Tol_AMS", 0.0, unit_interval, "a relative tolerance in [0, 1] (0: default 1e-3)");
+  }
+  if (iflag == 2) {
+    const Line iterations = required_line(reader, "Niter, Nprint");
+    at_most(iterations, 2, "Niter, Nprint");
+    ams.max_iterations = iterations.token_integer(0, "Niter", 0);
+    if (ams.max_iterations < 0)
+      iterations.fail_value("Niter (value 1)", "a non-negative iteration count (0: default 1000)",
+                            fmt::format("{}", ams.max_iterations));
+    if (iterations.token_integer(1, "Nprint", 0) != 0)
+      output_only(reader, context, "Nprint: Crumple reports the solve's iterations in the summary, not every Nprint cycles");
+  }
+  reader.finish();
+  ams.given = true;
+  ams.where = card.where;
+}
+
 void read_dt(CardReader& reader, DeckContext& context) {
   const Card& card = reader.card();
   RunControl& run = context.model.run;
@@ -377,6 +410,7 @@ void read_dt(CardReader& reader, DeckContext& context) {
     no_iflag(reader);
     return read_dt_values(reader, run.dt_nodal_cst, TimeStepAction::Default, true);
   }
+  if (type == "AMS") return read_dt_ams(reader, context);
   if (type == "INTER") {
     path_at_most(reader, 3);
     if (keyword3 == "DEL") return read_dt_values(reader, run.dt_inter_del, TimeStepAction::Default, true);
@@ -384,7 +418,7 @@ void read_dt(CardReader& reader, DeckContext& context) {
       return read_dt_values(reader, run.dt_inter_cst, TimeStepAction::Default, true);
     reader.fail("Keyword3", "/DT/INTER/DEL or /DT/INTER/CST", in_quotes(card.keyword));
   }
-  reader.fail("Eltyp", "/DT, /DT/SHELL, /DT/BRICK, /DT/SH_3N, /DT/NODA/CST, /DT/INTER/DEL or /DT/INTER/CST",
+  reader.fail("Eltyp", "/DT, /DT/SHELL, /DT/BRICK, /DT/SH_3N, /DT/NODA/CST, /DT/AMS, /DT/INTER/DEL or /DT/INTER/CST",
               in_quotes(card.keyword));
 }
 
