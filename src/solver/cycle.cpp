@@ -3,8 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <initializer_list>
 #include <optional>
 #include <stdexcept>
@@ -165,7 +163,7 @@ void add_constraint_work(SolverState& s, const VelocityScratch& scratch, ExactSu
   for_each_owned_node(s.domain, n.size(), [&](std::size_t k) {
     for (std::size_t d = 0; d < 3; ++d) {
       const double dv = (*v[d])[k] - scratch.free[d][k];
-      if (dv != 0.0) work.add(velocity_change_mass(s, k, d) * dv * 0.5 * ((*v[d])[k] + scratch.before[d][k]));
+      if (dv != 0.0) work.add(n.mass[k] * dv * 0.5 * ((*v[d])[k] + scratch.before[d][k]));
     }
     if (n.inertia[k] > 0.0)
       for (std::size_t d = 3; d < 6; ++d) {
@@ -640,8 +638,8 @@ double choose_time_step(const Model& m, SolverState& s, RunEvents& events, StepB
 }
 
 void solve_accelerations(const Model& m, SolverState& s, RunEvents& events, double dt_average, double dt_next) {
-  predict_wall_holds(m, s, dt_next);
-  const SelectiveSolve solve = solve_selective_mass(m, s, dt_average);
+  predict_wall_holds(m, s, dt_average, dt_next);
+  const SelectiveSolve solve = solve_selective_mass(m, s, dt_average, dt_next);
   if (solve.converged || events.stop.stopped()) return;
   StopReason& stop = events.stop;
   stop.kind = StopReason::Kind::MassScalingDiverged, stop.cycle = s.cycle, stop.time = s.time;
@@ -703,6 +701,8 @@ void apply_constraints(const Model& m, SolverState& s, VelocityScratch& scratch,
   add_constraint_work(s, scratch, work[0]);
   if (!s.contact.interfaces.empty())
     contact::add_contact_work(s.contact, n, scratch.before.data(), s.domain.node_owner, s.domain.index, work.data() + 1);
+  // Under selective mass scaling, the held dofs' reactions (SM-4b): one domain only.
+  if (s.selective_mass.solved_cycle == s.cycle) work[0].add(s.selective_mass.reaction_work);
   s.reducer.sum(work);
   s.energy.external_work += work[0].value() + body_work;
   if (!s.contact.interfaces.empty()) s.energy.contact = contact::absorb_contact_work(s.contact, work.data() + 1, dt_average);
@@ -769,7 +769,6 @@ void update_energies(const Model& m, SolverState& s) {
   const auto [translational, rotational] = kinetic_energy(s);
   // Under selective mass scaling the deformation modes' added mass moves too (eq. SM-6), as the reference lists it.
   s.energy.kinetic_translational = translational + selective_mass_kinetic_energy(m, s);
-  if (std::getenv("AMS_KE") && s.cycle % 250 == 0) fprintf(stderr, "cycle %lld KE_dM %g\n", s.cycle, selective_mass_kinetic_energy(m, s));
   s.energy.kinetic_rotational = rotational;
   const auto [internal, hourglass] = element_energies(s);
   s.energy.internal = internal;

@@ -61,18 +61,16 @@ NodalStep interface_nodal_step(const Model& model, SolverState& state);
 // factor on a node's rotational inertia (SM-3a); the kinetic energy of dM, 1/2 v . dM v (SM-6).
 bool selective_mass_on(const Model& model);
 double selective_mass_step(const Model& model, double critical_dt);
+void size_selective_mass(const Model& model, SolverState& state);  // at the start (a restart reads into it)
 void scale_selective_mass(const Model& model, SolverState& state);
 struct SelectiveSolve {
   long long iterations = 0;
   bool converged = true;
   double residual = 0.0;  // the last residual's D^-1 norm over the right-hand side's
 };
-SelectiveSolve solve_selective_mass(const Model& model, SolverState& state, double dt_average);
+SelectiveSolve solve_selective_mass(const Model& model, SolverState& state, double dt_average, double dt_next);
 double selective_inertia_factor(const SolverState& state, std::size_t node);
 double selective_inertia_factor_before(const SolverState& state, std::size_t node);  // the cycle before's
-// The mass a kinematic condition's velocity change of translation d at node k moves: its lumped mass, or under
-// selective mass scaling, for a dof the solve moved, the scaled diagonal (SM-4b).
-double velocity_change_mass(const SolverState& state, std::size_t node, std::size_t d);
 double selective_mass_kinetic_energy(const Model& model, const SolverState& state);
 
 // The first output time start + k interval (k >= 0 whole) after t, with the loop's relative tolerance 1e-12 on
@@ -115,6 +113,6 @@ void impose_kinematics(const Model& model, SolverState& state, double time, doub
 void apply_rigid_walls(const Model& model, SolverState& state, double dt_average, double dt_next);
 // Before selective mass scaling's solve: the nodes each wall will hold over the step, from their velocities before
 // it, join those it held at the last (RigidWallState::active, held_normal; docs/theory/time-step.md, SM-4).
-void predict_wall_holds(const Model& model, SolverState& state, double dt_next);
+void predict_wall_holds(const Model& model, SolverState& state, double dt_average, double dt_next);
 
 }  // namespace crumple::solver

@@ -63,18 +63,25 @@ std::uint8_t free_translation_dofs(const Model& m, const SolverState& s, std::in
 
 Vec3 node_velocity(const NodalState& n, std::size_t k) { return {n.vx[k], n.vy[k], n.vz[k]}; }
 
-// Whether the wall moving at `wall_velocity` holds node k over the step (eq. RW-1): it would cross the wall, or
-// it already touches a tied wall. Gives the normal and the normal velocity relative to the wall it ends with.
-bool holds(const RigidWall& w, const RigidWallState& st, std::size_t i, const NodalState& n, const Vec3& wall_velocity,
-           double dt_next, Vec3& normal, double& vn_new) {
+// Whether the wall moving at `wall_velocity` holds node k moving at `velocity` over the step (eq. RW-1): it would
+// cross the wall, or it already touches a tied wall. Gives the normal and the normal velocity relative to the wall
+// it ends with.
+bool holds_at(const RigidWall& w, const RigidWallState& st, std::size_t i, const NodalState& n, const Vec3& velocity,
+              const Vec3& wall_velocity, double dt_next, Vec3& normal, double& vn_new) {
   const auto k = static_cast<std::size_t>(st.nodes[i]);
   double d = 0.0;
   if (!distance(w, st.origin, {n.x[k], n.y[k], n.z[k]}, d, normal)) return st.tied[i] != 0;
-  const double vn = dot(node_velocity(n, k) - wall_velocity, normal);
+  const double vn = dot(velocity - wall_velocity, normal);
   // Impenetrability at the end of the step: d + vn dt >= 0, without pulling a node that starts inside the wall
   // back out in one step.
   vn_new = d > 0.0 ? -d / dt_next : std::max(vn, 0.0);
   return st.tied[i] != 0 || d + vn * dt_next < 0.0;
+}
+
+bool holds(const RigidWall& w, const RigidWallState& st, std::size_t i, const NodalState& n, const Vec3& wall_velocity,
+           double dt_next, Vec3& normal, double& vn_new) {
+  const auto k = static_cast<std::size_t>(st.nodes[i]);
+  return holds_at(w, st, i, n, node_velocity(n, k), wall_velocity, dt_next, normal, vn_new);
 }
 
 // Velocity of a moving wall after it takes the reaction of the nodes it holds (eq. RW-2): with M the wall node's
@@ -141,8 +148,9 @@ void setup_rigid_walls(const Model& m, SolverState& s) {
     state.nodes = w.secondary_nodes;
     state.tied.assign(state.nodes.size(), 0);
     state.active.assign(state.nodes.size(), 0);
-    state.held_normal.assign(state.nodes.size(), Vec3{});
+    state.held_normal.assign(3 * state.nodes.size(), 0.0);
     state.held_tied.assign(state.nodes.size(), 0);
+    state.held_speed.assign(state.nodes.size(), 0.0);
     state.origin = w.point;
     state.velocity = w.velocity0;
     if (w.node >= 0) {
@@ -156,17 +164,26 @@ void setup_rigid_walls(const Model& m, SolverState& s) {
   }
 }
 
-void predict_wall_holds(const Model& m, SolverState& s, double dt_next) {
+void predict_wall_holds(const Model& m, SolverState& s, double dt_average, double dt_next) {
+  const NodalState& n = s.nodes;
+  const std::vector<double>& added = s.selective_mass.node_added;
   for (std::size_t iw = 0; iw < m.rigid_walls.size(); ++iw) {
     const RigidWall& w = m.rigid_walls[iw];
     RigidWallState& st = s.walls[iw];
     for (std::size_t i = 0; i < st.nodes.size(); ++i) {
+      // The node's velocity after the update on its scaled diagonal: a trial that tells which nodes the wall will
+      // hold, and the normal velocity it will leave them.
+      const auto k = static_cast<std::size_t>(st.nodes[i]);
+      const double mass = n.mass[k] + (added.empty() ? 0.0 : added[k]);
+      const double rate = mass > 0.0 ? dt_average / mass : 0.0;
+      const Vec3 trial{n.vx[k] + rate * n.fx[k], n.vy[k] + rate * n.fy[k], n.vz[k] + rate * n.fz[k]};
       Vec3 normal{};
       double vn_new = 0.0;
-      if (!holds(w, st, i, s.nodes, st.velocity, dt_next, normal, vn_new) && !st.active[i]) continue;
-      if (!st.active[i]) st.held_normal[i] = normal;
-      st.active[i] = 1;
-      st.held_tied[i] = st.held_tied[i] || st.tied[i] != 0 || w.slide == WallSliding::Tied;
+      st.active[i] = holds_at(w, st, i, n, trial, st.velocity, dt_next, normal, vn_new);
+      if (!st.active[i]) continue;
+      for (std::size_t d = 0; d < 3; ++d) st.held_normal[3 * i + d] = normal[d];
+      st.held_tied[i] = st.tied[i] != 0 || w.slide == WallSliding::Tied;
+      st.held_speed[i] = dot(st.velocity, normal) + vn_new;  // the normal velocity the wall leaves it [L/T]
     }
   }
 }
@@ -192,10 +209,7 @@ void apply_rigid_walls(const Model& m, SolverState& s, double dt_average, double
       if (!s.domain.is_local(k)) continue;
       Vec3 normal{};
       double vn_new = 0.0;
-      st.active[i] = holds(w, st, i, n, wall_velocity, dt_next, normal, vn_new);
-      if (!st.active[i]) continue;
-      st.held_normal[i] = normal;
-      st.held_tied[i] = st.tied[i] != 0 || w.slide == WallSliding::Tied;
+      if (!holds(w, st, i, n, wall_velocity, dt_next, normal, vn_new)) continue;
       const Vec3 before = node_velocity(n, k);
       const Vec3 rel = before - wall_velocity;
       Vec3 v = wall_velocity;  // tied
@@ -215,11 +229,9 @@ void apply_rigid_walls(const Model& m, SolverState& s, double dt_average, double
       }
       n.vx[k] = v[0], n.vy[k] = v[1], n.vz[k] = v[2];
       if (!s.domain.owns(k)) continue;
-      Vec3 impulse{};
-      for (std::size_t c = 0; c < 3; ++c) impulse[c] = velocity_change_mass(s, k, c) * (v[c] - before[c]);
-      for (std::size_t c = 0; c < 3; ++c) sums[c].add(impulse[c]);
+      for (std::size_t c = 0; c < 3; ++c) sums[c].add(n.mass[k] * (v[c] - before[c]));
       // Its part along the wall's normal at the node, for the normal and tangential wall forces of the outputs.
-      const double along_normal = dot(impulse, normal);
+      const double along_normal = n.mass[k] * dot(v - before, normal);
       for (std::size_t c = 0; c < 3; ++c) sums[3 + c].add(along_normal * normal[c]);
     }
     s.reducer.sum(sums);

@@ -34,22 +34,35 @@ double corner_share(const SelectiveMassState& sm, ElementKind kind, std::size_t 
   return kind == ElementKind::Shell3 ? sm.shell3_fraction[3 * e + static_cast<std::size_t>(a)] : 1.0 / n;
 }
 
-// n / (n - 1): the factor that makes dM's diagonal at an even element's node the mass nodal scaling would add
-// there (eq. SM-2, measured on the reference solver).
-double coupling_factor(int n) { return static_cast<double>(n) / (n - 1); }
+// The factor c of eq. SM-2, measured on the reference solver kind by kind: n / (n - 1) for shells, which makes the
+// diagonal of dM at an even shell's node the mass nodal scaling would add there; 1 for bricks.
+double coupling_factor(ElementKind kind) {
+  return kind == ElementKind::Shell4 ? 4.0 / 3.0 : kind == ElementKind::Shell3 ? 1.5 : 1.0;
+}
 
 // Whether a rigid body moves in the solve (eq. SM-4a): an active one with mass.
 bool in_solve(const RigidBodyState& b) { return b.active && b.mass > 0.0; }
 
-// Translation dofs held by a condition the velocity update sets afterwards: fixed or imposed. They are left out of
-// the solve (eq. SM-4): their acceleration is the diagonal one, F / m. A rigid body's nodes move with its centre:
-// its main node carries the body's translation in the solve, its secondary nodes none of their own (SM-4a).
-void hold_constrained_dofs(const Model& m, SolverState& s) {
+// The dofs the kinematic conditions hold over the step, and the accelerations they give them (eq. SM-4), from the
+// velocities before it: a fixed translation is brought to rest, an imposed one to its velocity, a node a rigid wall
+// will hold to the wall's normal velocity (all three on a tied wall; its tangential ones stay in the solve). A rigid
+// body's nodes move with its centre: its main node carries the body's translation in the solve, its secondary
+// nodes none of their own (SM-4a).
+void hold_constrained_dofs(const Model& m, SolverState& s, double dt_average, double dt_next) {
   SelectiveMassState& sm = s.selective_mass;
-  const std::size_t nodes = s.nodes.size();
+  const NodalState& n = s.nodes;
+  const std::size_t nodes = n.size();
+  const std::vector<double>* v[3] = {&n.vx, &n.vy, &n.vz};
+  auto hold = [&](std::size_t k, std::size_t d, double velocity) {
+    sm.solved[k] &= static_cast<std::uint8_t>(~(1u << d));
+    sm.prescribed[3 * k + d] = dt_average > 0.0 ? (velocity - (*v[d])[k]) / dt_average : 0.0;
+  };
   sm.solved.assign(nodes, 7);
+  std::fill(sm.prescribed.begin(), sm.prescribed.end(), 0.0);
+  std::fill(sm.wall_normal.begin(), sm.wall_normal.end(), 0.0);
   for (std::size_t k = 0; k < nodes; ++k) {
-    sm.solved[k] &= static_cast<std::uint8_t>(~s.fixed[k] & 7);
+    for (std::size_t d = 0; d < 3; ++d)
+      if (s.fixed[k] & (1u << d)) hold(k, d, 0.0);
     if (s.rigid_owner[k] >= 0) sm.solved[k] = 0;
   }
   for (std::size_t i = 0; i < s.bodies.size(); ++i) {
@@ -60,34 +73,45 @@ void hold_constrained_dofs(const Model& m, SolverState& s) {
     const std::array<double, 9> inertia = body_inertia_global(b);
     std::copy(inertia.begin(), inertia.end(), sm.body_inertia.begin() + static_cast<std::ptrdiff_t>(9 * i));
   }
-  // A node a rigid wall held last cycle moves in the wall's plane (eq. SM-4): its normal is held, or all three
-  // translations on a tied wall.
-  std::fill(sm.wall_normal.begin(), sm.wall_normal.end(), 0.0);
+  for (const ImposedMotion& im : m.imposed) {
+    const auto d = static_cast<std::size_t>(im.dof);
+    if (im.kind == ImposedKind::Force || im.node_group < 0 || d >= 3) continue;
+    for (std::int32_t node : m.node_groups[static_cast<std::size_t>(im.node_group)].nodes)
+      if (const auto velocity = imposed_velocity(m, s, im, static_cast<std::size_t>(node), s.time, dt_next))
+        hold(static_cast<std::size_t>(node), d, *velocity);
+  }
   for (const RigidWallState& w : s.walls)
     for (std::size_t i = 0; i < w.nodes.size(); ++i) {
-      if (!w.active[i]) continue;
       const auto k = static_cast<std::size_t>(w.nodes[i]);
-      if (w.held_tied[i]) sm.solved[k] = 0;
-      for (std::size_t d = 0; d < 3; ++d) sm.wall_normal[3 * k + d] = w.held_normal[i][d];
+      if (!w.active[i] || s.rigid_owner[k] >= 0) continue;
+      const double* normal = &w.held_normal[3 * i];
+      if (w.held_tied[i]) {
+        for (std::size_t d = 0; d < 3; ++d) hold(k, d, w.velocity[d]);
+        continue;
+      }
+      const double vn = normal[0] * n.vx[k] + normal[1] * n.vy[k] + normal[2] * n.vz[k];
+      const double an = dt_average > 0.0 ? (w.held_speed[i] - vn) / dt_average : 0.0;
+      for (std::size_t d = 0; d < 3; ++d) sm.wall_normal[3 * k + d] = normal[d], sm.prescribed[3 * k + d] = an * normal[d];
     }
-  for (const ImposedMotion& im : m.imposed) {
-    if (im.kind == ImposedKind::Force || im.node_group < 0) continue;
-    const auto d = static_cast<int>(im.dof);
-    for (std::int32_t k : m.node_groups[static_cast<std::size_t>(im.node_group)].nodes)
-      sm.solved[static_cast<std::size_t>(k)] &= static_cast<std::uint8_t>(d < 3 ? ~(1u << d) : 7u);
-  }
 }
 
-void size_state(const Model& m, SolverState& s) {
+}  // namespace
+
+// The scratch is made once; what a cycle leaves for the next (the elements' and nodes' added mass, `started`) is
+// kept when a restart gave it back already.
+void size_selective_mass(const Model& m, SolverState& s) {
   SelectiveMassState& sm = s.selective_mass;
   const std::size_t nodes = s.nodes.size();
-  if (sm.node_added.size() == nodes) return;
+  const std::size_t unknowns = 3 * nodes + 3 * s.bodies.size();  // the nodes' translations, then the bodies' rotations
+  if (sm.x.size() == unknowns) return;
   for (ElementKind kind : kKinds) {
+    const auto k = static_cast<std::size_t>(kind);
     const std::size_t count = m.elements[static_cast<int>(kind)].size();
-    for (PerKind* v : {&sm.element_added, &sm.element_added_before, &sm.element_change})
-      (*v)[static_cast<std::size_t>(kind)].assign(count, 0.0);
+    if (sm.element_added[k].size() != count) sm.element_added[k].assign(count, 0.0), sm.started = false;
+    sm.element_added_before[k].assign(count, 0.0);
+    sm.element_change[k].assign(count, 0.0);
   }
-  sm.started = false;
+  if (sm.node_added.size() != nodes) sm.node_added.assign(nodes, 0.0), sm.started = false;
   // The 4-node shells' step with the plate wave speed (eq. SM-1a, measured on the reference solver).
   const ElementTable& quads = m.elements[static_cast<int>(ElementKind::Shell4)];
   sm.shell4_step_factor.resize(quads.size());
@@ -102,16 +126,17 @@ void size_state(const Model& m, SolverState& s) {
     const std::array<double, 8> f = corner_mass_fractions(m, ElementKind::Shell3, triangles.nodes_of(e));
     std::copy(f.begin(), f.begin() + 3, sm.shell3_fraction.begin() + static_cast<std::ptrdiff_t>(3 * e));
   }
-  sm.node_added.assign(nodes, 0.0);
   sm.node_added_before.assign(nodes, 0.0);
   for (auto* v : {&sm.ax, &sm.ay, &sm.az}) v->assign(nodes, 0.0);
-  const std::size_t unknowns = 3 * nodes + 3 * s.bodies.size();  // the nodes' translations, then the bodies' rotations
-  for (auto* v : {&sm.x, &sm.b, &sm.diagonal, &sm.r, &sm.z, &sm.p, &sm.q, &sm.velocity, &sm.spread}) v->assign(unknowns, 0.0);
+  for (auto* v : {&sm.x, &sm.b, &sm.diagonal, &sm.r, &sm.z, &sm.p, &sm.q, &sm.velocity, &sm.spread, &sm.prescribed, &sm.forces})
+    v->assign(unknowns, 0.0);
   sm.wall_normal.assign(3 * nodes, 0.0);
   sm.body_inertia.assign(9 * s.bodies.size(), 0.0);
   sm.body_rotation_solved.assign(s.bodies.size(), 0);
   sm.diagonal_mass.assign(nodes, 0.0);
 }
+
+namespace {
 
 // y += dM x (eq. SM-2) for the element matrices of weights `added` over the listed elements: each gives its
 // corners c f_a A_e (x_a - sum_b f_b x_b).
@@ -121,7 +146,7 @@ void add_element_mass_product(const Model& m, const SelectiveMassState& sm, cons
     const ElementTable& table = m.elements[static_cast<int>(kind)];
     const std::vector<double>& added = weights[static_cast<std::size_t>(kind)];
     const int n = nodes_per_element(kind);
-    const double c = coupling_factor(n);
+    const double c = coupling_factor(kind);
     for (std::int32_t e : elements[static_cast<std::size_t>(kind)]) {
       const auto ue = static_cast<std::size_t>(e);
       const std::int32_t* corner = table.nodes_of(ue);
@@ -237,7 +262,7 @@ double selective_mass_step(const Model& m, double critical_dt) {
 }
 
 void scale_selective_mass(const Model& m, SolverState& s) {
-  size_state(m, s);
+  size_selective_mass(m, s);
   SelectiveMassState& sm = s.selective_mass;
   const SelectiveMassControl& ams = m.run.dt_ams;
   const double scale = ams.scale_or_default();
@@ -260,7 +285,7 @@ void scale_selective_mass(const Model& m, SolverState& s) {
       const double ratio = std::max(ams.minimum / (scale * step), 1.0);
       added[e] = mass[e] * (ratio * ratio - 1.0);  // eq. SM-1
       sm.scaled[k].push_back(static_cast<std::int32_t>(e));
-      const double c = coupling_factor(n);
+      const double c = coupling_factor(kind);
       for (int a = 0; a < n; ++a) {
         const double f = corner_share(sm, kind, e, a, n);
         sm.node_added[static_cast<std::size_t>(table.nodes_of(e)[a])] += c * f * (1.0 - f) * added[e];  // eq. SM-3
@@ -278,13 +303,10 @@ void scale_selective_mass(const Model& m, SolverState& s) {
       if (sm.element_change[k][e] != 0.0) sm.changed[k].push_back(static_cast<std::int32_t>(e));
     }
   }
+  // The run's first scaling: the initial velocities' energy E_0 includes what dM carries of them (SM-6), as the
+  // reference's cycle 0 lists it.
+  if (!sm.started && s.cycle + s.cycles_done == 0) s.energy.initial_kinetic += selective_mass_kinetic_energy(m, s);
   sm.started = true;
-}
-
-double velocity_change_mass(const SolverState& s, std::size_t k, std::size_t d) {
-  const SelectiveMassState& sm = s.selective_mass;
-  if (sm.solved_cycle != s.cycle || !(sm.solved[k] & (1u << d))) return s.nodes.mass[k];
-  return sm.diagonal_mass[k];  // eq. SM-4b
 }
 
 double selective_inertia_factor(const SolverState& s, std::size_t k) {
@@ -300,8 +322,9 @@ double selective_inertia_factor_before(const SolverState& s, std::size_t k) {
 }
 
 // The right-hand side and the Jacobi preconditioner D = diag(M + dM) on the solved dofs; the first guess D^-1 b.
-// The matrix changes as the elements' steps do: the update keeps the momentum (M + dM) v through the change, so
-// b = F - (dM^n - dM^(n-1)) v^(n-1/2) / dt^n (eq. SM-5a), and no kinetic energy comes from the mass itself.
+// The held dofs' accelerations a_h act on the others through dM: b = F - dM a_h. The matrix changes as the
+// elements' steps do: the update keeps the momentum (M + dM) v through the change, so b also takes
+// - (dM^n - dM^(n-1)) v^(n-1/2) / dt^n (eq. SM-5a), and no kinetic energy comes from the mass itself.
 void start_solve(const Model& m, SolverState& s, double dt_average) {
   SelectiveMassState& sm = s.selective_mass;
   const NodalState& n = s.nodes;
@@ -314,10 +337,11 @@ void start_solve(const Model& m, SolverState& s, double dt_average) {
     add_element_mass_product(m, sm, sm.element_change, sm.changed, sm.velocity, sm.q);
     for (double& v : sm.q) v /= dt_average;
   }
+  add_element_mass_product(m, sm, sm.element_added, sm.scaled, sm.prescribed, sm.q);
   const std::size_t nodes = n.size();
   for (std::size_t k = 0; k < nodes; ++k) {
     const double f[3] = {n.fx[k], n.fy[k], n.fz[k]};  // a rigid body's: gathered at its main node
-    for (std::size_t d = 0; d < 3; ++d) sm.b[3 * k + d] = f[d] - sm.q[3 * k + d];
+    for (std::size_t d = 0; d < 3; ++d) sm.forces[3 * k + d] = f[d], sm.b[3 * k + d] = f[d] - sm.q[3 * k + d];
     sm.diagonal_mass[k] = lumped_mass(s, k) + sm.node_added[k];
   }
   for (std::size_t k = 0; k < nodes; ++k)
@@ -329,7 +353,10 @@ void start_solve(const Model& m, SolverState& s, double dt_average) {
     const auto main = static_cast<std::size_t>(b.main_node);
     const std::size_t rotation = 3 * nodes + 3 * i;
     const double torque[3] = {n.mx[main], n.my[main], n.mz[main]};
-    for (std::size_t d = 0; d < 3; ++d) sm.b[rotation + d] = in_solve(b) ? torque[d] - sm.q[rotation + d] : 0.0;
+    for (std::size_t d = 0; d < 3; ++d) {
+      sm.forces[rotation + d] = in_solve(b) ? torque[d] : 0.0;
+      sm.b[rotation + d] = in_solve(b) ? torque[d] - sm.q[rotation + d] : 0.0;
+    }
     if (!in_solve(b)) continue;
     double inertia[3] = {sm.body_inertia[9 * i], sm.body_inertia[9 * i + 4], sm.body_inertia[9 * i + 8]};
     for (std::int32_t k : b.secondary) {
@@ -348,14 +375,44 @@ void start_solve(const Model& m, SolverState& s, double dt_average) {
   for (std::size_t i = 0; i < sm.b.size(); ++i) sm.x[i] = sm.diagonal[i] > 0.0 ? sm.b[i] / sm.diagonal[i] : 0.0;
 }
 
+// The reactions of the held dofs, R = (M + dM) a - F there, and their work over the step on the mid-step velocity
+// v + a dt / 2 (eq. SM-4b): the energy the conditions put in or take out. A wall's reaction is along its normal; a
+// rigid body's nodes have none (the body's motion is internal).
+double reaction_work(const Model& m, SolverState& s, double dt_average) {
+  SelectiveMassState& sm = s.selective_mass;
+  const NodalState& n = s.nodes;
+  std::fill(sm.q.begin(), sm.q.end(), 0.0);
+  for (std::size_t k = 0; k < n.size(); ++k)
+    sm.velocity[3 * k] = sm.ax[k], sm.velocity[3 * k + 1] = sm.ay[k], sm.velocity[3 * k + 2] = sm.az[k];
+  add_element_mass_product(m, sm, sm.element_added, sm.scaled, sm.velocity, sm.q);
+  const std::vector<double>* v[3] = {&n.vx, &n.vy, &n.vz};
+  double work = 0.0;
+  for (std::size_t k = 0; k < n.size(); ++k) {
+    if (s.rigid_owner[k] >= 0) continue;
+    const double* normal = &sm.wall_normal[3 * k];
+    double reaction[3], middle[3];
+    for (std::size_t d = 0; d < 3; ++d) {
+      const std::size_t i = 3 * k + d;
+      reaction[d] = n.mass[k] * sm.velocity[i] + sm.q[i] - sm.forces[i];
+      middle[d] = (*v[d])[k] + 0.5 * sm.velocity[i] * dt_average;
+    }
+    const double along = reaction[0] * normal[0] + reaction[1] * normal[1] + reaction[2] * normal[2];
+    for (std::size_t d = 0; d < 3; ++d) {
+      const double held = (sm.solved[k] & (1u << d)) ? along * normal[d] : reaction[d];
+      work += held * middle[d] * dt_average;
+    }
+  }
+  return work;
+}
+
 void precondition(SelectiveMassState& sm) {
   for (std::size_t i = 0; i < sm.r.size(); ++i) sm.z[i] = sm.diagonal[i] > 0.0 ? sm.r[i] / sm.diagonal[i] : 0.0;
 }
 
-SelectiveSolve solve_selective_mass(const Model& m, SolverState& s, double dt_average) {
+SelectiveSolve solve_selective_mass(const Model& m, SolverState& s, double dt_average, double dt_next) {
   SelectiveMassState& sm = s.selective_mass;
   const SelectiveMassControl& ams = m.run.dt_ams;
-  hold_constrained_dofs(m, s);
+  hold_constrained_dofs(m, s, dt_average, dt_next);
   start_solve(m, s, dt_average);
   // Conjugate gradients on (M + dM) x = F, preconditioned by D (eq. SM-5); converged when the residual's D^-1 norm
   // is Tol_AMS times the right-hand side's.
@@ -385,20 +442,18 @@ SelectiveSolve solve_selective_mass(const Model& m, SolverState& s, double dt_av
     rz = rz_next;
     ++it;
   }
-  // The held dofs take the diagonal answer F / m: their conditions set the velocity after the update. Along a
-  // wall's normal, on the scaled diagonal, in case the node leaves the wall this step.
+  // The accelerations: the solved ones and the held ones (SM-4).
   const NodalState& n = s.nodes;
   for (std::size_t k = 0; k < n.size(); ++k) {
-    const double f[3] = {n.fx[k], n.fy[k], n.fz[k]};
-    const double* normal = &sm.wall_normal[3 * k];
-    const double f_normal = f[0] * normal[0] + f[1] * normal[1] + f[2] * normal[2];
-    const double scaled_mass = sm.diagonal_mass[k];
     double* a[3] = {&sm.ax[k], &sm.ay[k], &sm.az[k]};
-    for (std::size_t d = 0; d < 3; ++d)
-      *a[d] = (sm.solved[k] & (1u << d)) ? sm.x[3 * k + d] + (scaled_mass > 0.0 ? normal[d] * f_normal / scaled_mass : 0.0)
-              : n.mass[k] > 0.0           ? f[d] / n.mass[k]
-                                          : 0.0;
+    for (std::size_t d = 0; d < 3; ++d) {
+      const std::size_t i = 3 * k + d;
+      const bool body_node = s.rigid_owner[k] >= 0;
+      *a[d] = body_node ? (n.mass[k] > 0.0 ? sm.forces[i] / n.mass[k] : 0.0)
+                        : (sm.solved[k] & (1u << d)) ? sm.x[i] + sm.prescribed[i] : sm.prescribed[i];
+    }
   }
+  sm.reaction_work = reaction_work(m, s, dt_average);
   // A body moves by the force and torque that give it the solved motion (M a, I alpha): the element and contact
   // forces less its nodes' share of the scaled mass's reaction (SM-4a).
   NodalState& nodal = s.nodes;
@@ -442,7 +497,7 @@ double selective_mass_kinetic_energy(const Model& m, const SolverState& s) {
       for (int a = 0; a < count; ++a) {  // eq. SM-6: (1/2) c sum_a f_a A_e |v_a - v_mean|^2
         const auto k = static_cast<std::size_t>(corner[a]);
         const double dx = n.vx[k] - mean[0], dy = n.vy[k] - mean[1], dz = n.vz[k] - mean[2];
-        sum += 0.5 * coupling_factor(count) * corner_share(sm, kind, ue, a, count) * added[ue] *
+        sum += 0.5 * coupling_factor(kind) * corner_share(sm, kind, ue, a, count) * added[ue] *
                (dx * dx + dy * dy + dz * dz);
       }
     }

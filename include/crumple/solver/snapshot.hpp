@@ -87,6 +87,7 @@ void visit_body(V& v, const std::string& at, RigidBodyState& b) {
 template <class V>
 void visit_wall(V& v, const std::string& at, RigidWallState& w) {
   v(at + "tied", w.tied), v(at + "active", w.active);
+
   v(at + "force", w.force), v(at + "velocity", w.velocity), v(at + "origin", w.origin);
 }
 
@@ -160,6 +161,15 @@ void visit_state(V& v, SolverState& s, ResumeMarks& marks) {
   v("contact/fx", s.contact.fx), v("contact/fy", s.contact.fy), v("contact/fz", s.contact.fz);
   v("contact/touched", s.contact.touched);
   visit_histories(v, s.histories);
+  // Selective mass scaling (sized at the start when the deck has it): what the last cycle leaves for the next.
+  SelectiveMassState& sm = s.selective_mass;
+  if (!sm.node_added.empty()) {
+    v("selective_mass/node_added", sm.node_added), v("selective_mass/started", sm.started);
+    v("selective_mass/shells4", sm.element_added[0]), v("selective_mass/shells3", sm.element_added[1]);
+    v("selective_mass/bricks", sm.element_added[2]);
+    v("selective_mass/solves", sm.solves), v("selective_mass/iterations", sm.iterations);
+    v("selective_mass/max_iterations", sm.max_iterations);
+  }
 }
 
 }  // namespace crumple

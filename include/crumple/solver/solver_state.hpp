@@ -52,10 +52,12 @@ struct RigidWallState {
   std::vector<std::int32_t> nodes;   // candidate secondary nodes
   std::vector<std::uint8_t> tied;    // tied walls: 1 once the node touched
   std::vector<std::uint8_t> active;  // scratch of the cycle: 1 when the node is held by the wall
-  // Of the nodes it held this cycle: the wall's normal there, and whether it held every direction (tied). Read by
-  // selective mass scaling at the next cycle (docs/theory/time-step.md, SM-4).
-  std::vector<Vec3> held_normal;
+  // Selective mass scaling's prediction of the step (docs/theory/time-step.md, SM-4), from the velocities before
+  // it: per candidate node, the wall's normal there (3 each), whether it holds every direction (tied), and the
+  // normal velocity it leaves the node [L/T]; `active` says which it holds.
+  std::vector<double> held_normal;
   std::vector<std::uint8_t> held_tied;
+  std::vector<double> held_speed;
   Vec3 force{};     // force of the wall on the nodes during the last cycle [F]
   Vec3 normal_force{};  // its part along the wall's normal at each node it held [F]
   Vec3 velocity{};  // wall velocity v^(n+1/2) [L/T]
@@ -115,6 +117,9 @@ struct SelectiveMassState {
   std::vector<double> node_added_before;  // the same at the cycle before (eq. SM-5b)
   std::vector<std::uint8_t> solved;   // per node: bit d set when translation d is solved for (not held, eq. SM-4)
   std::vector<double> wall_normal;    // per node, 3: the normal of the rigid wall that holds it, else 0 (SM-4)
+  std::vector<double> prescribed;     // 3 per unknown: the accelerations the conditions give the held dofs (SM-4)
+  std::vector<double> forces;         // 3 per unknown: F (a body's gathered), kept for the reactions
+  double reaction_work = 0.0;         // the held dofs' reactions' work over the step (SM-4b) [M L^2 T^-2]
   std::vector<double> ax, ay, az;     // the accelerations of the cycle [L/T^2]
   // The solve's vectors, 3 per node (eq. SM-5): solution, right-hand side, preconditioner, residual, its
   // preconditioned form, search direction and its product.
