@@ -93,6 +93,10 @@ void hold_constrained_dofs(const Model& m, SolverState& s, double dt_average, do
       const double an = dt_average > 0.0 ? (w.held_speed[i] - vn) / dt_average : 0.0;
       for (std::size_t d = 0; d < 3; ++d) sm.wall_normal[3 * k + d] = normal[d], sm.prescribed[3 * k + d] = an * normal[d];
     }
+  sm.held_nodes.clear();
+  for (std::size_t k = 0; k < nodes; ++k)
+    if (sm.solved[k] != 7 || sm.wall_normal[3 * k] != 0.0 || sm.wall_normal[3 * k + 1] != 0.0 || sm.wall_normal[3 * k + 2] != 0.0)
+      sm.held_nodes.push_back(static_cast<std::int32_t>(k));
 }
 
 }  // namespace
@@ -134,33 +138,46 @@ void size_selective_mass(const Model& m, SolverState& s) {
   sm.body_inertia.assign(9 * s.bodies.size(), 0.0);
   sm.body_rotation_solved.assign(s.bodies.size(), 0);
   sm.diagonal_mass.assign(nodes, 0.0);
+  sm.lumped.assign(3 * nodes, 0.0);
 }
 
 namespace {
 
-// y += dM x (eq. SM-2) for the element matrices of weights `added` over the listed elements: each gives its
-// corners c f_a A_e (x_a - sum_b f_b x_b).
-void add_element_mass_product(const Model& m, const SelectiveMassState& sm, const PerKind& weights,
-                              const ElementLists& elements, const std::vector<double>& x, std::vector<double>& y) {
-  for (ElementKind kind : kKinds) {
-    const ElementTable& table = m.elements[static_cast<int>(kind)];
-    const std::vector<double>& added = weights[static_cast<std::size_t>(kind)];
-    const int n = nodes_per_element(kind);
-    const double c = coupling_factor(kind);
-    for (std::int32_t e : elements[static_cast<std::size_t>(kind)]) {
-      const auto ue = static_cast<std::size_t>(e);
-      const std::int32_t* corner = table.nodes_of(ue);
-      double mean[3] = {0.0, 0.0, 0.0};
-      for (int a = 0; a < n; ++a)
-        for (std::size_t d = 0; d < 3; ++d)
-          mean[d] += corner_share(sm, kind, ue, a, n) * x[3 * static_cast<std::size_t>(corner[a]) + d];
-      for (int a = 0; a < n; ++a) {
-        const double weight = c * corner_share(sm, kind, ue, a, n) * added[ue];
-        const std::size_t i = 3 * static_cast<std::size_t>(corner[a]);
-        for (std::size_t d = 0; d < 3; ++d) y[i + d] += weight * (x[i + d] - mean[d]);
-      }
+// y += dM x (eq. SM-2) over the listed elements of one kind, n corners each, of weights `added`: each gives its
+// corners c f_a A_e (x_a - sum_b f_b x_b); `shares` the 3-node shells' f_a, null for even shares.
+template <int n>
+void add_kind_product(const ElementTable& table, double c, const std::vector<double>& added, const double* shares,
+                      const std::vector<std::int32_t>& elements, const double* x, double* y) {
+  for (std::int32_t e : elements) {
+    const auto ue = static_cast<std::size_t>(e);
+    const std::int32_t* corner = table.nodes_of(ue);
+    double f[n];
+    for (int a = 0; a < n; ++a) f[a] = shares != nullptr ? shares[n * ue + static_cast<std::size_t>(a)] : 1.0 / n;
+    double mean[3] = {0.0, 0.0, 0.0};
+    for (int a = 0; a < n; ++a) {
+      const double* xa = x + 3 * static_cast<std::size_t>(corner[a]);
+      mean[0] += f[a] * xa[0], mean[1] += f[a] * xa[1], mean[2] += f[a] * xa[2];
+    }
+    for (int a = 0; a < n; ++a) {
+      const double weight = c * f[a] * added[ue];
+      const std::size_t i = 3 * static_cast<std::size_t>(corner[a]);
+      y[i] += weight * (x[i] - mean[0]), y[i + 1] += weight * (x[i + 1] - mean[1]), y[i + 2] += weight * (x[i + 2] - mean[2]);
     }
   }
+}
+
+// y += dM x (eq. SM-2) for the element matrices of weights `added` over the listed elements, kind by kind.
+void add_element_mass_product(const Model& m, const SelectiveMassState& sm, const PerKind& weights,
+                              const ElementLists& elements, const std::vector<double>& x, std::vector<double>& y) {
+  auto table = [&](ElementKind kind) -> const ElementTable& { return m.elements[static_cast<int>(kind)]; };
+  constexpr auto quads = static_cast<std::size_t>(ElementKind::Shell4), triangles = static_cast<std::size_t>(ElementKind::Shell3),
+                 bricks = static_cast<std::size_t>(ElementKind::Brick8);
+  add_kind_product<4>(table(ElementKind::Shell4), coupling_factor(ElementKind::Shell4), weights[quads], nullptr,
+                      elements[quads], x.data(), y.data());
+  add_kind_product<3>(table(ElementKind::Shell3), coupling_factor(ElementKind::Shell3), weights[triangles],
+                      sm.shell3_fraction.data(), elements[triangles], x.data(), y.data());
+  add_kind_product<8>(table(ElementKind::Brick8), coupling_factor(ElementKind::Brick8), weights[bricks], nullptr,
+                      elements[bricks], x.data(), y.data());
 }
 
 // The held parts of a solve vector set to 0: the held dofs, a wall's normal (eq. SM-4), a body's held rotations.
@@ -168,7 +185,8 @@ void project_on_solved(const SelectiveMassState& sm, std::vector<double>& v) {
   for (std::size_t i = 0; i < sm.body_rotation_solved.size(); ++i)
     for (std::size_t d = 0; d < 3; ++d)
       if (!(sm.body_rotation_solved[i] & (1u << d))) v[3 * sm.solved.size() + 3 * i + d] = 0.0;
-  for (std::size_t k = 0; k < sm.solved.size(); ++k) {
+  for (std::int32_t node : sm.held_nodes) {  // the nodes with a held dof or a wall
+    const auto k = static_cast<std::size_t>(node);
     double* vk = &v[3 * k];
     for (std::size_t d = 0; d < 3; ++d)
       if (!(sm.solved[k] & (1u << d))) vk[d] = 0.0;
@@ -231,17 +249,16 @@ double lumped_mass(const SolverState& s, std::size_t k) {
 void apply_mass(const Model& m, SolverState& s, const std::vector<double>& p, std::vector<double>& q) {
   SelectiveMassState& sm = s.selective_mass;
   const std::size_t nodes = s.nodes.size();
-  sm.spread = p;
-  spread_bodies(s, sm.spread);
-  for (std::size_t k = 0; k < nodes; ++k)
-    for (std::size_t d = 0; d < 3; ++d) q[3 * k + d] = sm.solved[k] & (1u << d) ? lumped_mass(s, k) * p[3 * k + d] : 0.0;
+  const bool bodies = !s.bodies.empty();
+  if (bodies) sm.spread = p, spread_bodies(s, sm.spread);
+  for (std::size_t i = 0; i < 3 * nodes; ++i) q[i] = sm.lumped[i] * p[i];
   for (std::size_t i = 0; i < s.bodies.size(); ++i) {  // the body's inertia tensor (global axes) on its rotation
     const double* inertia = &sm.body_inertia[9 * i];
     const double* theta = &p[3 * nodes + 3 * i];
     for (std::size_t r = 0; r < 3; ++r)
       q[3 * nodes + 3 * i + r] = inertia[3 * r] * theta[0] + inertia[3 * r + 1] * theta[1] + inertia[3 * r + 2] * theta[2];
   }
-  add_element_mass_product(m, sm, sm.element_added, sm.scaled, sm.spread, q);
+  add_element_mass_product(m, sm, sm.element_added, sm.scaled, bodies ? sm.spread : p, q);
   gather_bodies(s, q);
   project_on_solved(sm, q);
 }
@@ -342,7 +359,9 @@ void start_solve(const Model& m, SolverState& s, double dt_average) {
   for (std::size_t k = 0; k < nodes; ++k) {
     const double f[3] = {n.fx[k], n.fy[k], n.fz[k]};  // a rigid body's: gathered at its main node
     for (std::size_t d = 0; d < 3; ++d) sm.forces[3 * k + d] = f[d], sm.b[3 * k + d] = f[d] - sm.q[3 * k + d];
-    sm.diagonal_mass[k] = lumped_mass(s, k) + sm.node_added[k];
+    const double lumped = lumped_mass(s, k);
+    sm.diagonal_mass[k] = lumped + sm.node_added[k];
+    for (std::size_t d = 0; d < 3; ++d) sm.lumped[3 * k + d] = (sm.solved[k] & (1u << d)) ? lumped : 0.0;
   }
   for (std::size_t k = 0; k < nodes; ++k)
     for (std::size_t d = 0; d < 3; ++d) sm.diagonal[3 * k + d] = (sm.solved[k] & (1u << d)) ? sm.diagonal_mass[k] : 0.0;
