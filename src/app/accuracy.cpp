@@ -35,12 +35,17 @@ void cap_step_scales(RunControl& run, const std::string& where, std::vector<std:
   }
 }
 
-// fine: no added mass, neither the nodal mass scaling nor the contact's.
+// fine: no added mass, neither the nodal mass scaling nor the contact's, nor the selective one.
 void remove_mass_scaling(RunControl& run, const std::string& where, std::vector<std::string>& changes) {
   for (auto [card, control] : {std::pair{"/DT/NODA/CST", &run.dt_nodal_cst}, {"/DT/INTER/CST", &run.dt_inter_cst}}) {
     if (!control->given) continue;
     changes.push_back(fmt::format("{} {:g} {:g} removed: no added mass{}", card, control->scale, control->minimum, where));
     *control = TimeStepControl{};
+  }
+  if (run.dt_ams.given) {
+    changes.push_back(fmt::format("/DT/AMS {:g} {:g} removed: no selective mass scaling{}", run.dt_ams.scale,
+                                  run.dt_ams.minimum, where));
+    run.dt_ams = SelectiveMassControl{};
   }
 }
 
@@ -78,6 +83,7 @@ void scale_smallest_elements(const Model& m, RunControl& run, const std::string&
                                                     : kDefaultStepScale;
   const double target = scale * quantile;
   if (run.dt_nodal_cst.given && run.dt_nodal_cst.minimum >= target) return;  // the deck scales further already
+  if (run.dt_ams.given) return;  // the deck's selective scaling holds its elements (time-step.md, SM-0)
   changes.push_back(fmt::format("/DT/NODA/CST {:g} {:.4g}: mass scaling up to the step of the {:g} % smallest elements "
                                 "at the start (the smallest's is {:.4g}); no step falls below it{}", scale, target,
                                 100.0 * kDraftMassScaledShare, scale * smallest.time_step, where));

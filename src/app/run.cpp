@@ -158,17 +158,6 @@ Deck read_run_deck(const RunOptions& options, std::ostream& err, std::vector<std
   return deck;
 }
 
-// What a run of several ranks cannot do yet: selective mass scaling solves a coupled mass matrix, whose products
-// and sums Crumple does not yet carry across domains (docs/parallel.md).
-void refuse_on_ranks(const Deck& deck) {
-  std::vector<const RunControl*> runs{&deck.model.run};
-  for (const RunControl& r : deck.continued_runs) runs.push_back(&r);
-  for (const RunControl* r : runs)
-    if (r->dt_ams.given)
-      throw DeckError(r->dt_ams.where, "/DT/AMS", "", "a run on one rank (selective mass scaling does not run on "
-                      "several MPI ranks yet)", "an MPI run");
-}
-
 // mpirun -np N crumple run DECK: every rank reads the deck and partitions it the same way; rank 0 alone speaks
 // and writes. A deck error or a partition that cannot be made is the same on every rank: rank 0 reports it and
 // every rank returns. An error one rank meets during the run ends every rank at once with that rank's message.
@@ -182,7 +171,6 @@ int run_deck_on_ranks(const RunOptions& options, std::ostream& out, std::ostream
   std::vector<std::string> preset_changes;
   try {
     deck = read_run_deck(options, errors, preset_changes);
-    refuse_on_ranks(deck);
     partition = partition_model(deck.model, mpi.size());
   } catch (const std::runtime_error& e) {
     if (mpi.rank() != 0) return kExitBadInput;

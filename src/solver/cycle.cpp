@@ -228,7 +228,8 @@ namespace {
 // The per-type step controls and the nodal step read every element's critical step; otherwise only the groups'
 // smallest steps matter, which travel anyway.
 bool critical_steps_needed(const RunControl& rc) {
-  return rc.dt_nodal_cst.given || rc.dt_shell.minimum > 0.0 || rc.dt_sh3n.minimum > 0.0 || rc.dt_brick.minimum > 0.0;
+  return rc.dt_nodal_cst.given || rc.dt_ams.given || rc.dt_shell.minimum > 0.0 || rc.dt_sh3n.minimum > 0.0 ||
+         rc.dt_brick.minimum > 0.0;
 }
 
 // Every domain's elements' conditions from their owners (an element that failed in its kernel is deleted
@@ -505,14 +506,14 @@ StepBound combine_group_results(const Model& m, SolverState& s, RunEvents& event
 StepBound compute_element_forces(const Model& m, SolverState& s, RunEvents& events, bool& elements_deleted,
                                   Exchange* exchange) {
   run_element_kernels(m, s, s.domain.several() ? exchange : nullptr);
-  if (selective_mass_on(m)) {  // the elements' added mass from their steps (SM-1), which the contact step reads
-    scale_selective_mass(m, s);
-    s.contact.selective_mass_added = &s.selective_mass.node_added;
-  }
   const bool nodal_stiffness = nodal_stiffness_on(m);
   if (nodal_stiffness) element_interface_stiffness(m, s);
   if (s.domain.several()) share_element_results(m, s, *exchange);
   if (nodal_stiffness) nodal_interface_stiffness(m, s);
+  if (selective_mass_on(m)) {  // every element's added mass from its step (SM-1), which the contact step reads
+    scale_selective_mass(m, s);
+    s.contact.selective_mass_added = &s.selective_mass.node_added;
+  }
   return combine_group_results(m, s, events, elements_deleted);
 }
 
@@ -638,6 +639,13 @@ double choose_time_step(const Model& m, SolverState& s, RunEvents& events, StepB
 }
 
 void solve_accelerations(const Model& m, SolverState& s, RunEvents& events, double dt_average, double dt_next) {
+  if (s.domain.several()) {
+    // Every domain solves the whole model, the same way (docs/parallel.md, "Selective mass scaling"): the nodes'
+    // forces, velocities and positions from their owners.
+    NodalState& n = s.nodes;
+    Exchange& exchange = *s.reducer.exchange();
+    for (auto* v : {&n.fx, &n.fy, &n.fz, &n.vx, &n.vy, &n.vz, &n.x, &n.y, &n.z}) exchange.share(*v, 1, s.domain.node_owner);
+  }
   predict_wall_holds(m, s, dt_average, dt_next);
   const SelectiveSolve solve = solve_selective_mass(m, s, dt_average, dt_next);
   if (solve.converged || events.stop.stopped()) return;
@@ -701,8 +709,8 @@ void apply_constraints(const Model& m, SolverState& s, VelocityScratch& scratch,
   add_constraint_work(s, scratch, work[0]);
   if (!s.contact.interfaces.empty())
     contact::add_contact_work(s.contact, n, scratch.before.data(), s.domain.node_owner, s.domain.index, work.data() + 1);
-  // Under selective mass scaling, the held dofs' reactions (SM-4b): one domain only.
-  if (s.selective_mass.solved_cycle == s.cycle) work[0].add(s.selective_mass.reaction_work);
+  // Under selective mass scaling, the held dofs' reactions (SM-4b): every domain has them all, the first adds them.
+  if (s.selective_mass.solved_cycle == s.cycle && s.domain.index == 0) work[0].add(s.selective_mass.reaction_work);
   s.reducer.sum(work);
   s.energy.external_work += work[0].value() + body_work;
   if (!s.contact.interfaces.empty()) s.energy.contact = contact::absorb_contact_work(s.contact, work.data() + 1, dt_average);

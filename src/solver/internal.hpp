@@ -71,7 +71,7 @@ struct SelectiveSolve {
 SelectiveSolve solve_selective_mass(const Model& model, SolverState& state, double dt_average, double dt_next);
 double selective_inertia_factor(const SolverState& state, std::size_t node);
 double selective_inertia_factor_before(const SolverState& state, std::size_t node);  // the cycle before's
-double selective_mass_kinetic_energy(const Model& model, const SolverState& state);
+double selective_mass_kinetic_energy(const Model& model, SolverState& state);
 
 // The first output time start + k interval (k >= 0 whole) after t, with the loop's relative tolerance 1e-12 on
 // times, in O(1) whatever the ratio of the interval to the step (/ANIM/DT, /TFILE).

@@ -495,17 +495,21 @@ SelectiveSolve solve_selective_mass(const Model& m, SolverState& s, double dt_av
   return {it, rz <= target, reference > 0.0 ? std::sqrt(rz / reference) : 0.0};
 }
 
-double selective_mass_kinetic_energy(const Model& m, const SolverState& s) {
+// Over this domain's elements (whose nodes' velocities it holds), exact sums combined over the domains: the same
+// at any number of them.
+double selective_mass_kinetic_energy(const Model& m, SolverState& s) {
   const SelectiveMassState& sm = s.selective_mass;
   if (sm.node_added.empty()) return 0.0;
   const NodalState& n = s.nodes;
-  double sum = 0.0;
+  std::vector<ExactSum>& sums = s.reducer.sums;
+  sums.assign(1, ExactSum{});
   for (ElementKind kind : kKinds) {
     const ElementTable& table = m.elements[static_cast<int>(kind)];
     const std::vector<double>& added = sm.element_added[static_cast<std::size_t>(kind)];
     const int count = nodes_per_element(kind);
     for (std::int32_t e : sm.scaled[static_cast<std::size_t>(kind)]) {
       const auto ue = static_cast<std::size_t>(e);
+      if (s.domain.several() && !s.domain.mine(kind, ue)) continue;
       const std::int32_t* corner = table.nodes_of(ue);
       double mean[3] = {0.0, 0.0, 0.0};
       for (int a = 0; a < count; ++a) {
@@ -516,12 +520,13 @@ double selective_mass_kinetic_energy(const Model& m, const SolverState& s) {
       for (int a = 0; a < count; ++a) {  // eq. SM-6: (1/2) c sum_a f_a A_e |v_a - v_mean|^2
         const auto k = static_cast<std::size_t>(corner[a]);
         const double dx = n.vx[k] - mean[0], dy = n.vy[k] - mean[1], dz = n.vz[k] - mean[2];
-        sum += 0.5 * coupling_factor(kind) * corner_share(sm, kind, ue, a, count) * added[ue] *
-               (dx * dx + dy * dy + dz * dz);
+        sums[0].add(0.5 * coupling_factor(kind) * corner_share(sm, kind, ue, a, count) * added[ue] *
+                    (dx * dx + dy * dy + dz * dz));
       }
     }
   }
-  return sum;
+  s.reducer.sum(sums);  // one domain: as it is
+  return sums[0].value();
 }
 
 }  // namespace crumple::solver
