@@ -1,6 +1,7 @@
 // Selective (advanced) mass scaling, /AMS with /DT/AMS (docs/theory/time-step.md, "Selective mass scaling",
-// SM-1 to SM-6): the elements whose scaled step is below dt_min give their deformation modes mass, in a matrix that
-// leaves rigid translation alone; the accelerations solve (M + dM) a = F by preconditioned conjugate gradients.
+// SM-0 to SM-7): the elements whose scaled step is below dt_min give their deformation modes mass, in a matrix that
+// leaves rigid translation alone; the accelerations solve (M + dM) a = F by preconditioned conjugate gradients, the
+// kinematic conditions' dofs held at the accelerations they impose, a rigid body as six unknowns.
 #include <algorithm>
 #include <cmath>
 
