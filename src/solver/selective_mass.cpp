@@ -392,7 +392,13 @@ void start_solve(const Model& m, SolverState& s, double dt_average) {
   }
   gather_bodies(s, sm.b);
   project_on_solved(sm, sm.b);
-  for (std::size_t i = 0; i < sm.b.size(); ++i) sm.x[i] = sm.diagonal[i] > 0.0 ? sm.b[i] / sm.diagonal[i] : 0.0;
+  // The first guess: the last cycle's answer where it has one (accelerations change little from a cycle to the
+  // next), else D^-1 b.
+  if (sm.warm) {
+    project_on_solved(sm, sm.x);
+  } else {
+    for (std::size_t i = 0; i < sm.b.size(); ++i) sm.x[i] = sm.diagonal[i] > 0.0 ? sm.b[i] / sm.diagonal[i] : 0.0;
+  }
 }
 
 // The reactions of the held dofs, R = (M + dM) a - F there, and their work over the step on the mid-step velocity
@@ -492,6 +498,7 @@ SelectiveSolve solve_selective_mass(const Model& m, SolverState& s, double dt_av
     }
   }
   sm.solved_cycle = s.cycle;
+  sm.warm = true;
   ++sm.solves, sm.iterations += it, sm.max_iterations = std::max(sm.max_iterations, it);
   return {it, rz <= target, reference > 0.0 ? std::sqrt(rz / reference) : 0.0};
 }

@@ -169,6 +169,7 @@ void visit_state(V& v, SolverState& s, ResumeMarks& marks) {
     v("selective_mass/bricks", sm.element_added[2]);
     v("selective_mass/solves", sm.solves), v("selective_mass/iterations", sm.iterations);
     v("selective_mass/max_iterations", sm.max_iterations);
+    v("selective_mass/x", sm.x), v("selective_mass/warm", sm.warm);  // the next solve's first guess
   }
 }
 

@@ -132,6 +132,7 @@ struct SelectiveMassState {
   std::vector<double> body_inertia;   // per rigid body, 9: its inertia tensor in global axes this cycle [M L^2]
   std::vector<std::uint8_t> body_rotation_solved;  // per rigid body: bit d when its rotation d is solved for
   long long solved_cycle = -1;           // the cycle the accelerations are of (a rigid body reads its own there)
+  bool warm = false;                     // x holds the last solve's answer (the next one's first guess)
   long long solves = 0, iterations = 0;  // cycles solved and their conjugate-gradient iterations, summed
   long long max_iterations = 0;          // the most one cycle took
 };
