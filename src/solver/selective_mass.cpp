@@ -138,7 +138,6 @@ void size_selective_mass(const Model& m, SolverState& s) {
   sm.wall_normal.assign(3 * nodes, 0.0);
   sm.body_inertia.assign(9 * s.bodies.size(), 0.0);
   sm.body_rotation_solved.assign(s.bodies.size(), 0);
-  sm.diagonal_mass.assign(nodes, 0.0);
   sm.lumped.assign(3 * nodes, 0.0);
 }
 
@@ -339,7 +338,9 @@ double selective_inertia_factor_before(const SolverState& s, std::size_t k) {
   return 1.0 + sm.node_added_before[k] / s.nodes.mass[k];
 }
 
-// The right-hand side and the Jacobi preconditioner D = diag(M + dM) on the solved dofs; the first guess D^-1 b.
+namespace {
+
+// The right-hand side and the Jacobi preconditioner D = diag(M + dM) on the solved dofs, and the first guess.
 // The held dofs' accelerations a_h act on the others through dM: b = F - dM a_h. The matrix changes as the
 // elements' steps do: the update keeps the momentum (M + dM) v through the change, so b also takes
 // - (dM^n - dM^(n-1)) v^(n-1/2) / dt^n (eq. SM-5a), and no kinetic energy comes from the mass itself.
@@ -359,13 +360,15 @@ void start_solve(const Model& m, SolverState& s, double dt_average) {
   const std::size_t nodes = n.size();
   for (std::size_t k = 0; k < nodes; ++k) {
     const double f[3] = {n.fx[k], n.fy[k], n.fz[k]};  // a rigid body's: gathered at its main node
-    for (std::size_t d = 0; d < 3; ++d) sm.forces[3 * k + d] = f[d], sm.b[3 * k + d] = f[d] - sm.q[3 * k + d];
     const double lumped = lumped_mass(s, k);
-    sm.diagonal_mass[k] = lumped + sm.node_added[k];
-    for (std::size_t d = 0; d < 3; ++d) sm.lumped[3 * k + d] = (sm.solved[k] & (1u << d)) ? lumped : 0.0;
+    for (std::size_t d = 0; d < 3; ++d) {
+      const std::size_t i = 3 * k + d;
+      const bool solved = sm.solved[k] & (1u << d);
+      sm.forces[i] = f[d], sm.b[i] = f[d] - sm.q[i];
+      sm.lumped[i] = solved ? lumped : 0.0;
+      sm.diagonal[i] = solved ? lumped + sm.node_added[k] : 0.0;
+    }
   }
-  for (std::size_t k = 0; k < nodes; ++k)
-    for (std::size_t d = 0; d < 3; ++d) sm.diagonal[3 * k + d] = (sm.solved[k] & (1u << d)) ? sm.diagonal_mass[k] : 0.0;
   // A body: the torque about its centre on its rotation; its diagonal, its mass and inertia with its nodes' added
   // mass (at their arms for the rotation).
   for (std::size_t i = 0; i < s.bodies.size(); ++i) {
@@ -378,15 +381,16 @@ void start_solve(const Model& m, SolverState& s, double dt_average) {
       sm.b[rotation + d] = in_solve(b) ? torque[d] - sm.q[rotation + d] : 0.0;
     }
     if (!in_solve(b)) continue;
+    double mass = b.mass + sm.node_added[main];
     double inertia[3] = {sm.body_inertia[9 * i], sm.body_inertia[9 * i + 4], sm.body_inertia[9 * i + 8]};
     for (std::int32_t k : b.secondary) {
       const double added = sm.node_added[static_cast<std::size_t>(k)];
       const Vec3 r = arm(s, b, k);
-      sm.diagonal_mass[main] += added;
+      mass += added;
       for (std::size_t d = 0; d < 3; ++d) inertia[d] += added * (dot(r, r) - r[d] * r[d]);
     }
     for (std::size_t d = 0; d < 3; ++d) {
-      sm.diagonal[3 * main + d] = (sm.solved[main] & (1u << d)) ? sm.diagonal_mass[main] : 0.0;
+      sm.diagonal[3 * main + d] = (sm.solved[main] & (1u << d)) ? mass : 0.0;
       sm.diagonal[rotation + d] = (sm.body_rotation_solved[i] & (1u << d)) ? inertia[d] : 0.0;
     }
   }
@@ -434,6 +438,8 @@ double reaction_work(const Model& m, SolverState& s, double dt_average) {
 void precondition(SelectiveMassState& sm) {
   for (std::size_t i = 0; i < sm.r.size(); ++i) sm.z[i] = sm.diagonal[i] > 0.0 ? sm.r[i] / sm.diagonal[i] : 0.0;
 }
+
+}  // namespace
 
 SelectiveSolve solve_selective_mass(const Model& m, SolverState& s, double dt_average, double dt_next) {
   SelectiveMassState& sm = s.selective_mass;

@@ -126,12 +126,11 @@ struct SelectiveMassState {
   std::vector<double> x, b, diagonal, r, z, p, q;
   std::vector<double> velocity;  // v^(n-1/2), 3 per node, for the change of the matrix
   std::vector<double> spread;    // a vector with the rigid bodies' values spread to their nodes (SM-4a)
-  std::vector<double> diagonal_mass;  // per node: the diagonal of M + dM (a body's whole at its main node) [M]
   std::vector<double> lumped;         // 3 per node: the lumped mass of a solved dof, 0 for a held one [M]
   std::vector<std::int32_t> held_nodes;  // the nodes with a held dof or a wall's normal this cycle
   std::vector<double> body_inertia;   // per rigid body, 9: its inertia tensor in global axes this cycle [M L^2]
   std::vector<std::uint8_t> body_rotation_solved;  // per rigid body: bit d when its rotation d is solved for
-  long long solved_cycle = -1;           // the cycle the accelerations are of (a rigid body reads its own there)
+  long long solved_cycle = -1;           // the cycle the accelerations and the reaction work are of
   bool warm = false;                     // x holds the last solve's answer (the next one's first guess)
   long long solves = 0, iterations = 0;  // cycles solved and their conjugate-gradient iterations, summed
   long long max_iterations = 0;          // the most one cycle took
