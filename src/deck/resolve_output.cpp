@@ -161,6 +161,11 @@ void resolve_output_references(Resolver& r, std::vector<RunControl>& continued_r
     if (written[k]) check_written_section(r, m.sections[k]);
   resolve_run_control(r, m.run);
   for (RunControl& run : continued_runs) resolve_run_control(r, run);
+  // /AMS without /DT/AMS does nothing, in the reference too: said, so that a user who meant it knows.
+  bool selective = m.run.dt_ams.given;
+  for (const RunControl& run : continued_runs) selective = selective || run.dt_ams.given;
+  if (m.ams_selected && !selective && m.run.present)
+    r.context.warn(m.ams_where, "/AMS", "no effect: no engine deck has /DT/AMS, which turns selective mass scaling on");
 }
 
 }  // namespace crumple::deck

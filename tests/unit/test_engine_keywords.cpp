@@ -344,3 +344,34 @@ TEST(EngineKeywords, MalformedRunIsNotAlsoAMissingRun) {
     EXPECT_EQ(e.errors()[0].field(), "Tstop (value 1)");
   }
 }
+
+// /DT/AMS/Iflag (selective mass scaling; docs/cards/loads-output-engine.md §7.2): the values of each line, the
+// reference's defaults when blank (0 here; the solver reads 0.9, 1e-3, 1000), Nprint output-only, and /AMS
+// without /DT/AMS said to do nothing.
+TEST(EngineKeywords, SelectiveMassScalingCards) {
+  const std::string ams = "/AMS\n" + I(0) + "\n";
+  const RunControl plain = run_of(kRun + "/DT/AMS\n0.67 2e-3\n", ams);
+  EXPECT_TRUE(plain.dt_ams.given);
+  EXPECT_DOUBLE_EQ(plain.dt_ams.scale, 0.67);
+  EXPECT_DOUBLE_EQ(plain.dt_ams.minimum, 2e-3);
+  EXPECT_DOUBLE_EQ(plain.dt_ams.tolerance_or_default(), 1e-3);
+  EXPECT_EQ(plain.dt_ams.max_iterations_or_default(), 1000);
+  EXPECT_DOUBLE_EQ(run_of(kRun + "/DT/AMS\n0 2e-3\n", ams).dt_ams.scale_or_default(), 0.9);
+  const RunControl full = run_of(kRun + "/DT/AMS/2\n0.67 2e-3\n1e-4\n50 0\n", ams);
+  EXPECT_DOUBLE_EQ(full.dt_ams.tolerance, 1e-4);
+  EXPECT_EQ(full.dt_ams.max_iterations, 50);
+  EXPECT_DOUBLE_EQ(run_of(kRun + "/DT/AMS/1\n0.67 2e-3\n1e-2\n", ams).dt_ams.tolerance, 1e-2);
+  EXPECT_TRUE(contains(error_of(kRun + "/DT/AMS/2\n0.67 2e-3\n1e-4\n-5 0\n", ams), "Niter"));
+  EXPECT_TRUE(contains(error_of(kRun + "/DT/AMS\n1.5 2e-3\n", ams), "DTsca"));
+
+  test::TempDir dir;
+  Deck with_print = read_deck(test::write_deck(dir, ams, kRun + "/DT/AMS/2\n0.67 2e-3\n0\n0 10\n"));
+  bool named = false;
+  for (const auto& o : with_print.report.skipped_options) named = named || contains(o.text(), "Nprint");
+  EXPECT_TRUE(named) << "a non-default Nprint is a named output-only warning";
+
+  test::TempDir alone;
+  std::string warnings;
+  for (const auto& w : read_deck(test::write_deck(alone, ams, kRun)).report.warnings) warnings += w.text();
+  EXPECT_TRUE(contains(warnings, "/AMS: no effect")) << warnings;
+}
