@@ -32,6 +32,9 @@ Knobs, one at a time from the default deck (/DT 0.9, 5 points, Ishell 24, Stfac 
                 1000). The step falls to about 0.45 dt0 as the folds form, so 1.0 dt0 already adds mass there.
                 These runs have /STOP Mmax 0 (no limit) instead of the deck's 0.1, so that they run to the end
                 and show what the added mass does (the added mass column);
+  /AMS         selective mass scaling (/AMS on the whole model, /DT/AMS 0.67 DTMIN) with DTMIN 1.5 and 3 times
+                dt0: mass added to the deformation modes only, solved for every cycle (docs/theory/time-step.md,
+                SM-0 to SM-7);
   points        3 integration points through the thickness against 5 (generator --points);
   Ishell        1 (Belytschko-Tsay, hourglass controlled) against 24 (generator --ishell);
   Stfac         the TYPE7 card's Stfac 0.1 and 1.0 against the default (0, which means 1.0: the 1.0 run repeats
@@ -80,6 +83,7 @@ END_TIMES = {10.0: 10.5, 5.0: 8.5, 2.5: 7.6}  # ms, from first runs of the defau
 OTHER_END_TIME = 10.0
 TH_INTERVAL = 0.01  # ms
 REFERENCE_DT_SCALE = 0.6
+AMS_SCALE = 0.67  # /DT/AMS DTsca, the value of the reference's examples
 
 
 @dataclass
@@ -91,6 +95,7 @@ class Variant:
     ishell: int = 24
     stfac: float = None          # None: the generator's 0 (= 1.0)
     dtmin_factor: float = None   # /DT/NODA/CST DTMIN = factor x the default run's first step
+    ams_factor: float = None     # /AMS and /DT/AMS 0.67 DTMIN, DTMIN = factor x the default run's first step
     preset: str = None           # crumple run --accuracy PRESET on the default deck
     build: str = None            # "mixed": the default deck run by the mixed-precision build (--mixed-crumple)
     default_only_off_reference: bool = False  # repeats the default deck: skipped on the reference mesh
@@ -100,10 +105,10 @@ class Variant:
         return re.sub(r"[^A-Za-z0-9.]+", "_", f"{self.knob}_{self.value}").strip("_")
 
 
-KNOB_LABELS = {"default": "default deck", "dt_scale": "/DT scale", "mass_scaling": "/DT/NODA/CST",
+KNOB_LABELS = {"default": "default deck", "dt_scale": "/DT scale", "mass_scaling": "/DT/NODA/CST", "ams": "/AMS",
                "points": "points", "ishell": "Ishell", "stfac": "TYPE7 Stfac", "preset": "--accuracy",
                "precision": "precision"}
-KNOB_MARKERS = {"default": "o", "dt_scale": "s", "mass_scaling": "^", "points": "D", "ishell": "v", "stfac": "P",
+KNOB_MARKERS = {"default": "o", "dt_scale": "s", "mass_scaling": "^", "ams": "<", "points": "D", "ishell": "v", "stfac": "P",
                 "preset": "*", "precision": "X"}
 VARIANTS = [
     Variant("default", "/DT 0.9, 5 points, Ishell 24, Stfac 1"),
@@ -112,6 +117,8 @@ VARIANTS = [
     Variant("mass_scaling", "1.2 dt0", dtmin_factor=1.2),
     Variant("mass_scaling", "1.5 dt0", dtmin_factor=1.5),
     Variant("mass_scaling", "3 dt0", dtmin_factor=3.0),
+    Variant("ams", "1.5 dt0", ams_factor=1.5),
+    Variant("ams", "3 dt0", ams_factor=3.0),
     Variant("points", "3", points=3),
     Variant("ishell", "1", ishell=1),
     Variant("stfac", "0.1", stfac=0.1),
@@ -134,7 +141,8 @@ def edit_engine(text, v, dtmin, th_interval):
     if n != 1:
         raise RuntimeError("engine deck: expected one /TFILE card")
     if dtmin is not None:
-        text = text.replace(f"/DT\n{v.dt_scale:g} 0.0\n", f"/DT\n{v.dt_scale:g} 0.0\n/DT/NODA/CST\n0.9 {dtmin:.6g}\n")
+        card = f"/DT/AMS\n{AMS_SCALE:g} {dtmin:.6g}\n" if v.ams_factor else f"/DT/NODA/CST\n0.9 {dtmin:.6g}\n"
+        text = text.replace(f"/DT\n{v.dt_scale:g} 0.0\n", f"/DT\n{v.dt_scale:g} 0.0\n" + card)
         # /STOP Emax Mmax ...: no added-mass limit, so that the run shows what the mass does
         text, n = re.subn(r"^/STOP\n(\S+) \S+ ", r"/STOP\n\1 0.0 ", text, flags=re.M)
         if n != 1:
@@ -158,8 +166,12 @@ def write_variant(directory, size, end_time, v, dt0, th_interval):
     starter = generate_bench.write_family("tube", directory, size=size, end_time=end_time, ishell=v.ishell,
                                           points=v.points)
     engine = starter.with_name(starter.name.replace("_0000.rad", "_0001.rad"))
-    dtmin = v.dtmin_factor * dt0 if v.dtmin_factor else None
+    factor = v.dtmin_factor or v.ams_factor
+    dtmin = factor * dt0 if factor else None
     engine.write_text(edit_engine(engine.read_text(), v, dtmin, th_interval))
+    if v.ams_factor:  # /AMS on the whole model (grpart_ID 0), in the starter
+        text = starter.read_text()
+        starter.write_text(text[:text.rindex("/END")] + "/AMS\n0\n/END\n")
     if v.stfac is not None:
         starter.write_text(edit_stfac(starter.read_text(), v.stfac))
     return starter, dtmin

@@ -71,32 +71,34 @@ double element_step_quantile(const Model& m, double share) {
   return *at;
 }
 
-// draft: nodal mass scaling (T-2, T-3) up to the step of the elements' kDraftMassScaledShare quantile at the start,
-// unless the deck already scales to a larger step: the smallest elements are mass scaled to it, and no element's
-// step falls below it as the mesh deforms (on a uniform mesh, the step the run starts with).
+// draft: nodal mass scaling (T-2, T-3) at the nodal scale kDraftNodalScale, to kDraftStepShare of the step the deck
+// starts with on its kDraftMassScaledShare quantile of elements: the folds stop cutting the step, the nodes are
+// held with a margin to their stability (the nodal estimate is not a bound), and the rails and tubes of
+// docs/performance.md ("The presets") stay within 5 % of the reference. A deck that already scales to a larger
+// step, or selectively (its /DT/AMS holds the elements, time-step.md SM-0), keeps its own.
 void scale_smallest_elements(const Model& m, RunControl& run, const std::string& where, std::vector<std::string>& changes) {
   const double quantile = element_step_quantile(m, kDraftMassScaledShare);
-  const ControllingElement smallest = smallest_element_time_step(m);
   if (!(quantile > 0.0)) return;  // no element
-  const double scale = run.dt_nodal_cst.scale > 0.0 ? run.dt_nodal_cst.scale
-                       : run.dt.scale > 0.0         ? run.dt.scale
-                                                    : kDefaultStepScale;
-  const double target = scale * quantile;
+  const double deck_scale = run.dt.scale > 0.0 ? run.dt.scale : kDefaultStepScale;
+  const double target = kDraftStepShare * deck_scale * quantile;
   if (run.dt_nodal_cst.given && run.dt_nodal_cst.minimum >= target) return;  // the deck scales further already
-  if (run.dt_ams.given) return;  // the deck's selective scaling holds its elements (time-step.md, SM-0)
-  changes.push_back(fmt::format("/DT/NODA/CST {:g} {:.4g}: mass scaling up to the step of the {:g} % smallest elements "
-                                "at the start (the smallest's is {:.4g}); no step falls below it{}", scale, target,
-                                100.0 * kDraftMassScaledShare, scale * smallest.time_step, where));
-  run.dt_nodal_cst.scale = scale, run.dt_nodal_cst.minimum = target, run.dt_nodal_cst.given = true;
+  if (run.dt_ams.given) return;
+  changes.push_back(fmt::format("/DT/NODA/CST {:g} {:.4g}: the step is the nodes' at scale {:g} instead of the "
+                                "elements' at /DT scale {:g}, and mass is added where it would fall below {:g} times "
+                                "the step the {:g} % smallest elements start with ({:.4g}){}", kDraftNodalScale, target,
+                                kDraftNodalScale, deck_scale, kDraftStepShare, 100.0 * kDraftMassScaledShare,
+                                deck_scale * quantile, where));
+  run.dt_nodal_cst.scale = kDraftNodalScale, run.dt_nodal_cst.minimum = target, run.dt_nodal_cst.given = true;
 }
 
-// fine and draft: the shells' points through the thickness. N = 0 (resultant plasticity) and N = 1 (a membrane)
-// keep theirs: more points would change what the section is, not how well it is integrated.
-void set_shell_points(Model& m, int points, bool raise, std::vector<std::string>& changes) {
+// fine: the shells' points through the thickness, at least `points`. N = 0 (resultant plasticity) and N = 1 (a
+// membrane) keep theirs: more points would change what the section is, not how well it is integrated. draft keeps
+// the deck's: 3 points instead of 5 cost 4 to 10 % of the crush force on the tubes (docs/performance.md).
+void raise_shell_points(Model& m, int points, std::vector<std::string>& changes) {
   for (std::size_t p = 0; p < m.properties.size(); ++p) {
     const Property& property = m.properties[p];
     int& n = m.formulations[p].n_points;
-    if (property.kind != PropertyKind::Shell || n < 2 || (raise ? n >= points : n <= points)) continue;
+    if (property.kind != PropertyKind::Shell || n < 2 || n >= points) continue;
     changes.push_back(fmt::format("/PROP/SHELL/{} N {} -> {} points through the thickness", property.user_id, n, points));
     n = points;
   }
@@ -125,6 +127,7 @@ std::vector<std::string> apply_accuracy_preset(AccuracyPreset preset, Model& mod
   if (preset == AccuracyPreset::Standard) return changes;
   for (std::size_t k = 0; k < runs.size(); ++k) {
     const std::string where = in_deck(k, runs.size());
+    runs[k]->energy_error_warning = kPresetEnergyErrorWarning;
     if (preset == AccuracyPreset::Fine) {
       cap_step_scales(*runs[k], where, changes);
       remove_mass_scaling(*runs[k], where, changes);
@@ -133,8 +136,7 @@ std::vector<std::string> apply_accuracy_preset(AccuracyPreset preset, Model& mod
       scale_smallest_elements(model, *runs[k], where, changes);
     }
   }
-  if (preset == AccuracyPreset::Fine) set_shell_points(model, kFineShellPoints, true, changes);
-  else set_shell_points(model, kDraftShellPoints, false, changes);
+  if (preset == AccuracyPreset::Fine) raise_shell_points(model, kFineShellPoints, changes);
   for (std::string& c : changes) c = fmt::format("--accuracy {}: {}", accuracy_preset_name(preset), c);
   return changes;
 }

@@ -20,11 +20,14 @@ const char* accuracy_preset_name(AccuracyPreset preset);
 // What each preset sets (docs/performance.md; the figures that chose them are measured there):
 inline constexpr double kFineStepScale = 0.6;       // fine: every /DT scale at most this
 inline constexpr int kFineShellPoints = 5;          // fine: shells with 1 to 4 points get 5 (N = 0 stays resultant)
-inline constexpr int kDraftShellPoints = 3;         // draft: shells with more points get 3
 inline constexpr int kFineContactEntryWindow = contact::kAnticipatedEntrySteps;  // fine: TYPE7 entry anticipated
-inline constexpr double kDraftMassScaledShare = 0.01;  // draft: /DT/NODA/CST up to the step of the elements'
-                                                       // 1st percentile at the start (the smallest 1 % are mass
-                                                       // scaled, and no step falls below it as the mesh deforms)
+inline constexpr double kDraftMassScaledShare = 0.01;  // draft: /DT/NODA/CST's target from the step the elements'
+                                                       // 1st percentile starts with,
+inline constexpr double kDraftStepShare = 0.6;         // this share of it,
+inline constexpr double kDraftNodalScale = 0.67;       // at this nodal scale
+
+inline constexpr double kPresetEnergyErrorWarning = 5.0;  // draft and fine: the run warns beyond this energy
+                                                          // error [%], naming the knobs the preset moved
 
 // Applies `preset` to the model's properties and to the run controls of every engine deck (`runs`: the first
 // engine deck's, then the continued runs'). Returns one line per change, empty for `standard`.

@@ -3,6 +3,7 @@
 #include <fmt/chrono.h>
 #include <fmt/format.h>
 #include <fmt/ostream.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cmath>
@@ -136,9 +137,9 @@ std::string describe(const RunEvent& e, const Model& m) {
                          "too coarse for the load or the formulation lets zero-energy modes grow",
                          when, 100.0 * e.value);
     case K::EnergyErrorLarge:
-      return fmt::format("{} WARNING: energy error {:.3g} % (beyond 10 %): the energy balance is not kept; the run "
+      return fmt::format("{} WARNING: energy error {:.3g} % (beyond {:g} %): the energy balance is not kept; the run "
                          "may be going unstable, or mass scaling or contact releases add or take energy",
-                         when, e.value);
+                         when, e.value, e.second_value);
     case K::StepDropped:
       return fmt::format("{} WARNING: time step {:.4e} set by {}, below 1/1000 of the elements' step {:.4e}: the run "
                          "slows down by that factor (a contact closing fast on a small gap bounds its step by "
@@ -201,9 +202,20 @@ void RunRecorder::row(const SolverState& s, double dt, const StepControl& contro
                 s.mass_initial > 0.0 ? (mass - s.mass_initial) / s.mass_initial : 0.0, mass, s.mass_added});
 }
 
+std::string preset_knobs_to_loosen(const RunStart& run) {
+  const std::string prefix = "--accuracy " + run.accuracy + ": ";
+  std::vector<std::string> knobs;
+  for (const std::string& a : run.approximations)
+    if (a.starts_with(prefix)) knobs.push_back(a.substr(prefix.size()));
+  if (knobs.empty()) return {};
+  return fmt::format("; under --accuracy {} loosen the knob{} it moved ({}), or run --accuracy standard", run.accuracy,
+                     knobs.size() > 1 ? "s" : "", fmt::join(knobs, "; "));
+}
+
 void RunRecorder::events(RunEvents& events) {
   for (const RunEvent& e : events.pending) {
-    const std::string text = describe(e, model_);
+    std::string text = describe(e, model_);
+    if (e.kind == RunEvent::Kind::EnergyErrorLarge) text += preset_knobs_to_loosen(run_);
     listing_.line(text);
     if (e.kind == RunEvent::Kind::HourglassShare || e.kind == RunEvent::Kind::EnergyErrorLarge ||
         e.kind == RunEvent::Kind::ShellDeletedInverted || e.kind == RunEvent::Kind::StepDropped)

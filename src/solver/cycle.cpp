@@ -186,15 +186,15 @@ void warn_hourglass_share(const SolverState& s, RunEvents& events) {
   events.pending.push_back(event);
 }
 
-// An energy error beyond 10 % means the balance is not kept: an instability growing, or a remedy (mass scaling, a
-// contact released deep in its gap) adding or taking energy. A run must not end "normal" without saying so
-// (docs/theory/energy.md): one event, the first time, unless /STOP Emax stops the run before.
-void warn_energy_error(const SolverState& s, RunEvents& events) {
+// An energy error beyond 10 % (5 % under a preset) means the balance is not kept: an instability growing, or a
+// remedy (mass scaling, a contact released deep in its gap) adding or taking energy. A run must not end "normal"
+// without saying so (docs/theory/energy.md): one event, the first time, unless /STOP Emax stops the run before.
+void warn_energy_error(const RunControl& rc, const SolverState& s, RunEvents& events) {
   const double error = s.energy.error_percent();
-  if (events.energy_error_warned || !(std::abs(error) > 10.0)) return;
+  if (events.energy_error_warned || !(std::abs(error) > rc.energy_error_warning)) return;
   events.energy_error_warned = true;
   RunEvent event{RunEvent::Kind::EnergyErrorLarge, s.cycle, s.time};
-  event.value = error;
+  event.value = error, event.second_value = rc.energy_error_warning;
   events.pending.push_back(event);
 }
 
@@ -796,7 +796,7 @@ void warn_step_drop(const SolverState& s, double element_step, double dt, const 
 void check_run_limits(const Model& m, const SolverState& s, RunEvents& events) {
   const RunControl& rc = m.run;
   warn_hourglass_share(s, events);
-  warn_energy_error(s, events);
+  warn_energy_error(rc, s, events);
   StopReason& stop = events.stop;
   const double total = s.energy.internal + s.energy.kinetic_translational + s.energy.kinetic_rotational;
   if (!std::isfinite(total)) {

@@ -81,30 +81,39 @@ TEST(AccuracyPreset, FineKeepsWhatIsAlreadyFinerAndTheSectionsThatAreNotIntegrat
   EXPECT_EQ(r.deck.model.formulations[0].n_points, 1);
 }
 
-TEST(AccuracyPreset, DraftTakesThreePointsAndHoldsAUniformMeshAtItsFirstStep) {
+TEST(AccuracyPreset, DraftKeepsThePointsAndHoldsAUniformMeshAtSixTenthsOfItsFirstStep) {
   Read r(strip(200, 5, false), kEngine);
   const auto changes = r.apply(app::AccuracyPreset::Draft);
-  EXPECT_EQ(r.deck.model.formulations[0].n_points, 3);
-  // Every element has the same step: the mass scaling's target is the step the run starts with.
-  const TimeStepControl& cst = r.deck.model.run.dt_nodal_cst;
+  EXPECT_EQ(r.deck.model.formulations[0].n_points, 5);
+  // Every element has the same step: the target is 0.6 times the step the run starts with (/DT 0.9), at the
+  // nodal scale 0.67, and the run warns beyond 5 % of energy error.
+  const RunControl& run = r.deck.model.run;
+  const TimeStepControl& cst = run.dt_nodal_cst;
   ASSERT_TRUE(cst.given);
   const double step = initial_element_time_step(r.deck.model, ElementKind::Shell4, 0);
-  EXPECT_NEAR(cst.minimum, 0.9 * step, 1e-9 * step);
-  ASSERT_EQ(changes.size(), 2u);
-  EXPECT_TRUE(any_contains(changes, "--accuracy draft: /DT/NODA/CST 0.9"));
-  EXPECT_TRUE(any_contains(changes, "--accuracy draft: /PROP/SHELL/1 N 5 -> 3 points"));
+  EXPECT_DOUBLE_EQ(cst.scale, 0.67);
+  EXPECT_NEAR(cst.minimum, 0.6 * 0.9 * step, 1e-9 * step);
+  EXPECT_DOUBLE_EQ(run.energy_error_warning, 5.0);
+  ASSERT_EQ(changes.size(), 1u);
+  EXPECT_TRUE(any_contains(changes, "--accuracy draft: /DT/NODA/CST 0.67"));
 }
 
 TEST(AccuracyPreset, DraftMassScalesTheSmallestPercentOfTheElements) {
-  Read r(strip(200, 3, true), kEngine);  // 200 shells of 10 mm and one of 0.1 mm: its step is 1/100 of theirs
+  Read r(strip(200, 3, true), kEngine + "/DT\n0.5 0\n");  // 200 shells of 10 mm and one of 0.1 mm (1/100 the step)
   const auto changes = r.apply(app::AccuracyPreset::Draft);
   const TimeStepControl& cst = r.deck.model.run.dt_nodal_cst;
   ASSERT_TRUE(cst.given);
   const double big = initial_element_time_step(r.deck.model, ElementKind::Shell4, 0);
-  EXPECT_DOUBLE_EQ(cst.scale, 0.9);
-  EXPECT_NEAR(cst.minimum, 0.9 * big, 1e-9 * big);  // the 1st percentile is a 10 mm shell's step
+  EXPECT_DOUBLE_EQ(cst.scale, 0.67);
+  EXPECT_NEAR(cst.minimum, 0.6 * 0.5 * big, 1e-9 * big);  // the 1st percentile is a 10 mm shell's, at /DT 0.5
   ASSERT_EQ(changes.size(), 1u);
-  EXPECT_TRUE(any_contains(changes, "--accuracy draft: /DT/NODA/CST 0.9"));
+  EXPECT_TRUE(any_contains(changes, "--accuracy draft: /DT/NODA/CST 0.67"));
+}
+
+TEST(AccuracyPreset, StandardKeepsTheTenPercentEnergyWarning) {
+  Read r(strip(4, 3, false), kEngine);
+  EXPECT_TRUE(r.apply(app::AccuracyPreset::Standard).empty());
+  EXPECT_DOUBLE_EQ(r.deck.model.run.energy_error_warning, 10.0);
 }
 
 TEST(AccuracyPreset, DraftKeepsADeckThatMassScalesFurther) {

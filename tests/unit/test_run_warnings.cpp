@@ -31,5 +31,30 @@ TEST(RunWarnings, EnergyErrorBeyondTenPercentIsRaisedOnce) {
   EXPECT_EQ(events.pending.size(), 1u);
 }
 
+// Under an --accuracy preset the warning comes at 5 % and names the knobs the preset moved (issue 26).
+TEST(RunWarnings, UnderAPresetTheEnergyErrorBeyondFivePercentNamesItsKnobs) {
+  Model model;
+  model.run.energy_error_warning = 5.0;  // what apply_accuracy_preset sets for draft and fine
+  SolverState s;
+  s.energy.initial_kinetic = 100.0;
+  s.energy.internal = 50.0, s.energy.kinetic_translational = 46.0;  // -4 %: no warning
+  RunEvents events;
+  solver::check_run_limits(model, s, events);
+  EXPECT_TRUE(events.pending.empty());
+  s.energy.kinetic_translational = 44.0;  // -6 %
+  solver::check_run_limits(model, s, events);
+  ASSERT_EQ(events.pending.size(), 1u);
+  EXPECT_NE(describe(events.pending[0], model).find("energy error -6 % (beyond 5 %)"), std::string::npos)
+      << describe(events.pending[0], model);
+  RunStart draft;
+  draft.accuracy = "draft";
+  draft.approximations = {"[output-only] deck:4: /PRINT/-500: field Nline: output-only",
+                          "--accuracy draft: /DT/NODA/CST 0.67 0.0005796: nodal mass scaling"};
+  EXPECT_EQ(preset_knobs_to_loosen(draft),
+            "; under --accuracy draft loosen the knob it moved (/DT/NODA/CST 0.67 0.0005796: nodal mass scaling), or "
+            "run --accuracy standard");
+  EXPECT_EQ(preset_knobs_to_loosen(RunStart{}), "");
+}
+
 }  // namespace
 }  // namespace crumple

@@ -34,6 +34,10 @@ struct RunStart {
   std::string accuracy = "standard";  // the --accuracy preset, for the listing header and the summary
 };
 
+// What the energy warning adds under an --accuracy preset: the knobs it moved (its lines among the
+// approximations), to loosen; empty for the deck as written.
+std::string preset_knobs_to_loosen(const RunStart& run);
+
 // The run's observer that writes it: NAME.out, NAME.h5, NAME.rst and the console's notes, warnings and progress.
 class RunRecorder final : public RunObserver {
  public:

@@ -33,7 +33,8 @@ struct RunEvent {
                                      // value = how many of the group
     ContactBoundaryReleased,         // TYPE7 IBC: node index, value = the released dof mask
     HourglassShare,                  // hourglass energy above 10 % of the internal energy: value = the ratio
-    EnergyErrorLarge,                // |energy error| above 10 %: value = the error in percent
+    EnergyErrorLarge,                // |energy error| above RunControl::energy_error_warning: value = the error,
+                                     // second_value = that threshold, in percent
     StepDropped,                     // the step fell below 1/1000 of the elements' own: value = the step,
                                      // second_value = the elements' step [T], `control` what set it
     Rebalanced,                      // several domains repartitioned: value, second_value = estimated imbalance
