@@ -13,15 +13,6 @@ std::string_view imposed_keyword(ImposedKind kind) {
   return kind == ImposedKind::Velocity ? "/IMPVEL" : kind == ImposedKind::Displacement ? "/IMPDISP" : "/CLOAD";
 }
 
-std::string_view wall_type(RigidWallShape shape) {
-  switch (shape) {
-    case RigidWallShape::Plane: return "PLANE";
-    case RigidWallShape::Cylinder: return "CYL";
-    case RigidWallShape::Sphere: return "SPHER";
-    case RigidWallShape::Parallelogram: return "PARAL";
-  }
-  return "";
-}
 
 const std::vector<std::int32_t>& nodes_of(const Model& m, std::int32_t group) {
   return m.node_groups[static_cast<std::size_t>(group)].nodes;
@@ -215,7 +206,7 @@ void resolve_rigid_walls(Resolver& r) {
   Model& m = r.model;
   const auto& ix = m.index;
   for (RigidWall& w : m.rigid_walls) {
-    const std::string kw = fmt::format("/RWALL/{}/{}", wall_type(w.shape), w.user_id);
+    const std::string kw = rigid_wall_keyword(w);
     w.node = r.find_optional(ix.nodes, w.node_id, w.where, kw, "node_ID", "node");
     w.node_group1 = r.find_optional(ix.node_groups, w.node_group1_id, w.where, kw, "grnod_ID1", "node group");
     w.node_group2 = r.find_optional(ix.node_groups, w.node_group2_id, w.where, kw, "grnod_ID2", "node group");
@@ -236,6 +227,20 @@ void resolve_rigid_walls(Resolver& r) {
 }
 
 }  // namespace
+
+std::string rigid_wall_keyword(const RigidWall& w) {
+  return fmt::format("/RWALL/{}/{}", rigid_wall_shape_name(w.shape), w.user_id);
+}
+
+std::string_view rigid_wall_shape_name(RigidWallShape shape) {
+  switch (shape) {
+    case RigidWallShape::Plane: return "PLANE";
+    case RigidWallShape::Cylinder: return "CYL";
+    case RigidWallShape::Sphere: return "SPHER";
+    case RigidWallShape::Parallelogram: return "PARAL";
+  }
+  return "";
+}
 
 void resolve_load_references(Resolver& r) {
   Model& m = r.model;

@@ -74,6 +74,14 @@ void check_selective_mass(Resolver& r, const RunControl& run) {
                                       "no nodal mass scaling together with /DT/AMS on the whole model (Crumple does not "
                                       "combine them)",
                                       keyword));
+  // A moving wall takes its nodes' impulse into its own motion (RW-2) before it holds them; the solve holds them
+  // at the wall's velocity first (SM-4), so the exchange would lag a cycle: refused, not approximated.
+  for (const RigidWall& w : r.model.rigid_walls)
+    if (w.node_id != 0)
+      r.context.unsupported(DeckError(w.where, rigid_wall_keyword(w), "node_ID",
+                                      "a fixed rigid wall (node_ID 0) with /DT/AMS: Crumple does not hold nodes on a "
+                                      "moving wall inside the selective mass solve",
+                                      std::to_string(w.node_id)));
 }
 
 void resolve_run_control(Resolver& r, RunControl& run) {

@@ -188,6 +188,27 @@ void predict_wall_holds(const Model& m, SolverState& s, double dt_average, doubl
   }
 }
 
+namespace {
+
+// Under selective mass scaling the solve has held the wall's nodes already (SM-4): their impulses are the
+// reactions it found (SM-4c), each taken once, by the first wall that holds the node.
+void add_solved_reactions(SolverState& s, const RigidWallState& st, double dt_average, std::vector<ExactSum>& sums) {
+  SelectiveMassState& sm = s.selective_mass;
+  for (std::int32_t node : st.nodes) {
+    const auto k = static_cast<std::size_t>(node);
+    if (!s.domain.owns(k)) continue;
+    double* reaction = &sm.wall_reaction[3 * k];
+    const double* normal = &sm.wall_normal[3 * k];
+    const double along = (reaction[0] * normal[0] + reaction[1] * normal[1] + reaction[2] * normal[2]) * dt_average;
+    for (std::size_t c = 0; c < 3; ++c) {
+      sums[c].add(reaction[c] * dt_average), sums[3 + c].add(along * normal[c]);
+      reaction[c] = 0.0;
+    }
+  }
+}
+
+}  // namespace
+
 void apply_rigid_walls(const Model& m, SolverState& s, double dt_average, double dt_next) {
   NodalState& n = s.nodes;
   for (std::size_t iw = 0; iw < m.rigid_walls.size(); ++iw) {
@@ -234,6 +255,7 @@ void apply_rigid_walls(const Model& m, SolverState& s, double dt_average, double
       const double along_normal = n.mass[k] * dot(v - before, normal);
       for (std::size_t c = 0; c < 3; ++c) sums[3 + c].add(along_normal * normal[c]);
     }
+    if (s.selective_mass.solved_cycle == s.cycle) add_solved_reactions(s, st, dt_average, sums);
     s.reducer.sum(sums);
     const Vec3 impulse{sums[0].value(), sums[1].value(), sums[2].value()};
     const Vec3 normal_impulse{sums[3].value(), sums[4].value(), sums[5].value()};

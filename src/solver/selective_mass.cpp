@@ -136,6 +136,7 @@ void size_selective_mass(const Model& m, SolverState& s) {
   for (auto* v : {&sm.x, &sm.b, &sm.diagonal, &sm.r, &sm.z, &sm.p, &sm.q, &sm.velocity, &sm.spread, &sm.prescribed, &sm.forces})
     v->assign(unknowns, 0.0);
   sm.wall_normal.assign(3 * nodes, 0.0);
+  sm.wall_reaction.assign(3 * nodes, 0.0);
   sm.body_inertia.assign(9 * s.bodies.size(), 0.0);
   sm.body_rotation_solved.assign(s.bodies.size(), 0);
   sm.lumped.assign(3 * nodes, 0.0);
@@ -427,9 +428,11 @@ double reaction_work(const Model& m, SolverState& s, double dt_average) {
       middle[d] = (*v[d])[k] + 0.5 * sm.velocity[i] * dt_average;
     }
     const double along = reaction[0] * normal[0] + reaction[1] * normal[1] + reaction[2] * normal[2];
+    const bool on_wall = normal[0] != 0.0 || normal[1] != 0.0 || normal[2] != 0.0;
     for (std::size_t d = 0; d < 3; ++d) {
       const double held = (sm.solved[k] & (1u << d)) ? along * normal[d] : reaction[d];
       work += held * middle[d] * dt_average;
+      sm.wall_reaction[3 * k + d] = on_wall ? held : 0.0;  // a wall's force, for its outputs (SM-4c)
     }
   }
   return work;

@@ -153,14 +153,28 @@ TEST(SelectiveMass, PlateOnARigidBodyAgainstAWallKeepsItsEnergy) {
   test::TempDir dir;
   const double dt_min = 2e-3;
   double body_velocity = 0.0, least_kinetic = 1e300;
+  // The wall's impulse, its force summed over the cycles (a history row every cycle, SM-4c), against the change of
+  // the x momentum of the plate and the body.
+  constexpr double kRow = 1e-5;
+  double wall_impulse = 0.0, momentum_first = 0.0, momentum_last = 0.0, last_time = 0.0;
+  bool first = true;
   const auto observe = [&](const Model&, const SolverState& s) {
     body_velocity = s.bodies[0].velocity[0];
     least_kinetic = std::min(least_kinetic, s.energy.kinetic_translational);
+    double momentum = s.bodies[0].mass * s.bodies[0].velocity[0];
+    for (std::size_t k = 0; k < s.nodes.size(); ++k)
+      if (s.rigid_owner[k] < 0) momentum += s.nodes.mass[k] * s.nodes.vx[k];
+    if (first) momentum_first = momentum, first = false;
+    momentum_last = momentum;
+    wall_impulse += s.walls[0].force[0] * (s.time - last_time);
+    last_time = s.time;
   };
-  const RunResult r = run_deck(dir, plate(extra), 500 * dt_min, 0.01, observe, ams_engine(kScale, dt_min));
+  const RunResult r = run_deck(dir, plate(extra), 500 * dt_min, kRow, observe, ams_engine(kScale, dt_min));
   ASSERT_EQ(r.summary.status, RunStatus::Normal) << r.summary.message;
   EXPECT_LT(least_kinetic, 0.7 * r.summary.energy.total) << "the plate must be compressed on the wall";
   EXPECT_GT(body_velocity, 4.5) << "the elastic plate throws the body back";
+  EXPECT_NEAR(wall_impulse, momentum_last - momentum_first, 0.02 * std::abs(momentum_first))
+      << "the wall's force is the reaction of its held nodes in the solve";
   EXPECT_LT(std::abs(r.summary.energy.error_percent), 0.5)
       << "internal " << r.summary.energy.internal << " kinetic " << r.summary.energy.kinetic_translational
       << " external work " << r.summary.energy.external_work;

@@ -120,6 +120,7 @@ struct SelectiveMassState {
   std::vector<double> prescribed;     // 3 per unknown: the accelerations the conditions give the held dofs (SM-4)
   std::vector<double> forces;         // 3 per unknown: F (a body's gathered), kept for the reactions
   double reaction_work = 0.0;         // the held dofs' reactions' work over the step (SM-4b) [M L^2 T^-2]
+  std::vector<double> wall_reaction;  // per node, 3: the force a rigid wall puts on it this cycle (SM-4c) [M L T^-2]
   std::vector<double> ax, ay, az;     // the accelerations of the cycle [L/T^2]
   // The solve's vectors, 3 per node (eq. SM-5): solution, right-hand side, preconditioner, residual, its
   // preconditioned form, search direction and its product.
