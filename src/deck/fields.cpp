@@ -102,6 +102,7 @@ std::string quote_text(std::string_view s) {
 std::vector<Card> split_cards(const SourceText& text, std::int32_t first_engine_file) {
   std::vector<Card> cards;
   bool after_starter_end = false;
+  bool engine_keyword_seen = false;  // a keyword of the engine deck's file (first_engine_file) has been read
   for (const SourceLine& line : text.lines) {
     if (is_comment(line.text)) continue;
     const bool engine_file = first_engine_file >= 0 && line.file >= first_engine_file;
@@ -122,11 +123,15 @@ std::vector<Card> split_cards(const SourceText& text, std::int32_t first_engine_
       }
       card.where = text.where(line);
       card.engine = engine_file || after_starter_end;
+      engine_keyword_seen = engine_keyword_seen || engine_file;
       if (!card.engine && card.path.size() == 1 && card.path[0] == "END") after_starter_end = true;
       cards.push_back(std::move(card));
       continue;
     }
-    if (cards.empty()) {
+    // Data before the first keyword of a file that opens a deck (the starter, or the engine deck read after it) is
+    // an error: it would otherwise be taken as the last card's data, or skipped.
+    const bool before_any_keyword = cards.empty() || (engine_file && !engine_keyword_seen);
+    if (before_any_keyword) {
       if (trim(line.text).empty()) continue;
       throw DeckError(text.where(line), "", "", "a keyword line starting with '/' or a comment",
                       "data " + quote_text(trim(line.text).substr(0, 40)) + " before any keyword");

@@ -1,5 +1,6 @@
 #include <fmt/format.h>
 
+#include "crumple/core/utf8.hpp"
 #include "context.hpp"
 
 namespace crumple::deck {
@@ -25,7 +26,8 @@ const KeywordTable& keyword_table() {
 
 std::string read_title(CardReader& reader) {
   if (reader.at_end()) return {};
-  return reader.next("the title").text(1, 100);
+  // Titles reach NAME.xdmf, the summary and HDF5 attributes: a Latin-1 byte is read as '?' (docs/deck-format.md).
+  return valid_utf8(reader.next("the title").text(1, 100));
 }
 
 std::vector<std::int64_t> read_id_list(CardReader& reader, std::string_view name) {

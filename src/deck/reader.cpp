@@ -253,6 +253,14 @@ Deck read_deck(const std::filesystem::path& starter, const ReadOptions& options)
   if (engine_seen && !context.run_seen)
     record(DeckError(SourceLocation{text.files.back(), 0}, "/RUN", "", "a /RUN card in the engine deck",
                      "an engine deck without /RUN"));
+  // An engine deck beside the starter that holds no keyword (only comments and blank lines) is an error of its
+  // own, not a deck to skip.
+  if (first_engine_file >= 0) {
+    const std::string& engine_file = text.files[static_cast<std::size_t>(first_engine_file)];
+    if (std::none_of(cards.begin(), cards.end(), [&](const Card& c) { return c.where.file == engine_file; }))
+      record(DeckError(SourceLocation{engine_file, 0}, "/RUN", "", "the engine deck's keywords (/RUN first)",
+                       "no keyword: only comments and blank lines"));
+  }
   if (options.require_engine && !engine_seen)
     record(DeckError(starter_file, "/RUN", "",
                      "an engine deck (NAME_0001.rad beside NAME_0000.rad, or engine cards after /END)", "none"));

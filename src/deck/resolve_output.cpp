@@ -138,6 +138,10 @@ void resolve_output_references(Resolver& r, std::vector<RunControl>& continued_r
     const std::string kw = fmt::format("/INTER/TYPE7/{}", i.user_id);
     i.secondary_group = r.find(ix.node_groups, i.secondary_group_id, i.where, kw, "Slav_id", "node group");
     i.main_surface = r.find(ix.surfaces, i.main_surface_id, i.where, kw, "Mast_id", "surface");
+    // An interface with no secondary node would contact nothing, without a word.
+    if (i.secondary_group >= 0 && m.node_groups[static_cast<std::size_t>(i.secondary_group)].nodes.empty())
+      r.error(i.where, kw, "Slav_id", "a node group with nodes (the interface's secondary nodes)",
+              fmt::format("node group {} is empty", i.secondary_group_id));
   }
   for (Section& s : m.sections) {
     const std::string kw = fmt::format("/SECT/{}", s.user_id);

@@ -1,5 +1,6 @@
 // NAME.h5 and NAME.xdmf: mesh, field frames and time histories (layout: docs/output-format.md).
 // Written with the HDF5 C API through a serial file driver: only the process that owns the file calls it.
+#include "crumple/core/utf8.hpp"
 #include "crumple/output/results_file.hpp"
 
 #include "crumple/model/history_variables.hpp"
@@ -232,7 +233,8 @@ struct ResultsFile::Impl {
     Handle attr(check(H5Acreate2(location, name, type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
                       std::string("cannot create attribute ") + name),
                 H5Aclose);
-    const char* text = value.c_str();
+    const std::string valid = valid_utf8(value);  // the type says UTF-8: a title cut inside a character is not
+    const char* text = valid.c_str();
     check_status(H5Awrite(attr.get(), type.get(), &text), std::string("cannot write attribute ") + name);
   }
 
@@ -243,8 +245,10 @@ struct ResultsFile::Impl {
     Handle attr(check(H5Acreate2(location, name, type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
                       std::string("cannot create attribute ") + name),
                 H5Aclose);
+    std::vector<std::string> valid;
+    for (const std::string& v : values) valid.push_back(valid_utf8(v));
     std::vector<const char*> texts;
-    for (const std::string& v : values) texts.push_back(v.c_str());
+    for (const std::string& v : valid) texts.push_back(v.c_str());
     if (n > 0)
       check_status(H5Awrite(attr.get(), type.get(), texts.data()), std::string("cannot write attribute ") + name);
   }
@@ -257,8 +261,10 @@ struct ResultsFile::Impl {
                                 H5P_DEFAULT),
                      "cannot create dataset " + name),
                H5Dclose);
+    std::vector<std::string> valid;
+    for (const std::string& s : values) valid.push_back(valid_utf8(s));
     std::vector<const char*> texts;
-    for (const std::string& s : values) texts.push_back(s.c_str());
+    for (const std::string& s : valid) texts.push_back(s.c_str());
     if (n > 0)
       check_status(H5Dwrite(set.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, texts.data()),
                    "cannot write dataset " + name);

@@ -103,6 +103,11 @@ std::string describe(const StopReason& r, const Model& m) {
                          "(residual {:.3g} against Tol_AMS {:.3g}): the scaling is likely diverging; lower DTmin of "
                          "/DT/AMS, or raise Niter (/DT/AMS/2)",
                          r.index, r.cycle, r.value, r.minimum);
+    case K::EveryElementLost:
+      return fmt::format("no element is left at cycle {} (time {:.4e}): {} shells turned inside out and {} elements "
+                         "fell below their minimum step (/DT/<type>/DEL); the load is beyond what the mesh can carry "
+                         "(an initial velocity or an imposed motion too large, or the wrong units)",
+                         r.cycle, r.time, r.index, static_cast<long long>(r.value));
     case K::Requested:
       return fmt::format("stopped by {} at the end of cycle {} (time {:.6g})", signal_name(r.index), r.cycle, r.time);
   }

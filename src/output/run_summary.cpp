@@ -1,5 +1,7 @@
 #include "crumple/output/run_summary.hpp"
 
+#include "crumple/core/utf8.hpp"
+
 #include <fmt/chrono.h>
 #include <fmt/format.h>
 #include <zlib.h>
@@ -18,7 +20,7 @@ std::string number(double v) { return std::isfinite(v) ? fmt::format("{:.17g}", 
 
 std::string escaped(const std::string& s) {
   std::string out;
-  for (char c : s) {
+  for (char c : valid_utf8(s)) {  // a title cut inside a character by its card's columns
     switch (c) {
       case '"': out += "\\\""; break;
       case '\\': out += "\\\\"; break;

@@ -1,11 +1,13 @@
 #include "xml_text.hpp"
 
+#include "crumple/core/utf8.hpp"
+
 namespace crumple {
 
 std::string xml_escaped(std::string_view s) {
   std::string out;
   out.reserve(s.size());
-  for (char c : s) {
+  for (char c : valid_utf8(s)) {  // a title cut inside a character by its card's columns
     switch (c) {
       case '&': out += "&amp;"; break;
       case '<': out += "&lt;"; break;

@@ -793,13 +793,39 @@ void warn_step_drop(const SolverState& s, double element_step, double dt, const 
   events.pending.push_back(event);
 }
 
+namespace {
+
+// No element computed any more: every one deleted (an element in a rigid body is still there).
+bool no_element_left(const SolverState& s) {
+  for (const auto* status : {&s.shells.deleted, &s.shells3.deleted, &s.bricks.deleted})
+    for (std::uint8_t e : *status)
+      if (element_condition(e) != kElementDeleted) return false;
+  return true;
+}
+
+// A run whose elements were all deleted by numerical causes (turned inside out, below their minimum step) has no
+// answer to give, unlike one whose elements failed by their material's failure model (which runs on, as the
+// reference does): it stops, abnormally. Looked for when such deletions have happened since the last look.
+bool every_element_lost(const SolverState& s, RunEvents& events) {
+  const long long numerical = events.deleted_inverted + events.deleted_below_minimum_step;
+  if (numerical == events.numerical_deletions_checked) return false;
+  events.numerical_deletions_checked = numerical;
+  return no_element_left(s);
+}
+
+}  // namespace
+
 void check_run_limits(const Model& m, const SolverState& s, RunEvents& events) {
   const RunControl& rc = m.run;
   warn_hourglass_share(s, events);
   warn_energy_error(rc, s, events);
   StopReason& stop = events.stop;
   const double total = s.energy.internal + s.energy.kinetic_translational + s.energy.kinetic_rotational;
-  if (!std::isfinite(total)) {
+  if (every_element_lost(s, events)) {
+    stop.kind = StopReason::Kind::EveryElementLost, stop.cycle = s.cycle, stop.time = s.time;
+    stop.index = static_cast<std::int32_t>(events.deleted_inverted);
+    stop.value = static_cast<double>(events.deleted_below_minimum_step);
+  } else if (!std::isfinite(total)) {
     stop.kind = StopReason::Kind::EnergyNotFinite, stop.cycle = s.cycle, stop.time = s.time;
   } else if (rc.stop_mass_error > 0.0 && s.mass_added > rc.stop_mass_error * s.mass_initial) {
     stop.kind = StopReason::Kind::AddedMassLimit, stop.cycle = s.cycle, stop.time = s.time;

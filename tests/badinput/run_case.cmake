@@ -1,6 +1,6 @@
 # Runs one bad-input case:  cmake -DCRUMPLE=<crumple> -DCASE_DIR=<decks/case> -P run_case.cmake
 # CASE_DIR/expect: line 1 the exit code, line 2 a substring the output (stdout + stderr) must contain, optional
-# line 3 extra command-line arguments. The deck is the folder's *_0000.rad (a file or, on purpose, a directory);
+# line 3 extra command-line arguments (starting with "run": `crumple run` into -DWORK_DIR instead of `check`). The deck is the folder's *_0000.rad (a file or, on purpose, a directory);
 # a folder without one stands for a deck that does not exist: MISSING_0000.rad is passed.
 cmake_minimum_required(VERSION 3.25)
 foreach(var CRUMPLE CASE_DIR)
@@ -31,6 +31,18 @@ endforeach()
 set(expected_code "${line_1}")
 set(expected_text "${line_2}")
 separate_arguments(extra_args UNIX_COMMAND "${line_3}")
+# Line 3 starting with "run": the case is a run that must fail (its output into WORK_DIR), not a check.
+set(subcommand check)
+list(LENGTH extra_args extra_count)
+if(extra_count GREATER 0)
+  list(GET extra_args 0 first_arg)
+  if(first_arg STREQUAL "run")
+    list(REMOVE_AT extra_args 0)
+    set(subcommand run)
+    file(REMOVE_RECURSE "${WORK_DIR}")
+    list(APPEND extra_args -o "${WORK_DIR}" --quiet)
+  endif()
+endif()
 if(NOT expected_code MATCHES "^[0-9]+$" OR expected_text STREQUAL "")
   message(FATAL_ERROR "badinput.${case_name}: ${CASE_DIR}/expect must hold an exit code on line 1 and the "
                       "expected text on line 2")
@@ -46,9 +58,9 @@ else()
   message(FATAL_ERROR "badinput.${case_name}: more than one *_0000.rad in ${CASE_DIR}")
 endif()
 
-execute_process(COMMAND "${CRUMPLE}" check "${deck}" ${extra_args}
+execute_process(COMMAND "${CRUMPLE}" ${subcommand} "${deck}" ${extra_args}
                 RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 120)
-set(report "command: ${CRUMPLE} check ${deck} ${line_3}\n--- stdout:\n${out}--- stderr:\n${err}---")
+set(report "command: ${CRUMPLE} ${subcommand} ${deck} ${extra_args}\n--- stdout:\n${out}--- stderr:\n${err}---")
 if(NOT "${code}" STREQUAL "${expected_code}")
   message(NOTICE "${report}")
   message(FATAL_ERROR "badinput.${case_name}: exit code '${code}', expected ${expected_code}")

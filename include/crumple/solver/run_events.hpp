@@ -65,6 +65,8 @@ struct StopReason {
     Requested,                // asked from outside (SolverOptions::stop_request): index = the signal number
     MassScalingDiverged,      // /DT/AMS: the solve did not converge: index = iterations, value = residual ratio,
                               // minimum = Tol_AMS
+    EveryElementLost,         // no element left, some deleted by numerical causes: index = shells turned inside
+                              // out, value = elements below their minimum step (/DT/<type>/DEL)
   };
   Kind kind = Kind::None;
   long long cycle = 0;
@@ -88,6 +90,7 @@ struct RunEvents {
   long long deleted_below_minimum_step = 0;  // elements deleted by /DT/<type>/DEL over the run
   long long switched_to_small_strain = 0;    // elements switched by /DT/<type>/CST over the run
   long long deleted_inverted = 0;            // shells deleted as turned inside out over the run
+  long long numerical_deletions_checked = 0;  // those two summed, when the run last looked for an element left
   bool hourglass_warned = false;             // the HourglassShare event has been raised
   bool energy_error_warned = false;          // the EnergyErrorLarge event has been raised
   bool step_drop_warned = false;             // the StepDropped event has been raised
