@@ -165,12 +165,12 @@ void check_shell_material(Resolver& r, const Property& p, const ResolvedFormulat
                           const PropertyUse& use) {
   const ShellSection& s = p.shell;
   const bool tabulated = mat.law == MaterialLaw::Tabulated, plastic = mat.law != MaterialLaw::Elastic;
-  // dm acts with law 36 and, with any law, in Ishell 12 and 24. Crumple has it for the triangles and Ishell 24
-  // (docs/theory/shell4.md, eq. S-9d), not for the other 4-node shells.
-  if (s.dm != 0.0 && use.quads && f.ishell != 24 && (tabulated || f.ishell == 12))
+  // A given dm acts on every 4-node shell of the reference (Ishell 1 with /MAT/PLAS_JOHNS: measured, shell4.md
+  // "Probes"); Crumple has it for the triangles, the Belytschko-Tsay shells and Ishell 24 (eq. S-9d), not for the
+  // fully integrated Ishell 12.
+  if (s.dm != 0.0 && use.quads && f.ishell == 12)
     r.error(s.damping_where, keyword_of(p), "dm (columns 61-80)",
-            "0: membrane damping (active for Ishell 12 and /MAT/PLAS_TAB) is not supported by Crumple for Ishell " +
-                std::to_string(f.ishell),
+            "0: membrane damping is not supported by Crumple for the fully integrated shell (Ishell 12)",
             fmt::format("'{}'", s.dm));
   // P_thick_fail 0: the reference deletes an element when all its points failed, Crumple at the first one; the
   // same with one point (N = 0, 1), not with several.

@@ -15,8 +15,8 @@ double initial_element_time_step(const Model& model, ElementKind kind, std::size
   const Nodes& x = model.nodes;
   switch (kind) {
     case ElementKind::Shell4: {
-      // Ishell 1 to 4: the bar speed over eq. T-1b's length (T-1a); QEPH: over T-1d's, times T-1c's factor for
-      // max(dm, dn); QBAT: the plate speed over T-1's.
+      // Ishell 1 to 4: the bar speed over eq. T-1b's length (T-1a), times T-1c's factor for a given dm; QEPH: over
+      // T-1d's, times T-1c's factor for max(dm, dn); QBAT: the plate speed over T-1's.
       const int ishell = model.formulations[static_cast<std::size_t>(part.property)].ishell;
       const Vec3 a = x.position(n[0]), b = x.position(n[1]), c = x.position(n[2]), d = x.position(n[3]);
       if (ishell == 24) {
@@ -27,7 +27,9 @@ double initial_element_time_step(const Model& model, ElementKind kind, std::size
       if (ishell == 12)
         return geometry::quad_characteristic_length(a, b, c, d) /
                std::sqrt(mat.young / (mat.density * (1.0 - mat.poisson * mat.poisson)));
-      return geometry::belytschko_tsay_length(a, b, c, d) / std::sqrt(mat.young / mat.density);
+      const double dm = model.properties[static_cast<std::size_t>(part.property)].shell.dm;  // a given dm: T-1c
+      return geometry::belytschko_tsay_length(a, b, c, d) * (std::sqrt(1.0 + dm * dm) - dm) /
+             std::sqrt(mat.young / mat.density);
     }
     case ElementKind::Shell3: {  // the bar speed (T-1a), T-1c's factor for dm (S-9d)
       const auto q = static_cast<std::size_t>(part.property);
