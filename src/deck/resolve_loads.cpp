@@ -202,6 +202,25 @@ void build_secondary_nodes(const Model& m, RigidWall& w) {
   w.secondary_nodes = std::move(nodes);
 }
 
+// A wall holds a rigid body through its main node, the body's centre of mass (eq. RW-3). A secondary node that a
+// wall keeps (Ikrem = 1) would have to turn the body about its centre, which Crumple does not do: refused rather
+// than passed through.
+void check_rigid_body_nodes_on_wall(Resolver& r, const RigidWall& w) {
+  const Model& m = r.model;
+  for (const RigidBody& b : m.rigid_bodies) {
+    if (b.ikrem == 0 || b.node_group < 0) continue;
+    for (std::int32_t n : nodes_of(m, b.node_group))
+      if (n != b.main_node && std::binary_search(w.secondary_nodes.begin(), w.secondary_nodes.end(), n)) {
+        r.context.unsupported(DeckError(b.where, fmt::format("/RBODY/{}", b.user_id), "Ikrem",
+                                        fmt::format("0 (its secondary nodes off the rigid walls; {} holds node {}): "
+                                                    "a wall holds a rigid body through its main node only in Crumple",
+                                                    rigid_wall_keyword(w), m.nodes.user_id[static_cast<std::size_t>(n)]),
+                                        "1"));
+        break;
+      }
+  }
+}
+
 void resolve_rigid_walls(Resolver& r) {
   Model& m = r.model;
   const auto& ix = m.index;
@@ -260,7 +279,10 @@ void resolve_load_references(Resolver& r) {
   resolve_rigid_walls(r);
   // Secondary sets need every group and body resolved; skip them when a reference is missing.
   if (!r.errors.empty()) return;
-  for (RigidWall& w : m.rigid_walls) build_secondary_nodes(m, w);
+  for (RigidWall& w : m.rigid_walls) {
+    build_secondary_nodes(m, w);
+    check_rigid_body_nodes_on_wall(r, w);
+  }
 }
 
 }  // namespace crumple::deck

@@ -63,6 +63,32 @@ std::uint8_t free_translation_dofs(const Model& m, const SolverState& s, std::in
 
 Vec3 node_velocity(const NodalState& n, std::size_t k) { return {n.vx[k], n.vy[k], n.vz[k]}; }
 
+// The rigid body whose main node k is (its centre of mass, eq. RB-0), or null: a wall that holds it holds the body,
+// whose mass takes the impulse (eq. RW-3).
+RigidBodyState* body_of_main_node(SolverState& s, std::size_t k) {
+  const std::int32_t owner = s.rigid_owner[k];
+  if (owner < 0) return nullptr;
+  RigidBodyState& b = s.bodies[static_cast<std::size_t>(owner)];
+  return b.active && static_cast<std::size_t>(b.main_node) == k ? &b : nullptr;
+}
+
+// The mass a wall's held node brings to the impulse: its own, or its body's.
+double held_mass(SolverState& s, std::size_t k) {
+  const RigidBodyState* body = body_of_main_node(s, k);
+  return body != nullptr ? body->mass : s.nodes.mass[k];
+}
+
+// The body of a held main node moves with it: its translation changes by the node's, its secondary nodes with it
+// (their spin about the centre is the body's own, untouched by a force through the centre).
+void move_body_with_main_node(SolverState& s, RigidBodyState& b, const Vec3& change) {
+  NodalState& n = s.nodes;
+  for (std::size_t d = 0; d < 3; ++d) b.velocity[d] += change[d];
+  for (std::int32_t node : b.secondary) {
+    const auto k = static_cast<std::size_t>(node);
+    n.vx[k] += change[0], n.vy[k] += change[1], n.vz[k] += change[2];
+  }
+}
+
 // Whether the wall moving at `wall_velocity` holds node k moving at `velocity` over the step (eq. RW-1): it would
 // cross the wall, or it already touches a tied wall. Gives the normal and the normal velocity relative to the wall
 // it ends with.
@@ -110,12 +136,13 @@ Vec3 exchanged_velocity(const RigidWall& w, RigidWallState& st, SolverState& s, 
       st.active[i] = held;
       if (!held) continue;
       const Eigen::Vector3d v(n.vx[k], n.vy[k], n.vz[k]), nn(normal[0], normal[1], normal[2]);
+      const double mass = held_mass(s, k);
       Eigen::Matrix3d a_node;
       Eigen::Vector3d b_node;
       if (st.tied[i] != 0 || w.slide == WallSliding::Tied) {
-        a_node = n.mass[k] * Eigen::Matrix3d::Identity(), b_node = n.mass[k] * v;
+        a_node = mass * Eigen::Matrix3d::Identity(), b_node = mass * v;
       } else {
-        a_node = n.mass[k] * nn * nn.transpose(), b_node = n.mass[k] * (v.dot(nn) - vn_new) * nn;
+        a_node = mass * nn * nn.transpose(), b_node = mass * (v.dot(nn) - vn_new) * nn;
       }
       for (int r = 0; r < 3; ++r) {
         for (int c = 0; c < 3; ++c) sums[static_cast<std::size_t>(3 * r + c)].add(a_node(r, c));
@@ -249,10 +276,13 @@ void apply_rigid_walls(const Model& m, SolverState& s, double dt_average, double
         for (std::size_t c = 0; c < 3; ++c) v[c] = wall_velocity[c] + tangential[c] + normal[c] * vn_new;
       }
       n.vx[k] = v[0], n.vy[k] = v[1], n.vz[k] = v[2];
+      // A body's main node: every domain advances it alike, and moves the body with it.
+      if (RigidBodyState* body = body_of_main_node(s, k)) move_body_with_main_node(s, *body, v - before);
       if (!s.domain.owns(k)) continue;
-      for (std::size_t c = 0; c < 3; ++c) sums[c].add(n.mass[k] * (v[c] - before[c]));
+      const double mass = held_mass(s, k);
+      for (std::size_t c = 0; c < 3; ++c) sums[c].add(mass * (v[c] - before[c]));
       // Its part along the wall's normal at the node, for the normal and tangential wall forces of the outputs.
-      const double along_normal = n.mass[k] * dot(v - before, normal);
+      const double along_normal = mass * dot(v - before, normal);
       for (std::size_t c = 0; c < 3; ++c) sums[3 + c].add(along_normal * normal[c]);
     }
     if (s.selective_mass.solved_cycle == s.cycle) add_solved_reactions(s, st, dt_average, sums);

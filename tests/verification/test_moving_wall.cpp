@@ -185,5 +185,41 @@ TEST(MovingWall, DrivenWallKeepsItsImposedVelocityAndCarriesTiedNodes) {
   EXPECT_LT(worst_tied, 1e-12 * v);
 }
 
+// A wall whose secondary node is a rigid body's main node holds the body (eq. RW-3): a plate made rigid, at rest,
+// struck face-on by a moving wall of the plate's mass at v0, through its main node only (its secondary nodes are
+// off the wall, Ikrem = 0). A perfectly plastic impact of two equal masses: both go on at v0 / 2, momentum kept.
+// Before, the wall went through the main node and the body never moved (issue 27).
+TEST(MovingWall, HoldsARigidBodyThroughItsMainNode) {
+  Strip plate;
+  plate.nx = 4, plate.ny = 4, plate.length = 0.1, plate.width = 0.1;
+  const double plate_mass = kRho * kThick * 0.01, v0 = 2.0, gap = 1e-4;
+  WallCard w;
+  w.node = 9999, w.group = 2, w.mass = plate_mass, w.velocity = {0.0, 0.0, -v0};
+  w.m1 = {0.05, 0.05, gap - 1.0};  // the plane faces down, its normal from M to M1 along -z
+  const std::string body = "/RBODY/1\nplate made rigid\n" + I(1000) + I(0) + I(0) + I(0) + R(0.0) + I(1) + I(0) +
+                           I(0) + I(0) + "\n" + R(0.0) + "\n" + R(0.0) + "\n" + I(0) + I(0) + "\n";
+  const std::string starter = node_cards(plate.nodes()) + shell_cards(1, plate.shells()) + part_card() +
+                              shell_property(kThick, 3) + elastic_material(kRho, kE, 0.3) +
+                              node_cards({{1000, 0.05, 0.05, 0.0}, {9999, 0.05, 0.05, gap}}) +
+                              node_group(1, plate.all()) + node_group(2, {1000}) + body + moving_wall(1, w);
+  double body_vz = 0.0, wall_vz = 0.0, momentum_first = 0.0, worst_momentum = 0.0;
+  bool first = true;
+  test::TempDir dir;
+  // Every element is in the body: /DTIX gives the step (1e-6 s).
+  const RunResult run = run_deck(dir, starter, 1e-3, 1e-5, [&](const Model& m, const SolverState& s) {
+    body_vz = s.bodies[0].velocity[2];
+    wall_vz = s.nodes.vz[node_index(m, 9999)];
+    const double p = s.bodies[0].mass * body_vz + s.nodes.mass[node_index(m, 9999)] * wall_vz;
+    if (first) momentum_first = p, first = false;
+    worst_momentum = std::max(worst_momentum, std::abs(p - momentum_first) / (plate_mass * v0));
+  }, "/DTIX\n0 1e-6\n");
+  ASSERT_EQ(run.summary.status, RunStatus::Normal) << run.summary.message;
+  EXPECT_NEAR(body_vz, -0.5 * v0, 1e-9 * v0) << "the body moves on with the wall";
+  EXPECT_NEAR(wall_vz, -0.5 * v0, 1e-9 * v0);
+  EXPECT_LT(worst_momentum, 1e-12);
+  std::printf("[moving wall on a rigid body] body vz %.6f  wall vz %.6f  momentum %.1e  energy error %.3f %%\n", body_vz,
+              wall_vz, worst_momentum, run.summary.energy.error_percent);
+}
+
 }  // namespace
 }  // namespace crumple::verification
