@@ -746,6 +746,7 @@ OutputSchedule::OutputSchedule(const RunControl& rc, double time, long long max)
   if (rc.anim_interval > 0.0)
     next_frame = time > rc.anim_start ? next_output_time(time, rc.anim_start, rc.anim_interval) : rc.anim_start;
   if (rc.history_interval > 0.0) next_history = time > 0.0 ? next_output_time(time, 0.0, rc.history_interval) : 0.0;
+  if (rc.history_every_cycle()) next_history = 0.0;  // due at every cycle
 }
 
 void keep_requested_results(const RunControl& rc, SolverState& s) {
@@ -857,7 +858,8 @@ bool stop_requested(const std::atomic<int>* request, SolverState& s, RunEvents& 
 void advance_schedule(const Model& m, const SolverState& s, const MonitorDue& due, OutputSchedule& schedule) {
   const RunControl& rc = m.run;
   if (due.frame) schedule.next_frame = next_output_time(s.time, rc.anim_start, rc.anim_interval);
-  if (due.history) schedule.next_history = next_output_time(s.time, 0.0, rc.history_interval);
+  if (due.history && !rc.history_every_cycle())
+    schedule.next_history = next_output_time(s.time, 0.0, rc.history_interval);
 }
 
 }  // namespace crumple::solver

@@ -102,6 +102,11 @@ TEST(EngineKeywords, AbsentCardsLeaveDefaults) {
   EXPECT_TRUE(run.anim_element_fields.empty());
   // /TFILE without a type writes the default IEEE binary format.
   EXPECT_EQ(run_of(kRun + "/TFILE\n1e-4\n").history_format, 4);
+  EXPECT_FALSE(run_of(kRun + "/TFILE\n1e-4\n").history_every_cycle());
+  // dT_his 0: a row every cycle, as the reference writes its T01 file (one record a cycle, measured); no /TFILE:
+  // no rows.
+  EXPECT_TRUE(run_of(kRun + "/TFILE\n0\n").history_every_cycle());
+  EXPECT_FALSE(run.history_every_cycle());
 }
 
 // Engine values are in the starter's input units: a g-mm-ms deck gives times in ms.
@@ -303,7 +308,7 @@ TEST(EngineKeywords, MalformedCardsAreErrorsNamingTheField) {
       {kRun + "/DT/NODA/CST/1\n0.5 1e-6\n", "field Iflag"},
       {kRun + "/DT/SH_3N/FOO\n0.5\n", "field Keyword3"},
       {kRun + "/DT/BRICK/CST/1\n0.5\n", "field Iflag"},
-      {kRun + "/TFILE\n0\n", "field dT_his"},
+      {kRun + "/TFILE\n-1\n", "field dT_his"},
       {kRun + "/TFILE/7\n1e-4\n", "field type"},
       {kRun + "/ANIM/DT\n0\n", "field Tfreq"},
       {kRun + "/ANIM/DT\n0 -1\n", "field Tfreq"},

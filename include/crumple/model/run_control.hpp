@@ -60,8 +60,9 @@ struct RunControl {
   std::string run_name;
   int run_number = 1;
   double end_time = 0.0;        // [T]
-  double history_interval = 0.0;   // /TFILE [T] (0: no time-history file)
+  double history_interval = 0.0;   // /TFILE [T] (0: every cycle when /TFILE is given, as the reference writes)
   int history_format = 0;          // /TFILE/type: 1 binary, 2 coded ASCII, 3 ASCII, 4 IEEE 32-bit (0: no /TFILE)
+  bool history_every_cycle() const { return history_format != 0 && history_interval == 0.0; }
   double anim_start = 0.0, anim_interval = 0.0;  // /ANIM/DT [T] (interval 0: no field output)
   std::vector<std::string> anim_element_fields, anim_vector_fields, anim_nodal_fields;  // each once, upper case
   FrameRequests anim;

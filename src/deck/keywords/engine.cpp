@@ -103,6 +103,7 @@ void at_most(const Line& line, std::size_t count, std::string_view fields) {
 }
 
 bool positive(double v) { return v > 0.0; }
+bool non_negative(double v) { return v >= 0.0; }
 bool not_negative(double v) { return v >= 0.0; }
 bool unit_interval(double v) { return v >= 0.0 && v <= 1.0; }
 
@@ -154,7 +155,9 @@ void read_tfile(CardReader& reader, DeckContext& context) {
     reader.fail("type", "0 to 4 (1 binary, 2 coded ASCII, 3 ASCII, 4 IEEE binary)", fmt::format("{}", format));
   const Line line = required_line(reader, "dT_his");
   at_most(line, 1, "dT_his");
-  run.history_interval = checked_real(line, 0, "dT_his", std::nullopt, positive, "a positive time-history interval");
+  // 0: a row every cycle (the reference's, measured: its T01 file has one record per cycle).
+  run.history_interval = checked_real(line, 0, "dT_his", std::nullopt, non_negative,
+                                      "a time-history interval >= 0 (0: every cycle)");
   reader.finish();
   run.history_format = format == 0 ? 4 : static_cast<int>(format);  // blank or 0: IEEE binary (manual)
   if (format != 0)
