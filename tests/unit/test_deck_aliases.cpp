@@ -88,3 +88,19 @@ TEST(DeckAliases, OutputRequestsCrumpleDoesNotWrite) {
     EXPECT_FALSE(noted(d, written, SkipKind::OutputOnly)) << written;
   EXPECT_TRUE(d.model.run.anim.nodal_mass && d.model.run.anim.acceleration);
 }
+
+// A 0 in the columns of /ANALY and /IOFLAG that no input version uses (11-20) is read as blank, as decks written by
+// other tools put it in every field; other text there stays an error (issue 27).
+TEST(DeckAliases, ZeroInAnUnusedColumnOfAnalyAndIoflag) {
+  const std::string cards = "/ANALY\n" + I(0) + I(0) + I(0) + I(0) + "\n/IOFLAG\n" + I(0) + I(0) + I(0) + I(0) + "\n";
+  const Deck d = read_files(test::begin_card() + test::plate_cards() + cards + "/END\n", test::engine_cards());
+  EXPECT_TRUE(noted(d, "/IOFLAG", SkipKind::OutputOnly));
+  for (const std::string& card : {std::string("/ANALY\n"), std::string("/IOFLAG\n")}) {
+    try {
+      read_files(test::begin_card() + test::plate_cards() + card + I(0) + I(7) + "\n/END\n", test::engine_cards());
+      ADD_FAILURE() << card << "a 7 in columns 11-20 must be refused";
+    } catch (const DeckErrors& e) {
+      EXPECT_TRUE(contains(e.what(), "blank or 0 in columns 11-20")) << e.what();
+    }
+  }
+}

@@ -89,6 +89,13 @@ void performance_card(CardReader& reader, DeckContext& context) {
                SkipKind::PerformanceHint);
 }
 
+// A 10-column field no input version gives a meaning here: blank, or the 0 that decks written by other tools
+// put in every field; anything else is refused (issue 27).
+void unused_columns(const Line& line, int column, std::string_view expected) {
+  const std::string text = line.text(column, 10);
+  if (!text.empty() && line.integer(column, 10, "(unused)") != 0) line.fail(column, 10, "(unused)", std::string(expected));
+}
+
 // /ANALY: N2D3D (1-10), Iparith (21-30), Isubcycle (31-40).
 void read_analy(CardReader& reader, DeckContext& context) {
   if (const auto line = optional_line(reader, "N2D3D, Iparith, Isubcycle")) {
@@ -96,7 +103,7 @@ void read_analy(CardReader& reader, DeckContext& context) {
     if (n2d3d < 0 || n2d3d > 2) line->fail(1, 10, "N2D3D", "0 (3-D), 1 (axisymmetric) or 2 (plane strain)");
     if (n2d3d != 0)
       context.unsupported(line->error(1, 10, "N2D3D", default_only("2-D analysis (axisymmetric, plane strain) is")));
-    if (!line->text(11, 10).empty()) line->fail(11, 10, "(blank)", "blank columns 11-20 (Iparith is in columns 21-30)");
+    unused_columns(*line, 11, "blank or 0 in columns 11-20 (Iparith is in columns 21-30)");
     const std::int64_t iparith = line->integer(21, 10, "Iparith");
     if (iparith < 0 || iparith > 2) line->fail(21, 10, "Iparith", "0 or 1 (parallel arithmetic on) or 2 (off)");
     const std::int64_t isub = line->integer(31, 10, "Isubcycle");
@@ -113,7 +120,7 @@ void read_analy(CardReader& reader, DeckContext& context) {
 void read_ioflag(CardReader& reader, DeckContext& context) {
   if (const auto line = optional_line(reader, "Ipri, Ioutp, OutyyFMT, Irootyy, Idrot")) {
     line->integer(1, 10, "Ipri");
-    if (!line->text(11, 10).empty()) line->fail(11, 10, "(blank)", "blank columns 11-20");
+    unused_columns(*line, 11, "blank or 0 in columns 11-20");
     line->integer(21, 10, "Igtyp");
     line->integer(31, 10, "Ioutp");
     line->integer(41, 10, "OutyyFMT");
