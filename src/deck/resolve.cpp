@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <random>
 
 #include "crumple/model/mass.hpp"
 
@@ -38,6 +39,18 @@ void check_mass(Resolver& r) {
             fmt::format("{}", m.total_mass()));
 }
 
+// /RANDOM (docs/deck-format.md): each coordinate of each node moved by Xalea (2 u - 1), u uniform in [0, 1) from a
+// 64-bit Mersenne twister seeded by Seed, so that the same deck gives the same model everywhere. The reference
+// moves its nodes the same way (each axis within +-Xalea, measured in its starter listing) with its own sequence.
+void apply_random_noise(Model& m) {
+  if (!(m.random_noise > 0.0)) return;
+  std::mt19937_64 engine(static_cast<std::uint64_t>(m.random_seed * 9007199254740992.0) ^ 0x9e3779b97f4a7c15ULL);
+  const auto uniform = [&] { return static_cast<double>(engine() >> 11) * 0x1.0p-53; };
+  for (std::size_t k = 0; k < m.nodes.size(); ++k)
+    for (std::vector<double>* axis : {&m.nodes.x, &m.nodes.y, &m.nodes.z})
+      (*axis)[k] += m.random_noise * (2.0 * uniform() - 1.0);
+}
+
 }  // namespace
 
 void Resolver::throw_if_errors() {
@@ -46,6 +59,7 @@ void Resolver::throw_if_errors() {
 
 void resolve_model(DeckContext& context, std::vector<RunControl>& continued_runs) {
   Resolver r(context);
+  apply_random_noise(context.model);
   resolve_definitions(r);
   r.throw_if_errors();  // later stages need valid nodes, parts, materials and properties
   resolve_elements(r);

@@ -104,3 +104,35 @@ TEST(DeckAliases, ZeroInAnUnusedColumnOfAnalyAndIoflag) {
     }
   }
 }
+
+// /RANDOM moves every node by up to Xalea along each axis, the same way for the same seed (issue 27; the reference
+// moves each axis within +-Xalea, measured, with its own sequence).
+TEST(DeckAliases, RandomNoiseMovesEveryNodeWithinItsAmplitude) {
+  const auto read_with = [](const std::string& random) {
+    return read_files(test::begin_card() + test::plate_cards() + random + "/END\n", test::engine_cards());
+  };
+  const Deck plain = read_with("");
+  const Deck noisy = read_with("/RANDOM\n" + R(1e-4) + R(0.3) + "\n");
+  const Deck again = read_with("/RANDOM\n" + R(1e-4) + R(0.3) + "\n");
+  const Deck other = read_with("/RANDOM\n" + R(1e-4) + R(0.7) + "\n");
+  ASSERT_EQ(noisy.model.nodes.size(), plain.model.nodes.size());
+  double largest = 0.0;
+  bool differs = false;
+  for (std::size_t k = 0; k < plain.model.nodes.size(); ++k) {
+    for (const auto axis : {&Nodes::x, &Nodes::y, &Nodes::z}) {
+      const double moved = (noisy.model.nodes.*axis)[k] - (plain.model.nodes.*axis)[k];
+      largest = std::max(largest, std::abs(moved));
+      EXPECT_EQ((noisy.model.nodes.*axis)[k], (again.model.nodes.*axis)[k]) << "the same seed, the same model";
+      differs = differs || (other.model.nodes.*axis)[k] != (noisy.model.nodes.*axis)[k];
+    }
+  }
+  EXPECT_LE(largest, 1e-4);
+  EXPECT_GT(largest, 1e-5) << "the nodes moved";
+  EXPECT_TRUE(differs) << "another seed, another model";
+  try {
+    read_with("/RANDOM\n" + R(1e-4) + R(1.0) + "\n");
+    ADD_FAILURE() << "Seed 1 is outside [0, 1)";
+  } catch (const DeckErrors& e) {
+    EXPECT_TRUE(contains(e.what(), "field Seed")) << e.what();
+  }
+}

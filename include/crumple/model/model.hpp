@@ -64,6 +64,9 @@ struct Model {
   std::vector<Accelerometer> accelerometers;
 
   RunControl run;
+  // /RANDOM: every node's coordinates moved by up to `random_noise` [L] in each direction, from `random_seed`
+  // (docs/deck-format.md, "/RANDOM"); 0: none.
+  double random_noise = 0.0, random_seed = 0.0;
   // /AMS: the parts /DT/AMS scales (the whole model: the only selection Crumple reads); `ams_where` its card.
   bool ams_selected = false;
   SourceLocation ams_where;

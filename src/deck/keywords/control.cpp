@@ -153,12 +153,18 @@ void read_performance_card(CardReader& reader, DeckContext& context) {
   performance_card(reader, context);
 }
 
-// /RANDOM: Xalea (1-20), Seed (21-40). A non-zero noise moves every node by a random amount: a model change.
+// /RANDOM: Xalea (1-20), Seed (21-40): every node moved by up to Xalea along each axis (resolve.cpp). The
+// /RANDOM/GRNOD/id form, noise on one group's nodes, is refused with a noise.
 void read_random(CardReader& reader, DeckContext& context) {
+  const bool on_group = reader.card().path.size() > 1;
   if (const auto line = optional_line(reader, "Xalea, Seed")) {
-    if (line->real(1, 20, "Xalea", dim::length) != 0.0)
-      context.unsupported(line->error(1, 20, "Xalea", default_only("random noise on the node coordinates is")));
-    line->real(21, 20, "Seed", dim::none);  // used only with a noise
+    const double noise = line->real(1, 20, "Xalea", dim::length);
+    if (noise < 0.0) line->fail(1, 20, "Xalea", "a noise amplitude >= 0");
+    const double seed = line->real(21, 20, "Seed", dim::none);
+    if (seed < 0.0 || seed >= 1.0) line->fail(21, 20, "Seed", "a seed in [0, 1)");
+    if (noise != 0.0 && on_group)
+      context.unsupported(line->error(1, 20, "Xalea", default_only("random noise on a node group (/RANDOM/GRNOD) is")));
+    context.model.random_noise = noise, context.model.random_seed = seed;
   }
 }
 
