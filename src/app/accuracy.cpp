@@ -85,10 +85,14 @@ void scale_smallest_elements(const Model& m, RunControl& run, const std::string&
   if (run.dt_ams.given) return;
   changes.push_back(fmt::format("/DT/NODA/CST {:g} {:.4g}: the step is the nodes' at scale {:g} instead of the "
                                 "elements' at /DT scale {:g}, and mass is added where it would fall below {:g} times "
-                                "the step the {:g} % smallest elements start with ({:.4g}){}", kDraftNodalScale, target,
+                                "the step the {:g} % smallest elements start with ({:.4g}){}{}", kDraftNodalScale, target,
                                 kDraftNodalScale, deck_scale, kDraftStepShare, 100.0 * kDraftMassScaledShare,
-                                deck_scale * quantile, where));
+                                deck_scale * quantile,
+                                m.type7_interfaces.empty() ? "; without contact, the elements' step where it is larger"
+                                                           : "",
+                                where));
   run.dt_nodal_cst.scale = kDraftNodalScale, run.dt_nodal_cst.minimum = target, run.dt_nodal_cst.given = true;
+  run.nodal_step_at_least_elements = m.type7_interfaces.empty();  // eq. T-3c
 }
 
 // fine: the shells' points through the thickness, at least `points`. N = 0 (resultant plasticity) and N = 1 (a

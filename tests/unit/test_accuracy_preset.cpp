@@ -94,6 +94,7 @@ TEST(AccuracyPreset, DraftKeepsThePointsAndHoldsAUniformMeshAtSixTenthsOfItsFirs
   EXPECT_DOUBLE_EQ(cst.scale, 0.67);
   EXPECT_NEAR(cst.minimum, 0.6 * 0.9 * step, 1e-9 * step);
   EXPECT_DOUBLE_EQ(run.energy_error_warning, 5.0);
+  EXPECT_TRUE(run.nodal_step_at_least_elements) << "no contact: the elements' step where larger (T-3c)";
   ASSERT_EQ(changes.size(), 1u);
   EXPECT_TRUE(any_contains(changes, "--accuracy draft: /DT/NODA/CST 0.67"));
 }
@@ -133,6 +134,9 @@ TEST(AccuracyPreset, FineAnticipatesContactEntryWhenThereIsContact) {
   Read standard(strip(4, 3, false) + contact, kEngine);
   EXPECT_TRUE(standard.apply(app::AccuracyPreset::Standard).empty());
   EXPECT_EQ(standard.deck.model.run.contact_entry_window, 0);
+  Read draft(strip(4, 3, false) + contact, kEngine);
+  draft.apply(app::AccuracyPreset::Draft);
+  EXPECT_FALSE(draft.deck.model.run.nodal_step_at_least_elements) << "a contact's stiffness is in the nodal step only";
   Read fine(strip(4, 3, false) + contact, kEngine);
   EXPECT_TRUE(any_contains(fine.apply(app::AccuracyPreset::Fine), "TYPE7 contact steps count K0 from 3 steps"));
   EXPECT_EQ(fine.deck.model.run.contact_entry_window, app::kFineContactEntryWindow);
