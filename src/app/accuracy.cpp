@@ -76,7 +76,7 @@ double element_step_quantile(const Model& m, double share) {
 // held with a margin to their stability (the nodal estimate is not a bound), and the rails and tubes of
 // docs/performance.md ("The presets") stay within 5 % of the reference. A deck that already scales to a larger
 // step, or selectively (its /DT/AMS holds the elements, time-step.md SM-0), keeps its own.
-void scale_smallest_elements(const Model& m, RunControl& run, const std::string& where, std::vector<std::string>& changes) {
+void scale_nodal_mass(const Model& m, RunControl& run, const std::string& where, std::vector<std::string>& changes) {
   const double quantile = element_step_quantile(m, kDraftMassScaledShare);
   if (!(quantile > 0.0)) return;  // no element
   const double deck_scale = run.dt.scale > 0.0 ? run.dt.scale : kDefaultStepScale;
@@ -137,7 +137,7 @@ std::vector<std::string> apply_accuracy_preset(AccuracyPreset preset, Model& mod
       remove_mass_scaling(*runs[k], where, changes);
       anticipate_contact_entry(model, *runs[k], where, changes);
     } else {
-      scale_smallest_elements(model, *runs[k], where, changes);
+      scale_nodal_mass(model, *runs[k], where, changes);
     }
   }
   if (preset == AccuracyPreset::Fine) raise_shell_points(model, kFineShellPoints, changes);

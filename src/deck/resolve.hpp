@@ -78,8 +78,6 @@ void resolve_elements(Resolver& r);     // connectivity, part order, groups, geo
 void resolve_sets(Resolver& r);         // node and element groups, surfaces, subsets
 // A rigid wall's keyword for its messages, "/RWALL/PLANE/3".
 std::string rigid_wall_keyword(const RigidWall& w);
-std::string_view rigid_wall_shape_name(RigidWallShape shape);
-
 void resolve_load_references(Resolver& r);    // loads, imposed motion, added mass, rigid walls and bodies
 void resolve_output_references(Resolver& r, std::vector<RunControl>& continued_runs);  // interfaces, sections, time histories, run control
 

@@ -13,6 +13,15 @@ std::string_view imposed_keyword(ImposedKind kind) {
   return kind == ImposedKind::Velocity ? "/IMPVEL" : kind == ImposedKind::Displacement ? "/IMPDISP" : "/CLOAD";
 }
 
+std::string_view rigid_wall_shape_name(RigidWallShape shape) {
+  switch (shape) {
+    case RigidWallShape::Plane: return "PLANE";
+    case RigidWallShape::Cylinder: return "CYL";
+    case RigidWallShape::Sphere: return "SPHER";
+    case RigidWallShape::Parallelogram: return "PARAL";
+  }
+  return "";
+}
 
 const std::vector<std::int32_t>& nodes_of(const Model& m, std::int32_t group) {
   return m.node_groups[static_cast<std::size_t>(group)].nodes;
@@ -249,16 +258,6 @@ void resolve_rigid_walls(Resolver& r) {
 
 std::string rigid_wall_keyword(const RigidWall& w) {
   return fmt::format("/RWALL/{}/{}", rigid_wall_shape_name(w.shape), w.user_id);
-}
-
-std::string_view rigid_wall_shape_name(RigidWallShape shape) {
-  switch (shape) {
-    case RigidWallShape::Plane: return "PLANE";
-    case RigidWallShape::Cylinder: return "CYL";
-    case RigidWallShape::Sphere: return "SPHER";
-    case RigidWallShape::Parallelogram: return "PARAL";
-  }
-  return "";
 }
 
 void resolve_load_references(Resolver& r) {

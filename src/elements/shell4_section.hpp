@@ -12,6 +12,7 @@
 #include "crumple/materials/resultant_plasticity.hpp"
 #include "crumple/core/geometry.hpp"
 #include "crumple/core/vec3.hpp"
+#include "crumple/model/properties.hpp"
 
 namespace crumple::shell_section {
 
@@ -217,9 +218,7 @@ inline MembraneForces membrane_damping(double dm, double density, double wave_sp
   const double eta = std::numbers::sqrt2 * dm * density * wave_speed * std::sqrt(area) * t;
   return {eta * (dxx + 0.5 * dyy), eta * (dyy + 0.5 * dxx), eta * gxy / 3.0};
 }
-// The factor a viscous fraction nu takes off an element's critical step, sqrt(1 + nu^2) - nu (docs/theory/
-// time-step.md, eq. T-1c): the stable step of a damped oscillator, 0.98511 for nu = 0.015.
-inline double damped_step_factor(double nu) { return std::sqrt(1.0 + nu * nu) - nu; }
+using crumple::damped_step_factor;  // eq. T-1c (model/properties.hpp)
 // The viscous fraction that shortens a one-point shell's step (eq. T-1c): dm, and for the QEPH shell also dn.
 inline double step_damping(const ShellGroupParameters& p) {
   return p.physical_hourglass ? std::max(p.membrane_damping, p.numerical_damping) : p.membrane_damping;

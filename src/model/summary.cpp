@@ -22,20 +22,19 @@ double initial_element_time_step(const Model& model, ElementKind kind, std::size
       if (ishell == 24) {
         const ShellSection& s = model.properties[static_cast<std::size_t>(part.property)].shell;
         const double nu = std::max(qeph_membrane_damping(s, mat.law == MaterialLaw::Tabulated), qeph_numerical_damping(s));
-        return geometry::qeph_length(a, b, c, d) * (std::sqrt(1.0 + nu * nu) - nu) / std::sqrt(mat.young / mat.density);
+        return geometry::qeph_length(a, b, c, d) * damped_step_factor(nu) / std::sqrt(mat.young / mat.density);
       }
       if (ishell == 12)
         return geometry::quad_characteristic_length(a, b, c, d) /
                std::sqrt(mat.young / (mat.density * (1.0 - mat.poisson * mat.poisson)));
       const double dm = model.properties[static_cast<std::size_t>(part.property)].shell.dm;  // a given dm: T-1c
-      return geometry::belytschko_tsay_length(a, b, c, d) * (std::sqrt(1.0 + dm * dm) - dm) /
-             std::sqrt(mat.young / mat.density);
+      return geometry::belytschko_tsay_length(a, b, c, d) * damped_step_factor(dm) / std::sqrt(mat.young / mat.density);
     }
     case ElementKind::Shell3: {  // the bar speed (T-1a), T-1c's factor for dm (S-9d)
       const auto q = static_cast<std::size_t>(part.property);
       const double nu = triangle_membrane_damping(model.properties[q].shell, model.formulations[q]);
       return geometry::triangle_characteristic_length(x.position(n[0]), x.position(n[1]), x.position(n[2])) *
-             (std::sqrt(1.0 + nu * nu) - nu) / std::sqrt(mat.young / mat.density);
+             damped_step_factor(nu) / std::sqrt(mat.young / mat.density);
     }
     case ElementKind::Brick8: {
       const double c = std::sqrt((mat.bulk_modulus() + 4.0 / 3.0 * mat.shear_modulus()) / mat.density);

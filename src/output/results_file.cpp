@@ -130,6 +130,17 @@ std::vector<HistoryColumn> global_columns(const char* series, const std::vector<
 
 }  // namespace
 
+// Texts for an HDF5 string of the UTF-8 type: each made valid (a title cut inside a character is not), and the
+// pointers the C API takes.
+struct Utf8Texts {
+  std::vector<std::string> valid;
+  std::vector<const char*> pointers;
+  explicit Utf8Texts(const std::vector<std::string>& values) {
+    for (const std::string& v : values) valid.push_back(valid_utf8(v));
+    for (const std::string& v : valid) pointers.push_back(v.c_str());
+  }
+};
+
 struct ResultsFile::Impl {
   std::filesystem::path path, xdmf_path;
   std::string h5_name;  // file name of the .h5 as the XDMF file refers to it (same folder)
@@ -245,12 +256,9 @@ struct ResultsFile::Impl {
     Handle attr(check(H5Acreate2(location, name, type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
                       std::string("cannot create attribute ") + name),
                 H5Aclose);
-    std::vector<std::string> valid;
-    for (const std::string& v : values) valid.push_back(valid_utf8(v));
-    std::vector<const char*> texts;
-    for (const std::string& v : valid) texts.push_back(v.c_str());
+    const Utf8Texts texts(values);
     if (n > 0)
-      check_status(H5Awrite(attr.get(), type.get(), texts.data()), std::string("cannot write attribute ") + name);
+      check_status(H5Awrite(attr.get(), type.get(), texts.pointers.data()), std::string("cannot write attribute ") + name);
   }
 
   void string_dataset(hid_t location, const std::string& name, const std::vector<std::string>& values) const {
@@ -261,12 +269,9 @@ struct ResultsFile::Impl {
                                 H5P_DEFAULT),
                      "cannot create dataset " + name),
                H5Dclose);
-    std::vector<std::string> valid;
-    for (const std::string& s : values) valid.push_back(valid_utf8(s));
-    std::vector<const char*> texts;
-    for (const std::string& s : valid) texts.push_back(s.c_str());
+    const Utf8Texts texts(values);
     if (n > 0)
-      check_status(H5Dwrite(set.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, texts.data()),
+      check_status(H5Dwrite(set.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, texts.pointers.data()),
                    "cannot write dataset " + name);
   }
 

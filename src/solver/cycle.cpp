@@ -607,7 +607,7 @@ double choose_time_step(const Model& m, SolverState& s, RunEvents& events, StepB
   if (rc.dt_nodal_cst.given) {
     const NodalStep nodal = nodal_time_step(m, s);
     // Without contact the elements' step is stable for any added mass (it only lowers the frequencies), eq. T-3c.
-    const bool elements_bound = rc.nodal_step_at_least_elements && m.type7_interfaces.empty() && bound.dt > nodal.dt;
+    const bool elements_bound = rc.nodal_step_at_least_elements && bound.dt > nodal.dt;
     if (nodal.node >= 0 && !elements_bound) {
       bound.dt = nodal.dt, bound.control = StepControl::node(nodal.node);
       if (bound.contact_dt < bound.dt) bound.dt = bound.contact_dt, bound.control = bound.contact_control;

@@ -89,14 +89,11 @@ void setup_shells(const Model& m, SolverState& s, ElementKind kind) {
     if (p.physical_hourglass) {
       p.membrane_damping = qeph_membrane_damping(prop.shell, mat.law == MaterialLaw::Tabulated);
       p.numerical_damping = qeph_numerical_damping(prop.shell);
-    } else if (kind == ElementKind::Shell4 && !p.fully_integrated && prop.shell.dm > 0.0) {
+    } else {
       // A dm given acts on the Belytschko-Tsay shells too (S-9d; measured on the reference, shell4.md "Probes").
-      p.membrane_damping = prop.shell.dm;
+      if (kind == ElementKind::Shell4 && !p.fully_integrated) p.membrane_damping = prop.shell.dm;
       if (prop.shell.dn > 0.0) p.numerical_damping = prop.shell.dn;
-    } else if (prop.shell.dn > 0.0) {
-      p.numerical_damping = prop.shell.dn;
-    } else if (p.fully_integrated) {
-      p.numerical_damping = kDefaultQbatDamping;
+      else if (p.fully_integrated) p.numerical_damping = kDefaultQbatDamping;
     }
     // Ishell 12 keeps a section per Gauss point (docs/theory/shell4.md, eq. Q-2).
     const int sections = p.fully_integrated ? 4 : 1;

@@ -1,6 +1,7 @@
 #pragma once
 // Properties (/PROP) and the global element defaults (/DEF_SHELL, /DEF_SOLID). The flags keep the values the
 // deck gave (0 = default); the model build resolves them into the effective formulation fields.
+#include <cmath>
 #include <cstdint>
 #include <string>
 
@@ -74,6 +75,10 @@ struct ResolvedFormulation {
   int n_points = 0; // shells: through-thickness points; 0 = global (stress-resultant) plasticity
   int iplas = 2;    // shells, plastic points: 1 the iterative (exact) plane-stress return, 2 the radial return
 };
+
+// The factor a viscous fraction nu takes off an element's critical step, sqrt(1 + nu^2) - nu (docs/theory/
+// time-step.md, eq. T-1c): the stable step of a damped oscillator, 0.98511 for nu = 0.015.
+inline double damped_step_factor(double nu) { return std::sqrt(1.0 + nu * nu) - nu; }
 
 // The 3-node shell's membrane damping dm (docs/theory/shell4.md, S-9d): as given; blank, 0.015 when the property's
 // 4-node formulation resolves to QEPH (Ishell 24) and 0 otherwise, as the reference runs it.

@@ -103,7 +103,6 @@ void at_most(const Line& line, std::size_t count, std::string_view fields) {
 }
 
 bool positive(double v) { return v > 0.0; }
-bool non_negative(double v) { return v >= 0.0; }
 bool not_negative(double v) { return v >= 0.0; }
 bool unit_interval(double v) { return v >= 0.0 && v <= 1.0; }
 
@@ -156,7 +155,7 @@ void read_tfile(CardReader& reader, DeckContext& context) {
   const Line line = required_line(reader, "dT_his");
   at_most(line, 1, "dT_his");
   // 0: a row every cycle (the reference's, measured: its T01 file has one record per cycle).
-  run.history_interval = checked_real(line, 0, "dT_his", std::nullopt, non_negative,
+  run.history_interval = checked_real(line, 0, "dT_his", std::nullopt, not_negative,
                                       "a time-history interval >= 0 (0: every cycle)");
   reader.finish();
   run.history_format = format == 0 ? 4 : static_cast<int>(format);  // blank or 0: IEEE binary (manual)
