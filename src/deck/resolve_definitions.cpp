@@ -1,6 +1,8 @@
 // Nodes, functions, materials, properties and parts: indices, duplicates, cross-references, formulations.
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include <vector>
 
 #include "resolve.hpp"
@@ -51,10 +53,22 @@ void shell_formulation(Resolver& r, const Property& p, ResolvedFormulation& f) {
   }
 }
 
+// Whether a part that uses property `property` has a plastic material (every law Crumple has but the elastic one).
+// Isolid 18 takes its Icpre default from it, as the reference does (docs/deck-format.md, "Defaults that matter").
+bool used_with_plastic_law(const Model& m, const Property& property) {
+  const auto index = static_cast<std::int32_t>(&property - m.properties.data());
+  return std::any_of(m.parts.begin(), m.parts.end(), [&](const Part& part) {
+    return part.property == index && part.material >= 0 &&
+           m.materials[static_cast<std::size_t>(part.material)].law != MaterialLaw::Elastic;
+  });
+}
+
 // Icpre of a brick property (docs/theory/brick8.md, "Constant pressure"): 1 constant pressure, 3 none. Blank or
-// 0 takes the formulation's default: 3 for Isolid 14 and 24, 1 for 17; Radioss takes Isolid 18's from the material
-// law, which Crumple does not guess. Isolid 1, 2 (one pressure per element anyway) and 12 (bulk always at one
-// point) have no such option: Radioss sets it to 0 there and Crumple warns that the value is ignored.
+// 0 takes the formulation's default: 3 for Isolid 14 and 24, 1 for 17. Isolid 18 takes 3 with an elastic law and
+// 2 (a pressure integration that follows the plastic state) with a plastic one, as the reference resolves them
+// (measured: its starter listing's element groups, with LAW1 and with LAW2); Crumple has no Icpre 2. Isolid 1, 2
+// (one pressure per element anyway) and 12 (bulk always at one point) have no such option: Radioss sets it to 0
+// there and Crumple warns that the value is ignored.
 int solid_icpre(Resolver& r, const Property& p, int isolid, int icpre) {
   if (one_of(isolid, {1, 2, 12})) {
     if (icpre != 0)
@@ -64,24 +78,23 @@ int solid_icpre(Resolver& r, const Property& p, int isolid, int icpre) {
     return 0;
   }
   if (icpre != 0) return icpre;  // the readers accept 0, 1 and 3 only
-  if (isolid == 18)
+  if (isolid == 18 && used_with_plastic_law(r.model, p))
     r.error(p.where, keyword_of(p), "Icpre",
-            "1 or 3 for Isolid 18 (its default depends on the material law in Radioss; Crumple needs it given)",
-            "0");
+            "1 or 3 for Isolid 18 with a plastic material: 0 resolves to 2 there, as in the reference (the pressure "
+            "integration that follows plasticity), which is not supported by Crumple",
+            "0 (resolves to 2)");
   return isolid == 17 ? 1 : 3;
 }
 
 // Ismstr of a brick property (docs/theory/brick8.md, eq. B-14): 1, 3 small strain from t = 0, 2 switchable by
-// /DT/BRICK/CST, 4 never (the default). Isolid 12 runs with 4 only (Radioss switches it); Isolid 18 takes its
-// default from the material law in Radioss, which Crumple does not guess.
+// /DT/BRICK/CST, 4 never (the default). Isolid 12 runs with 4 only (Radioss switches it); Isolid 18 takes 2, as the
+// reference resolves it for the elastic and the plastic laws (measured, as Icpre).
 int solid_ismstr(Resolver& r, const Property& p, int isolid, int ismstr) {
   if (isolid == 12 && ismstr != 0 && ismstr != 4) {
     r.context.warn(p.where, keyword_of(p), fmt::format("Ismstr {} is not available with Isolid 12; set to 4", ismstr));
     return 4;
   }
-  if (isolid == 18 && ismstr == 0)
-    r.error(p.where, keyword_of(p), "Ismstr",
-            "1 to 4 for Isolid 18 (its default depends on the material law in Radioss; Crumple needs it given)", "0");
+  if (isolid == 18 && ismstr == 0) return 2;
   return ismstr == 0 ? 4 : ismstr;  // the readers accept 0 to 4 only
 }
 
@@ -249,14 +262,14 @@ void resolve_definitions(Resolver& r) {
   r.index(m.properties, m.index.properties, "/PROP");
   r.index(m.parts, m.index.parts, "/PART");
 
-  m.formulations.clear();
-  for (const Property& p : m.properties) m.formulations.push_back(formulation_of(r, p));
-
   for (Part& part : m.parts) {
     const std::string keyword = fmt::format("/PART/{}", part.user_id);
     part.property = r.find(m.index.properties, part.property_id, part.where, keyword, "prop_ID", "property");
     part.material = r.find(m.index.materials, part.material_id, part.where, keyword, "mat_ID", "material");
   }
+  // After the parts: a default may depend on the material the property is used with (Isolid 18).
+  m.formulations.clear();
+  for (const Property& p : m.properties) m.formulations.push_back(formulation_of(r, p));
   check_shell_formulations(r);
   for (Material& mat : m.materials) {
     if (mat.law != MaterialLaw::Tabulated) continue;

@@ -52,11 +52,34 @@ void check_unique_imposed(Resolver& r, const std::vector<ImposedMotion>& imposed
   }
 }
 
+// Skews: ids, the nodes of the moving ones, and axes that exist at the start (SK-1, SK-2). A moving skew whose
+// nodes later line up has no axes; that is the deck's to avoid, as in the reference.
+void resolve_skews(Resolver& r) {
+  Model& m = r.model;
+  r.index(m.skews, m.index.skews, "/SKEW");
+  for (Skew& s : m.skews) {
+    const std::string kw = fmt::format("/SKEW/{}/{}", s.kind == SkewKind::Fixed ? "FIX" : "MOV", s.user_id);
+    if (s.kind == SkewKind::Moving) {
+      constexpr const char* kNames[3] = {"node_ID1", "node_ID2", "node_ID3"};
+      bool found = true;
+      for (int k = 0; k < 3; ++k) {
+        s.nodes[k] = r.find(m.index.nodes, s.node_ids[k], s.where, kw, kNames[k], "node");
+        found = found && s.nodes[k] >= 0;
+      }
+      if (!found) continue;
+    }
+    if (!skew_is_defined(s, m.nodes.x, m.nodes.y, m.nodes.z))
+      r.error(s.where, kw, s.kind == SkewKind::Fixed ? "X2, Y2, Z2" : "node_ID3",
+              "two non-zero directions that are not parallel (they span the skew's first two axes)",
+              s.kind == SkewKind::Fixed ? "a zero or parallel direction" : "nodes on one line, or two at one place");
+  }
+}
+
 void resolve_boundary_conditions(Resolver& r) {
   const auto& ix = r.model.index;
   for (BoundaryCondition& bc : r.model.boundary_conditions) {
     const std::string kw = fmt::format("/BCS/{}", bc.user_id);
-    r.require_zero(bc.skew_id, bc.where, kw, "skew_ID", "skew frames are");
+    bc.skew = r.find_optional(ix.skews, bc.skew_id, bc.where, kw, "skew_ID", "skew");
     bc.node_group = r.find(ix.node_groups, bc.node_group_id, bc.where, kw, "grnod_ID", "node group");
   }
 }
@@ -65,7 +88,7 @@ void resolve_imposed(Resolver& r) {
   const auto& ix = r.model.index;
   for (ImposedMotion& im : r.model.imposed) {
     const std::string kw = fmt::format("{}/{}", imposed_keyword(im.kind), im.user_id);
-    r.require_zero(im.skew_id, im.where, kw, "skew_ID", "skew frames are");
+    im.skew = r.find_optional(ix.skews, im.skew_id, im.where, kw, "skew_ID", "skew");
     r.require_zero(im.sensor_id, im.where, kw, "sensor_ID", "sensors are");
     r.require_zero(im.frame_id, im.where, kw, "frame_ID", "frames are");
     r.require_zero(im.icoor, im.where, kw, "Icoor", "cylindrical coordinates are");
@@ -78,13 +101,13 @@ void resolve_initial_conditions(Resolver& r) {
   Model& m = r.model;
   const auto& ix = m.index;
   for (InitialVelocity& iv : m.initial_velocities) {
-    const std::string kw = fmt::format("/INIVEL/TRA/{}", iv.user_id);
-    r.require_zero(iv.skew_id, iv.where, kw, "Skew_ID", "skew frames are");
+    const std::string kw = fmt::format("/INIVEL/{}/{}", iv.rotation ? "ROT" : "TRA", iv.user_id);
+    iv.skew = r.find_optional(ix.skews, iv.skew_id, iv.where, kw, "Skew_ID", "skew");
     iv.node_group = r.find(ix.node_groups, iv.node_group_id, iv.where, kw, "grnod_ID", "node group");
   }
   for (Gravity& g : m.gravity) {
     const std::string kw = fmt::format("/GRAV/{}", g.user_id);
-    r.require_zero(g.skew_id, g.where, kw, "skew_ID", "skew frames are");
+    g.skew = r.find_optional(ix.skews, g.skew_id, g.where, kw, "skew_ID", "skew");
     r.require_zero(g.sensor_id, g.where, kw, "sensor_ID", "sensors are");
     // Both are optional: no function is a constant acceleration, no group is every node.
     g.function = r.find_optional(ix.functions, g.function_id, g.where, kw, "funct_IDT", "function");
@@ -111,7 +134,7 @@ void resolve_rigid_bodies(Resolver& r) {
     RigidBody& b = m.rigid_bodies[i];
     const std::string kw = fmt::format("/RBODY/{}", b.user_id);
     r.require_zero(b.sensor_id, b.where, kw, "sensor_ID", "sensors are");
-    r.require_zero(b.skew_id, b.where, kw, "skew_ID", "skew frames are");
+    b.skew = r.find_optional(ix.skews, b.skew_id, b.where, kw, "skew_ID", "skew");
     r.require_zero(b.surface_id, b.where, kw, "surf_ID", "rigid body surfaces are");
     b.main_node = r.find(ix.nodes, b.main_node_id, b.where, kw, "RBID", "node");
     b.node_group = r.find(ix.node_groups, b.node_group_id, b.where, kw, "grnod_ID", "node group");
@@ -262,6 +285,7 @@ std::string rigid_wall_keyword(const RigidWall& w) {
 
 void resolve_load_references(Resolver& r) {
   Model& m = r.model;
+  resolve_skews(r);
   r.index(m.rigid_walls, m.index.rigid_walls, "/RWALL");
   r.index(m.rigid_bodies, m.index.rigid_bodies, "/RBODY");
   check_unique(r, m.boundary_conditions, "/BCS");

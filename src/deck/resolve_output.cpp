@@ -156,13 +156,18 @@ void resolve_output_references(Resolver& r, std::vector<RunControl>& continued_r
       s.interfaces.push_back(
           r.find(ix.interfaces, s.interface_ids[k], s.where, kw, fmt::format("int_ID{}", k + 1), "interface"));
   }
-  for (Accelerometer& a : m.accelerometers)
+  for (Accelerometer& a : m.accelerometers) {
     a.node = r.find(ix.nodes, a.node_id, a.where, fmt::format("/ACCEL/{}", a.user_id), "node_ID", "node");
+    a.skew = r.find_optional(ix.skews, a.skew_id, a.where, fmt::format("/ACCEL/{}", a.user_id), "skew_ID", "skew");
+  }
   for (TimeHistoryRequest& th : m.histories) {
     std::string_view what;
     const IdMap* map = history_map(ix, th.object, what);
     th.objects.clear();
     for (std::int64_t id : th.object_ids) th.objects.push_back(r.find(*map, id, th.where, th.keyword, "Obj_ID", what));
+    th.object_skews.clear();
+    for (std::int64_t id : th.object_skew_ids)
+      th.object_skews.push_back(r.find_optional(ix.skews, id, th.where, th.keyword, "skew_ID", "skew"));
   }
   std::vector<bool> written(m.sections.size(), false);
   for (const TimeHistoryRequest& th : m.histories)

@@ -183,6 +183,12 @@ std::string object_title(const Model& m, const TimeHistoryRequest& th, std::size
     case HistoryObject::Interface: return m.type7_interfaces[at].title;
     case HistoryObject::Section: return m.sections[at].title;
     case HistoryObject::Accelerometer: return m.accelerometers[at].title;
+    case HistoryObject::Node: {
+      // A node's curves in a skew say so in their title: the components are along the skew's axes (SK-4).
+      const std::string name = k < th.object_names.size() ? th.object_names[k] : std::string();
+      const std::int64_t skew = k < th.object_skew_ids.size() ? th.object_skew_ids[k] : 0;
+      return skew == 0 ? name : fmt::format("{}{}in skew {}", name, name.empty() ? "" : ", ", skew);
+    }
     default: return k < th.object_names.size() ? th.object_names[k] : std::string();
   }
 }
@@ -232,6 +238,17 @@ NodeValues node_values(const Model& m, const SolverState& s, const VelocityChang
   out.reaction_moment = rate_of_change(out.vr, change.free, 3, k, n.inertia[k], reaction_dt);
   out.dr = node_rotation(s.histories, k);
   return out;
+}
+
+// A node's vectors written in a skew: their components along its axes at the current positions; a position too,
+// with no origin taken off (eq. SK-4, as the reference writes them).
+NodeValues in_skew(NodeValues values, const SolverState& s, std::int32_t skew) {
+  if (skew < 0) return values;
+  const SkewAxes& axes = s.skew_axes[static_cast<std::size_t>(skew)];
+  for (Vec3* v : {&values.d, &values.v, &values.a, &values.vr, &values.ar, &values.x, &values.reaction,
+                  &values.reaction_moment, &values.dr})
+    *v = to_skew(axes, *v);
+  return values;
 }
 
 // ---- Element values.
@@ -406,7 +423,7 @@ HistoryChannels::HistoryChannels(const Model& model) : model_(model) {
 }
 
 void HistoryChannels::add_request(const TimeHistoryRequest& th) {
-  Request request{th.object, th.objects, {}};
+  Request request{th.object, th.objects, {}, th.object_skews};
   HistoryDataset d;
   d.kind = std::string(history_kind(th.object).name);
   d.keyword = th.keyword, d.id = th.user_id, d.title = th.title;
@@ -537,10 +554,15 @@ void HistoryChannels::evaluate(const SolverState& s, const VelocityChange& chang
 void HistoryChannels::evaluate(const Request& r, const SolverState& s, const VelocityChange& change,
                                const PartSums* parts, std::vector<double>& row) const {
   const Model& m = model_;
-  for (std::int32_t object : r.objects) {
+  for (std::size_t i = 0; i < r.objects.size(); ++i) {
+    const std::int32_t object = r.objects[i];
     const auto o = static_cast<std::size_t>(object);
     switch (r.object) {
-      case HistoryObject::Node: append(kNode, node_values(m, s, change, o), r.getters, row); break;
+      case HistoryObject::Node: {
+        const std::int32_t skew = r.skews.empty() ? -1 : r.skews[i];
+        append(kNode, in_skew(node_values(m, s, change, o), s, skew), r.getters, row);
+        break;
+      }
       case HistoryObject::Part: append(kPart, parts->of({object}), r.getters, row); break;
       case HistoryObject::Subset: append(kPart, parts->of(subset_parts_[o]), r.getters, row); break;
       case HistoryObject::Shell:

@@ -52,7 +52,8 @@ void setup_accelerometers(std::size_t count, HistoryIntegrals& h) {
 }
 
 void update_accelerometers(const std::vector<Accelerometer>& accelerometers, const NodalState& n,
-                           const std::array<const std::vector<double>*, 3>& before, double dt, HistoryIntegrals& h) {
+                           const std::array<const std::vector<double>*, 3>& before, double dt,
+                           const std::vector<SkewAxes>& skews, HistoryIntegrals& h) {
   if (accelerometers.empty() || !(dt > 0.0)) return;
   const std::array<const std::vector<double>*, 3> now{&n.vx, &n.vy, &n.vz};
   for (std::size_t a = 0; a < accelerometers.size(); ++a) {
@@ -60,9 +61,12 @@ void update_accelerometers(const std::vector<Accelerometer>& accelerometers, con
     const auto k = static_cast<std::size_t>(meter.node);
     const bool filtered = meter.cutoff > 0.0;
     const auto filter = filtered ? butterworth4(meter.cutoff, dt) : std::array<FilterSection, 2>{};
+    Vec3 changes{};  // a^n dt^n [L/T], in the meter's axes
+    for (std::size_t c = 0; c < 3; ++c) changes[c] = (*now[c])[k] - (*before[c])[k];
+    if (meter.skew >= 0) changes = to_skew(skews[static_cast<std::size_t>(meter.skew)], changes);
     for (std::size_t c = 0; c < 3; ++c) {
-      const double change = (*now[c])[k] - (*before[c])[k];  // a^n dt^n [L/T]
-      const double raw = change / dt;                         // a^n [L/T^2]
+      const double change = changes[c];
+      const double raw = change / dt;  // a^n [L/T^2]
       const std::size_t at = 3 * a + c;
       h.accel_velocity[at] += change;  // eq. ACC-3
       h.accel_filtered[at] = filtered ? filter_sample(filter, raw, &h.accel_memory[kMemory * at]) : raw;

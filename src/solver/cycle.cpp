@@ -131,30 +131,6 @@ long long control_group_step(const Model& m, std::size_t g, SolverState& s, RunE
 
 // Power of the /CLOAD and /GRAV loads on the mid-step velocities, times the step, into `work`: each node's terms
 // from the domain that owns it.
-void add_load_work(const Model& m, const SolverState& s, const VelocityScratch& scratch, double t, double dt_average,
-                   ExactSum& work) {
-  const NodalState& n = s.nodes;
-  const std::vector<double>* now[6] = {&n.vx, &n.vy, &n.vz, &n.wx, &n.wy, &n.wz};
-  auto mean_velocity = [&](Dof dof, std::size_t k) {
-    const auto d = static_cast<std::size_t>(dof);
-    return 0.5 * ((*now[d])[k] + scratch.before[d][k]);
-  };
-  for (const ImposedMotion& im : m.imposed) {
-    if (im.kind != ImposedKind::Force || t < im.t_start || t > im.t_stop) continue;
-    const double value = load_curve(m, im.function, im.scale_x, im.scale_y, t);
-    for (std::int32_t node : m.node_groups[static_cast<std::size_t>(im.node_group)].nodes)
-      if (s.domain.owns(static_cast<std::size_t>(node)))
-        work.add(value * mean_velocity(im.dof, static_cast<std::size_t>(node)) * dt_average);
-  }
-  for (const Gravity& g : m.gravity) {
-    const double a = load_curve(m, g.function, g.scale_x, g.scale_y, t);
-    for_each_load_node(m, g.node_group, [&](std::int32_t node) {
-      const auto k = static_cast<std::size_t>(node);
-      if (s.domain.owns(k)) work.add(n.mass[k] * a * mean_velocity(g.dof, k) * dt_average);
-    });
-  }
-}
-
 // Work of the kinematic conditions: the impulse that changed the free velocity, on the mid-step velocity, into
 // `work` (owned nodes).
 void add_constraint_work(SolverState& s, const VelocityScratch& scratch, ExactSum& work) {
@@ -707,7 +683,7 @@ void apply_constraints(const Model& m, SolverState& s, VelocityScratch& scratch,
   // loads' and conditions' work, then each interface's contact work.
   std::vector<ExactSum>& work = s.reducer.sums;
   work.assign(1 + s.contact.interfaces.size(), ExactSum{});
-  add_load_work(m, s, scratch, s.time, dt_average, work[0]);
+  add_load_work(m, s, scratch.before, s.time, dt_average, work[0]);
   add_constraint_work(s, scratch, work[0]);
   if (!s.contact.interfaces.empty())
     contact::add_contact_work(s.contact, n, scratch.before.data(), s.domain.node_owner, s.domain.index, work.data() + 1);
@@ -719,7 +695,7 @@ void apply_constraints(const Model& m, SolverState& s, VelocityScratch& scratch,
   record_acceleration(s, scratch, dt_average);
   // /ACCEL: only a deck with accelerometers has any (a loop over them, not over the nodes).
   update_accelerometers(m.accelerometers, n, {&scratch.before[0], &scratch.before[1], &scratch.before[2]}, dt_average,
-                        s.histories);
+                        s.skew_axes, s.histories);
   // /TH/SECTIO WORK: only a deck that asks it (a loop over the sections' elements, not over the model).
   add_section_work(m, s, scratch.before, dt_average);
 }

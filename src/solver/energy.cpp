@@ -84,11 +84,17 @@ std::pair<double, double> kinetic_energy(SolverState& s, bool whole_model) {
   // 1/2 w . I w of the nodal masses about the centre (docs/theory/rigid-bodies.md, RB-7). The total is unchanged.
   // The inertia the card adds (Jxx..Jxz, in the body frame) spins with the body: 1/2 w . R J R^T w.
   for (const RigidBodyState& b : s.bodies) {
+    const auto& R = b.rotation;
     if (b.active) {
       const double spin = relative_kinetic_energy(s, b, whole_model);
       translational -= spin, rotational += spin;
+      // The nodes' sum holds v . (w x R S) when the secondary nodes' mass centre is not the body's centre (ICoG
+      // 1 with a main node's mass off the centre, ICoG 3): the body's energy has no such term (RB-7).
+      const Vec3 S = b.first_moment;
+      const Vec3 moment{R[0] * S.x + R[1] * S.y + R[2] * S.z, R[3] * S.x + R[4] * S.y + R[5] * S.z,
+                        R[6] * S.x + R[7] * S.y + R[8] * S.z};
+      translational -= dot(b.velocity, cross(b.omega, moment));
     }
-    const auto& R = b.rotation;
     const auto& J = b.inertia_added;
     double local[3];
     for (int i = 0; i < 3; ++i)  // w in the body frame: R^T w

@@ -33,6 +33,8 @@ SolverState make_state(const Model& model, std::vector<std::string>& notes, Doma
 // node is up to date in every domain, takes `domain`, and everything made of the old one is made again.
 void rebind_domain(const Model& model, SolverState& state, Domain domain);
 void setup_rigid_bodies(const Model& model, SolverState& state);
+// The skews' axes at the current positions (SK-3): at the start and after every position update.
+void update_skew_axes(const Model& model, SolverState& state);
 // Brick groups' parameters and state (setup_bricks.cpp, docs/theory/brick8.md).
 void setup_bricks(const Model& model, SolverState& state);
 void setup_rigid_walls(const Model& model, SolverState& state);
@@ -90,6 +92,10 @@ std::pair<double, double> element_energies(SolverState& state);
 void add_external_forces(const Model& model, SolverState& state, double time);
 // The same forces into state.recorded.external_force (3 per node, moments left out), for the field frames.
 void record_external_forces(const Model& model, SolverState& state, double time);
+// The loads' work over the step on the owned nodes into `work`: each force on the mean of the velocities before
+// (`before`: x y z rx ry rz) and after the update, times dt_average (energy.md).
+void add_load_work(const Model& model, const SolverState& state, const std::array<std::vector<double>, 6>& before,
+                   double time, double dt_average, ExactSum& work);
 
 // A rigid body's inertia tensor about its centre in global axes, R J R^T (row by row).
 std::array<double, 9> body_inertia_global(const RigidBodyState& body);

@@ -66,8 +66,26 @@ double largest_eigenvalue(const Mat3& a) {
   return q + 2.0 * p * std::cos(phi);
 }
 
-// Mass, centre of mass, inertia and velocity field of a body from its nodes' current positions, masses and
-// velocities (eqs. RB-0a to RB-0c); the main node moves to the centre of mass (ICoG 1).
+// Adds the inertia of a point mass at r from the reference point: m (|r|^2 1 - r r^T).
+void add_point_inertia(Mat3& I, double mass, Vec3 r) {
+  const double rr = dot(r, r);
+  for (std::size_t i = 0; i < 3; ++i)
+    for (std::size_t j = 0; j < 3; ++j) I[3 * i + j] += mass * ((i == j ? rr : 0.0) - r[i] * r[j]);
+}
+
+// The body's centre by ICoG (eq. RB-0e): 1 the centre of all its masses, 2 of its secondary nodes' masses (the
+// main node's and the card's mass put there), 3 and 4 the main node where it is. `main_mass` is the main node's
+// mass (the card's included), `secondary` the first moment and mass of the secondary nodes.
+Vec3 body_centre(int icog, Vec3 main, double main_mass, Vec3 secondary_moment, double secondary_mass) {
+  if (icog == 1 && main_mass + secondary_mass > 0.0)
+    return scaled(scaled(main, main_mass) + secondary_moment, 1.0 / (main_mass + secondary_mass));
+  if (icog == 2 && secondary_mass > 0.0) return scaled(secondary_moment, 1.0 / secondary_mass);
+  return main;  // ICoG 3, 4, or no mass to weigh: the main node stays
+}
+
+// Mass, centre, inertia and velocity field of a body from its nodes' current positions, masses and velocities
+// (eqs. RB-0a to RB-0e); the main node moves to the centre. ICoG 4 drops the secondary nodes' masses at the start:
+// the body is the main node's mass and the card's inertia, as in the reference (measured: its total mass drops).
 // `at_start`: the first forming, where the main node's initial velocity moves the body (RB-0c); a body formed
 // again by /RBODY/ON takes its nodes' momentum.
 void form_body(const RigidBody& rb, const Model& m, SolverState& s, std::int32_t index, RigidBodyState& b,
@@ -78,41 +96,48 @@ void form_body(const RigidBody& rb, const Model& m, SolverState& s, std::int32_t
   for (std::int32_t node : m.node_groups[static_cast<std::size_t>(rb.node_group)].nodes)
     if (node != rb.main_node) b.secondary.push_back(node);
   const auto main = static_cast<std::size_t>(rb.main_node);
-  double mass = n.mass[main];
-  Vec3 cog = position(n, rb.main_node), momentum{};
-  for (int d = 0; d < 3; ++d) cog[static_cast<std::size_t>(d)] *= mass;
-  momentum = {mass * n.vx[main], mass * n.vy[main], mass * n.vz[main]};
+  if (rb.icog == 4 && at_start)
+    for (std::int32_t node : b.secondary) n.mass[static_cast<std::size_t>(node)] = 0.0;
+  double secondary_mass = 0.0;
+  Vec3 secondary_moment{}, momentum{n.mass[main] * n.vx[main], n.mass[main] * n.vy[main], n.mass[main] * n.vz[main]};
   for (std::int32_t node : b.secondary) {
     const auto k = static_cast<std::size_t>(node);
-    const Vec3 p = position(n, node);
-    for (int d = 0; d < 3; ++d) cog[static_cast<std::size_t>(d)] += n.mass[k] * p[static_cast<std::size_t>(d)];
-    momentum[0] += n.mass[k] * n.vx[k], momentum[1] += n.mass[k] * n.vy[k], momentum[2] += n.mass[k] * n.vz[k];
-    mass += n.mass[k];
+    secondary_moment = secondary_moment + scaled(position(n, node), n.mass[k]);
+    momentum = momentum + scaled({n.vx[k], n.vy[k], n.vz[k]}, n.mass[k]);
+    secondary_mass += n.mass[k];
     s.rigid_owner[k] = index;
   }
+  const double mass = n.mass[main] + secondary_mass;
   b.mass = mass;
   s.rigid_owner[main] = index;
-  // A body without mass (inertia from the card only) keeps its main node where it is and the velocity it has.
-  if (mass > 0.0) {
-    cog = {cog.x / mass, cog.y / mass, cog.z / mass};
-  } else {
-    cog = position(n, rb.main_node), momentum = {n.vx[main], n.vy[main], n.vz[main]};
-  }
+  // A body without mass (inertia from the card only) keeps the velocity its main node has.
+  if (!(mass > 0.0)) momentum = {n.vx[main], n.vy[main], n.vz[main]};
+  const Vec3 main_at = position(n, rb.main_node);
+  const Vec3 cog = body_centre(rb.icog, main_at, n.mass[main], secondary_moment, secondary_mass);
   n.x[main] = cog[0], n.y[main] = cog[1], n.z[main] = cog[2];
-  // Inertia about the centre of mass: the nodes' point masses plus the card's added inertia.
+  // Inertia about the centre: the card's added inertia (written in its skew, if any, SK-6), the main node's mass
+  // where it was (ICoG 1; 3 and 4 have it at the centre; 2 puts it there), then the secondary nodes' (RB-0e). The
+  // main node's part is not carried by a nodal mass there any more: it counts with the card's.
   Mat3 I{rb.inertia[0], rb.inertia[3], rb.inertia[5], rb.inertia[3], rb.inertia[1], rb.inertia[4],
          rb.inertia[5], rb.inertia[4], rb.inertia[2]};
+  if (rb.skew >= 0) {
+    const SkewAxes& a = s.skew_axes[static_cast<std::size_t>(rb.skew)];
+    const Mat3 Q{a.axis[0].x, a.axis[1].x, a.axis[2].x, a.axis[0].y, a.axis[1].y, a.axis[2].y,
+                 a.axis[0].z, a.axis[1].z, a.axis[2].z};  // columns: the skew's axes
+    I = mul(mul(Q, I), transpose(Q));
+  }
+  if (rb.icog != 2) add_point_inertia(I, n.mass[main], main_at - cog);  // ICoG 2 puts it at the centre
   b.inertia_added = I;
   Vec3 angular{};
+  b.first_moment = {};
   for (std::int32_t node : b.secondary) {
     const auto k = static_cast<std::size_t>(node);
     const Vec3 p = position(n, node);
     const Vec3 r{p[0] - cog[0], p[1] - cog[1], p[2] - cog[2]};
     b.rx.push_back(r[0]), b.ry.push_back(r[1]), b.rz.push_back(r[2]);
-    const double mk = n.mass[k], rr = r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j)
-        I[static_cast<std::size_t>(3 * i + j)] += mk * ((i == j ? rr : 0.0) - r[static_cast<std::size_t>(i)] * r[static_cast<std::size_t>(j)]);
+    const double mk = n.mass[k];
+    add_point_inertia(I, mk, r);
+    b.first_moment = b.first_moment + scaled(r, mk);
     const Vec3 h = cross(r, {n.vx[k], n.vy[k], n.vz[k]});
     for (int d = 0; d < 3; ++d) angular[static_cast<std::size_t>(d)] += mk * h[static_cast<std::size_t>(d)];
   }
@@ -162,11 +187,29 @@ double drive_body(const Model& m, const SolverState& s, RigidBodyState& b, const
   std::array<double, 6> v{b.velocity[0], b.velocity[1], b.velocity[2], b.omega[0], b.omega[1], b.omega[2]};
   for (int d = 0; d < 6; ++d)
     if (driven & (1u << d)) v[static_cast<std::size_t>(d)] = 0.0;
+  // A condition in a skew sets the component along the skew's axis (eq. SK-5) of the translation or the rotation.
+  auto set_along = [&v](bool rotation, Vec3 e, double value) {
+    const std::size_t first = rotation ? 3 : 0;
+    const Vec3 set = with_component({v[first], v[first + 1], v[first + 2]}, e, value);
+    v[first] = set.x, v[first + 1] = set.y, v[first + 2] = set.z;
+  };
+  for (std::int32_t c : b.main_node_skewed_fixes) {
+    const BoundaryCondition& bc = m.boundary_conditions[static_cast<std::size_t>(c)];
+    const SkewAxes& a = s.skew_axes[static_cast<std::size_t>(bc.skew)];
+    for (std::size_t d = 0; d < 3; ++d) {
+      if (bc.fixed_translation[d]) set_along(false, a.axis[d], 0.0);
+      if (bc.fixed_rotation[d]) set_along(true, a.axis[d], 0.0);
+    }
+    driven = static_cast<std::uint8_t>(driven | 64u);
+  }
   for (std::int32_t c : b.main_node_conditions) {
     const ImposedMotion& im = m.imposed[static_cast<std::size_t>(c)];
     if (const auto value = imposed_velocity(m, s, im, main, s.time, dt_next)) {
-      v[static_cast<std::size_t>(im.dof)] = *value;
-      driven = static_cast<std::uint8_t>(driven | (1u << static_cast<int>(im.dof)));
+      if (im.skew < 0)
+        v[static_cast<std::size_t>(im.dof)] = *value;
+      else
+        set_along(is_rotation(im.dof), s.skew_axes[static_cast<std::size_t>(im.skew)].axis[dof_axis(im.dof)], *value);
+      driven = static_cast<std::uint8_t>(driven | 64u);
     }
   }
   if (driven == 0) return 0.0;
@@ -228,6 +271,12 @@ void setup_rigid_bodies(const Model& m, SolverState& s) {
       const auto& nodes = m.node_groups[static_cast<std::size_t>(im.node_group)].nodes;
       if (std::find(nodes.begin(), nodes.end(), rb.main_node) != nodes.end())
         b.main_node_conditions.push_back(static_cast<std::int32_t>(c));
+    }
+    for (std::size_t c = 0; c < m.boundary_conditions.size(); ++c) {
+      const BoundaryCondition& bc = m.boundary_conditions[c];
+      const auto& nodes = m.node_groups[static_cast<std::size_t>(bc.node_group)].nodes;
+      if (bc.skew >= 0 && std::find(nodes.begin(), nodes.end(), rb.main_node) != nodes.end())
+        b.main_node_skewed_fixes.push_back(static_cast<std::int32_t>(c));
     }
     s.bodies.push_back(std::move(b));
   }

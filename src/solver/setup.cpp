@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 #include "crumple/contact/contact.hpp"
 #include "crumple/core/geometry.hpp"
@@ -27,11 +28,19 @@ void setup_nodes(const Model& m, SolverState& s) {
   s.nodes.mass = m.nodal_mass;
   s.fixed.assign(n, 0);
   s.rigid_owner.assign(n, -1);
-  for (const InitialVelocity& iv : m.initial_velocities)
+  // /INIVEL: a velocity written in a skew is its components along the skew's axes at the start (SK-6).
+  for (const InitialVelocity& iv : m.initial_velocities) {
+    const Vec3 v = iv.skew < 0 ? iv.velocity
+                               : to_global(skew_axes(m.skews[static_cast<std::size_t>(iv.skew)], m.nodes.x, m.nodes.y,
+                                                     m.nodes.z),
+                                           iv.velocity);
+    auto [vx, vy, vz] = iv.rotation ? std::tie(s.nodes.wx, s.nodes.wy, s.nodes.wz)
+                                     : std::tie(s.nodes.vx, s.nodes.vy, s.nodes.vz);
     for (std::int32_t node : m.node_groups[static_cast<std::size_t>(iv.node_group)].nodes) {
       const auto k = static_cast<std::size_t>(node);
-      s.nodes.vx[k] = iv.velocity[0], s.nodes.vy[k] = iv.velocity[1], s.nodes.vz[k] = iv.velocity[2];
+      vx[k] = v.x, vy[k] = v.y, vz[k] = v.z;
     }
+  }
   for (const BoundaryCondition& bc : m.boundary_conditions) {
     std::uint8_t mask = 0;
     for (int d = 0; d < 3; ++d) {
@@ -239,6 +248,7 @@ SolverState make_state(const Model& m, std::vector<std::string>& notes, Domain d
   s.group_results.assign(m.element_groups.size(), GroupStepResult{});
   take_domain(m, s, std::move(domain));
   setup_sections(m, s);  // /TH/SECTIO: after the domain, whose records it may restrict or read
+  update_skew_axes(m, s);  // every domain holds every node here
   setup_rigid_bodies(m, s);
   setup_rigid_walls(m, s);
   if (selective_mass_on(m)) size_selective_mass(m, s);  // before a restart reads what the last cycle left

@@ -84,6 +84,7 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunObse
   keep_requested_results(m.run, s);
   if (options.resume == nullptr) write_first_frame(m, s, observer, schedule);
   VelocityScratch scratch(s.nodes.size());
+  if (!m.skews.empty()) update_skew_axes(m, s);  // a resumed run's positions
   PhaseTimes phases;
   const double sort_seconds_before = s.contact.sort_seconds;  // this engine deck's searches only
   long long sorts_before = 0;
@@ -123,6 +124,7 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunObse
     integrate(s, scratch, dt_average, selective);
     apply_constraints(m, s, scratch, dt_average, dt_next);
     advance_positions(s, dt_next);
+    if (!m.skews.empty()) update_skew_axes(m, s);  // SK-3: the loads, conditions and histories of the new positions
     clock.lap(phases.update);
 
     const MonitorDue due = outputs_due(m, s, schedule, dt_next);

@@ -88,7 +88,7 @@ TEST(Accelerometers, UpdateAfterTheVelocityUpdate) {
   HistoryIntegrals h;
   setup_accelerometers(meters.size(), h);
   const double dt = 1e-3;
-  update_accelerometers(meters, n, {&bx, &by, &bz}, dt, h);
+  update_accelerometers(meters, n, {&bx, &by, &bz}, dt, {}, h);
   EXPECT_DOUBLE_EQ(h.accel_filtered[0], 0.5 / dt);  // raw: (1.5 - 1) / dt
   EXPECT_DOUBLE_EQ(h.accel_filtered[1], 0.25 / dt);
   EXPECT_EQ(h.accel_filtered[2], 0.0);
@@ -100,11 +100,11 @@ TEST(Accelerometers, UpdateAfterTheVelocityUpdate) {
   // The same change again: W sums, the step's second sample is 5 b0 b0'.
   for (auto* v : {&bx, &by, &bz}) v->assign(3, 0.0);
   bx = {0.0, 1.0, 2.0}, bz = {0.0, -1.0, 0.0};
-  update_accelerometers(meters, n, {&bx, &by, &bz}, dt, h);
+  update_accelerometers(meters, n, {&bx, &by, &bz}, dt, {}, h);
   EXPECT_DOUBLE_EQ(h.accel_velocity[0], 1.0);
   EXPECT_DOUBLE_EQ(h.accel_velocity[5], 8.0);
   EXPECT_NEAR(h.accel_filtered[5], 5.0 * 0.09398085143379448 * 4.0 / dt, 1e-12 * 4.0 / dt);
   // No accelerometer, or no step (the state before the first cycle): nothing changes.
-  update_accelerometers(meters, n, {&bx, &by, &bz}, 0.0, h);
+  update_accelerometers(meters, n, {&bx, &by, &bz}, 0.0, {}, h);
   EXPECT_DOUBLE_EQ(h.accel_velocity[0], 1.0);
 }

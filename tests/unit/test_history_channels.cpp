@@ -377,7 +377,7 @@ TEST(HistoryChannels, AccelerometerValuesAfterAVelocityUpdate) {
   const std::size_t k5 = f.node(5), k7 = f.node(7);
   n.vx[k5] = 0.5, n.vy[k5] = -0.25, n.vz[k7] = 2.0;
   const double dt = 2.5e-3;  // 100 Hz x 2.5 ms = 1/4
-  update_accelerometers(f.model().accelerometers, n, {&bx, &by, &bz}, dt, s.histories);
+  update_accelerometers(f.model().accelerometers, n, {&bx, &by, &bz}, dt, s.skew_axes, s.histories);
   const HistoryChannels channels(f.model());
   const HistoryDataset& d = channels.datasets().back();
   EXPECT_EQ(d.name, "ACCEL_9");

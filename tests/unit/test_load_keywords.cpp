@@ -244,15 +244,35 @@ TEST(LoadKeywords, InivelTra) {
 
 TEST(LoadKeywords, InivelErrors) {
   test::TempDir dir;
-  const std::string rot = error_of(dir, "/INIVEL/ROT/7\ninit\n" + R(1.0) + R(0.0) + R(0.0) + I(10) + "\n");
-  EXPECT_NE(rot.find("TRA"), std::string::npos) << rot;
+  const std::string axis = error_of(dir, "/INIVEL/AXIS/7\ninit\n" + R(1.0) + R(0.0) + R(0.0) + I(10) + "\n");
+  EXPECT_NE(axis.find("TRA, T+G or ROT"), std::string::npos) << axis;
   EXPECT_NE(error_of(dir, "/INIVEL/TRA/7\ninit\n" + R(1.0) + R(0.0) + R(0.0) + "\n").find("grnod_ID"),
             std::string::npos);
   EXPECT_NE(error_of(dir, "/INIVEL/TRA/7\ninit\n" + R("fast") + "\n").find("Vx"), std::string::npos);
   EXPECT_NE(error_of(dir, "/INIVEL/TRA/7\ninit\n" + R(1.0) + R(0.0) + R(0.0) + I(10) + I(2) + "\n").find("Skew_ID"),
             std::string::npos);
-  const std::string extra = error_of(dir, "/INIVEL/TRA/7\ninit\n" + R(1.0) + R(0.0) + R(0.0) + I(10) + "\n1\n");
+  // Version 2025's second line: Tstart and sens_ID, which Crumple lacks, then nothing more.
+  const std::string later = error_of(dir, "/INIVEL/TRA/7\ninit\n" + R(1.0) + R(0.0) + R(0.0) + I(10) + "\n1\n");
+  EXPECT_NE(later.find("field Tstart"), std::string::npos) << later;
+  const std::string extra =
+      error_of(dir, "/INIVEL/TRA/7\ninit\n" + R(1.0) + R(0.0) + R(0.0) + I(10) + "\n" + R(0.0) + "\n1\n");
   EXPECT_NE(extra.find("no more data lines"), std::string::npos) << extra;
+}
+
+// /INIVEL/ROT: the nodes' angular velocity [1/T], in a skew when one is named; /INIVEL/T+G is /INIVEL/TRA on
+// Crumple's Lagrangian nodes; version 2025's Tstart line at 0 is accepted.
+TEST(LoadKeywords, InivelRotAndTranslationAndGrid) {
+  test::TempDir dir;
+  const Model m = read(dir, "/SKEW/FIX/3\nskew\n" + R(0.0) + R(0.0) + R(0.0) + "\n" + R(0.0) + R(1.0) + R(0.0) +
+                                "\n" + R(0.0) + R(0.0) + R(1.0) + "\n/INIVEL/ROT/7\nspin\n" + R(0.0) + R(0.0) +
+                                R(2.0) + I(10) + I(3) + "\n/INIVEL/T+G/8\nmove\n" + R(1.0) + R(0.0) + R(0.0) +
+                                I(10) + I(0) + "\n" + R(0.0) + I(0) + "\n");
+  ASSERT_EQ(m.initial_velocities.size(), 2u);
+  EXPECT_TRUE(m.initial_velocities[0].rotation);
+  EXPECT_EQ(m.initial_velocities[0].velocity, (Vec3{0.0, 0.0, 2.0}));
+  EXPECT_EQ(m.initial_velocities[0].skew, 0);
+  EXPECT_FALSE(m.initial_velocities[1].rotation);
+  EXPECT_EQ(m.initial_velocities[1].skew, -1);
 }
 
 // ---------------------------------------------------------------------------------------------------------------

@@ -249,7 +249,7 @@ TEST(OutputKeywords, AccelerometersAndTheirHistory) {
 TEST(OutputKeywords, MalformedAccelerometersAreErrorsNamingTheField) {
   const std::string skew = error_of("/ACCEL/4\nhead\n" + I(5) + I(2) + "\n");
   EXPECT_TRUE(contains(skew, "/ACCEL/4: field skew_ID")) << skew;
-  EXPECT_TRUE(contains(skew, "skew frames are not supported by Crumple")) << skew;
+  EXPECT_TRUE(contains(skew, "expected an existing skew, found skew 2 not defined")) << skew;
   const std::string negative = error_of("/ACCEL/4\nhead\n" + I(5) + I(0) + blank(10) + R(-1.0) + "\n");
   EXPECT_TRUE(contains(negative, "field Fcut")) << negative;
   EXPECT_TRUE(contains(negative, "non-negative cutoff frequency")) << negative;

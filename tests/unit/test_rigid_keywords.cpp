@@ -324,18 +324,22 @@ TEST(RigidKeywords, RigidBodyDefaults) {
   EXPECT_EQ(m.index.rigid_bodies.at(7), 0);
 }
 
-// The solver computes the inertia from the nodes (Ispher 2, made spherical for Ispher 1) about the centre of all
-// masses (ICoG 1); the other choices are errors naming the field.
-TEST(RigidKeywords, InertiaAndCentreChoicesCrumpleLacksAreErrors) {
-  for (auto [ispher, icog, field] : {std::tuple{3, 0, "field Ispher"},
-                                     std::tuple{0, 2, "field ICoG"}, std::tuple{0, 4, "field ICoG"}}) {
+// The solver computes the inertia from the nodes (Ispher 2, made spherical for Ispher 1) about the centre ICoG
+// chooses (1 to 4, RB-0e); inertia from the card alone (Ispher 3) is an error naming the field.
+TEST(RigidKeywords, InertiaFromTheCardAloneIsAnErrorAndEveryCentreChoiceIsRead) {
+  {
     test::TempDir dir;
     Body b;
-    b.ispher = ispher;
-    b.icog = icog;
+    b.ispher = 3;
     const std::string e = error_of(dir, b.card());
-    EXPECT_NE(e.find(field), std::string::npos) << e;
+    EXPECT_NE(e.find("field Ispher"), std::string::npos) << e;
     EXPECT_NE(e.find("not supported by Crumple"), std::string::npos) << e;
+  }
+  for (int icog : {2, 3, 4}) {
+    test::TempDir dir;
+    Body b;
+    b.icog = icog;
+    EXPECT_EQ(read(dir, b.card()).rigid_bodies.at(0).icog, icog);
   }
 }
 

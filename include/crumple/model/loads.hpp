@@ -26,6 +26,7 @@ struct BoundaryCondition {  // /BCS
   std::array<bool, 3> fixed_translation{};  // x, y, z
   std::array<bool, 3> fixed_rotation{};     // about x, y, z
   std::int64_t skew_id = 0;
+  std::int32_t skew = -1;  // -1: the global axes; else the fixed dofs are those of the skew's axes (SK-5)
   std::int64_t node_group_id = 0;
   std::int32_t node_group = -1;
 };
@@ -43,6 +44,7 @@ struct ImposedMotion {
   std::int32_t function = -1;
   Dof dof = Dof::X;
   std::int64_t skew_id = 0;
+  std::int32_t skew = -1;  // -1: `dof` is a global axis; else the skew's axis (SK-5, SK-6)
   std::int64_t sensor_id = 0;
   std::int64_t node_group_id = 0;
   std::int32_t node_group = -1;
@@ -56,14 +58,16 @@ struct ImposedMotion {
   double t_stop = 1e30;   // [T]; /CLOAD: always 1e30
 };
 
-struct InitialVelocity {  // /INIVEL/TRA
+struct InitialVelocity {  // /INIVEL/TRA, /INIVEL/T+G (the same on Lagrangian nodes), /INIVEL/ROT
   SourceLocation where;
   std::int64_t user_id = 0;
   std::string title;
-  Vec3 velocity{};  // [L T^-1]
+  bool rotation = false;  // /INIVEL/ROT: the nodes' angular velocity
+  Vec3 velocity{};  // [L T^-1], or [T^-1] for /INIVEL/ROT; in the skew's axes when there is one
   std::int64_t node_group_id = 0;
   std::int32_t node_group = -1;
   std::int64_t skew_id = 0;
+  std::int32_t skew = -1;  // -1: global axes
 };
 
 // /GRAV: acceleration scale_y * f(t / scale_x) along `dof` on a node group (the force is mass * acceleration).
@@ -75,6 +79,7 @@ struct Gravity {
   std::int32_t function = -1;    // -1: constant
   Dof dof = Dof::Z;              // X, Y or Z only
   std::int64_t skew_id = 0;
+  std::int32_t skew = -1;          // -1: `dof` is a global axis; else the skew's axis
   std::int64_t sensor_id = 0;
   std::int64_t node_group_id = 0;  // 0: every node of the model
   std::int32_t node_group = -1;    // -1: every node of the model

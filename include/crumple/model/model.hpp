@@ -19,6 +19,7 @@
 #include "crumple/model/rigid.hpp"
 #include "crumple/model/run_control.hpp"
 #include "crumple/model/sets.hpp"
+#include "crumple/model/skews.hpp"
 
 namespace crumple {
 
@@ -50,6 +51,7 @@ struct Model {
   std::vector<ElementSet> brick_groups;   // /GRBRIC
   std::vector<Surface> surfaces;
   std::vector<Subset> subsets;
+  std::vector<Skew> skews;  // /SKEW/FIX, /SKEW/MOV, /SKEW/MOV2
 
   std::vector<BoundaryCondition> boundary_conditions;
   std::vector<ImposedMotion> imposed;  // /IMPVEL, /IMPDISP, /CLOAD
@@ -78,7 +80,7 @@ struct Model {
 
   struct Index {
     IdMap nodes, parts, properties, materials, functions, node_groups, shell_groups, sh3n_groups, brick_groups,
-        surfaces, subsets, rigid_walls, rigid_bodies, interfaces, sections, accelerometers;
+        surfaces, subsets, skews, rigid_walls, rigid_bodies, interfaces, sections, accelerometers;
     std::array<IdMap, kElementKinds> elements;
   } index;
 

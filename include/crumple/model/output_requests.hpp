@@ -26,15 +26,20 @@ struct TimeHistoryRequest {  // /TH/...
   std::vector<std::string> object_names;  // /TH/NODE, /TH/SHEL(L), /TH/SH3N, /TH/BRIC: the name of each object
                                           // (may be empty), parallel to object_ids; empty for the other kinds
   std::vector<std::int32_t> objects;    // dense indices (model build)
+  // /TH/NODE: the skew each node's vectors are written in (SK-4), parallel to object_ids; 0 / -1: global axes.
+  std::vector<std::int64_t> object_skew_ids;
+  std::vector<std::int32_t> object_skews;  // dense indices (model build)
 };
 
 // /ACCEL (docs/cards/loads-output-engine.md §6.3): the acceleration of a node, filtered by a 4-pole Butterworth
-// low-pass (docs/output-format.md, "ACCEL"). The reader accepts skew_ID = 0 only (output in the global frame).
+// low-pass (docs/output-format.md, "ACCEL"), in the global axes or along a skew's (docs/theory/skews.md, SK-4).
 struct Accelerometer {  // /ACCEL
   SourceLocation where;
   std::int64_t user_id = 0;
   std::string title;
   std::int64_t node_id = 0;
+  std::int64_t skew_id = 0;
+  std::int32_t skew = -1;    // dense index (model build); -1: the global axes
   double cutoff = 0.0;       // Fcut: corner frequency of the filter [1/T]; 0 or blank: no filter
   std::int32_t node = -1;    // dense index (model build)
 };

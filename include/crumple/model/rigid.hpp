@@ -80,12 +80,13 @@ struct RigidBody {  // /RBODY
   std::int32_t main_node = -1;
   std::int64_t sensor_id = 0;
   std::int64_t skew_id = 0;
+  std::int32_t skew = -1;         // the added inertia's axes (-1: global)
   int ispher = 2;                 // 1 spherical inertia; 2 from the nodes + added inertia; 3 from data
   double mass = 0.0;              // mass added at the main node [M], >= 0
   std::int64_t node_group_id = 0; // secondary nodes
   std::int32_t node_group = -1;
   int ikrem = 0;                  // 0: secondary nodes removed from rigid walls; 1: kept
-  int icog = 1;                   // 1 CoG of all masses (main node moved there); 2 of the secondary nodes; 3, 4 kept
+  int icog = 1;                   // centre of the body (RB-0e): 1 of all masses; 2 of the secondary nodes; 3, 4 main node
   std::int64_t surface_id = 0;
   std::array<double, 6> inertia{};  // added inertia Jxx Jyy Jzz Jxy Jyz Jxz [M L^2]
   int ioptoff = 0;                // load-balancing hint, no effect

@@ -52,6 +52,7 @@ class HistoryChannels {
     HistoryObject object;
     std::vector<std::int32_t> objects;  // dense indices
     std::vector<int> getters;           // per variable: the kind's evaluator
+    std::vector<std::int32_t> skews;    // nodes: per object, the skew its vectors are written in (-1: global)
   };
   struct PartSums;
 

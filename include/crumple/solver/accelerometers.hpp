@@ -25,10 +25,12 @@ double filter_sample(const std::array<FilterSection, 2>& filter, double input, d
 
 // After the velocity update of a cycle: each accelerometer's raw acceleration a^n = (v^(n+1/2) - before) / dt
 // (`dt` = dt^n, the step of the update) into its integral W and, with Fcut > 0, through its filter; with Fcut = 0
-// the filtered value is the raw one. Does nothing for a model without accelerometers.
+// the filtered value is the raw one. An accelerometer in a skew measures along the skew's axes (`skews`, at the
+// current positions): its velocity change is written in them before it is integrated and filtered (SK-4). Does
+// nothing for a model without accelerometers.
 void update_accelerometers(const std::vector<Accelerometer>& accelerometers, const NodalState& nodes,
                            const std::array<const std::vector<double>*, 3>& before, double dt,
-                           HistoryIntegrals& histories);
+                           const std::vector<SkewAxes>& skews, HistoryIntegrals& histories);
 
 // Sizes the accelerometers' values (zero) for `count` accelerometers.
 void setup_accelerometers(std::size_t count, HistoryIntegrals& histories);

@@ -38,7 +38,9 @@ struct RigidBodyState {
   std::vector<double> rx, ry, rz;       // secondary node positions relative to the centre of mass, body frame
   double mass = 0.0;                     // total mass [M]
   std::array<double, 9> inertia_body{};  // inertia tensor about the centre of mass in the body frame [M L^2]
-  std::array<double, 9> inertia_added{}; // the card's Jxx..Jxz part of it (not carried by nodal masses)
+  std::array<double, 9> inertia_added{}; // the part of it no nodal mass carries: the card's Jxx..Jxz, the main
+                                         // node's mass where it was (ICoG 1)
+  Vec3 first_moment{};  // sum of m r over the secondary nodes, body frame [M L]: 0 when the centre is theirs (RB-7)
   std::array<double, 9> rotation{1, 0, 0, 0, 1, 0, 0, 0, 1};  // body frame -> global
   Vec3 velocity{};          // velocity of the centre of mass at t^(n-1/2)
   Vec3 momentum_angular{};  // angular momentum about the centre of mass (global) at t^(n-1/2)
@@ -46,6 +48,8 @@ struct RigidBodyState {
   bool active = true;                        // /RBODY/OFF sets it off: the secondary nodes move on their own
   // /IMPVEL and /IMPDISP cards (indices into Model::imposed) acting on the main node: they drive the body.
   std::vector<std::int32_t> main_node_conditions;
+  // /BCS cards in a skew (indices into Model::boundary_conditions) holding the main node (SK-5).
+  std::vector<std::int32_t> main_node_skewed_fixes;
 };
 
 struct RigidWallState {
@@ -152,6 +156,7 @@ struct SolverState {
   ContactState contact;                             // TYPE7 interfaces (empty without /INTER/TYPE7)
   SelectiveMassState selective_mass;                // /DT/AMS (empty without it)
   std::vector<std::int32_t> rigid_owner;           // per node: rigid body index, -1 when none
+  std::vector<SkewAxes> skew_axes;                  // per skew of the model: its axes at the current positions (SK-3)
   double time = 0.0;
   double dt = 0.0;        // step of the last position update dt^(n-1/2) [T]
   long long cycle = 0;         // cycles of the engine deck being run (the listing's CYCLE)

@@ -17,10 +17,13 @@ void read_begin(CardReader& reader, DeckContext& context) {
   model.run_name = reader.next("Runname").text(1, 80);
   const Line version = reader.next("Invers, Irun");
   model.input_version = static_cast<int>(version.integer(1, 10, "Invers"));
-  // Crumple reads the card layouts of input version 2017 and later; older versions place fields elsewhere.
-  if (model.input_version < 2017)
+  // Input versions 51 to 140 write every card Crumple reads with the widths and title lines of 2017; they lack
+  // only fields added later, which are blank there (docs/deck-format.md, "Input versions"). Versions 41 to 44 write
+  // 8- and 16-column fields with the title on the keyword line.
+  if (model.input_version < 51)
     version.fail(1, 10, "Invers",
-                 "an input version of 2017 or later (older card layouts are not supported by Crumple)");
+                 "an input version of 51 or later (the 8- and 16-column layouts of versions 41 to 44 are not "
+                 "supported by Crumple)");
   // Irun numbers the starter run in Radioss' file names; Crumple names its files after the run name.
   if (version.integer(11, 10, "Irun") != 0)
     context.note(version.where(), reader.card().keyword, "Irun (columns 11-20)",

@@ -491,7 +491,14 @@ void read_rfile(CardReader& reader, DeckContext& context) {
   if (sets < 0 || sets > 26) reader.fail("n", "0 to 26 rotating restart sets", fmt::format("{}", sets));
   std::int64_t every = 1000000;  // the manual's default when no cycle count is given
   if (auto line = next_line(reader)) {
-    at_most(*line, 1, "Ncycle");
+    // Before input version 110 the line also held Iread and Iwrite, flags of the old restart files: 0 there is
+    // what every later version means.
+    at_most(*line, 3, "Ncycle, Iread, Iwrite");
+    for (std::size_t k = 1; k < line->token_count(); ++k)
+      if (line->token_integer(k, k == 1 ? "Iread (value 2)" : "Iwrite (value 3)", 0) != 0)
+        line->fail_value(k == 1 ? "Iread (value 2)" : "Iwrite (value 3)",
+                         "0 (the restart read and write flags of input versions before 110 are not supported by Crumple)",
+                         line->content());
     every = line->token_integer(0, "Ncycle", 0);
     if (every < 0) line->fail_value("Ncycle (value 1)", "a positive number of cycles", fmt::format("{}", every));
     if (every == 0) every = 1000000;

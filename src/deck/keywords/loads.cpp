@@ -180,18 +180,31 @@ void read_concentrated_load(CardReader& reader, DeckContext& context) {
 // ---------------------------------------------------------------------------------------------------------------
 // /INIVEL/TRA, /GRAV, /ADMAS
 
+// /INIVEL/TRA, /INIVEL/T+G (translation and grid: the same on Crumple's Lagrangian nodes) and /INIVEL/ROT (the
+// nodes' angular velocity), in the global axes or a skew's. From input version 2025 a second line may give Tstart
+// and sens_ID: Crumple starts every velocity at time 0, so they must be blank or 0.
 void read_initial_velocity(CardReader& reader, DeckContext& context) {
   const auto& path = reader.card().path;
-  if (path.size() < 2 || path[1] != "TRA")
-    reader.fail("type", "TRA in /INIVEL/TRA/id (other initial velocity types are not supported by Crumple)",
-                in_quotes(path.size() < 2 ? "" : path[1]));
+  const std::string type = path.size() < 2 ? "" : path[1];
+  if (type != "TRA" && type != "T+G" && type != "ROT")
+    reader.fail("type", "TRA, T+G or ROT in /INIVEL/type/id (the other initial velocity types, AXIS, GRID, FVM, "
+                "are not supported by Crumple)", in_quotes(type));
   auto iv = begin_record<InitialVelocity>(reader, 2);
-  const Line line = reader.next("Vx, Vy, Vz, grnod_ID, Skew_ID");
-  constexpr const char* kNames[3] = {"Vx", "Vy", "Vz"};
+  iv.rotation = type == "ROT";
+  const Line line = reader.next(iv.rotation ? "Wx, Wy, Wz, grnod_ID, Skew_ID" : "Vx, Vy, Vz, grnod_ID, Skew_ID");
+  constexpr const char* kNames[2][3] = {{"Vx", "Vy", "Vz"}, {"Wx", "Wy", "Wz"}};
   for (int k = 0; k < 3; ++k)
-    iv.velocity[static_cast<std::size_t>(k)] = line.real(1 + 20 * k, 20, kNames[k], dim::velocity);
+    iv.velocity[static_cast<std::size_t>(k)] = line.real(1 + 20 * k, 20, kNames[iv.rotation ? 1 : 0][k],
+                                                         iv.rotation ? dim::angular_velocity : dim::velocity);
   iv.node_group_id = required_id(line, 61, "grnod_ID", "node group");
   iv.skew_id = optional_id(line, 71, "Skew_ID");
+  if (reader.has_data()) {
+    const Line start = reader.next("Tstart, sens_ID");
+    if (start.real(1, 20, "Tstart", dim::time) != 0.0)
+      context.unsupported(start.error(1, 20, "Tstart", default_only("an initial velocity set at a later time is")));
+    if (start.integer(21, 10, "sens_ID") != 0)
+      context.unsupported(start.error(21, 10, "sens_ID", default_only("sensors are")));
+  }
   reader.finish();
   context.model.initial_velocities.push_back(std::move(iv));
 }

@@ -17,7 +17,7 @@ namespace {
 // How a /TH card lists its objects.
 enum class ObjectLines : std::uint8_t {
   Ids,          // up to 10 ids of 10 columns per line
-  IdSkewName,   // one object per line: id 1-10, skew 11-20 (must be 0), name 21-100
+  IdSkewName,   // one object per line: id 1-10, skew 11-20 (nodes only), name 21-100
   IdBlankName,  // one object per line: id 1-10, columns 11-20 blank, name 21-100
 };
 
@@ -129,14 +129,25 @@ void read_object_line(const Line& line, const HistoryCard& kind, TimeHistoryRequ
   check_width(line, "name");
   const std::int64_t id = line.integer(1, 10, "Obj_ID");
   if (id <= 0) line.fail(1, 10, "Obj_ID", "a positive object id (one object per line)");
+  std::int64_t skew = 0;
   if (kind.lines == ObjectLines::IdSkewName) {
-    if (line.integer(11, 10, "skew_ID") != 0)
+    skew = line.integer(11, 10, "skew_ID");
+    if (skew < 0) line.fail(11, 10, "skew_ID", "a non-negative skew id (0 or blank: the global axes)");
+    // A node's vectors can be written in a skew (SK-4); an element's stresses in a skew are not.
+    if (skew != 0 && th.object != HistoryObject::Node)
       line.fail(11, 10, "skew_ID",
-                "0 or blank (one object per line; output in skew or frame systems is not supported by Crumple)");
+                "0 or blank (element results in a skew or frame system are not supported by Crumple)");
   } else if (!line.text(11, 10).empty()) {
     line.fail(11, 10, "(blank)", "blank columns 11-20 (the name starts at column 21)");
   }
+  const auto listed = std::find(th.object_ids.begin(), th.object_ids.end(), id);
+  if (listed != th.object_ids.end() && th.object == HistoryObject::Node &&
+      th.object_skew_ids[static_cast<std::size_t>(listed - th.object_ids.begin())] != skew)
+    line.fail(11, 10, "skew_ID", "the skew the node has on its first line in this card (one curve per node and "
+                                 "card; a second skew takes a second /TH/NODE)");
+  const std::size_t before = th.object_ids.size();
   add_object(th, line, id, line.text(21, 80), context);
+  if (th.object == HistoryObject::Node && th.object_ids.size() > before) th.object_skew_ids.push_back(skew);
 }
 
 void read_history(CardReader& reader, DeckContext& context, const HistoryCard& kind) {
@@ -251,9 +262,8 @@ void read_accelerometer(CardReader& reader, DeckContext& context) {
   const Line line = reader.next("node_ID, skew_ID, Fcut");
   a.node_id = line.integer(1, 10, "node_ID");
   if (a.node_id <= 0) line.fail(1, 10, "node_ID", "a positive node id");
-  // Crumple has no /SKEW: the output is in the global frame, and a skew the deck names would be silently dropped.
-  if (line.integer(11, 10, "skew_ID") != 0)
-    context.unsupported(line.error(11, 10, "skew_ID", default_only("skew frames are")));
+  a.skew_id = line.integer(11, 10, "skew_ID");
+  if (a.skew_id < 0) line.fail(11, 10, "skew_ID", "a non-negative skew id (0 or blank: the global axes)");
   a.cutoff = line.real(31, 20, "Fcut", dim::rate);
   if (a.cutoff < 0.0) line.fail(31, 20, "Fcut", "a non-negative cutoff frequency (0 or blank: no filter)");
   reader.finish();

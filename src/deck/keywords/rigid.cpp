@@ -164,18 +164,13 @@ void read_body_definition(const Line& line, RigidBody& b) {
 }
 
 // The solver (solver/rigid_bodies.cpp) computes the inertia from the nodes plus the added inertia (Ispher 2), made
-// spherical for Ispher 1, about the centre of all masses, where it moves the main node (ICoG 1): the other
-// choices are options it lacks.
+// spherical for Ispher 1, about the centre ICoG chooses (RB-0e): inertia from the card alone (Ispher 3) is an
+// option it lacks.
 void reject_body_options(const Line& line, RigidBody& b, DeckContext& context) {
   if (b.ispher == 3) {
     context.unsupported(line.error(31, 10, "Ispher", "0, 1 or 2 (inertia from the card only, Ispher = 3, is not "
                                                      "supported by Crumple)"));
     b.ispher = 2;
-  }
-  if (b.icog != 1) {
-    context.unsupported(line.error(81, 10, "ICoG", "0 or 1 (the other centre-of-gravity choices, ICoG = 2 to 4, "
-                                                   "are not supported by Crumple)"));
-    b.icog = 1;
   }
 }
 
