@@ -31,6 +31,41 @@ std::string per_domain(const std::vector<T>& values) {
   return fmt::format("min {} mean {:.1f} max {}", *low, sum / static_cast<double>(values.size()), *high);
 }
 
+const char* shape_name(RigidWallShape shape) {
+  switch (shape) {
+    case RigidWallShape::Plane: return "PLANE";
+    case RigidWallShape::Cylinder: return "CYL";
+    case RigidWallShape::Sphere: return "SPHER";
+    case RigidWallShape::Parallelogram: return "PARAL";
+  }
+  return "";
+}
+
+// What the reading resolved, as the reference's starter listing prints it: each property's formulation after
+// /DEF_SHELL, /DEF_SOLID and the defaults (docs/deck-format.md, "Defaults that matter"), each wall's secondary
+// nodes, each body's centre choice and each skew.
+void print_resolved(const Model& m, std::ostream& out) {
+  fmt::print(out, "Resolved\n");
+  for (std::size_t i = 0; i < m.properties.size() && i < m.formulations.size(); ++i) {
+    const Property& p = m.properties[i];
+    const ResolvedFormulation& f = m.formulations[i];
+    if (p.kind == PropertyKind::Shell)
+      fmt::print(out, "  property {:<10} shell: Ishell {} Ish3n {} Ismstr {} N {} Iplas {}\n", p.user_id, f.ishell,
+                 f.ish3n, f.ismstr, f.n_points, f.iplas);
+    else
+      fmt::print(out, "  property {:<10} solid: Isolid {} Ismstr {} Icpre {} Iframe {}\n", p.user_id, f.isolid,
+                 f.ismstr, f.icpre, f.iframe);
+  }
+  for (const RigidWall& w : m.rigid_walls)
+    fmt::print(out, "  rigid wall {:<8} {}: {} secondary nodes{}\n", w.user_id, shape_name(w.shape),
+               w.secondary_nodes.size(), w.node >= 0 ? " (moving)" : "");
+  for (const RigidBody& b : m.rigid_bodies)
+    fmt::print(out, "  rigid body {:<8} main node {} ICoG {} Ispher {}\n", b.user_id, b.main_node_id, b.icog,
+               b.ispher);
+  for (const Skew& k : m.skews)
+    fmt::print(out, "  skew {:<14} {}\n", k.user_id, k.kind == SkewKind::Fixed ? "fixed" : "moving");
+}
+
 }  // namespace
 
 void print_check_report(const Deck& deck, std::ostream& out) {
@@ -80,6 +115,7 @@ void print_check_report(const Deck& deck, std::ostream& out) {
   } else {
     fmt::print(out, "  smallest element step none (no elements)\n");
   }
+  print_resolved(m, out);
   if (m.run.present)
     fmt::print(out, "Run\n  end time              {:g}\n", m.run.end_time);
   fmt::print(out, "Keywords\n");

@@ -168,26 +168,18 @@ void warn_main_nodes_in_elements(Resolver& r) {
 // Rigid walls
 
 // Distance of `x` from the wall on its outer side, as D_search measures it; negative when behind or inside the
-// wall, or (parallelogram) beside it.
+// wall. A parallelogram selects by its plane, whatever the point's place beside its edges, as the reference does
+// (measured: its starter listing's secondary nodes, docs/theory/rigid-walls.md RW-0).
 double wall_distance(const RigidWall& w, const Vec3& x) {
   const Vec3 d = x - w.point;
   switch (w.shape) {
-    case RigidWallShape::Plane: return dot(d, w.direction);
+    case RigidWallShape::Plane:
+    case RigidWallShape::Parallelogram: return dot(d, w.direction);
     case RigidWallShape::Sphere: return norm(d) - 0.5 * w.diameter;
     case RigidWallShape::Cylinder: {
       const double along = dot(d, w.direction);
       const Vec3 radial{d[0] - along * w.direction[0], d[1] - along * w.direction[1], d[2] - along * w.direction[2]};
       return norm(radial) - 0.5 * w.diameter;
-    }
-    case RigidWallShape::Parallelogram: {
-      // In-plane coordinates (a, b) of x along the edges e1 = M1 - M, e2 = M2 - M: inside when both in [0, 1].
-      const Vec3 e1 = w.point1 - w.point, e2 = w.point2 - w.point;
-      const double g11 = dot(e1, e1), g12 = dot(e1, e2), g22 = dot(e2, e2);
-      const double det = g11 * g22 - g12 * g12;
-      const double a = (g22 * dot(d, e1) - g12 * dot(d, e2)) / det;
-      const double b = (g11 * dot(d, e2) - g12 * dot(d, e1)) / det;
-      if (a < 0.0 || a > 1.0 || b < 0.0 || b > 1.0) return -1.0;
-      return dot(d, w.direction);
     }
   }
   return -1.0;
