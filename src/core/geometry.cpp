@@ -2,6 +2,9 @@
 // time-step estimate, the contact stiffness and the brick kernels.
 #include "crumple/core/geometry.hpp"
 
+#include <algorithm>
+#include <limits>
+
 namespace crumple::geometry {
 namespace {
 
@@ -44,6 +47,44 @@ double brick_volume_gradient(const double* x, const double* y, const double* z, 
     volume += x[i] * dv_dx[i] + y[i] * dv_dy[i] + z[i] * dv_dz[i];
   }
   return volume / 3.0;
+}
+
+double brick_jacobian(const double* x, const double* y, const double* z, double r, double s, double t) {
+  constexpr double kR[8] = {-1, 1, 1, -1, -1, 1, 1, -1}, kS[8] = {-1, -1, 1, 1, -1, -1, 1, 1},
+                   kT[8] = {-1, -1, -1, -1, 1, 1, 1, 1};
+  double j[3][3] = {};  // j[i][k] = dx_i / dxi_k
+  for (int a = 0; a < 8; ++a) {
+    const double d[3] = {0.125 * kR[a] * (1 + kS[a] * s) * (1 + kT[a] * t), 0.125 * kS[a] * (1 + kR[a] * r) * (1 + kT[a] * t),
+                         0.125 * kT[a] * (1 + kR[a] * r) * (1 + kS[a] * s)};
+    for (int k = 0; k < 3; ++k) j[0][k] += x[a] * d[k], j[1][k] += y[a] * d[k], j[2][k] += z[a] * d[k];
+  }
+  return j[0][0] * (j[1][1] * j[2][2] - j[1][2] * j[2][1]) - j[0][1] * (j[1][0] * j[2][2] - j[1][2] * j[2][0]) +
+         j[0][2] * (j[1][0] * j[2][1] - j[1][1] * j[2][0]);
+}
+
+double smallest_point_jacobian(const double* x, const double* y, const double* z) {
+  constexpr double g = 0.57735026918962576451;  // 1 / sqrt(3)
+  double smallest = std::numeric_limits<double>::infinity();
+  for (double r : {-g, g})
+    for (double s : {-g, g})
+      for (double t : {-g, g}) smallest = std::min(smallest, brick_jacobian(x, y, z, r, s, t));
+  return smallest;
+}
+
+double full_integration_length(const double* x, const double* y, const double* z, double smallest_point_det) {
+  // m_a: centroid of one face minus centroid of the opposite one (faces 1234 / 5678, 1256 / 3478, 1458 / 2367).
+  constexpr int kSide[3][4] = {{0, 1, 2, 3}, {0, 1, 4, 5}, {0, 3, 4, 7}};
+  constexpr int kOpposite[3][4] = {{4, 5, 6, 7}, {2, 3, 6, 7}, {1, 2, 5, 6}};
+  Vec3 m[3];
+  for (int a = 0; a < 3; ++a) {
+    m[a] = {};
+    for (int k = 0; k < 4; ++k) {
+      const int i = kSide[a][k], o = kOpposite[a][k];
+      m[a] = m[a] + Vec3{0.25 * (x[i] - x[o]), 0.25 * (y[i] - y[o]), 0.25 * (z[i] - z[o])};
+    }
+  }
+  const double largest = std::max({norm(cross(m[0], m[1])), norm(cross(m[0], m[2])), norm(cross(m[2], m[1]))});
+  return largest > 0.0 ? 8.0 * smallest_point_det / largest : 0.0;
 }
 
 double brick_volume(const std::array<Vec3, 8>& p) {

@@ -57,6 +57,24 @@ void Resolver::throw_if_errors() {
   if (!errors.empty()) throw DeckErrors(std::move(errors));
 }
 
+// One-point bricks written as tetrahedra or pyramids integrate 3/4 of their volume, as in the reference (docs/theory/
+// brick8.md, eq. B-2b): their mass and stiffness follow. Said once per part, since a user may not expect it.
+void warn_degenerate_one_point_bricks(Resolver& r) {
+  const Model& m = r.model;
+  std::vector<long long> count(m.parts.size(), 0);
+  for (const ElementGroup& g : m.element_groups)
+    if (g.kind == ElementKind::Brick8)
+      for (std::int32_t e = g.begin; e < g.end; ++e)
+        if (one_point_volume_scale(m, static_cast<std::size_t>(e)) != 1.0) ++count[static_cast<std::size_t>(g.part)];
+  for (std::size_t i = 0; i < m.parts.size(); ++i)
+    if (count[i] > 0)
+      r.context.warn(m.parts[i].where, fmt::format("/PART/{}", m.parts[i].user_id),
+                     fmt::format("{} one-point bricks written as tetrahedra or pyramids integrate 3/4 of their "
+                                 "volume, as in the reference: their mass and stiffness follow (Isolid 14 to 18 "
+                                 "integrate all of it)",
+                                 count[i]));
+}
+
 void resolve_model(DeckContext& context, std::vector<RunControl>& continued_runs) {
   Resolver r(context);
   apply_random_noise(context.model);
@@ -70,6 +88,7 @@ void resolve_model(DeckContext& context, std::vector<RunControl>& continued_runs
   r.throw_if_errors();
   compute_mass(context.model);
   check_mass(r);
+  warn_degenerate_one_point_bricks(r);
   r.throw_if_errors();
 }
 

@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "crumple/materials/solid_update.hpp"
+#include "crumple/model/properties.hpp"
 #include "crumple/core/geometry.hpp"
 
 namespace crumple {
@@ -476,7 +477,7 @@ void brick8_switch_to_small_strain(const ElementTable& table, std::int32_t eleme
 void brick8_configure(int isolid, int icpre, BrickGroupParameters& p) {
   p.isolid = isolid;
   p.plain_hourglass = isolid == 2;  // Hallquist's viscous form (eq. B-6a)
-  p.points = isolid == 1 || isolid == 2 || isolid == 24 ? 1 : 8;
+  p.points = fully_integrated_brick(isolid) ? 8 : 1;
   p.assumed_shear = isolid == 14 || isolid == 18;      // shear-locking free 2x2x2 (eq. B-10a)
   p.constant_pressure = icpre == 1 || isolid == 12;  // Isolid 12: bulk always at one point (eq. B-10)
 }
@@ -539,18 +540,20 @@ GroupStepResult brick8_one_point_forces(const ElementTable& table, const Element
     // Current density, wave speed, characteristic length, bulk viscosity (eq. B-7, B-12).
     const double rho = p.density * state.volume0[ue] / volume;
     const double c = std::sqrt(wave_modulus / rho);
-    const double length = volume / largest_face_area(el.x, el.y, el.z);
+    // A tetrahedron or a pyramid written as a brick integrates 3/4 of its volume, as the reference (eq. B-2b).
+    const double scale = state.volume_scale[ue];
+    const double length = scale * volume / largest_face_area(el.x, el.y, el.z);
     const double dv = r.d[0] + r.d[1] + r.d[2];
     const Viscosity visc = bulk_viscosity(p, rho, c, length, dv);
-    const double internal = volume_mid * (u.power - visc.q * dv) * dt;
+    const double internal = scale * volume_mid * (u.power - visc.q * dv) * dt;
 
     // Internal forces f_I = V (sigma - q I) B_I = (sigma - q I) dV/dx_I (eq. B-4).
     double fx[8], fy[8], fz[8];
     const double sxx = s[0] - visc.q, syy = s[1] - visc.q, szz = s[2] - visc.q;
     for (int a = 0; a < 8; ++a) {
-      fx[a] = bx[a] * sxx + by[a] * s[3] + bz[a] * s[5];
-      fy[a] = bx[a] * s[3] + by[a] * syy + bz[a] * s[4];
-      fz[a] = bx[a] * s[5] + by[a] * s[4] + bz[a] * szz;
+      fx[a] = scale * (bx[a] * sxx + by[a] * s[3] + bz[a] * s[5]);
+      fy[a] = scale * (bx[a] * s[3] + by[a] * syy + bz[a] * s[4]);
+      fz[a] = scale * (bx[a] * s[5] + by[a] * s[4] + bz[a] * szz);
     }
 
     double gamma[4][8], q[3][4];
@@ -594,7 +597,7 @@ GroupStepResult brick8_one_point_forces(const ElementTable& table, const Element
 
     // Critical step L / (Q + sqrt(Q^2 + c^2)) (eq. B-12), where Q carries the bulk viscosity, and the hourglass
     // damper's own bound 2 m / lambda_max (eq. B-13): hourglass modes carry no stiffness in Isolid 1.
-    const double nodal_mass = 0.125 * p.density * state.volume0[ue];
+    const double nodal_mass = 0.125 * p.density * state.volume0[ue] * scale;
     const double step = std::min(transit, damper_rate > 0.0 ? 2.0 * nodal_mass / damper_rate
                                                             : std::numeric_limits<double>::infinity());
     close_element(state, result, e, step, u.failed);
@@ -640,7 +643,13 @@ GroupStepResult brick8_full_forces(const ElementTable& table, const ElementGroup
 
     const double rho = p.density * state.volume0[ue] / volume;
     const double c = std::sqrt(wave_modulus / rho);
-    const double length = volume / largest_face_area(el.x, el.y, el.z);
+    // A degenerate brick's length follows its smallest point (eq. B-12a); a hexahedron's is B-12's.
+    double length = volume / largest_face_area(el.x, el.y, el.z);
+    if (state.degenerate[ue]) {
+      double smallest_det = pk[0].det_now;
+      for (int g = 1; g < 8; ++g) smallest_det = std::min(smallest_det, pk[g].det_now);
+      length = geometry::full_integration_length(el.x, el.y, el.z, smallest_det);
+    }
     const Viscosity visc = bulk_viscosity(p, rho, c, length, dv_mean);
 
     // Rates of the points (eq. B-10), with the assumed shears of eq. B-10a and the mean dilatation (Icpre 1).

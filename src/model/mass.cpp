@@ -24,6 +24,21 @@ std::array<double, 8> corner_mass_fractions(const Model& model, ElementKind kind
   return share;
 }
 
+double one_point_volume_scale(const Model& model, std::size_t brick) {
+  const Part& part = part_of(model, ElementKind::Brick8, brick);
+  const std::int32_t* n = model.elements[static_cast<int>(ElementKind::Brick8)].nodes_of(brick);
+  if (part.property < 0 || fully_integrated_brick(model.formulations[static_cast<std::size_t>(part.property)].isolid) ||
+      !geometry::repeats_a_node(n))
+    return 1.0;
+  double x[8], y[8], z[8];
+  for (std::size_t a = 0; a < 8; ++a) {
+    const auto k = static_cast<std::size_t>(n[a]);
+    x[a] = model.nodes.x[k], y[a] = model.nodes.y[k], z[a] = model.nodes.z[k];
+  }
+  const double exact = geometry::brick_volume(model.nodes.x, model.nodes.y, model.nodes.z, n);
+  return exact > 0.0 ? geometry::one_point_volume(x, y, z) / exact : 1.0;
+}
+
 double element_mass(const Model& model, ElementKind kind, std::size_t element) {
   const Part& part = part_of(model, kind, element);
   const Material& material = model.materials[static_cast<std::size_t>(part.material)];
@@ -40,7 +55,7 @@ double element_mass(const Model& model, ElementKind kind, std::size_t element) {
     case ElementKind::Brick8: {
       std::array<Vec3, 8> p;
       for (int a = 0; a < 8; ++a) p[static_cast<std::size_t>(a)] = x.position(n[a]);
-      return material.density * geometry::brick_volume(p);
+      return material.density * geometry::brick_volume(p) * one_point_volume_scale(model, element);
     }
   }
   return 0.0;

@@ -40,6 +40,12 @@ double initial_element_time_step(const Model& model, ElementKind kind, std::size
       const double c = std::sqrt((mat.bulk_modulus() + 4.0 / 3.0 * mat.shear_modulus()) / mat.density);
       std::array<Vec3, 8> p;
       for (int a = 0; a < 8; ++a) p[static_cast<std::size_t>(a)] = x.position(n[a]);
+      if (fully_integrated_brick(model.formulations[static_cast<std::size_t>(part.property)].isolid) &&
+          geometry::repeats_a_node(n)) {  // B-12a
+        double px[8], py[8], pz[8];
+        for (std::size_t a = 0; a < 8; ++a) px[a] = p[a].x, py[a] = p[a].y, pz[a] = p[a].z;
+        return geometry::full_integration_length(px, py, pz, geometry::smallest_point_jacobian(px, py, pz)) / c;
+      }
       return geometry::brick_characteristic_length(p) / c;
     }
   }

@@ -51,6 +51,8 @@ void setup_bricks(const Model& m, SolverState& s) {
       const std::int32_t* nodes = table.nodes_of(static_cast<std::size_t>(e));
       st.volume0[static_cast<std::size_t>(e)] = geometry::brick_volume(m.nodes.x, m.nodes.y, m.nodes.z, nodes);
       st.mass[static_cast<std::size_t>(e)] = element_mass(m, ElementKind::Brick8, static_cast<std::size_t>(e));
+      st.volume_scale[static_cast<std::size_t>(e)] = one_point_volume_scale(m, static_cast<std::size_t>(e));
+      st.degenerate[static_cast<std::size_t>(e)] = geometry::repeats_a_node(nodes) ? 1 : 0;
       if (p.ismstr == 1 || p.ismstr == 3) brick8_switch_to_small_strain(table, e, s.nodes, st);  // from t = 0
     }
   }

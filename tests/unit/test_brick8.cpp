@@ -1018,30 +1018,33 @@ std::string bar_starter(int n, double h, int isolid, double young, double nu, co
   return s + extra + "/END\n";
 }
 
-TEST(Brick8, DegenerateBricksReadWithTheirExactMass) {
-  // A unit cube of 7800 kg/m^3 written as one prism 1 2 3 3 5 6 7 7 (corners 1 2 3 | 5 6 7, half the cube) and
-  // three tetrahedra 1 2 3 3 4 4 4 4 filling the other half (1 3 4 | 5 7 8): (1 3 4 5), (3 4 5 7), (4 8 5 7). The
-  // reader accepts them and the mass is rho times the exact volume.
-  std::string s = test::begin_card("DEGEN") + "/NODE\n";
-  for (int k = 0; k < 8; ++k) s += I(k + 1) + R(kCorners[k][0]) + R(kCorners[k][1]) + R(kCorners[k][2]) + "\n";
-  s += "/BRICK/1\n" + I(1) + I(1) + I(2) + I(3) + I(3) + I(5) + I(6) + I(7) + I(7) + "\n";
-  s += I(2) + I(1) + I(3) + I(4) + I(4) + I(5) + I(5) + I(5) + I(5) + "\n";
-  s += I(3) + I(3) + I(4) + I(5) + I(5) + I(7) + I(7) + I(7) + I(7) + "\n";
-  s += I(4) + I(4) + I(8) + I(5) + I(5) + I(7) + I(7) + I(7) + I(7) + "\n";
-  s += "/PART/1\ncube\n" + I(1) + I(1) + "\n/PROP/SOLID/1\nsolid\n" + I(1) + "\n" + R(0.0) + R(0.0) + R(0.0) + "\n";
-  s += "/MAT/ELAST/1\nsteel\n" + R(kRho) + "\n" + R(kE) + R(kNu) + "\n/END\n";
-  test::TempDir dir;
-  const Model m = read_deck(dir.write("DEGEN_0000.rad", s)).model;
-  ASSERT_EQ(m.elements[static_cast<int>(ElementKind::Brick8)].size(), 4u);
-  EXPECT_NEAR(m.element_mass, kRho * 1.0, 1e-12 * kRho);
-  double nodal = 0.0;
-  for (double v : m.nodal_mass) nodal += v;
-  EXPECT_NEAR(nodal, kRho, 1e-12 * kRho);
-  // Each connectivity slot carries 1/8 of its element's mass (as the reference lumps degenerate bricks): node 5
-  // holds 4/8 of each tetrahedron having it four times.
-  EXPECT_NEAR(m.nodal_mass[static_cast<std::size_t>(m.index.nodes.at(5))],
-              kRho * (0.5 / 8.0 + (1.0 / 6.0) * (4.0 / 8.0) + (1.0 / 6.0) * (2.0 / 8.0) + (1.0 / 6.0) * (2.0 / 8.0)),
-              1e-12 * kRho);
+// A unit cube of 7800 kg/m^3 written as one prism 1 2 3 3 5 6 7 7 (corners 1 2 3 | 5 6 7, half the cube) and three
+// tetrahedra 1 2 3 3 4 4 4 4 filling the other half (1 3 4 | 5 7 8): (1 3 4 5), (3 4 5 7), (4 8 5 7). The reader
+// accepts them. One-point bricks integrate a tetrahedron over 8 det J(0), 3/4 of its volume, as the reference (eq.
+// B-2b, its starter listing's mass); the prism over all of it; fully integrated bricks integrate all of every shape.
+TEST(Brick8, DegenerateBricksReadWithTheReferenceMass) {
+  for (int isolid : {1, 14}) {
+    std::string s = test::begin_card("DEGEN") + "/NODE\n";
+    for (int k = 0; k < 8; ++k) s += I(k + 1) + R(kCorners[k][0]) + R(kCorners[k][1]) + R(kCorners[k][2]) + "\n";
+    s += "/BRICK/1\n" + I(1) + I(1) + I(2) + I(3) + I(3) + I(5) + I(6) + I(7) + I(7) + "\n";
+    s += I(2) + I(1) + I(3) + I(4) + I(4) + I(5) + I(5) + I(5) + I(5) + "\n";
+    s += I(3) + I(3) + I(4) + I(5) + I(5) + I(7) + I(7) + I(7) + I(7) + "\n";
+    s += I(4) + I(4) + I(8) + I(5) + I(5) + I(7) + I(7) + I(7) + I(7) + "\n";
+    s += "/PART/1\ncube\n" + I(1) + I(1) + "\n/PROP/SOLID/1\nsolid\n" + I(isolid) + "\n" + R(0.0) + R(0.0) + R(0.0) + "\n";
+    s += "/MAT/ELAST/1\nsteel\n" + R(kRho) + "\n" + R(kE) + R(kNu) + "\n/END\n";
+    test::TempDir dir;
+    const Model m = read_deck(dir.write("DEGEN_0000.rad", s)).model;
+    ASSERT_EQ(m.elements[static_cast<int>(ElementKind::Brick8)].size(), 4u);
+    const double tetra = isolid == 1 ? 0.75 : 1.0;  // the share of a tetrahedron's volume the element integrates
+    EXPECT_NEAR(m.element_mass, kRho * (0.5 + 0.5 * tetra), 1e-12 * kRho) << "Isolid " << isolid;
+    double nodal = 0.0;
+    for (double v : m.nodal_mass) nodal += v;
+    EXPECT_NEAR(nodal, m.element_mass, 1e-12 * kRho);
+    // Each connectivity slot carries 1/8 of its element's mass (as the reference lumps degenerate bricks): node 5
+    // holds 4/8 of the tetrahedron having it four times.
+    EXPECT_NEAR(m.nodal_mass[static_cast<std::size_t>(m.index.nodes.at(5))],
+                kRho * (0.5 / 8.0 + tetra * (1.0 / 6.0) * (4.0 / 8.0 + 2.0 / 8.0 + 2.0 / 8.0)), 1e-12 * kRho);
+  }
 }
 
 std::string bar_engine(double end_time, double history) {

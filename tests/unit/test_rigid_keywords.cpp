@@ -235,6 +235,7 @@ TEST(RigidKeywords, ParallelogramWall) {
   w.type = "PARAL";
   w.group1 = 0;
   // Corner (0.005, -1, -0.001), edges along x (0.01) and y (2): covers x in [0.005, 0.015], plate nodes 2 and 5.
+  // D_search selects by the plane, beside the edges too, as the reference (RW-0): every plate node is 1 mm above.
   w.contact = R(0.002) + "\n";
   w.origin = vec(0.005, -1, -0.001);
   w.m1 = vec(0.015, -1, -0.001);
@@ -243,7 +244,7 @@ TEST(RigidKeywords, ParallelogramWall) {
   const RigidWall& wall = m.rigid_walls[0];
   EXPECT_EQ(wall.shape, RigidWallShape::Parallelogram);
   EXPECT_EQ(wall.direction, (Vec3{0, 0, 1}));
-  EXPECT_EQ(user_ids(m, wall.secondary_nodes), (std::vector<std::int64_t>{2, 5}));
+  EXPECT_EQ(user_ids(m, wall.secondary_nodes), (std::vector<std::int64_t>{1, 2, 3, 4, 5, 6}));
   Wall flat = w;
   flat.m2 = vec(0.025, -1, -0.001);  // on the line M M1
   const std::string e = error_of(dir, flat.card());

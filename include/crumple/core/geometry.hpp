@@ -50,6 +50,29 @@ double brick_volume(const std::vector<double>& x, const std::vector<double>& y, 
 double brick_volume_gradient(const double* x, const double* y, const double* z, double* dv_dx, double* dv_dy,
                              double* dv_dz);
 
+// det J of the trilinear map at the natural point (r, s, t) of the cube [-1, 1]^3 (8 det J(0) is the one-point
+// volume estimate; the 2x2x2 points sit at +-1/sqrt(3)).
+double brick_jacobian(const double* x, const double* y, const double* z, double r, double s, double t);
+// The one-point volume estimate 8 det J(0): the exact volume for a parallelepiped and a prism, 3/4 of it for a
+// tetrahedron or a pyramid written as a brick (docs/theory/brick8.md, "Degenerate bricks").
+inline double one_point_volume(const double* x, const double* y, const double* z) {
+  return 8.0 * brick_jacobian(x, y, z, 0.0, 0.0, 0.0);
+}
+// Whether an 8-node connectivity repeats a node (a degenerate brick).
+inline bool repeats_a_node(const std::int32_t* nodes) {
+  for (int a = 0; a < 8; ++a)
+    for (int b = a + 1; b < 8; ++b)
+      if (nodes[a] == nodes[b]) return true;
+  return false;
+}
+// The smallest det J over the 2x2x2 Gauss points.
+double smallest_point_jacobian(const double* x, const double* y, const double* z);
+// The characteristic length of a fully integrated (2x2x2) brick (docs/theory/brick8.md, eq. B-12a): 8 times the
+// smallest point's det J over the largest |m_a x m_b|, m_a the three vectors between the centroids of opposite
+// faces. V / (largest face area) for a parallelepiped; far shorter for a degenerate brick, whose smallest point
+// volume is small (the reference's rule, measured on prisms of several shapes).
+double full_integration_length(const double* x, const double* y, const double* z, double smallest_point_det);
+
 // Characteristic length of a 4-node shell for the critical time step: L = A / longest side (eq. T-1,
 // docs/theory/time-step.md); for a square it is the side.
 inline double quad_characteristic_length(const Vec3& p1, const Vec3& p2, const Vec3& p3, const Vec3& p4) {

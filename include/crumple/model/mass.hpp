@@ -15,6 +15,11 @@ void compute_mass(Model& model);
 // eq. S-9c). `nodes`: the element's node indices.
 std::array<double, 8> corner_mass_fractions(const Model& model, ElementKind kind, const std::int32_t* nodes);
 
+// The volume a one-point brick (Isolid 1, 2, 24) integrates over its exact volume: 8 det J(0) / V for a brick that
+// repeats nodes (3/4 for a tetrahedron or a pyramid, 1 for a prism), as the reference integrates them; 1 for every
+// other brick (docs/theory/brick8.md, eq. B-2b). Its mass, forces and length take the factor.
+double one_point_volume_scale(const Model& model, std::size_t brick);
+
 // Mass of one element [M].
 double element_mass(const Model& model, ElementKind kind, std::size_t element);
 

@@ -76,6 +76,9 @@ struct ResolvedFormulation {
   int iplas = 2;    // shells, plastic points: 1 the iterative (exact) plane-stress return, 2 the radial return
 };
 
+// Bricks integrated at 2x2x2 points (Isolid 12, 14, 17, 18); 1, 2 and 24 take one point (docs/theory/brick8.md).
+inline bool fully_integrated_brick(int isolid) { return isolid != 1 && isolid != 2 && isolid != 24; }
+
 // The factor a viscous fraction nu takes off an element's critical step, sqrt(1 + nu^2) - nu (docs/theory/
 // time-step.md, eq. T-1c): the stable step of a damped oscillator, 0.98511 for nu = 0.015.
 inline double damped_step_factor(double nu) { return std::sqrt(1.0 + nu * nu) - nu; }

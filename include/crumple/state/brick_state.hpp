@@ -23,6 +23,8 @@ struct BrickState {
 
   // Per element (index in the Brick8 ElementTable).
   std::vector<double> volume0;           // initial volume (eq. B-2) for the current density rho0 V0 / V [L^3]
+  std::vector<double> volume_scale;      // one-point bricks: the integrated share of the volume (eq. B-2b), else 1
+  std::vector<std::uint8_t> degenerate;  // 1 for a brick that repeats nodes (a prism, pyramid or tetrahedron)
   std::vector<double> hourglass;         // 12 hourglass generalized stresses per element, Isolid 24 (eq. B-9) [F]
   std::vector<double> internal_energy;   // [M L^2 T^-2]
   std::vector<double> hourglass_energy;  // [M L^2 T^-2]
@@ -41,6 +43,8 @@ struct BrickState {
   // Sizes the per-element arrays for n elements, every value zero.
   void resize_elements(std::size_t n) {
     for (auto* v : {&volume0, &internal_energy, &hourglass_energy, &critical_dt, &mass}) v->assign(n, 0.0);
+    volume_scale.assign(n, 1.0);
+    degenerate.assign(n, 0);
     hourglass.assign(12 * n, 0.0);
     reference_shape.assign(24 * n, 0.0);
     reference_frame.assign(9 * n, 0.0);
