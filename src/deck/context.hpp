@@ -57,7 +57,13 @@ struct KeywordSpec {
   std::string_view name;  // leading path parts, e.g. "/MAT/PLAS_JOHNS"
   DeckPart part;
   KeywordHandler handler;  // empty: accepted without effect (listed in the report)
+  // The card has one layout in every input version (the reference describes no 8-column one): it is never read in
+  // the narrow layout of versions 41 to 44 (docs/deck-format.md, "Input versions").
+  bool same_layout_in_every_version = false;
 };
+
+// Input versions 41 to 44 (43 read as 42, as the reference's reader has no layout of its own for it).
+inline bool narrow_layout_version(int input_version) { return input_version >= 41 && input_version <= 50; }
 
 using KeywordTable = std::vector<KeywordSpec>;
 
@@ -91,5 +97,8 @@ std::int64_t card_id(CardReader& reader, std::size_t index);
 std::int64_t object_id(CardReader& reader, std::size_t index);
 // The optional unit_ID at path part `index`: Crumple has no /UNIT, so a non-zero value is an error.
 void require_no_unit_id(CardReader& reader, std::size_t index);
+// Cards whose layout in input versions 41 to 44 is not the 2017 one narrowed (other lines, other fields), which
+// Crumple does not read: an error in those versions (docs/deck-format.md, "Input versions").
+void refuse_narrow_layout(const CardReader& reader);
 
 }  // namespace crumple::deck

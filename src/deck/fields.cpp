@@ -156,7 +156,13 @@ SourceLocation Line::where() const { return reader_->text().where(*source_); }
 
 bool Line::blank() const { return trim(source_->text).empty(); }
 
-std::string Line::raw(int column, int width) const {
+std::pair<int, int> Line::placed(int column, int width) const {
+  if (!reader_->narrow() || as_written_ || width <= 0) return {column, width};
+  return {1 + 4 * (column - 1) / 5, 4 * width / 5};
+}
+
+std::string Line::raw(int given_column, int given_width) const {
+  const auto [column, width] = placed(given_column, given_width);
   reader_->mark_read(index_, column, width);
   const auto& s = source_->text;
   const auto begin = static_cast<std::size_t>(column - 1);
@@ -167,8 +173,9 @@ std::string Line::raw(int column, int width) const {
 
 std::string Line::text(int column, int width) const { return std::string(trim(raw(column, width))); }
 
-std::string Line::field_label(int column, int width, std::string_view name) const {
-  if (width <= 0) return std::string(name);
+std::string Line::field_label(int given_column, int given_width, std::string_view name) const {
+  if (given_width <= 0) return std::string(name);
+  const auto [column, width] = placed(given_column, given_width);
   return fmt::format("{} (columns {}-{})", name, column, column + width - 1);
 }
 
@@ -300,6 +307,19 @@ std::int64_t CardReader::path_id(std::size_t index, std::string_view name, bool 
   if (auto v = parse_integer(card_->path[index]); v && *v >= 0) return *v;
   throw DeckError(card_->where, card_->keyword, std::string(name), "a non-negative integer id in the keyword line",
                   quote_text(card_->path[index]));
+}
+
+std::string CardReader::keyword_title() const {
+  if (title_part_ == 0) return {};
+  // After the title_part_-th slash that follows the leading one, as written (the path parts are upper-cased).
+  const std::string& k = card_->keyword;
+  std::size_t at = 0;
+  for (std::size_t slashes = 0; slashes <= title_part_; ++slashes) {
+    at = k.find('/', at);
+    if (at == std::string::npos) return {};
+    ++at;
+  }
+  return std::string(trim(std::string_view(k).substr(at)));
 }
 
 void CardReader::mark_read(std::size_t line, int column, int width) const {

@@ -26,6 +26,7 @@ const KeywordTable& keyword_table() {
 }
 
 std::string read_title(CardReader& reader) {
+  if (reader.narrow()) return valid_utf8(reader.keyword_title());  // on the keyword line (versions 41 to 44)
   if (reader.at_end()) return {};
   // Titles reach NAME.xdmf, the summary and HDF5 attributes: a Latin-1 byte is read as '?' (docs/deck-format.md).
   return valid_utf8(reader.next("the title").text(1, 100));
@@ -75,6 +76,7 @@ std::int64_t card_id(CardReader& reader, std::size_t index) {
   }
   const std::int64_t id = object_id(reader, index);
   require_no_unit_id(reader, index + 1);
+  if (reader.narrow()) return id;  // versions 41 to 44: the title follows the id
   if (card.path.size() > index + 2)
     reader.fail("keyword", "nothing after the unit id", in_quotes(card.path[index + 2]));
   return id;
@@ -87,9 +89,21 @@ std::int64_t object_id(CardReader& reader, std::size_t index) {
 }
 
 void require_no_unit_id(CardReader& reader, std::size_t index) {
+  if (reader.narrow()) {  // input versions 41 to 44: the title takes the place of the unit id
+    reader.title_after(index);
+    return;
+  }
   if (reader.path_id(index, "unit_ID", false) != 0)
     reader.fail("unit_ID", "0 or nothing after the id (/UNIT systems are not supported by Crumple)",
                 "'" + reader.card().path[index] + "'");
+}
+
+void refuse_narrow_layout(const CardReader& reader) {
+  if (reader.narrow())
+    reader.fail("layout",
+                "the card in the layout of input version 51 or later (its own layout in versions 41 to 44 is not "
+                "supported by Crumple)",
+                "an input version of 41 to 44 in /BEGIN");
 }
 
 }  // namespace crumple::deck

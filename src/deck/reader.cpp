@@ -139,6 +139,8 @@ void dispatch(const Card& card, const SourceText& text, DeckContext& context, Re
   }
   try {
     CardReader reader(card, text, context.model.units);
+    if (!card.engine && narrow_layout_version(context.model.input_version) && !spec->same_layout_in_every_version)
+      reader.use_narrow_layout();
     spec->handler(reader, context);
     if (!card.engine && columns_checked(*spec))
       if (const auto unread = reader.unread_columns_error()) context.unsupported(*unread);
@@ -161,7 +163,7 @@ void read_continued_runs(const std::filesystem::path& starter, Deck& deck, DeckC
     context.run_seen = false;
     context.engine_deck = k;
     for (const Card& card : split_cards(text, 0)) {
-      if (is_card(card, {"END", "ENGINE"})) continue;
+      if (is_card(card, {"END", "ENGINE"}) || is_card(card, {"END"})) continue;  // an engine deck's closing /END
       dispatch(card, text, context, record);
     }
     if (!context.run_seen)
@@ -223,7 +225,8 @@ Deck read_deck(const std::filesystem::path& starter, const ReadOptions& options)
       starter_ended = true;
       continue;
     }
-    if (card.engine && is_card(card, {"END", "ENGINE"})) continue;
+    // The engine deck may close with /END (as decks of every version do; the reference reads them).
+    if (card.engine && (is_card(card, {"END", "ENGINE"}) || is_card(card, {"END"}))) continue;
     if (card.engine) engine_seen = true;
     if (!card.engine && !starter_started) {
       starter_started = true;

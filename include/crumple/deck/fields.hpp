@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "crumple/core/deck_error.hpp"
@@ -56,6 +57,13 @@ class Line {
   bool blank() const;
   SourceLocation where() const;
   const std::string& content() const { return source_->text; }
+  // The same line read at the columns as written, whatever the card's layout (a field the narrow layout of input
+  // versions 41 to 44 does not place at 4/5 of its 2017 column, CardReader::use_narrow_layout).
+  Line as_written() const {
+    Line copy = *this;
+    copy.as_written_ = true;
+    return copy;
+  }
 
   // An error about the field at `column`..`column+width-1` (or the whole line when width is 0).
   [[noreturn]] void fail(int column, int width, std::string_view name, std::string_view expected) const;
@@ -65,9 +73,12 @@ class Line {
 
  private:
   std::string field_label(int column, int width, std::string_view name) const;
+  // The columns a field given in the 2017 layout is read at: the same, or 4/5 of them in the narrow layout.
+  std::pair<int, int> placed(int column, int width) const;
   const CardReader* reader_;
   const SourceLine* source_;
   std::size_t index_;  // data line of the card (for the columns read)
+  bool as_written_ = false;
 };
 
 // Walks the data lines of one card.
@@ -103,7 +114,18 @@ class CardReader {
   std::optional<DeckError> unread_columns_error() const;
   void mark_read(std::size_t line, int column, int width) const;  // called by the field readers of Line
 
+  // Input versions 41 to 44 (docs/deck-format.md, "Input versions"): integer and text fields 8 columns wide, reals
+  // 16, the title on the keyword line. A field the readers ask at 2017 column c and width w is read at column
+  // 1 + 4 (c - 1) / 5, width 4 w / 5; the few cards whose old fields lie elsewhere read them as_written().
+  void use_narrow_layout() { narrow_ = true; }
+  bool narrow() const { return narrow_; }
+  // Narrow layout: the keyword line as written after path part `index` - 1, the card's title (read_title).
+  void title_after(std::size_t index) { title_part_ = index; }
+  std::string keyword_title() const;
+
  private:
+  bool narrow_ = false;
+  std::size_t title_part_ = 0;  // 0: none
   const Card* card_;
   const SourceText* text_;
   const UnitSystem* units_;

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <optional>
+#include <utility>
 
 #include "../context.hpp"
 #include "shell_flags.hpp"
@@ -18,12 +19,11 @@ void read_begin(CardReader& reader, DeckContext& context) {
   const Line version = reader.next("Invers, Irun");
   model.input_version = static_cast<int>(version.integer(1, 10, "Invers"));
   // Input versions 51 to 140 write every card Crumple reads with the widths and title lines of 2017; they lack
-  // only fields added later, which are blank there (docs/deck-format.md, "Input versions"). Versions 41 to 44 write
-  // 8- and 16-column fields with the title on the keyword line.
-  if (model.input_version < 51)
-    version.fail(1, 10, "Invers",
-                 "an input version of 51 or later (the 8- and 16-column layouts of versions 41 to 44 are not "
-                 "supported by Crumple)");
+  // only fields added later, which are blank there. Versions 41 to 44 write 8- and 16-column fields with the title
+  // on the keyword line: the cards after /BEGIN are read in that narrow layout (docs/deck-format.md, "Input
+  // versions").
+  if (model.input_version < 41)
+    version.fail(1, 10, "Invers", "an input version of 41 or later (41 to 44, 51 to 140, 2017 and later)");
   // Irun numbers the starter run in Radioss' file names; Crumple names its files after the run name.
   if (version.integer(11, 10, "Irun") != 0)
     context.note(version.where(), reader.card().keyword, "Irun (columns 11-20)",
@@ -99,8 +99,22 @@ void unused_columns(const Line& line, int column, std::string_view expected) {
   if (!text.empty() && line.integer(column, 10, "(unused)") != 0) line.fail(column, 10, "(unused)", std::string(expected));
 }
 
+// /ANALY in input versions 41 to 44: N2D3D 1-8, Iparith 19-26, Isubcycle 27-34.
+void read_narrow_analy(CardReader& reader, DeckContext& context) {
+  if (const auto read = optional_line(reader, "N2D3D, Iparith, Isubcycle")) {
+    const Line line = read->as_written();
+    if (line.integer(1, 8, "N2D3D") != 0)
+      context.unsupported(line.error(1, 8, "N2D3D", default_only("2-D analysis (axisymmetric, plane strain) is")));
+    for (const auto& [column, name] : {std::pair{19, "Iparith"}, std::pair{27, "Isubcycle"}})
+      if (line.integer(column, 8, name) != 0)
+        context.note(line.where(), reader.card().keyword, name, "performance hint: no effect on Crumple's results",
+                     SkipKind::PerformanceHint);
+  }
+}
+
 // /ANALY: N2D3D (1-10), Iparith (21-30), Isubcycle (31-40).
 void read_analy(CardReader& reader, DeckContext& context) {
+  if (reader.narrow()) return read_narrow_analy(reader, context);
   if (const auto line = optional_line(reader, "N2D3D, Iparith, Isubcycle")) {
     const std::int64_t n2d3d = line->integer(1, 10, "N2D3D");
     if (n2d3d < 0 || n2d3d > 2) line->fail(1, 10, "N2D3D", "0 (3-D), 1 (axisymmetric) or 2 (plane strain)");
@@ -265,9 +279,9 @@ void read_def_solid(CardReader& reader, DeckContext& context) {
 }  // namespace
 
 void register_control_keywords(KeywordTable& table) {
-  table.push_back({"/BEGIN", DeckPart::Starter, read_begin});
+  table.push_back({"/BEGIN", DeckPart::Starter, read_begin, true});
   table.push_back({"/TITLE", DeckPart::Starter, read_title_card});
-  table.push_back({"/DEF_SHELL", DeckPart::Starter, read_def_shell});
+  table.push_back({"/DEF_SHELL", DeckPart::Starter, read_def_shell, true});
   table.push_back({"/DEF_SOLID", DeckPart::Starter, read_def_solid});
   table.push_back({"/ANALY", DeckPart::Starter, read_analy});
   table.push_back({"/IOFLAG", DeckPart::Starter, read_ioflag});
@@ -275,9 +289,9 @@ void register_control_keywords(KeywordTable& table) {
   table.push_back({"/PROC", DeckPart::Starter, read_performance_card});
   table.push_back({"/PROC", DeckPart::Engine, read_performance_card});
   table.push_back({"/MEMORY", DeckPart::Starter, read_performance_card});
-  table.push_back({"/RANDOM", DeckPart::Starter, read_random});
-  table.push_back({"/SHFRA", DeckPart::Starter, read_shfra});
-  table.push_back({"/AMS", DeckPart::Starter, read_ams});
+  table.push_back({"/RANDOM", DeckPart::Starter, read_random, true});
+  table.push_back({"/SHFRA", DeckPart::Starter, read_shfra, true});
+  table.push_back({"/AMS", DeckPart::Starter, read_ams, true});
   // A version stamp without data: accepted without effect (listed by `crumple check`).
   table.push_back({"/VERS", DeckPart::Starter, {}});
 }

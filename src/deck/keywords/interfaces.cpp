@@ -230,6 +230,7 @@ void warn_unused(const Type7Lines& l, const Type7Interface& i, DeckContext& cont
 }
 
 void read_type7(CardReader& reader, DeckContext& context) {
+  refuse_narrow_layout(reader);
   Type7Interface i;
   i.where = reader.card().where;
   i.user_id = interface_id(reader);

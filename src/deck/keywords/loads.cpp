@@ -51,8 +51,9 @@ void require_blank_newer_field(const Line& line, DeckContext& context, int colum
 }
 
 // A scale factor where blank or 0 means 1 (in input units, hence the conversion factor).
-double scale_or_one(const CardReader& reader, const Line& line, int column, std::string_view name, Dimension d) {
-  const double value = line.real(column, 20, name, d);
+double scale_or_one(const CardReader& reader, const Line& line, int column, std::string_view name, Dimension d,
+                    int width = 20) {
+  const double value = line.real(column, width, name, d);
   return value == 0.0 ? reader.units().factor(d) : value;
 }
 
@@ -98,18 +99,32 @@ void require_blank(const Line& line, int column, int width, std::string_view nam
   if (!line.text(column, width).empty()) line.fail(column, width, name, expected);
 }
 
+// The /BCS line: the codes in columns 4-6 and 8-10, skew 11-20, group 21-30; in input versions 41 to 44 the codes
+// in 2-4 and 6-8, skew 9-16, group 17-24 (the 8-column field " 111 111").
+struct BcsColumns {
+  int translations, rotations, skew, group, width;
+};
+constexpr BcsColumns kBcsColumns{4, 8, 11, 21, 10}, kNarrowBcsColumns{2, 6, 9, 17, 8};
+
 void read_bcs(CardReader& reader, DeckContext& context) {
   auto bc = begin_record<BoundaryCondition>(reader, 1);
-  const Line line = reader.next("Tra rot, skew_ID, grnod_ID");
-  require_blank(line, 1, 3, "leading blank", "blank (the translation codes TX TY TZ are in columns 4-6)");
-  require_blank(line, 7, 1, "separator", "blank (between translation codes 4-6 and rotation codes 8-10)");
+  const Line line = reader.next("Tra rot, skew_ID, grnod_ID").as_written();
+  const BcsColumns c = reader.narrow() ? kNarrowBcsColumns : kBcsColumns;
+  require_blank(line, 1, c.translations - 1, "leading blank",
+                fmt::format("blank (the translation codes TX TY TZ are in columns {}-{})", c.translations,
+                            c.translations + 2));
+  require_blank(line, c.translations + 3, 1, "separator",
+                fmt::format("blank (between translation codes {}-{} and rotation codes {}-{})", c.translations,
+                            c.translations + 2, c.rotations, c.rotations + 2));
   constexpr const char* kNames[2][3] = {{"TX", "TY", "TZ"}, {"RX", "RY", "RZ"}};
   for (int k = 0; k < 3; ++k) {
-    bc.fixed_translation[static_cast<std::size_t>(k)] = read_bcs_code(line, 4 + k, kNames[0][k]);
-    bc.fixed_rotation[static_cast<std::size_t>(k)] = read_bcs_code(line, 8 + k, kNames[1][k]);
+    bc.fixed_translation[static_cast<std::size_t>(k)] = read_bcs_code(line, c.translations + k, kNames[0][k]);
+    bc.fixed_rotation[static_cast<std::size_t>(k)] = read_bcs_code(line, c.rotations + k, kNames[1][k]);
   }
-  bc.skew_id = optional_id(line, 11, "skew_ID");
-  bc.node_group_id = required_id(line, 21, "grnod_ID", "node group");
+  bc.skew_id = line.integer(c.skew, c.width, "skew_ID");
+  if (bc.skew_id < 0) line.fail(c.skew, c.width, "skew_ID", "a non-negative id (0 or blank: none)");
+  bc.node_group_id = line.integer(c.group, c.width, "grnod_ID");
+  if (bc.node_group_id <= 0) line.fail(c.group, c.width, "grnod_ID", "a positive node group id");
   reader.finish();
   const auto fixed = [](const std::array<bool, 3>& a) { return std::count(a.begin(), a.end(), true); };
   if (fixed(bc.fixed_translation) + fixed(bc.fixed_rotation) == 0)
@@ -149,13 +164,23 @@ void read_imposed_motion(CardReader& reader, DeckContext& context, ImposedKind k
   im.icoor = static_cast<int>(line.integer(61, 10, "Icoor"));
   if (im.icoor != 0 && im.icoor != 1) line.fail(61, 10, "Icoor", "0 (Cartesian) or 1 (cylindrical)");
 
-  const Line scales = reader.next("Ascale_x, Fscale_Y, Tstart, Tstop");
-  im.scale_x = time_scale(reader, scales, 1);
-  im.scale_y = scale_or_one(reader, scales, 21, "Fscale_Y", ordinate_dimension(kind, im.dof));
-  im.t_start = scales.real(41, 20, "Tstart", dim::time);
-  const double stop = scales.real(61, 20, "Tstop", dim::time);
-  im.t_stop = stop == 0.0 ? kNever : stop;
-  if (im.t_stop < im.t_start) scales.fail(61, 20, "Tstop", "a stop time not before Tstart (0 or blank: never)");
+  if (reader.narrow()) {  // input versions 41 to 44: Fscale_Y 1-16, Tstart 17-32, Tstop 33-48, no Ascale_x
+    const Line scales = reader.next("Fscale_Y, Tstart, Tstop").as_written();
+    im.scale_x = reader.units().factor(dim::time);
+    im.scale_y = scale_or_one(reader, scales, 1, "Fscale_Y", ordinate_dimension(kind, im.dof), 16);
+    im.t_start = scales.real(17, 16, "Tstart", dim::time);
+    const double stop = scales.real(33, 16, "Tstop", dim::time);
+    im.t_stop = stop == 0.0 ? kNever : stop;
+    if (im.t_stop < im.t_start) scales.fail(33, 16, "Tstop", "a stop time not before Tstart (0 or blank: never)");
+  } else {
+    const Line scales = reader.next("Ascale_x, Fscale_Y, Tstart, Tstop");
+    im.scale_x = time_scale(reader, scales, 1);
+    im.scale_y = scale_or_one(reader, scales, 21, "Fscale_Y", ordinate_dimension(kind, im.dof));
+    im.t_start = scales.real(41, 20, "Tstart", dim::time);
+    const double stop = scales.real(61, 20, "Tstop", dim::time);
+    im.t_stop = stop == 0.0 ? kNever : stop;
+    if (im.t_stop < im.t_start) scales.fail(61, 20, "Tstop", "a stop time not before Tstart (0 or blank: never)");
+  }
   reader.finish();
   context.model.imposed.push_back(std::move(im));
 }
@@ -169,6 +194,16 @@ void read_concentrated_load(CardReader& reader, DeckContext& context) {
   load.dof = read_direction(line, true);
   load.skew_id = optional_id(line, 21, "skew_ID");
   load.sensor_id = optional_id(line, 31, "sensor_ID");
+  if (reader.narrow()) {  // input versions 41 to 44: Fscale_Y 33-48, grnod_ID 49-56, no Ascale_x
+    const Line w = line.as_written();
+    load.scale_y = scale_or_one(reader, w, 33, "Fscale_Y", ordinate_dimension(load.kind, load.dof), 16);
+    load.node_group_id = w.integer(49, 8, "grnod_ID");
+    if (load.node_group_id <= 0) w.fail(49, 8, "grnod_ID", "a positive node group id");
+    load.scale_x = reader.units().factor(dim::time);
+    reader.finish();
+    context.model.imposed.push_back(std::move(load));
+    return;
+  }
   load.node_group_id = required_id(line, 41, "grnod_ID", "node group");
   require_blank_newer_field(line, context, 51, "Itypfun");
   load.scale_x = time_scale(reader, line, 61);
@@ -216,12 +251,22 @@ void read_gravity(CardReader& reader, DeckContext& context) {
   g.dof = line.text(11, 10).empty() ? Dof::Z : read_direction(line, false);
   g.skew_id = optional_id(line, 21, "skew_ID");
   g.sensor_id = optional_id(line, 31, "sensor_ID");
-  g.node_group_id = optional_id(line, 41, "grnod_ID");  // 0: every node
-  require_blank_newer_field(line, context, 51, "Itypfun");
-  g.scale_x = time_scale(reader, line, 61);
-  g.scale_y = scale_or_one(reader, line, 81, "Fscale_Y", dim::acceleration);
+  // Input versions 41 to 44: Fscale_Y 33-48, grnod_ID 49-56, no Ascale_x.
+  const bool narrow = reader.narrow();
+  const Line w = line.as_written();
+  const int scale_column = narrow ? 33 : 81, scale_width = narrow ? 16 : 20;
+  if (narrow) {
+    g.node_group_id = w.integer(49, 8, "grnod_ID");  // 0: every node
+    if (g.node_group_id < 0) w.fail(49, 8, "grnod_ID", "a non-negative id (0 or blank: every node)");
+    g.scale_x = reader.units().factor(dim::time);
+  } else {
+    g.node_group_id = optional_id(line, 41, "grnod_ID");  // 0: every node
+    require_blank_newer_field(line, context, 51, "Itypfun");
+    g.scale_x = time_scale(reader, line, 61);
+  }
+  g.scale_y = scale_or_one(reader, w, scale_column, "Fscale_Y", dim::acceleration, scale_width);
   // Radioss reads a blank scale as 1: an acceleration of 1 in input units, rarely what was meant.
-  if (line.real(81, 20, "Fscale_Y", dim::none) == 0.0)
+  if (w.real(scale_column, scale_width, "Fscale_Y", dim::none) == 0.0)
     context.warn(line.where(), reader.card().keyword,
                  "Fscale_Y blank or 0: acceleration 1 in input units (the Radioss default)");
   reader.finish();

@@ -126,6 +126,7 @@ void read_johnson_cook(CardReader& reader, DeckContext& context) {
 
 // Law 36: yield stress tabulated against plastic strain, one curve per strain rate.
 void read_tabulated_plasticity(CardReader& reader, DeckContext& context) {
+  refuse_narrow_layout(reader);
   Material m = begin_material(reader, MaterialLaw::Tabulated);
   TabulatedHardening& tab = m.tabulated;
   read_density(reader, context, m);

@@ -72,11 +72,11 @@ void read_part(CardReader& reader, DeckContext& context) {
 void register_mesh_keywords(KeywordTable& table) {
   table.push_back({"/NODE", DeckPart::Starter, read_nodes});
   table.push_back({"/SHELL", DeckPart::Starter,
-                   [](CardReader& r, DeckContext& c) { read_elements(r, c, ElementKind::Shell4); }});
+                   [](CardReader& r, DeckContext& c) { read_elements(r, c, ElementKind::Shell4); }, true});
   table.push_back({"/SH3N", DeckPart::Starter,
-                   [](CardReader& r, DeckContext& c) { read_elements(r, c, ElementKind::Shell3); }});
+                   [](CardReader& r, DeckContext& c) { read_elements(r, c, ElementKind::Shell3); }, true});
   table.push_back({"/BRICK", DeckPart::Starter,
-                   [](CardReader& r, DeckContext& c) { read_elements(r, c, ElementKind::Brick8); }});
+                   [](CardReader& r, DeckContext& c) { read_elements(r, c, ElementKind::Brick8); }, true});
   table.push_back({"/PART", DeckPart::Starter, read_part});
 }
 

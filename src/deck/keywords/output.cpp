@@ -50,6 +50,10 @@ std::int64_t card_id(CardReader& reader, std::size_t index, bool unit_allowed) {
                             card.path[index]),
                 in_quotes(card.path[index]));
   const std::int64_t id = object_id(reader, index);
+  if (reader.narrow()) {  // versions 41 to 44: the title follows the id
+    reader.title_after(index + 1);
+    return id;
+  }
   std::size_t end = index + 1;
   if (unit_allowed) {
     if (reader.path_id(end, "unit_ID", false) != 0)
@@ -233,6 +237,7 @@ void read_section_interfaces(const Line& line, Section& s) {
 }
 
 void read_section(CardReader& reader, DeckContext& context) {
+  refuse_narrow_layout(reader);
   Section s;
   s.where = reader.card().where;
   s.user_id = card_id(reader, 1, true);
@@ -264,8 +269,11 @@ void read_accelerometer(CardReader& reader, DeckContext& context) {
   if (a.node_id <= 0) line.fail(1, 10, "node_ID", "a positive node id");
   a.skew_id = line.integer(11, 10, "skew_ID");
   if (a.skew_id < 0) line.fail(11, 10, "skew_ID", "a non-negative skew id (0 or blank: the global axes)");
-  a.cutoff = line.real(31, 20, "Fcut", dim::rate);
-  if (a.cutoff < 0.0) line.fail(31, 20, "Fcut", "a non-negative cutoff frequency (0 or blank: no filter)");
+  // Input versions 41 to 44 put Fcut in columns 27-42, after a 10-column gap.
+  const Line cut = reader.narrow() ? line.as_written() : line;
+  const int column = reader.narrow() ? 27 : 31, width = reader.narrow() ? 16 : 20;
+  a.cutoff = cut.real(column, width, "Fcut", dim::rate);
+  if (a.cutoff < 0.0) cut.fail(column, width, "Fcut", "a non-negative cutoff frequency (0 or blank: no filter)");
   reader.finish();
   context.model.accelerometers.push_back(std::move(a));
 }

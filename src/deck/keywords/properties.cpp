@@ -1,5 +1,7 @@
 // /PROP/TYPE1 (SHELL) and /PROP/TYPE14 (SOLID). Layouts: docs/cards/starter-model.md.
 #include <fmt/format.h>
+
+#include <utility>
 #include <tuple>
 
 #include "../context.hpp"
@@ -96,8 +98,25 @@ void note_if_set(const Line& line, DeckContext& context, const CardReader& reade
     context.warn(line.where(), reader.card().keyword, fmt::format("{} = {}: {}", name, value, why));
 }
 
+// /PROP/SOLID line 1 in input versions 41 to 44: Isolid 1-8, Ismstr 9-16, then (44) Iplas 17-24, Icpre 25-32,
+// Icstr 33-40, dn 41-56. Iplas and Icstr have no field in later versions: anything but 0 is refused.
+void read_narrow_solid_flags(CardReader& reader, DeckContext& context, SolidSection& s) {
+  const Line flags = reader.next("Isolid, Ismstr, Iplas, Icpre, Icstr, dn").as_written();
+  s.isolid = static_cast<int>(flags.integer(1, 8, "Isolid"));
+  s.ismstr = static_cast<int>(flags.integer(9, 8, "Ismstr"));
+  if (s.ismstr < 0 || s.ismstr > 4) flags.fail(9, 8, "Ismstr", kIsmstrChoices);
+  for (const auto& [column, name] : {std::pair{17, "Iplas"}, std::pair{33, "Icstr"}})
+    if (flags.integer(column, 8, name) != 0)
+      context.unsupported(flags.error(column, 8, name, default_only("this option of input version 44 is")));
+  s.icpre = static_cast<int>(flags.integer(25, 8, "Icpre"));
+  if (s.icpre != 0 && s.icpre != 1 && s.icpre != 3) flags.fail(25, 8, "Icpre", kIcpreChoices);
+  s.dn = flags.real(41, 16, "dn", dim::none);
+  if (s.dn < 0.0) flags.fail(41, 16, "dn", "a non-negative numerical damping");
+}
+
 // /PROP/SOLID line 1 (2019 layout): Isolid, Ismstr, -, Icpre, Itetra10, Inpts, Itetra4, Iframe, dn.
 void read_solid_flags(CardReader& reader, DeckContext& context, SolidSection& s) {
+  if (reader.narrow()) return read_narrow_solid_flags(reader, context, s);
   const Line flags = reader.next("Isolid, Ismstr, Icpre, Itetra10, Inpts, Itetra4, Iframe, dn");
   s.isolid = static_cast<int>(flags.integer(1, 10, "Isolid"));
   s.ismstr = static_cast<int>(flags.integer(11, 10, "Ismstr"));
