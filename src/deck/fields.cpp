@@ -158,7 +158,7 @@ bool Line::blank() const { return trim(source_->text).empty(); }
 
 std::pair<int, int> Line::placed(int column, int width) const {
   if (!reader_->narrow() || as_written_ || width <= 0) return {column, width};
-  return {1 + 4 * (column - 1) / 5, 4 * width / 5};
+  return {1 + 4 * (column - 1) / 5, std::max(1, 4 * width / 5)};  // a one-column flag stays one column
 }
 
 std::string Line::raw(int given_column, int given_width) const {

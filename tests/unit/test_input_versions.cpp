@@ -74,6 +74,13 @@ std::string tiny_model(bool narrow) {
   s += head("/GRAV/3", "down") + i("1") + i("Y") + i("0") + i("0") +
        (narrow ? r("-9.81") + i("1") : i("1") + i("") + r("0") + r("-9.81")) + "\n";
   s += head("/TH/NODE/1", "n") + std::string(narrow ? "DEF     " : "DEF       ") + "\n" + i("3") + i("0") + "\n";
+  // TYPE7: versions 41 to 44 have no gap and stiffness lines; IBC in columns 6-8 (8-10 in 2017).
+  s += head("/SURF/PART/3", "plate") + i("1") + "\n" + head("/INTER/TYPE7/7", "contact") + i("2") + i("3") + i("0") +
+       i("") + i("0") + i("0") + i("0") + i("2") + "\n";
+  if (!narrow) s += r("0") + r("0") + r("0") + "\n" + r("0") + r("0") + r("0") + r("0") + i("0") + i("0") + "\n";
+  s += r("1.5") + r("0.1") + r("0.5") + r("0") + r("0") + "\n";
+  s += std::string(narrow ? "     011" : "       011") + i("") + i("") + i("0") + r("0.05") + r("1.0") + r("0.2") + "\n";
+  s += i("0") + i("0") + r("0") + i("0") + "\n";
   return s;
 }
 
@@ -112,15 +119,25 @@ TEST(InputVersions, NarrowLayoutsOfVersions41To44ReadAsThe2017Ones) {
     EXPECT_EQ(m.gravity[0].node_group, wide.gravity[0].node_group);
     EXPECT_EQ(m.functions[0](0.5), wide.functions[0](0.5));
     EXPECT_EQ(m.histories[0].object_ids, wide.histories[0].object_ids);
+    ASSERT_EQ(m.type7_interfaces.size(), 1u);
+    const Type7Interface &a = m.type7_interfaces[0], &b = wide.type7_interfaces[0];
+    EXPECT_EQ(a.title, "contact");
+    EXPECT_EQ(a.idel, 2);
+    EXPECT_EQ(a.stfac, b.stfac);
+    EXPECT_EQ(a.fric, b.fric);
+    EXPECT_EQ(a.gapmin, b.gapmin);
+    EXPECT_EQ(a.ibc, (std::array<bool, 3>{false, true, true}));
+    EXPECT_EQ(a.viss, b.viss);
+    EXPECT_EQ(a.bumult, b.bumult);
   }
 }
 
 // Cards whose old layout is another one (lines, fields) are refused in versions 41 to 44, naming the version.
 TEST(InputVersions, OldLayoutsCrumpleDoesNotReadAreErrors) {
   test::TempDir dir;
-  const auto path = dir.write("N_0000.rad", begin(44) + tiny_model(true) + "/INTER/TYPE7/1/contact\n       1       2\n/END\n");
+  const auto path = dir.write("N_0000.rad", begin(44) + tiny_model(true) + "/MAT/PLAS_TAB/2/tab\n        7.85e-06\n/END\n");
   const std::string e = test::first_error(path);
-  EXPECT_NE(e.find("/INTER/TYPE7/1/contact: field layout"), std::string::npos) << e;
+  EXPECT_NE(e.find("/MAT/PLAS_TAB/2/tab: field layout"), std::string::npos) << e;
   EXPECT_NE(e.find("versions 41 to 44 is not supported by Crumple"), std::string::npos) << e;
   EXPECT_NE(test::first_error(dir.write("O_0000.rad", begin(40) + "/END\n")).find("41 or later"), std::string::npos);
 }

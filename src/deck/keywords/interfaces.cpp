@@ -61,6 +61,10 @@ void require_zero(DeckContext& context, const Line& line, bool non_zero, int col
 // `/INTER/TYPE7/id[/unit_ID]`
 std::int64_t interface_id(CardReader& reader) {
   const std::int64_t id = object_id(reader, 2);
+  if (reader.narrow()) {  // input versions 41 to 44: the title follows the id
+    reader.title_after(3);
+    return id;
+  }
   if (reader.path_id(3, "unit_ID", false) != 0)
     reader.fail("unit_ID", "0 or nothing after the id (/UNIT systems are not supported by Crumple)",
                 fmt::format("'{}'", reader.card().path[3]));
@@ -194,16 +198,21 @@ void reject_unsupported(const Type7Lines& l, Type7Interface& i, DeckContext& con
   reject(*l.flags, i.ibag, 61, 10, "Ibag", "airbag vent closure is");
   reject(*l.flags, i.icurv, 81, 10, "Icurv", "curved gap envelopes are");
   reject(*l.flags, i.iadm, 91, 10, "Iadm", "adaptive meshing is");
-  reject(*l.gap, i.fpenmax, 41, 20, "Fpenmax", "deactivation by initial penetration depth is");
-  reject(*l.gap, i.itied, 81, 10, "Itied", "tied contact is");
-  reject(*l.stiffness, i.mesh_size_percent, 41, 20, "%mesh_size", "the mesh-size gap (Igap = 3) is");
-  if (i.irem_gap == 2) {
-    require_zero(context, *l.stiffness, true, 81, 10, "Irem_gap",
-                 "removing nodes whose elements are smaller than the gap (Irem_gap = 2) is");
-    i.irem_gap = 0;
+  if (l.gap) {  // input versions 41 to 44 have neither the gap nor the stiffness line
+    reject(*l.gap, i.fpenmax, 41, 20, "Fpenmax", "deactivation by initial penetration depth is");
+    reject(*l.gap, i.itied, 81, 10, "Itied", "tied contact is");
+  }
+  if (l.stiffness) {
+    reject(*l.stiffness, i.mesh_size_percent, 41, 20, "%mesh_size", "the mesh-size gap (Igap = 3) is");
+    if (i.irem_gap == 2) {
+      require_zero(context, *l.stiffness, true, 81, 10, "Irem_gap",
+                   "removing nodes whose elements are smaller than the gap (Irem_gap = 2) is");
+      i.irem_gap = 0;
+    }
   }
   // Irem_i2 (1 or 3) says whether /INTER/TYPE2 secondary nodes leave this contact; Crumple has no TYPE2, so both
   // values leave the same nodes in: the flag acts trivially.
+  if (!l.friction) return;  // input version 41 has no friction line
   reject(*l.friction, i.sensor_id, 51, 10, "sens_ID", "sensors are");
   reject(*l.friction, i.friction_function_id, 61, 10, "fct_IDf", "friction-temperature functions are");
   // AscaleF only scales fct_IDf; 1 is its default and changes nothing.
@@ -222,15 +231,17 @@ void warn_unused(const Type7Lines& l, const Type7Interface& i, DeckContext& cont
     context.note(l.flags->where(), keyword, "Multimp (columns 51-60)",
                  "performance hint: an obsolete memory-sizing hint, no effect on Crumple's results",
                  SkipKind::PerformanceHint);
-  if (i.fscale_gap != 0.0 && i.igap != 2) warn(*l.gap, "Fscale_gap is used only with Igap = 2; ignored");
-  if (i.gap_max != 0.0 && i.igap == 0) warn(*l.gap, "Gap_max is used only with a variable gap (Igap = 1, 2); ignored");
-  if ((i.stmin != 0.0 || i.stmax != 0.0) && i.istf == 1)
+  if (l.gap && i.fscale_gap != 0.0 && i.igap != 2) warn(*l.gap, "Fscale_gap is used only with Igap = 2; ignored");
+  if (l.gap && i.gap_max != 0.0 && i.igap == 0)
+    warn(*l.gap, "Gap_max is used only with a variable gap (Igap = 1, 2); ignored");
+  if (l.stiffness && (i.stmin != 0.0 || i.stmax != 0.0) && i.istf == 1)
     warn(*l.stiffness, "Stmin and Stmax are not used when Istf = 1 (Stfac is the stiffness); ignored");
   if (i.visf != 0.0 && i.iform == 2) warn(*l.damping, "VisF is not used with Iform = 2 (stiffness friction); ignored");
 }
 
+// Input versions 41 to 44 (docs/deck-format.md, "Input versions") write the flags, contact, damping and (44) friction
+// lines only, narrowed: the gap and stiffness lines' fields keep their defaults.
 void read_type7(CardReader& reader, DeckContext& context) {
-  refuse_narrow_layout(reader);
   Type7Interface i;
   i.where = reader.card().where;
   i.user_id = interface_id(reader);
@@ -238,18 +249,26 @@ void read_type7(CardReader& reader, DeckContext& context) {
   Type7Lines l;
   l.flags = reader.next("Slav_id, Mast_id, Istf, Ithe, Igap, Ibag, Idel, Icurv, Iadm");
   read_flags(*l.flags, i);
-  l.gap = reader.next("Fscale_gap, Gap_max, Fpenmax");
-  read_gap_line(*l.gap, i);
-  l.stiffness = reader.next("Stmin, Stmax, %mesh_size, dtmin, Irem_gap, Irem_i2");
-  read_stiffness_line(*l.stiffness, i);
+  if (!reader.narrow()) {
+    l.gap = reader.next("Fscale_gap, Gap_max, Fpenmax");
+    read_gap_line(*l.gap, i);
+    l.stiffness = reader.next("Stmin, Stmax, %mesh_size, dtmin, Irem_gap, Irem_i2");
+    read_stiffness_line(*l.stiffness, i);
+  }
   if (i.icurv == 1 || i.icurv == 2) read_curvature_line(reader.next("node_ID1, node_ID2 (Icurv = 1, 2)"), i);
   l.contact = reader.next("Stfac, Fric, Gapmin, Tstart, Tstop");
   read_contact_line(*l.contact, i);
   l.damping = reader.next("IBC, Inacti, VisS, VisF, Bumult");
   read_damping_line(*l.damping, i);
-  l.friction = reader.next("Ifric, Ifiltr, Xfreq, Iform, sens_ID, fct_IDf, AscaleF, fric_ID");
-  read_friction_line(*l.friction, i);
-  read_friction_law(reader, i);
+  if (!(reader.narrow() && reader.at_end())) {
+    l.friction = reader.next("Ifric, Ifiltr, Xfreq, Iform, sens_ID, fct_IDf, AscaleF, fric_ID");
+    read_friction_line(*l.friction, i);
+    // Version 44's friction line has no coefficient lines after it: a friction law there is refused.
+    if (reader.narrow() && i.ifric != 0)
+      l.friction->fail(1, 10, "Ifric", "0 (the friction laws' coefficients of input versions 41 to 44 are not read by "
+                                       "Crumple)");
+    read_friction_law(reader, i);
+  }
   if (i.iadm == 2) read_adaptive_line(reader.next("NRadm, Padm, Angladm (Iadm = 2)"), i);
   // Checked once every line is placed, so that an option with extra lines (Ithe's thermal lines) is reported
   // by its name rather than as a stray data line.
