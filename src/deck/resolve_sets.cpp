@@ -39,6 +39,7 @@ void resolve_node_group(Resolver& r, std::size_t g, std::vector<int>& state, int
   if (state[g] == 2) return;
   const std::string keyword = fmt::format("/GRNOD/{}/{}", group.source == SetSource::Ids     ? "NODE"
                                                           : group.source == SetSource::Parts ? "PART"
+                                                          : group.source == SetSource::Surfaces ? "SURF"
                                                                                              : "GRNOD",
                                           group.user_id);
   if (state[g] == 1) {
@@ -58,6 +59,12 @@ void resolve_node_group(Resolver& r, std::size_t g, std::vector<int>& state, int
         const std::int32_t* nodes = t.nodes_of(static_cast<std::size_t>(e));
         group.nodes.insert(group.nodes.end(), nodes, nodes + nodes_per_element(kind));
       });
+      break;
+    case SetSource::Surfaces:  // every node of the surfaces' segments
+      for (std::int64_t id : group.items)
+        if (const auto k = r.find(m.index.surfaces, id, group.where, keyword, "surf_ID", "surface"); k >= 0)
+          for (const Segment& seg : m.surfaces[static_cast<std::size_t>(k)].segments)
+            group.nodes.insert(group.nodes.end(), seg.nodes.begin(), seg.nodes.end());
       break;
     case SetSource::Groups:
       for (std::int64_t id : group.items) {
@@ -176,6 +183,25 @@ void surface_from_segments(Resolver& r, Surface& s) {
   }
 }
 
+// The segments of the elements of shell (or 3-node shell) groups, oriented by each element, each element once.
+void surface_from_element_groups(Resolver& r, Surface& s) {
+  Model& m = r.model;
+  const bool quads = s.group_kind == ElementKind::Shell4;
+  const std::string keyword = fmt::format("/SURF/{}/{}", quads ? "GRSHEL" : "GRSH3N", s.user_id);
+  const auto& groups = quads ? m.shell_groups : m.sh3n_groups;
+  std::vector<std::int32_t> elements;
+  for (std::int64_t id : s.element_groups)
+    if (const auto g = r.find(quads ? m.index.shell_groups : m.index.sh3n_groups, id, s.where, keyword,
+                              quads ? "grshel_ID" : "grsh3n_ID", quads ? "shell group" : "3-node shell group");
+        g >= 0)
+      for (std::int32_t e : groups[static_cast<std::size_t>(g)].elements) elements.push_back(e);
+  sort_unique(elements);
+  for (std::int32_t e : elements) {
+    const std::int32_t* n = m.elements[static_cast<int>(s.group_kind)].nodes_of(static_cast<std::size_t>(e));
+    s.segments.push_back({{n[0], n[1], n[2], quads ? n[3] : n[2]}, {s.group_kind, e}});
+  }
+}
+
 }  // namespace
 
 void resolve_sets(Resolver& r) {
@@ -186,14 +212,16 @@ void resolve_sets(Resolver& r) {
   r.index(m.brick_groups, m.index.brick_groups, "/GRBRIC");
   r.index(m.surfaces, m.index.surfaces, "/SURF");
   r.index(m.subsets, m.index.subsets, "/SUBSET");
-  std::vector<int> state(m.node_groups.size(), 0);
-  for (std::size_t g = 0; g < m.node_groups.size(); ++g) resolve_node_group(r, g, state);
+  // Element groups, then surfaces (of parts, segments or element groups), then node groups (of surfaces too).
   for (auto* groups : {&m.shell_groups, &m.sh3n_groups, &m.brick_groups})
     for (ElementSet& g : *groups) resolve_element_set(r, g);
   for (Surface& s : m.surfaces) {
     if (s.source == SetSource::Parts) surface_from_parts(r, s);
+    else if (s.source == SetSource::Groups) surface_from_element_groups(r, s);
     else surface_from_segments(r, s);
   }
+  std::vector<int> state(m.node_groups.size(), 0);
+  for (std::size_t g = 0; g < m.node_groups.size(); ++g) resolve_node_group(r, g, state);
   for (const Subset& s : m.subsets)
     for (std::int64_t child : s.children)
       r.find(m.index.subsets, child, s.where, fmt::format("/SUBSET/{}", s.user_id), "subset_ID", "subset");

@@ -154,3 +154,18 @@ TEST(InputVersions, MovingSkewAxesFollowDir) {
   EXPECT_EQ(z.axis[0], (Vec3{0, 0, 1}));
   EXPECT_EQ(z.axis[1], (Vec3{1, 0, 0}));
 }
+
+// /SURF/GRSHEL: the shells of the groups as segments, each once; /GRNOD/SURF: the nodes of a surface's segments.
+TEST(SurfaceKeywords, ShellGroupSurfacesAndSurfaceNodeGroups) {
+  test::TempDir dir;
+  const std::string extra = "/GRSHEL/SHEL/4\nfirst\n" + I(1) + "\n/GRSHEL/PART/5\nall\n" + I(1) +
+                            "\n/SURF/GRSHEL/6\nsurface\n" + I(4) + I(5) + "\n/GRNOD/SURF/7\nits nodes\n" + I(6) + "\n";
+  const Model m = read_deck(deck(dir, 2019, extra)).model;
+  const Surface& s = m.surfaces.at(static_cast<std::size_t>(m.index.surfaces.at(6)));
+  ASSERT_EQ(s.segments.size(), 2u);  // shell 1 in both groups counts once
+  EXPECT_EQ(s.segments[0].owner.kind, ElementKind::Shell4);
+  const NodeGroup& g = m.node_groups.at(static_cast<std::size_t>(m.index.node_groups.at(7)));
+  EXPECT_EQ(g.nodes.size(), 6u);  // every node of the plate's two shells
+  EXPECT_NE(test::first_error(deck(dir, 2019, "/SURF/GRSHEL/6\ns\n" + I(9) + "\n")).find("shell group 9 not defined"),
+            std::string::npos);
+}

@@ -22,9 +22,9 @@ struct Part {
 };
 
 // How a group card lists its members: explicit ids, the parts whose elements give the members, or other groups.
-enum class SetSource : std::uint8_t { Ids, Parts, Groups };
+enum class SetSource : std::uint8_t { Ids, Parts, Groups, Surfaces };  // Surfaces: /GRNOD/SURF only
 
-struct NodeGroup {  // /GRNOD/NODE, /GRNOD/PART, /GRNOD/GRNOD
+struct NodeGroup {  // /GRNOD/NODE, /GRNOD/PART, /GRNOD/GRNOD, /GRNOD/SURF
   SourceLocation where;
   std::int64_t user_id = 0;
   std::string title;
@@ -52,12 +52,15 @@ struct Segment {
   ElementRef owner;                    // element the segment belongs to (for thickness, gap, deletion)
 };
 
-struct Surface {  // /SURF/PART, /SURF/SEG
+struct Surface {  // /SURF/PART, /SURF/SEG, /SURF/GRSHEL, /SURF/GRSH3N
   SourceLocation where;
   std::int64_t user_id = 0;
   std::string title;
   SetSource source = SetSource::Ids;
   std::vector<std::int64_t> parts;                    // /SURF/PART: part user ids
+  // /SURF/GRSHEL, /SURF/GRSH3N (source Groups): the element groups' user ids and their kind.
+  std::vector<std::int64_t> element_groups;
+  ElementKind group_kind = ElementKind::Shell4;
   bool all_parts = false;                             // /SURF/PART/ALL: every part of the model
   std::vector<std::array<std::int64_t, 4>> raw_segments;  // /SURF/SEG: node user ids (n4 = 0 for triangles)
   std::vector<SourceLocation> raw_segment_where;

@@ -78,6 +78,16 @@ void read_surface_segments(CardReader& reader, DeckContext& context) {
   context.model.surfaces.push_back(std::move(s));
 }
 
+// /SURF/GRSHEL/surf_ID and /SURF/GRSH3N/surf_ID: a list of shell (3-node shell) groups whose elements are the
+// surface's segments, oriented by each element.
+void read_surface_element_groups(CardReader& reader, DeckContext& context, ElementKind kind) {
+  auto s = begin_group<Surface>(reader, SetSource::Groups);
+  s.group_kind = kind;
+  s.element_groups = positive_ids(reader, kind == ElementKind::Shell4 ? "grshel_ID" : "grsh3n_ID");
+  reader.finish();
+  context.model.surfaces.push_back(std::move(s));
+}
+
 void read_subset(CardReader& reader, DeckContext& context) {
   Subset s;
   s.where = reader.card().where;
@@ -101,6 +111,7 @@ void register_set_keywords(KeywordTable& table) {
   table.push_back({"/GRNOD/NODE", DeckPart::Starter, node_group(SetSource::Ids, "node_ID")});
   table.push_back({"/GRNOD/PART", DeckPart::Starter, node_group(SetSource::Parts, "part_ID")});
   table.push_back({"/GRNOD/GRNOD", DeckPart::Starter, node_group(SetSource::Groups, "grnod_ID")});
+  table.push_back({"/GRNOD/SURF", DeckPart::Starter, node_group(SetSource::Surfaces, "surf_ID")});
   table.push_back({"/GRSHEL/SHEL", DeckPart::Starter, element_group(K::Shell4, SetSource::Ids, "shell_ID")});
   table.push_back({"/GRSHEL/PART", DeckPart::Starter, element_group(K::Shell4, SetSource::Parts, "part_ID")});
   table.push_back({"/GRSH3N/SH3N", DeckPart::Starter, element_group(K::Shell3, SetSource::Ids, "sh3n_ID")});
@@ -108,6 +119,10 @@ void register_set_keywords(KeywordTable& table) {
   table.push_back({"/GRBRIC/BRIC", DeckPart::Starter, element_group(K::Brick8, SetSource::Ids, "brick_ID")});
   table.push_back({"/GRBRIC/PART", DeckPart::Starter, element_group(K::Brick8, SetSource::Parts, "part_ID")});
   table.push_back({"/SURF/PART", DeckPart::Starter, read_surface_parts});
+  table.push_back({"/SURF/GRSHEL", DeckPart::Starter,
+                   [](CardReader& r, DeckContext& c) { read_surface_element_groups(r, c, K::Shell4); }});
+  table.push_back({"/SURF/GRSH3N", DeckPart::Starter,
+                   [](CardReader& r, DeckContext& c) { read_surface_element_groups(r, c, K::Shell3); }});
   table.push_back({"/SURF/SEG", DeckPart::Starter, read_surface_segments});
   table.push_back({"/SUBSET", DeckPart::Starter, read_subset});
 }
