@@ -9,6 +9,7 @@
 #include "crumple/core/deck_error.hpp"
 #include "crumple/core/geometry.hpp"
 #include "crumple/model/history_variables.hpp"
+#include "crumple/model/mass.hpp"
 
 namespace crumple::contact {
 namespace {
@@ -45,7 +46,6 @@ ElementFacts facts_of(const Model& m, ElementRef ref, double area) {
   ElementFacts f;
   const ElementTable& table = m.elements[static_cast<int>(ref.kind)];
   const Part& part = m.parts[static_cast<std::size_t>(table.part[static_cast<std::size_t>(ref.index)])];
-  const Property& prop = m.properties[static_cast<std::size_t>(part.property)];
   const Material& mat = m.materials[static_cast<std::size_t>(part.material)];
   if (ref.kind == ElementKind::Brick8) {
     // B A^2 / (2 V), the half that the shell's E t / 2 has too (eq. C-3); for a node (area 0) the element's own
@@ -55,8 +55,8 @@ ElementFacts facts_of(const Model& m, ElementRef ref, double area) {
     f.stiffness = 0.5 * mat.bulk_modulus() * face * face / volume;
   } else {
     f.shell = true;
-    f.thickness = prop.shell.thickness;
-    f.stiffness = 0.5 * mat.young * prop.shell.thickness;
+    f.thickness = shell_thickness(m, ref.kind, static_cast<std::size_t>(ref.index));
+    f.stiffness = 0.5 * mat.young * f.thickness;
   }
   return f;
 }

@@ -18,6 +18,7 @@ struct RawElements {
   std::vector<std::int64_t> part_id;
   std::vector<std::int64_t> node_ids;  // nodes_per_element per element
   std::vector<SourceLocation> where;
+  std::vector<double> thickness;       // shells: the card's own thickness [L], 0 = the part's or property's
 };
 
 struct DeckContext {

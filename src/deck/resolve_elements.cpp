@@ -145,12 +145,15 @@ void resolve_kind(Resolver& r, ElementKind kind) {
   table.user_id.resize(count);
   table.part.resize(count);
   table.connectivity.resize(connectivity.size());
+  const bool own_thickness = std::any_of(raw.thickness.begin(), raw.thickness.end(), [](double t) { return t > 0.0; });
+  table.thickness.assign(own_thickness ? count : 0, 0.0);
   IdMap& index = m.index.elements[static_cast<int>(kind)];
   index.reserve(count);
   for (std::size_t i = 0; i < count; ++i) {
     const std::size_t e = order[i];
     table.user_id[i] = raw.user_id[e];
     table.part[i] = part[e];
+    if (own_thickness) table.thickness[i] = raw.thickness[e];
     std::copy_n(&connectivity[e * static_cast<std::size_t>(n)], n, &table.connectivity[i * static_cast<std::size_t>(n)]);
     index.emplace(raw.user_id[e], static_cast<std::int32_t>(i));
   }

@@ -39,18 +39,24 @@ double one_point_volume_scale(const Model& model, std::size_t brick) {
   return exact > 0.0 ? geometry::one_point_volume(x, y, z) / exact : 1.0;
 }
 
+double shell_thickness(const Model& model, ElementKind kind, std::size_t shell) {
+  const ElementTable& table = model.elements[static_cast<int>(kind)];
+  if (shell < table.thickness.size() && table.thickness[shell] > 0.0) return table.thickness[shell];
+  const Part& part = part_of(model, kind, shell);
+  return model.properties[static_cast<std::size_t>(part.property)].shell.thickness;
+}
+
 double element_mass(const Model& model, ElementKind kind, std::size_t element) {
   const Part& part = part_of(model, kind, element);
   const Material& material = model.materials[static_cast<std::size_t>(part.material)];
-  const Property& property = model.properties[static_cast<std::size_t>(part.property)];
   const std::int32_t* n = model.elements[static_cast<int>(kind)].nodes_of(element);
   const Nodes& x = model.nodes;
   switch (kind) {
     case ElementKind::Shell4:
-      return material.density * property.shell.thickness *
+      return material.density * shell_thickness(model, kind, element) *
              geometry::quad_area(x.position(n[0]), x.position(n[1]), x.position(n[2]), x.position(n[3]));
     case ElementKind::Shell3:
-      return material.density * property.shell.thickness *
+      return material.density * shell_thickness(model, kind, element) *
              geometry::triangle_area(x.position(n[0]), x.position(n[1]), x.position(n[2]));
     case ElementKind::Brick8: {
       std::array<Vec3, 8> p;

@@ -124,7 +124,8 @@ void setup_shells(const Model& m, SolverState& s, ElementKind kind) {
     const TimeStepControl& type = kind == ElementKind::Shell4 ? m.run.dt_shell : m.run.dt_sh3n;
     const double scale = type.given && type.scale > 0.0 ? type.scale : m.run.dt.scale > 0.0 ? m.run.dt.scale : 0.9;
     for (std::int32_t e = group.begin; e < group.end; ++e) {
-      st.thickness[static_cast<std::size_t>(e)] = prop.shell.thickness;
+      const double thickness = shell_thickness(m, kind, static_cast<std::size_t>(e));
+      st.thickness[static_cast<std::size_t>(e)] = thickness;
       // Lumped rotational inertia of the shell's nodes: m (t^2/12 + A/9) / 4 (docs/theory/shell4.md, eq. S-8), for
       // a triangle m (t^2/12 + 2A/9) shared by the corner angles (eq. S-9c), raised where the element's
       // transverse-shear mode would not be stable at its step (eq. S-8a).
@@ -136,7 +137,7 @@ void setup_shells(const Model& m, SolverState& s, ElementKind kind) {
         const auto k = static_cast<std::size_t>(nodes[a]);
         x[a] = {s.nodes.x[k], s.nodes.y[k], s.nodes.z[k]};
       }
-      const double share = shell_rotational_inertia_share(p, nodes_per, x, prop.shell.thickness, scale);
+      const double share = shell_rotational_inertia_share(p, nodes_per, x, thickness, scale);
       const std::array<double, 8> corner = corner_mass_fractions(m, kind, nodes);
       for (int a = 0; a < nodes_per; ++a)
         s.nodes.inertia[static_cast<std::size_t>(nodes[a])] += mass * corner[static_cast<std::size_t>(a)] * share;

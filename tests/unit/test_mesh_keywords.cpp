@@ -2,6 +2,7 @@
 
 #include "crumple/core/geometry.hpp"
 
+#include "crumple/model/mass.hpp"
 #include "crumple/model/summary.hpp"
 #include "deck_files.hpp"
 
@@ -66,4 +67,25 @@ TEST(MeshKeywords, SmallestTimeStepNamesTheElement) {
   const double length = geometry::qeph_length({0, 0, 0}, {0.01, 0, 0}, {0.01, 0.01, 0}, {0, 0.01, 0});
   EXPECT_NEAR(c.time_step, length * damping / wave, 1e-12);
   EXPECT_EQ(c.part_user_id, 1);
+}
+
+// A shell's thickness: its own on /SHELL (columns 71-90 after the angle), else the property's (1 mm); the mass
+// follows, as the reference's part masses (measured). /PART's Thick, a virtual thickness for contact gaps, is an
+// option Crumple lacks.
+TEST(MeshKeywords, ShellThicknessOverridesThePropertys) {
+  test::TempDir dir;
+  std::string s = test::begin_card() + "/NODE\n";
+  const double xs[3] = {0.0, 0.01, 0.02};
+  int id = 1;
+  for (double y : {0.0, 0.01})
+    for (double x : xs) s += I(id++) + R(x) + R(y) + R(0.0) + "\n";
+  s += "/SHELL/1\n" + I(1) + I(1) + I(2) + I(5) + I(4) + R(0.0) + R(0.003) + "\n";  // 3 mm of its own
+  s += "/SHELL/2\n" + I(2) + I(2) + I(3) + I(6) + I(5) + "\n";
+  s += "/PART/1\nown\n" + I(1) + I(1) + "\n/PART/2\nproperty's\n" + I(1) + I(1) + "\n";
+  s += "/PROP/SHELL/1\nshell\n" + I(24) + "\n\n" + I(0) + I(0) + R(0.001) + "\n";
+  s += "/MAT/ELAST/1\nsteel\n" + R(7800.0) + "\n" + R(2.1e11) + R(0.3) + "\n";
+  const Model m = read_deck(dir.write("T_0000.rad", s + "/END\n")).model;
+  EXPECT_EQ(shell_thickness(m, ElementKind::Shell4, 0), 0.003);
+  EXPECT_EQ(shell_thickness(m, ElementKind::Shell4, 1), 0.001);
+  EXPECT_NEAR(m.total_mass(), 3.12e-3, 1e-15);  // the reference's starter listing: 3.12e-3 kg
 }

@@ -20,6 +20,10 @@ std::array<double, 8> corner_mass_fractions(const Model& model, ElementKind kind
 // other brick (docs/theory/brick8.md, eq. B-2b). Its mass, forces and length take the factor.
 double one_point_volume_scale(const Model& model, std::size_t brick);
 
+// A shell's thickness [L]: its own (/SHELL, /SH3N Thick), else its property's (/PART Thick is a virtual thickness
+// for contact gaps, not the shell's: measured on the reference solver's part masses).
+double shell_thickness(const Model& model, ElementKind kind, std::size_t shell);
+
 // Mass of one element [M].
 double element_mass(const Model& model, ElementKind kind, std::size_t element);
 

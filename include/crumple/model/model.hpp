@@ -33,8 +33,8 @@ struct Model {
 
   Nodes nodes;
   std::array<ElementTable, kElementKinds> elements{
-      ElementTable{ElementKind::Shell4, {}, {}, {}}, ElementTable{ElementKind::Shell3, {}, {}, {}},
-      ElementTable{ElementKind::Brick8, {}, {}, {}}};
+      ElementTable{ElementKind::Shell4, {}, {}, {}, {}}, ElementTable{ElementKind::Shell3, {}, {}, {}, {}},
+      ElementTable{ElementKind::Brick8, {}, {}, {}, {}}};
   std::vector<ElementGroup> element_groups;
 
   std::vector<Part> parts;

@@ -38,9 +38,9 @@ void read_elements(CardReader& reader, DeckContext& context, ElementKind kind) {
     if (kind != ElementKind::Brick8) {
       const int after = 11 + 10 * n;  // orthotropy angle (20 columns), then element thickness (20 columns)
       line->real(after, 20, "Phi", dim::none);
-      if (line->real(after + 20, 20, "Thick", dim::length) != 0.0)
-        line->fail(after + 20, 20, "Thick",
-                   "blank (element thickness overrides are not supported by Crumple; use /PROP)");
+      const double thick = line->real(after + 20, 20, "Thick", dim::length);
+      if (thick < 0.0) line->fail(after + 20, 20, "Thick", "a non-negative thickness (0 or blank: the property's)");
+      raw.thickness.push_back(thick);
     }
     raw.user_id.push_back(id);
     raw.part_id.push_back(part_id);
@@ -60,9 +60,12 @@ void read_part(CardReader& reader, DeckContext& context) {
   part.subset_id = line.integer(21, 10, "subset_ID");
   if (part.property_id <= 0) line.fail(1, 10, "prop_ID", "a positive property id");
   if (part.material_id <= 0) line.fail(11, 10, "mat_ID", "a positive material id");
-  // Thick (columns 31-50) overrides the property's thickness for the part's shells.
+  // Thick (columns 31-50) is the part's virtual thickness: the reference keeps its shells' thickness and mass
+  // (measured: its starter listing's part mass, "VIRT. THICKN") and uses it for contact gaps, which Crumple does not.
   if (line.real(31, 20, "Thick", dim::length) != 0.0)
-    context.unsupported(line.error(31, 20, "Thick", default_only("a part thickness overriding the property's is")));
+    context.unsupported(line.error(31, 20, "Thick",
+                                   default_only("the part's virtual thickness (for contact gaps; the shells keep "
+                                                "their own) is")));
   reader.finish();
   context.model.parts.push_back(std::move(part));
 }
