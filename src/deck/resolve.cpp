@@ -75,6 +75,20 @@ void warn_degenerate_one_point_bricks(Resolver& r) {
                                  count[i]));
 }
 
+// /DEF_SHELL and /DEF_SOLID set the defaults of the elements of their kind: a model without such elements takes
+// nothing from them.
+void warn_defaults_without_elements(Resolver& r) {
+  const Model& m = r.model;
+  const bool shells = m.elements[static_cast<int>(ElementKind::Shell4)].size() + m.elements[static_cast<int>(ElementKind::Shell3)].size() > 0;
+  const bool bricks = m.elements[static_cast<int>(ElementKind::Brick8)].size() > 0;
+  const ShellDefaults& ds = m.shell_defaults;
+  const SolidDefaults& dv = m.solid_defaults;
+  if (!shells && (ds.ishell || ds.ismstr || ds.ithick || ds.iplas || ds.istrain || ds.ish3n || ds.idrill))
+    r.context.warn(ds.where, "/DEF_SHELL", "no shell in the model: its defaults act on nothing");
+  if (!bricks && (dv.isolid || dv.ismstr || dv.icpre || dv.istrain || dv.iframe))
+    r.context.warn(dv.where, "/DEF_SOLID", "no brick in the model: its defaults act on nothing");
+}
+
 void resolve_model(DeckContext& context, std::vector<RunControl>& continued_runs) {
   Resolver r(context);
   apply_random_noise(context.model);
@@ -89,6 +103,7 @@ void resolve_model(DeckContext& context, std::vector<RunControl>& continued_runs
   compute_mass(context.model);
   check_mass(r);
   warn_degenerate_one_point_bricks(r);
+  warn_defaults_without_elements(r);
   r.throw_if_errors();
 }
 

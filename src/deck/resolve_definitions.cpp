@@ -230,6 +230,28 @@ void check_shell_formulations(Resolver& r) {
   for (std::size_t i = 0; i < m.properties.size(); ++i) {
     const Property& p = m.properties[i];
     if (p.kind == PropertyKind::Shell && use[i].triangles) check_triangle_formulation(r, p, m.formulations[i]);
+    // dn damps QEPH's hourglass modes (S-14): the other formulations leave it, as the reference does (measured:
+    // box_crush, Ishell 1, dn 0.3, the same energies).
+    if (p.kind == PropertyKind::Shell && p.shell.dn > 0.0 && !(use[i].quads && m.formulations[i].ishell == 24))
+      r.context.warn(p.where, keyword_of(p), "dn acts only on 4-node shells with Ishell 24: ignored");
+    // hm, hf, hr scale the hourglass forces of the one-point shells Ishell 1 to 4; QEPH (24) is stabilised by
+    // its own physics, QBAT (12) integrated fully (docs/theory/shell4.md).
+    const bool hourglass_given = p.shell.hm > 0.0 || p.shell.hf > 0.0 || p.shell.hr > 0.0;
+    if (p.kind == PropertyKind::Shell && hourglass_given && use[i].quads && m.formulations[i].ishell >= 12)
+      r.context.warn(p.where, keyword_of(p),
+                     fmt::format("hm, hf and hr act only with Ishell 1 to 4: ignored with Ishell {}",
+                                 m.formulations[i].ishell));
+    // h is the viscous hourglass coefficient of Isolid 1 and 2; dn damps Isolid 24's stabilisation (B-6, B-8).
+    if (p.kind == PropertyKind::Solid) {
+      const int isolid = m.formulations[i].isolid;
+      if (p.solid.h > 0.0 && isolid != 1 && isolid != 2)
+        r.context.warn(p.where, keyword_of(p),
+                       fmt::format("h acts only with Isolid 1 and 2 (viscous hourglass): ignored with Isolid {}",
+                                   isolid));
+      if (p.solid.dn > 0.0 && isolid != 24)
+        r.context.warn(p.where, keyword_of(p),
+                       fmt::format("dn acts only with Isolid 24: ignored with Isolid {}", isolid));
+    }
   }
   std::vector<std::uint8_t> checked(m.properties.size() * m.materials.size(), 0);
   for (const Part& part : m.parts) {

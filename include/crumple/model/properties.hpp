@@ -62,6 +62,7 @@ struct ShellDefaults {  // /DEF_SHELL
 };
 struct SolidDefaults {  // /DEF_SOLID
   int isolid = 0, ismstr = 0, icpre = 0, istrain = 0, iframe = 0;
+  SourceLocation where;  // its data line (none: where.line == 0)
 };
 
 // Effective element formulations after property, /DEF_SHELL or /DEF_SOLID and the built-in defaults.

@@ -251,6 +251,7 @@ void read_def_solid(CardReader& reader, DeckContext& context) {
   SolidDefaults& d = context.model.solid_defaults;
   if (reader.at_end()) return;
   const Line line = reader.next("Isolid, Ismstr, Icpre, Istrain, Itetra4, Itetra10, Imas, Iframe");
+  d.where = line.where();
   d.isolid = static_cast<int>(line.integer(1, 10, "Isolid"));
   d.ismstr = static_cast<int>(line.integer(11, 10, "Ismstr"));
   if (d.ismstr < 0 || d.ismstr > 4)

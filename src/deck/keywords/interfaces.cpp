@@ -237,6 +237,13 @@ void warn_unused(const Type7Lines& l, const Type7Interface& i, DeckContext& cont
   if (l.stiffness && (i.stmin != 0.0 || i.stmax != 0.0) && i.istf == 1)
     warn(*l.stiffness, "Stmin and Stmax are not used when Istf = 1 (Stfac is the stiffness); ignored");
   if (i.visf != 0.0 && i.iform == 2) warn(*l.damping, "VisF is not used with Iform = 2 (stiffness friction); ignored");
+  if (i.visf != 0.0 && i.fric == 0.0) warn(*l.damping, "VisF acts only with friction (Fric > 0); ignored");
+  if (l.friction && i.xfreq != 0.0 && i.ifiltr == 0)
+    warn(*l.friction, "Xfreq acts only with a friction filter (Ifiltr > 0); ignored");
+  // Bumult sizes the search's buckets: how fast the pairs are found, not which.
+  if (i.bumult != 0.0)
+    context.note(l.damping->where(), keyword, "Bumult",
+                 "performance hint: the search's bucket size, no effect on the pairs found", SkipKind::PerformanceHint);
 }
 
 // Input versions 41 to 44 (docs/deck-format.md, "Input versions") write the flags, contact, damping and (44) friction

@@ -107,6 +107,12 @@ void read_johnson_cook(CardReader& reader, DeckContext& context) {
     if (jc.c > 0.0 && jc.eps_dot_0 <= 0.0)
       rate.fail(21, 20, "EPS_DOT_0", "a positive reference strain rate when c > 0");
     if (jc.chard < 0.0 || jc.chard > 1.0) rate.fail(81, 20, "Chard", "a hardening mix in [0, 1]");
+    if (jc.fsmooth != 0 && jc.fsmooth != 1) rate.fail(51, 10, "Fsmooth", "0 (no smoothing) or 1 (smoothed strain rate)");
+    if (jc.c == 0.0 && jc.eps_dot_0 != 0.0)
+      context.warn(rate.where(), reader.card().keyword,
+                   "EPS_DOT_0 acts only with a strain-rate coefficient c > 0: ignored with c = 0");
+    if (jc.fsmooth == 0 && jc.f_cut != 0.0)
+      context.warn(rate.where(), reader.card().keyword, "F_cut acts only with Fsmooth = 1: ignored");
     reject_if(context, rate, jc.chard != 0.0, 81, 20, "Chard", "kinematic hardening (Chard > 0) is");
     if (jc.chard != 0.0) jc.chard = 0.0;  // --skip-unknown: isotropic hardening
   }
@@ -118,6 +124,9 @@ void read_johnson_cook(CardReader& reader, DeckContext& context) {
     jc.t_r = thermal.real(61, 20, "T_r", dim::none);
     // With m = 0 the temperature does not enter the yield stress: T_melt, rhoC_p and T_r then change nothing.
     reject_if(context, thermal, jc.m != 0.0, 1, 20, "m", "thermal softening (m > 0) is");
+    if (jc.m == 0.0 && (jc.t_melt != 0.0 || jc.rho_cp != 0.0 || jc.t_r != 0.0))
+      context.warn(thermal.where(), reader.card().keyword,
+                   "T_melt, rhoC_p and T_r act only with thermal softening (m > 0): ignored with m = 0");
     jc.m = 0.0;
   }
   reader.finish();

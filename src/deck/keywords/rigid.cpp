@@ -82,7 +82,11 @@ void read_wall_contact(const CardReader& reader, const Line& line, RigidWall& w,
   if (ifq == 1 && w.filter_factor > 1.0) line.fail(61, 20, "ffac", "a filter coefficient in [0, 1] (ifq = 1)");
   if (ifq == 0 && w.filter_factor != 0.0)
     context.warn(line.where(), keyword, "ffac ignored: ifq = 0 (no friction filter)");
-  // Radioss turns the filter off when the factor is 0, whatever the flag.
+  // Radioss turns the filter off when the factor is 0, whatever the flag; without friction nothing is filtered.
+  if (ifq != 0 && w.filter_factor == 0.0)
+    context.warn(line.where(), keyword, "ifq ignored: ffac = 0 (the friction filter is off)");
+  else if (ifq != 0 && w.slide != WallSliding::Friction)
+    context.warn(line.where(), keyword, "ifq and ffac ignored: the friction filter acts only with Slide = 2");
   w.filter_flag = w.filter_factor == 0.0 ? 0 : static_cast<int>(ifq);
   if (w.filter_flag == 0) w.filter_factor = 0.0;
 }
@@ -202,6 +206,10 @@ void read_body_options(CardReader& reader, RigidBody& b, DeckContext& context) {
                  "performance hint: domain decomposition of the body, no effect on Crumple's results",
                  SkipKind::PerformanceHint);
   b.iexpams = static_cast<int>(line.integer(11, 10, "Iexpams"));
+  // Iexpams extends /AMS to the whole body; Crumple's /AMS scales the whole model, every body included.
+  if (b.iexpams != 0 && b.iexpams != 2)
+    context.warn(line.where(), reader.card().keyword,
+                 "Iexpams: /AMS scales the whole model in Crumple, this body included: no effect");
   if (line.integer(21, 10, "Ifail") != 0)
     line.fail(21, 10, "Ifail", "0 (rigid body failure is not supported by Crumple)");
 }
