@@ -82,6 +82,17 @@ void check_selective_mass(Resolver& r, const RunControl& run) {
                                       "a fixed rigid wall (node_ID 0) with /DT/AMS: Crumple does not hold nodes on a "
                                       "moving wall inside the selective mass solve",
                                       std::to_string(w.node_id)));
+  // The solve holds the global dofs its conditions fix (SM-4); a condition along a skew's axes couples them.
+  const std::string skewed = "0 with /DT/AMS (the selective mass solve holds the global axes' dofs only; a condition "
+                             "along a skew is not supported by Crumple there)";
+  for (const BoundaryCondition& bc : r.model.boundary_conditions)
+    if (bc.skew >= 0)
+      r.context.unsupported(DeckError(bc.where, fmt::format("/BCS/{}", bc.user_id), "skew_ID", skewed,
+                                      std::to_string(bc.skew_id)));
+  for (const ImposedMotion& im : r.model.imposed)
+    if (im.skew >= 0 && im.kind != ImposedKind::Force)
+      r.context.unsupported(DeckError(im.where, im.kind == ImposedKind::Velocity ? "/IMPVEL" : "/IMPDISP", "skew_ID",
+                                      skewed, std::to_string(im.skew_id)));
 }
 
 void resolve_run_control(Resolver& r, RunControl& run) {
