@@ -74,6 +74,11 @@ std::string tiny_model(bool narrow) {
   s += head("/GRAV/3", "down") + i("1") + i("Y") + i("0") + i("0") +
        (narrow ? r("-9.81") + i("1") : i("1") + i("") + r("0") + r("-9.81")) + "\n";
   s += head("/TH/NODE/1", "n") + std::string(narrow ? "DEF     " : "DEF       ") + "\n" + i("3") + i("0") + "\n";
+  // LAW36: no pressure line in versions 41 to 44 (Ipfun and Eps_f end the control line in 44).
+  s += head("/MAT/PLAS_TAB/2", "tab") + r("7.85e-06") + "\n" + r("210") + r("0.3") + r("0.5") + "\n" + i("1") +
+       i("0") + r("0") + r("0") + "\n";
+  if (!narrow) s += i("0") + r("0") + i("0") + r("0") + r("0") + "\n";
+  s += i("1") + "\n" + r("0.25") + "\n" + r("0") + "\n";
   // TYPE7: versions 41 to 44 have no gap and stiffness lines; IBC in columns 6-8 (8-10 in 2017).
   s += head("/SURF/PART/3", "plate") + i("1") + "\n" + head("/INTER/TYPE7/7", "contact") + i("2") + i("3") + i("0") +
        i("") + i("0") + i("0") + i("0") + i("2") + "\n";
@@ -90,7 +95,7 @@ TEST(InputVersions, NarrowLayoutsOfVersions41To44ReadAsThe2017Ones) {
   for (int version : {41, 42, 44}) {
     SCOPED_TRACE("Invers " + std::to_string(version));
     const Model m = read_deck(dir.write("N_0000.rad", begin(version) + tiny_model(true) + "/END\n")).model;
-    ASSERT_EQ(m.materials.size(), 1u);
+    ASSERT_EQ(m.materials.size(), 2u);
     EXPECT_EQ(m.materials[0].title, "steel");
     EXPECT_EQ(m.materials[0].density, wide.materials[0].density);
     EXPECT_EQ(m.materials[0].young, wide.materials[0].young);
@@ -118,6 +123,10 @@ TEST(InputVersions, NarrowLayoutsOfVersions41To44ReadAsThe2017Ones) {
     EXPECT_EQ(m.gravity[0].scale_y, wide.gravity[0].scale_y);
     EXPECT_EQ(m.gravity[0].node_group, wide.gravity[0].node_group);
     EXPECT_EQ(m.functions[0](0.5), wide.functions[0](0.5));
+    ASSERT_EQ(m.materials.size(), 2u);
+    EXPECT_EQ(m.materials[1].tabulated.eps_p_max, wide.materials[1].tabulated.eps_p_max);
+    EXPECT_EQ(m.materials[1].tabulated.function_id, wide.materials[1].tabulated.function_id);
+    EXPECT_EQ(m.materials[1].tabulated.scale, wide.materials[1].tabulated.scale);
     EXPECT_EQ(m.histories[0].object_ids, wide.histories[0].object_ids);
     ASSERT_EQ(m.type7_interfaces.size(), 1u);
     const Type7Interface &a = m.type7_interfaces[0], &b = wide.type7_interfaces[0];
@@ -135,9 +144,9 @@ TEST(InputVersions, NarrowLayoutsOfVersions41To44ReadAsThe2017Ones) {
 // Cards whose old layout is another one (lines, fields) are refused in versions 41 to 44, naming the version.
 TEST(InputVersions, OldLayoutsCrumpleDoesNotReadAreErrors) {
   test::TempDir dir;
-  const auto path = dir.write("N_0000.rad", begin(44) + tiny_model(true) + "/MAT/PLAS_TAB/2/tab\n        7.85e-06\n/END\n");
+  const auto path = dir.write("N_0000.rad", begin(44) + tiny_model(true) + "/SECT/9/cut\n       1       2\n/END\n");
   const std::string e = test::first_error(path);
-  EXPECT_NE(e.find("/MAT/PLAS_TAB/2/tab: field layout"), std::string::npos) << e;
+  EXPECT_NE(e.find("/SECT/9/cut: field layout"), std::string::npos) << e;
   EXPECT_NE(e.find("versions 41 to 44 is not supported by Crumple"), std::string::npos) << e;
   EXPECT_NE(test::first_error(dir.write("O_0000.rad", begin(40) + "/END\n")).find("41 or later"), std::string::npos);
 }

@@ -134,8 +134,12 @@ void read_johnson_cook(CardReader& reader, DeckContext& context) {
 }
 
 // Law 36: yield stress tabulated against plastic strain, one curve per strain rate.
+void read_tabulated_pressure_line(CardReader& reader, DeckContext& context);
+void read_tabulated_curves(CardReader& reader, TabulatedHardening& tab, std::int64_t n_funct);
+
+// Input versions 41 to 44: the control line ends with Ipfun 49-56 and Eps_f 57-72 (44; blank in 41 and 42) and
+// there is no pressure line; the rest is the 2017 card narrowed.
 void read_tabulated_plasticity(CardReader& reader, DeckContext& context) {
-  refuse_narrow_layout(reader);
   Material m = begin_material(reader, MaterialLaw::Tabulated);
   TabulatedHardening& tab = m.tabulated;
   read_density(reader, context, m);
@@ -165,12 +169,24 @@ void read_tabulated_plasticity(CardReader& reader, DeckContext& context) {
   if (tab.chard < 0.0 || tab.chard > 1.0) control.fail(21, 20, "Chard", "a hardening mix in [0, 1]");
   reject_if(context, control, tab.chard != 0.0, 21, 20, "Chard", "kinematic hardening (Chard > 0) is");
   tab.chard = 0.0;
-  reject_if(context, control, control.real(61, 20, "Eps_f", dim::none) != 0.0, 61, 20, "Eps_f",
-            "the failure strain Eps_f is");
-  // VP chooses the strain rate of the curves: 0, the total strain rate, is what Crumple uses.
-  reject_if(context, control, control.integer(81, 10, "VP") != 0, 81, 10, "VP",
-            "a strain rate other than the total one (VP > 0) is");
+  if (reader.narrow()) {
+    const Line old = control.as_written();
+    reject_if(context, old, old.integer(49, 8, "Ipfun") != 0, 49, 8, "Ipfun", "pressure-dependent yield is");
+    reject_if(context, old, old.real(57, 16, "Eps_f", dim::none) != 0.0, 57, 16, "Eps_f", "the failure strain Eps_f is");
+  } else {
+    reject_if(context, control, control.real(61, 20, "Eps_f", dim::none) != 0.0, 61, 20, "Eps_f",
+              "the failure strain Eps_f is");
+    // VP chooses the strain rate of the curves: 0, the total strain rate, is what Crumple uses.
+    reject_if(context, control, control.integer(81, 10, "VP") != 0, 81, 10, "VP",
+              "a strain rate other than the total one (VP > 0) is");
+    read_tabulated_pressure_line(reader, context);
+  }
+  read_tabulated_curves(reader, tab, n_funct);
+  reader.finish();
+  context.model.materials.push_back(std::move(m));
+}
 
+void read_tabulated_pressure_line(CardReader& reader, DeckContext& context) {
   const Line pressure = reader.next("fct_IDp, Fscale, fct_IDE, Einf, CE");
   reject_if(context, pressure, pressure.integer(1, 10, "fct_IDp") != 0, 1, 10, "fct_IDp",
             "pressure-dependent yield is");
@@ -181,7 +197,10 @@ void read_tabulated_plasticity(CardReader& reader, DeckContext& context) {
   // E(eps_p) = E - (E - Einf)(1 - exp(-CE eps_p)) when CE > 0: a modulus evolution too.
   reject_if(context, pressure, pressure.real(61, 20, "CE", dim::none) != 0.0, 61, 20, "CE",
             "Young's modulus evolution is");
+}
 
+// The curves: function ids, their scales and their strain rates, five a line each.
+void read_tabulated_curves(CardReader& reader, TabulatedHardening& tab, std::int64_t n_funct) {
   const auto n = static_cast<std::size_t>(n_funct);
   const std::size_t lines = (n + 4) / 5;
   for (std::size_t l = 0; l < lines; ++l) {
@@ -218,8 +237,6 @@ void read_tabulated_plasticity(CardReader& reader, DeckContext& context) {
       tab.strain_rate.push_back(rate);
     }
   }
-  reader.finish();
-  context.model.materials.push_back(std::move(m));
 }
 
 }  // namespace
