@@ -31,16 +31,6 @@ std::string per_domain(const std::vector<T>& values) {
   return fmt::format("min {} mean {:.1f} max {}", *low, sum / static_cast<double>(values.size()), *high);
 }
 
-const char* shape_name(RigidWallShape shape) {
-  switch (shape) {
-    case RigidWallShape::Plane: return "PLANE";
-    case RigidWallShape::Cylinder: return "CYL";
-    case RigidWallShape::Sphere: return "SPHER";
-    case RigidWallShape::Parallelogram: return "PARAL";
-  }
-  return "";
-}
-
 // What the reading resolved, as the reference's starter listing prints it: each property's formulation after
 // /DEF_SHELL, /DEF_SOLID and the defaults (docs/deck-format.md, "Defaults that matter"), each wall's secondary
 // nodes, each body's centre choice and each skew.
@@ -57,7 +47,7 @@ void print_resolved(const Model& m, std::ostream& out) {
                  f.ismstr, f.icpre, f.iframe);
   }
   for (const RigidWall& w : m.rigid_walls)
-    fmt::print(out, "  rigid wall {:<8} {}: {} secondary nodes{}\n", w.user_id, shape_name(w.shape),
+    fmt::print(out, "  rigid wall {:<8} {}: {} secondary nodes{}\n", w.user_id, rigid_wall_shape_name(w.shape),
                w.secondary_nodes.size(), w.node >= 0 ? " (moving)" : "");
   for (const RigidBody& b : m.rigid_bodies)
     fmt::print(out, "  rigid body {:<8} main node {} ICoG {} Ispher {}\n", b.user_id, b.main_node_id, b.icog,

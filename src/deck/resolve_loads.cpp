@@ -13,16 +13,6 @@ std::string_view imposed_keyword(ImposedKind kind) {
   return kind == ImposedKind::Velocity ? "/IMPVEL" : kind == ImposedKind::Displacement ? "/IMPDISP" : "/CLOAD";
 }
 
-std::string_view rigid_wall_shape_name(RigidWallShape shape) {
-  switch (shape) {
-    case RigidWallShape::Plane: return "PLANE";
-    case RigidWallShape::Cylinder: return "CYL";
-    case RigidWallShape::Sphere: return "SPHER";
-    case RigidWallShape::Parallelogram: return "PARAL";
-  }
-  return "";
-}
-
 const std::vector<std::int32_t>& nodes_of(const Model& m, std::int32_t group) {
   return m.node_groups[static_cast<std::size_t>(group)].nodes;
 }

@@ -137,10 +137,14 @@ void impose_kinematics(const Model& m, SolverState& s, double t, double dt_next)
   fix_in_skews(m, s);
   for (const ImposedMotion& im : m.imposed) {
     if (im.kind == ImposedKind::Force) continue;
-    const auto& nodes = m.node_groups[static_cast<std::size_t>(im.node_group)].nodes;
-    for (std::int32_t node : nodes) {
+    // An imposed velocity is the card's one value (its function at the mid-step), taken once; a displacement's
+    // depends on each node's displacement so far.
+    const bool velocity = im.kind == ImposedKind::Velocity;
+    const std::optional<double> card_value = velocity ? imposed_velocity(m, s, im, 0, t, dt_next) : std::nullopt;
+    if (velocity && !card_value) continue;
+    for (std::int32_t node : m.node_groups[static_cast<std::size_t>(im.node_group)].nodes) {
       const auto k = static_cast<std::size_t>(node);
-      const std::optional<double> value = imposed_velocity(m, s, im, k, t, dt_next);
+      const std::optional<double> value = velocity ? card_value : imposed_velocity(m, s, im, k, t, dt_next);
       if (!value) continue;
       if (im.skew < 0) {
         (*translation(n, im.dof))[k] = *value;

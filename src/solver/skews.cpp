@@ -5,6 +5,7 @@
 namespace crumple::solver {
 
 void update_skew_axes(const Model& m, SolverState& s) {
+  const bool first_call = s.skew_axes.size() != m.skews.size();  // fixed skews do not move: their axes once
   s.skew_axes.resize(m.skews.size());
   const NodalState& n = s.nodes;
   // Several domains: a domain may not advance a moving skew's nodes, so each node's position comes from its owner
@@ -22,6 +23,7 @@ void update_skew_axes(const Model& m, SolverState& s) {
   }
   for (std::size_t i = 0; i < m.skews.size(); ++i) {
     const Skew& skew = m.skews[i];
+    if (skew.kind == SkewKind::Fixed && !first_call) continue;
     if (skew.kind == SkewKind::Fixed || !s.reducer.several()) {
       s.skew_axes[i] = skew_axes(skew, n.x, n.y, n.z);
       continue;

@@ -14,6 +14,17 @@
 namespace crumple {
 
 enum class RigidWallShape : std::uint8_t { Plane, Cylinder, Sphere, Parallelogram };
+
+// The shape's word in the keyword, /RWALL/<name>/id.
+inline const char* rigid_wall_shape_name(RigidWallShape shape) {
+  switch (shape) {
+    case RigidWallShape::Plane: return "PLANE";
+    case RigidWallShape::Cylinder: return "CYL";
+    case RigidWallShape::Sphere: return "SPHER";
+    case RigidWallShape::Parallelogram: return "PARAL";
+  }
+  return "";
+}
 enum class WallSliding : std::uint8_t { Sliding = 0, Tied = 1, Friction = 2 };
 
 struct RigidWall {

@@ -26,16 +26,16 @@ Record begin_record(CardReader& reader, std::size_t id_index) {
 }
 
 // An id that must be given (> 0).
-std::int64_t required_id(const Line& line, int column, std::string_view name, std::string_view what) {
-  const std::int64_t id = line.integer(column, 10, name);
-  if (id <= 0) line.fail(column, 10, name, fmt::format("a positive {} id", what));
+std::int64_t required_id(const Line& line, int column, std::string_view name, std::string_view what, int width = 10) {
+  const std::int64_t id = line.integer(column, width, name);
+  if (id <= 0) line.fail(column, width, name, fmt::format("a positive {} id", what));
   return id;
 }
 
 // An id that may be blank or 0 (= none).
-std::int64_t optional_id(const Line& line, int column, std::string_view name) {
-  const std::int64_t id = line.integer(column, 10, name);
-  if (id < 0) line.fail(column, 10, name, "a non-negative id (0 or blank: none)");
+std::int64_t optional_id(const Line& line, int column, std::string_view name, int width = 10) {
+  const std::int64_t id = line.integer(column, width, name);
+  if (id < 0) line.fail(column, width, name, "a non-negative id (0 or blank: none)");
   return id;
 }
 
@@ -121,10 +121,8 @@ void read_bcs(CardReader& reader, DeckContext& context) {
     bc.fixed_translation[static_cast<std::size_t>(k)] = read_bcs_code(line, c.translations + k, kNames[0][k]);
     bc.fixed_rotation[static_cast<std::size_t>(k)] = read_bcs_code(line, c.rotations + k, kNames[1][k]);
   }
-  bc.skew_id = line.integer(c.skew, c.width, "skew_ID");
-  if (bc.skew_id < 0) line.fail(c.skew, c.width, "skew_ID", "a non-negative id (0 or blank: none)");
-  bc.node_group_id = line.integer(c.group, c.width, "grnod_ID");
-  if (bc.node_group_id <= 0) line.fail(c.group, c.width, "grnod_ID", "a positive node group id");
+  bc.skew_id = optional_id(line, c.skew, "skew_ID", c.width);
+  bc.node_group_id = required_id(line, c.group, "grnod_ID", "node group", c.width);
   reader.finish();
   const auto fixed = [](const std::array<bool, 3>& a) { return std::count(a.begin(), a.end(), true); };
   if (fixed(bc.fixed_translation) + fixed(bc.fixed_rotation) == 0)
@@ -197,8 +195,7 @@ void read_concentrated_load(CardReader& reader, DeckContext& context) {
   if (reader.narrow()) {  // input versions 41 to 44: Fscale_Y 33-48, grnod_ID 49-56, no Ascale_x
     const Line w = line.as_written();
     load.scale_y = scale_or_one(reader, w, 33, "Fscale_Y", ordinate_dimension(load.kind, load.dof), 16);
-    load.node_group_id = w.integer(49, 8, "grnod_ID");
-    if (load.node_group_id <= 0) w.fail(49, 8, "grnod_ID", "a positive node group id");
+    load.node_group_id = required_id(w, 49, "grnod_ID", "node group", 8);
     load.scale_x = reader.units().factor(dim::time);
     reader.finish();
     context.model.imposed.push_back(std::move(load));
@@ -256,8 +253,7 @@ void read_gravity(CardReader& reader, DeckContext& context) {
   const Line w = line.as_written();
   const int scale_column = narrow ? 33 : 81, scale_width = narrow ? 16 : 20;
   if (narrow) {
-    g.node_group_id = w.integer(49, 8, "grnod_ID");  // 0: every node
-    if (g.node_group_id < 0) w.fail(49, 8, "grnod_ID", "a non-negative id (0 or blank: every node)");
+    g.node_group_id = optional_id(w, 49, "grnod_ID", 8);  // 0: every node
     g.scale_x = reader.units().factor(dim::time);
   } else {
     g.node_group_id = optional_id(line, 41, "grnod_ID");  // 0: every node
