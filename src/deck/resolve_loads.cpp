@@ -65,6 +65,14 @@ void resolve_skews(Resolver& r) {
   }
 }
 
+// The window of the sensor a load names (eq. L-7); sensor_ID 0: always on.
+SensorWindow sensor_window(Resolver& r, std::int64_t sensor_id, const SourceLocation& where, const std::string& kw) {
+  const auto k = r.find_optional(r.model.index.sensors, sensor_id, where, kw, "sensor_ID", "sensor");
+  if (k < 0) return {};
+  const Sensor& s = r.model.sensors[static_cast<std::size_t>(k)];
+  return {s.on, s.off};
+}
+
 void resolve_boundary_conditions(Resolver& r) {
   const auto& ix = r.model.index;
   for (BoundaryCondition& bc : r.model.boundary_conditions) {
@@ -79,7 +87,7 @@ void resolve_imposed(Resolver& r) {
   for (ImposedMotion& im : r.model.imposed) {
     const std::string kw = fmt::format("{}/{}", imposed_keyword(im.kind), im.user_id);
     im.skew = r.find_optional(ix.skews, im.skew_id, im.where, kw, "skew_ID", "skew");
-    r.require_zero(im.sensor_id, im.where, kw, "sensor_ID", "sensors are");
+    im.sensor = sensor_window(r, im.sensor_id, im.where, kw);
     r.require_zero(im.frame_id, im.where, kw, "frame_ID", "frames are");
     r.require_zero(im.icoor, im.where, kw, "Icoor", "cylindrical coordinates are");
     im.function = r.find(ix.functions, im.function_id, im.where, kw, "funct_IDT", "function");
@@ -98,7 +106,7 @@ void resolve_initial_conditions(Resolver& r) {
   for (Gravity& g : m.gravity) {
     const std::string kw = fmt::format("/GRAV/{}", g.user_id);
     g.skew = r.find_optional(ix.skews, g.skew_id, g.where, kw, "skew_ID", "skew");
-    r.require_zero(g.sensor_id, g.where, kw, "sensor_ID", "sensors are");
+    g.sensor = sensor_window(r, g.sensor_id, g.where, kw);
     // Both are optional: no function is a constant acceleration, no group is every node.
     g.function = r.find_optional(ix.functions, g.function_id, g.where, kw, "funct_IDT", "function");
     g.node_group = r.find_optional(ix.node_groups, g.node_group_id, g.where, kw, "grnod_ID", "node group");
@@ -268,6 +276,7 @@ std::string rigid_wall_keyword(const RigidWall& w) {
 void resolve_load_references(Resolver& r) {
   Model& m = r.model;
   resolve_skews(r);
+  r.index(m.sensors, m.index.sensors, "/SENSOR");
   r.index(m.rigid_walls, m.index.rigid_walls, "/RWALL");
   r.index(m.rigid_bodies, m.index.rigid_bodies, "/RBODY");
   check_unique(r, m.boundary_conditions, "/BCS");

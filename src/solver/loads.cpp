@@ -47,13 +47,14 @@ template <class Add>
 void for_each_external_force(const Model& m, const SolverState& s, double t, Add add) {
   const NodalState& n = s.nodes;
   for (const ImposedMotion& im : m.imposed) {
-    if (im.kind != ImposedKind::Force || t < im.t_start || t > im.t_stop) continue;
-    const double value = curve(m, im.function, im.scale_x, im.scale_y, t);
+    if (im.kind != ImposedKind::Force || t < im.t_start || t > im.t_stop || !im.sensor.holds(t)) continue;
+    const double value = curve(m, im.function, im.scale_x, im.scale_y, im.sensor.clock(t));
     for (std::int32_t node : m.node_groups[static_cast<std::size_t>(im.node_group)].nodes)
       add_along(s, im.dof, im.skew, static_cast<std::size_t>(node), value, add);
   }
   for (const Gravity& g : m.gravity) {
-    const double acceleration = curve(m, g.function, g.scale_x, g.scale_y, t);
+    if (!g.sensor.holds(t)) continue;
+    const double acceleration = curve(m, g.function, g.scale_x, g.scale_y, g.sensor.clock(t));
     for_each_load_node(m, g.node_group, [&](std::int32_t node) {
       const auto k = static_cast<std::size_t>(node);
       add_along(s, g.dof, g.skew, k, n.mass[k] * acceleration, add);
@@ -164,12 +165,14 @@ std::optional<double> imposed_velocity(const Model& m, const SolverState& s, con
                                        double t, double dt_next) {
   if (im.kind == ImposedKind::Velocity) {
     const double t_half = t + 0.5 * dt_next;
-    if (t_half < im.t_start || t_half > im.t_stop) return std::nullopt;
-    return curve(m, im.function, im.scale_x, im.scale_y, t_half);
+    if (t_half < im.t_start || t_half > im.t_stop || !im.sensor.holds(t_half)) return std::nullopt;
+    return curve(m, im.function, im.scale_x, im.scale_y, im.sensor.clock(t_half));
   }
   if (im.kind != ImposedKind::Displacement || is_rotation(im.dof)) return std::nullopt;
-  if (t + dt_next < im.t_start || t > im.t_stop || dt_next <= 0.0) return std::nullopt;
-  const double target = curve(m, im.function, im.scale_x, im.scale_y, t + dt_next);
+  const double t_next = t + dt_next;
+  if (t_next < im.t_start || t > im.t_stop || dt_next <= 0.0) return std::nullopt;
+  if (t_next < im.sensor.on || t > im.sensor.off) return std::nullopt;
+  const double target = curve(m, im.function, im.scale_x, im.scale_y, im.sensor.clock(t_next));
   Vec3 e{};
   if (im.skew < 0) e[static_cast<std::size_t>(dof_axis(im.dof))] = 1.0;
   else e = s.skew_axes[static_cast<std::size_t>(im.skew)].axis[dof_axis(im.dof)];

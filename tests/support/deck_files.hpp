@@ -53,9 +53,9 @@ inline std::string R(double v) {
 inline std::string blank(int columns) { return std::string(static_cast<std::size_t>(columns), ' '); }
 
 // /BEGIN with kg, m, s in and out.
-inline std::string begin_card(const std::string& name = "TEST") {
-  return "/BEGIN\n" + name + "\n      2019         0\n" + R("kg") + R("m") + R("s") + "\n" + R("kg") + R("m") + R("s") +
-         "\n";
+inline std::string begin_card(const std::string& name = "TEST", int input_version = 2019) {
+  return "/BEGIN\n" + name + "\n" + I(input_version) + "         0\n" + R("kg") + R("m") + R("s") + "\n" + R("kg") +
+         R("m") + R("s") + "\n";
 }
 
 // One steel plate of 2 x 1 four-node shells (6 nodes), part 1, property 1 (t = 0.001), material 1 (elastic).

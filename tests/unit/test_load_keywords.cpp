@@ -2,6 +2,8 @@
 // The decks have no engine file, so these tests do not depend on the engine keywords.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "deck_files.hpp"
 
 using namespace crumple;
@@ -349,4 +351,54 @@ TEST(LoadKeywords, AdmasErrors) {
   const std::string empty = error_of(dir, "/ADMAS/1/1\nm\n" + R(1.0) + I(12) + "\n");
   EXPECT_NE(empty.find("node group 12 is empty"), std::string::npos) << empty;
   EXPECT_NE(error_of(dir, "/ADMAS/0/1\nm\n" + R(1.0) + "\n").find("grnod_ID"), std::string::npos);
+}
+
+namespace {
+
+// /SENSOR/TIME (docs/cards/loads-output-engine.md): Tdelay in time units; Tstop from input version 2023 on.
+std::string time_sensor(long long id, const std::string& delay, const std::string& stop = "") {
+  return "/SENSOR/TIME/" + std::to_string(id) + "\ntimer\n" + delay + "\n" + (stop.empty() ? "" : stop + "\n");
+}
+
+}  // namespace
+
+TEST(LoadKeywords, TimeSensorWindowReachesTheLoadsThatNameIt) {
+  test::TempDir dir;
+  const Model m = read(dir, time_sensor(3, R(2.0)) + imposed("/IMPVEL/4", "X", "", 1, 0, 0, 3), gram_mm_ms_begin());
+  ASSERT_EQ(m.sensors.size(), 1u);
+  EXPECT_DOUBLE_EQ(m.sensors[0].on, 2e-3);  // 2 ms in s
+  EXPECT_TRUE(std::isinf(m.sensors[0].off));
+  ASSERT_EQ(m.imposed.size(), 1u);
+  EXPECT_DOUBLE_EQ(m.imposed[0].sensor.on, 2e-3);
+  EXPECT_FALSE(m.imposed[0].sensor.holds(1.9e-3));
+  EXPECT_TRUE(m.imposed[0].sensor.holds(2e-3));
+  EXPECT_DOUBLE_EQ(m.imposed[0].sensor.clock(5e-3), 3e-3);
+  // No sensor: always on, clock from 0.
+  const Model plain = read(dir, imposed("/IMPVEL/4", "X", ""));
+  EXPECT_TRUE(plain.imposed[0].sensor.holds(0.0));
+  EXPECT_DOUBLE_EQ(plain.imposed[0].sensor.clock(1.0), 1.0);
+}
+
+TEST(LoadKeywords, TimeSensorStopFromVersion2023) {
+  test::TempDir dir;
+  const std::string card = time_sensor(3, R(1.0), R(4.0)) + cload("Z", R(0.0) + R(1.0));
+  const Model m = read(dir, card, test::begin_card("TEST", 2023));
+  EXPECT_DOUBLE_EQ(m.sensors[0].off, 4.0);
+  // Before 2023 the card has no Tstop line: a second line is an error.
+  EXPECT_NE(test::first_error(starter(dir, card)).find("/SENSOR/TIME/3"), std::string::npos);
+  const std::string early = time_sensor(3, R(5.0), R(4.0));
+  EXPECT_NE(test::first_error(starter(dir, early, test::begin_card("TEST", 2023))).find("Tstop"), std::string::npos);
+}
+
+TEST(LoadKeywords, SensorErrors) {
+  test::TempDir dir;
+  EXPECT_NE(error_of(dir, time_sensor(3, R(-1.0))).find("Tdelay"), std::string::npos);
+  const std::string accel = "/SENSOR/ACCE/3\naccel\n" + R(0.0) + "\n";
+  const std::string e = error_of(dir, accel);
+  EXPECT_NE(e.find("TIME"), std::string::npos) << e;
+  EXPECT_NE(e.find("ACCE"), std::string::npos) << e;
+  EXPECT_NE(error_of(dir, time_sensor(3, R(0.0)) + time_sensor(3, R(1.0))).find("/SENSOR"), std::string::npos);
+  const std::string missing = error_of(dir, imposed("/IMPVEL/4", "X", "", 1, 0, 0, 8));
+  EXPECT_NE(missing.find("sensor_ID"), std::string::npos) << missing;
+  EXPECT_NE(missing.find("sensor 8"), std::string::npos) << missing;
 }

@@ -175,12 +175,13 @@ struct RunResult {
 // A sample interval below the time step gives one call per cycle (the next output time is found in O(1)).
 inline RunResult run_deck(const test::TempDir& dir, const std::string& starter, double end_time, double sample,
                           const std::function<void(const Model&, const SolverState&)>& observer = {},
-                          const std::string& extra_engine = "", const std::function<void(Model&)>& edit = {}) {
+                          const std::string& extra_engine = "", const std::function<void(Model&)>& edit = {},
+                          int input_version = 2019) {
   std::ostringstream engine;
   engine.precision(17);
   engine << "/RUN/VERIF/1\n" << end_time << "\n/TFILE\n" << sample << "\n/PRINT/-100000\n" << extra_engine;
   dir.write("VERIF_0001.rad", engine.str());
-  const auto path = dir.write("VERIF_0000.rad", test::begin_card("VERIF") + starter + "/END\n");
+  const auto path = dir.write("VERIF_0000.rad", test::begin_card("VERIF", input_version) + starter + "/END\n");
   RunResult result{read_deck(path).model, {}};
   if (edit) edit(result.model);
   SimulationOptions options;

@@ -9,6 +9,7 @@
 
 #include "crumple/core/source_location.hpp"
 #include "crumple/core/vec3.hpp"
+#include "crumple/model/sensors.hpp"
 
 namespace crumple {
 
@@ -32,7 +33,8 @@ struct BoundaryCondition {  // /BCS
 };
 
 // /IMPVEL, /IMPDISP, /CLOAD share a layout: value(t) = scale_y * f(t / scale_x) on a dof of each node of a
-// group, for t_start <= t <= t_stop (the function is not shifted to start at t_start).
+// group, for t_start <= t <= t_stop (the function is not shifted to start at t_start). With a sensor, also only
+// while the sensor is on, and f runs on the sensor's clock: f((t - t_on) / scale_x) (eq. L-7).
 enum class ImposedKind : std::uint8_t { Velocity, Displacement, Force };
 
 struct ImposedMotion {
@@ -46,6 +48,7 @@ struct ImposedMotion {
   std::int64_t skew_id = 0;
   std::int32_t skew = -1;  // -1: `dof` is a global axis; else the skew's axis (SK-5, SK-6)
   std::int64_t sensor_id = 0;
+  SensorWindow sensor;  // resolved from sensor_id (model build); no sensor: always on, clock from 0
   std::int64_t node_group_id = 0;
   std::int32_t node_group = -1;
   std::int64_t frame_id = 0;  // /IMPVEL only (the /IMPDISP and /CLOAD layouts have no frame)
@@ -81,6 +84,7 @@ struct Gravity {
   std::int64_t skew_id = 0;
   std::int32_t skew = -1;          // -1: `dof` is a global axis; else the skew's axis
   std::int64_t sensor_id = 0;
+  SensorWindow sensor;             // resolved from sensor_id (model build), as for ImposedMotion
   std::int64_t node_group_id = 0;  // 0: every node of the model
   std::int32_t node_group = -1;    // -1: every node of the model
   double scale_x = 1.0;  // [T]

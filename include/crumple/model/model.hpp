@@ -18,6 +18,7 @@
 #include "crumple/model/properties.hpp"
 #include "crumple/model/rigid.hpp"
 #include "crumple/model/run_control.hpp"
+#include "crumple/model/sensors.hpp"
 #include "crumple/model/sets.hpp"
 #include "crumple/model/skews.hpp"
 
@@ -52,6 +53,7 @@ struct Model {
   std::vector<Surface> surfaces;
   std::vector<Subset> subsets;
   std::vector<Skew> skews;  // /SKEW/FIX, /SKEW/MOV, /SKEW/MOV2
+  std::vector<Sensor> sensors;  // /SENSOR/TIME
 
   std::vector<BoundaryCondition> boundary_conditions;
   std::vector<ImposedMotion> imposed;  // /IMPVEL, /IMPDISP, /CLOAD
@@ -80,7 +82,7 @@ struct Model {
 
   struct Index {
     IdMap nodes, parts, properties, materials, functions, node_groups, shell_groups, sh3n_groups, brick_groups,
-        surfaces, subsets, skews, rigid_walls, rigid_bodies, interfaces, sections, accelerometers;
+        surfaces, subsets, skews, sensors, rigid_walls, rigid_bodies, interfaces, sections, accelerometers;
     std::array<IdMap, kElementKinds> elements;
   } index;
 
