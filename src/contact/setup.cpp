@@ -106,8 +106,9 @@ ContactState setup_contact(const Model& m, NodalState& nodes, std::vector<std::s
     in.friction_filter = in.friction ? card.ifiltr : 0;
     in.filter_value = card.xfreq;
     in.friction_form = card.iform == 2 ? 2 : 1;
-    in.t_start = card.tstart;
-    in.t_stop = card.tstop > 0.0 ? card.tstop : std::numeric_limits<double>::infinity();
+    // Tstart, Tstop and the sensor's window all bound the interface's (loads.md, L-7; measured on the reference).
+    in.t_start = std::max(card.tstart, card.sensor.on);
+    in.t_stop = std::min(card.tstop > 0.0 ? card.tstop : std::numeric_limits<double>::infinity(), card.sensor.off);
     in.dt_minimum = card.dtmin;
     in.idel = card.idel;
     in.bucket_scale = card.bumult > 0.0 ? card.bumult : 0.2;

@@ -78,6 +78,9 @@ void resolve_elements(Resolver& r);     // connectivity, part order, groups, geo
 void resolve_sets(Resolver& r);         // node and element groups, surfaces, subsets
 // A rigid wall's keyword for its messages, "/RWALL/PLANE/3".
 std::string rigid_wall_keyword(const RigidWall& w);
+// The window of the sensor a card names in `field` (docs/theory/loads.md, L-7); id 0: always on, clock from 0.
+SensorWindow sensor_window(Resolver& r, std::int64_t sensor_id, const SourceLocation& where, const std::string& kw,
+                           std::string_view field = "sensor_ID");
 void resolve_load_references(Resolver& r);    // loads, imposed motion, added mass, rigid walls and bodies
 void resolve_output_references(Resolver& r, std::vector<RunControl>& continued_runs);  // interfaces, sections, time histories, run control
 

@@ -65,14 +65,6 @@ void resolve_skews(Resolver& r) {
   }
 }
 
-// The window of the sensor a load names (eq. L-7); sensor_ID 0: always on.
-SensorWindow sensor_window(Resolver& r, std::int64_t sensor_id, const SourceLocation& where, const std::string& kw) {
-  const auto k = r.find_optional(r.model.index.sensors, sensor_id, where, kw, "sensor_ID", "sensor");
-  if (k < 0) return {};
-  const Sensor& s = r.model.sensors[static_cast<std::size_t>(k)];
-  return {s.on, s.off};
-}
-
 void resolve_boundary_conditions(Resolver& r) {
   const auto& ix = r.model.index;
   for (BoundaryCondition& bc : r.model.boundary_conditions) {
@@ -268,6 +260,14 @@ void resolve_rigid_walls(Resolver& r) {
 }
 
 }  // namespace
+
+SensorWindow sensor_window(Resolver& r, std::int64_t sensor_id, const SourceLocation& where, const std::string& kw,
+                           std::string_view field) {
+  const auto k = r.find_optional(r.model.index.sensors, sensor_id, where, kw, field, "sensor");
+  if (k < 0) return {};
+  const Sensor& s = r.model.sensors[static_cast<std::size_t>(k)];
+  return {s.on, s.off};
+}
 
 std::string rigid_wall_keyword(const RigidWall& w) {
   return fmt::format("/RWALL/{}/{}", rigid_wall_shape_name(w.shape), w.user_id);

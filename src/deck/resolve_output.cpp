@@ -144,9 +144,10 @@ void resolve_output_references(Resolver& r, std::vector<RunControl>& continued_r
   r.index(m.sections, m.index.sections, "/SECT");
   r.index(m.accelerometers, m.index.accelerometers, "/ACCEL");
   const auto& ix = m.index;
-  // Unsupported TYPE7 options (sensors, friction functions, /FRICTION...) are rejected by the card reader.
+  // Unsupported TYPE7 options (friction functions, /FRICTION...) are rejected by the card reader.
   for (Type7Interface& i : m.type7_interfaces) {
     const std::string kw = fmt::format("/INTER/TYPE7/{}", i.user_id);
+    i.sensor = sensor_window(r, i.sensor_id, i.where, kw, "sens_ID");
     i.secondary_group = r.find(ix.node_groups, i.secondary_group_id, i.where, kw, "Slav_id", "node group");
     i.main_surface = r.find(ix.surfaces, i.main_surface_id, i.where, kw, "Mast_id", "surface");
     // An interface with no secondary node would contact nothing, without a word.

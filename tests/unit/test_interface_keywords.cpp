@@ -239,7 +239,6 @@ TEST(InterfaceKeywords, OptionsWithoutImplementationAreErrorsNamingTheField) {
       {"%mesh_size", [](Type7& t) { t.stiffness = R(0.0) + R(0.0) + R(0.4); }},
       {"Irem_gap", [](Type7& t) { t.stiffness = R(0.0) + R(0.0) + R(0.0) + R(0.0) + I(2); }},
       {"Ibag", [](Type7& t) { t.flags = flags(0, 0, 0, 0, 2, 0, 0, 0); }},
-      {"sens_ID", [](Type7& t) { t.friction = I(0) + I(0) + R(0.0) + I(0) + I(5); }},
       {"fct_IDf", [](Type7& t) { t.friction = I(0) + I(0) + R(0.0) + I(0) + I(0) + I(5); }},
       {"AscaleF", [](Type7& t) { t.friction = I(0) + I(0) + R(0.0) + I(0) + I(0) + I(0) + R(2.0); }},
       {"fric_ID", [](Type7& t) { t.friction = I(0) + I(0) + R(0.0) + I(0) + I(0) + I(0) + R(0.0) + I(5); }},
@@ -251,6 +250,21 @@ TEST(InterfaceKeywords, OptionsWithoutImplementationAreErrorsNamingTheField) {
     EXPECT_TRUE(contains(e, std::string("field ") + c.field)) << c.field << ": " << e;
     EXPECT_TRUE(contains(e, "not supported")) << c.field << ": " << e;
   }
+}
+
+// sens_ID: the interface acts only while the sensor is on (docs/theory/loads.md, L-7); a missing sensor is an error.
+TEST(InterfaceKeywords, SensorBoundsTheInterfacesWindow) {
+  Type7 t;
+  t.friction = I(0) + I(0) + R(0.0) + I(0) + I(5);
+  const std::string e = error_of(t);
+  EXPECT_TRUE(contains(e, "sens_ID")) << e;
+  EXPECT_TRUE(contains(e, "sensor 5")) << e;
+  test::TempDir dir;
+  t.after = "/SENSOR/TIME/5\ntimer\n" + R(0.25) + "\n";
+  const Deck d = read(dir, t);
+  ASSERT_EQ(d.model.type7_interfaces.size(), 1u);
+  EXPECT_DOUBLE_EQ(d.model.type7_interfaces[0].sensor.on, 0.25);
+  EXPECT_FALSE(d.model.type7_interfaces[0].sensor.holds(0.2));
 }
 
 TEST(InterfaceKeywords, ValuesOutOfRangeAreErrorsNamingTheField) {

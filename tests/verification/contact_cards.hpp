@@ -18,6 +18,7 @@ struct Type7Options {
   std::string ibc = "000";  // IBC flags x y z
   int ifric = 0, ifiltr = 0;
   double xfreq = 0.0;
+  long long sensor = 0;  // sens_ID
   std::array<double, 6> c{};  // C1..C6 of the friction law
 };
 
@@ -30,7 +31,7 @@ inline std::string type7_card(long long id, long long group, long long surface, 
   s += R(0.0) + R(0.0) + R(0.0) + R(o.dtmin) + I(0) + I(0) + "\n";
   s += R(o.stfac) + R(o.fric) + R(o.gapmin) + R(0.0) + R(0.0) + "\n";
   s += "       " + o.ibc + std::string(20, ' ') + I(o.inacti) + R(o.viss) + R(o.visf) + R(0.0) + "\n";
-  s += I(o.ifric) + I(o.ifiltr) + R(o.xfreq) + I(o.iform) + I(0) + I(0) + R(0.0) + I(0) + "\n";
+  s += I(o.ifric) + I(o.ifiltr) + R(o.xfreq) + I(o.iform) + I(o.sensor) + I(0) + R(0.0) + I(0) + "\n";
   if (o.ifric > 0) s += R(o.c[0]) + R(o.c[1]) + R(o.c[2]) + R(o.c[3]) + R(o.c[4]) + "\n";
   if (o.ifric > 1) s += R(o.c[5]) + "\n";
   return s;

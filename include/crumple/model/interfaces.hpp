@@ -8,6 +8,7 @@
 #include <string>
 
 #include "crumple/core/source_location.hpp"
+#include "crumple/model/sensors.hpp"
 
 namespace crumple {
 
@@ -49,7 +50,9 @@ struct Type7Interface {
   int ifric = 0, ifiltr = 0;
   double xfreq = 0.0;  // Ifiltr 1: a factor in (0, 1]; 2: a period [T]; 3: a frequency [T^-1]
   int iform = 0;
-  std::int64_t sensor_id = 0, friction_function_id = 0;  // always 0 (rejected by the reader)
+  std::int64_t sensor_id = 0;  // 0: none; else the interface acts only while the sensor is on (loads.md, L-7)
+  SensorWindow sensor;          // resolved from sensor_id (model build)
+  std::int64_t friction_function_id = 0;                  // always 0 (rejected by the reader)
   double ascale_f = 0.0;
   std::int64_t friction_id = 0;                           // always 0 (rejected by the reader)
   // line 7 (C1..C5 when Ifric > 0) and line 8 (C6 when Ifric > 1); dimensions depend on the law:

@@ -213,7 +213,6 @@ void reject_unsupported(const Type7Lines& l, Type7Interface& i, DeckContext& con
   // Irem_i2 (1 or 3) says whether /INTER/TYPE2 secondary nodes leave this contact; Crumple has no TYPE2, so both
   // values leave the same nodes in: the flag acts trivially.
   if (!l.friction) return;  // input version 41 has no friction line
-  reject(*l.friction, i.sensor_id, 51, 10, "sens_ID", "sensors are");
   reject(*l.friction, i.friction_function_id, 61, 10, "fct_IDf", "friction-temperature functions are");
   // AscaleF only scales fct_IDf; 1 is its default and changes nothing.
   if (i.ascale_f != 0.0 && i.ascale_f != 1.0) {
