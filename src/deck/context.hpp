@@ -78,6 +78,7 @@ void register_set_keywords(KeywordTable& table);
 void register_load_keywords(KeywordTable& table);
 void register_rigid_keywords(KeywordTable& table);
 void register_skew_keywords(KeywordTable& table);
+void register_box_keywords(KeywordTable& table);
 void register_interface_keywords(KeywordTable& table);
 void register_output_keywords(KeywordTable& table);
 void register_engine_keywords(KeywordTable& table);
