@@ -31,9 +31,32 @@ std::string per_domain(const std::vector<T>& values) {
   return fmt::format("min {} mean {:.1f} max {}", *low, sum / static_cast<double>(values.size()), *high);
 }
 
+// A box group's members by user id, as the reference's starter listing prints them (Ipri 5): the first 40.
+template <class Members>
+void print_box_group(std::ostream& out, std::string_view what, std::int64_t id, std::int64_t box, std::string_view rule,
+                     const Members& members, const std::vector<std::int64_t>& user_ids) {
+  std::vector<std::string> items;
+  for (std::size_t k = 0; k < members.size() && k < 40; ++k)
+    items.push_back(fmt::format("{}", user_ids[static_cast<std::size_t>(members[k])]));
+  if (members.size() > 40) items.push_back("...");
+  fmt::print(out, "  {:<11} {:<8} box {}{}: {}: {}\n", what, id, box, rule, members.size(), join(items));
+}
+
+void print_box_groups(const Model& m, std::ostream& out) {
+  for (const NodeGroup& g : m.node_groups)
+    if (g.source == SetSource::Boxes)
+      print_box_group(out, "node group", g.user_id, g.items.front(), "", g.nodes, m.nodes.user_id);
+  for (const auto* groups : {&m.shell_groups, &m.sh3n_groups, &m.brick_groups})
+    for (const ElementSet& g : *groups)
+      if (g.source == SetSource::Boxes)
+        print_box_group(out, fmt::format("{} group", element_kind_name(g.kind)), g.user_id, g.items.front(),
+                        g.any_node_in_box ? " (BOX2)" : " (BOX)", g.elements,
+                        m.elements[static_cast<int>(g.kind)].user_id);
+}
+
 // What the reading resolved, as the reference's starter listing prints it: each property's formulation after
 // /DEF_SHELL, /DEF_SOLID and the defaults (docs/deck-format.md, "Defaults that matter"), each wall's secondary
-// nodes, each body's centre choice and each skew.
+// nodes, each body's centre choice, each skew and the members of each box group.
 void print_resolved(const Model& m, std::ostream& out) {
   fmt::print(out, "Resolved\n");
   for (std::size_t i = 0; i < m.properties.size() && i < m.formulations.size(); ++i) {
@@ -54,6 +77,7 @@ void print_resolved(const Model& m, std::ostream& out) {
                b.ispher);
   for (const Skew& k : m.skews)
     fmt::print(out, "  skew {:<14} {}\n", k.user_id, k.kind == SkewKind::Fixed ? "fixed" : "moving");
+  print_box_groups(m, out);
 }
 
 }  // namespace

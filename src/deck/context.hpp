@@ -79,6 +79,7 @@ void register_load_keywords(KeywordTable& table);
 void register_rigid_keywords(KeywordTable& table);
 void register_skew_keywords(KeywordTable& table);
 void register_sensor_keywords(KeywordTable& table);
+void register_box_keywords(KeywordTable& table);
 void register_interface_keywords(KeywordTable& table);
 void register_output_keywords(KeywordTable& table);
 void register_engine_keywords(KeywordTable& table);

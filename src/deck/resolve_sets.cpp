@@ -30,6 +30,126 @@ void for_each_element_of_parts(const Model& m, const std::vector<std::int32_t>& 
       for (std::int32_t e = g.begin; e < g.end; ++e) visit(g.kind, e);
 }
 
+// Boxes (docs/deck-format.md, "Boxes"): their points at nodes, their skew's axes, the boxes a /BOX/BOX lists.
+// Deepest /BOX/BOX nesting: as for groups, the membership test recurses.
+constexpr int kMaxBoxNesting = 100;
+
+std::string box_keyword(const Box& b) {
+  constexpr const char* kTypes[] = {"RECTA", "CYLIN", "SPHER", "BOX"};
+  return fmt::format("/BOX/{}/{}", kTypes[static_cast<int>(b.shape)], b.user_id);
+}
+
+void place_box_points(Resolver& r, Box& b) {
+  const Model& m = r.model;
+  const std::size_t points = b.shape == BoxShape::Sphere ? 1 : 2;
+  for (std::size_t k = 0; k < points; ++k)
+    if (b.node_ids[k] != 0)
+      if (const auto n = r.find(m.index.nodes, b.node_ids[k], b.where, box_keyword(b), k == 0 ? "N1" : "N2", "node");
+          n >= 0)
+        b.points[k] = m.nodes.position(n);
+  if (b.shape == BoxShape::Cylinder && b.points[0] == b.points[1])
+    r.error(b.where, box_keyword(b), b.node_ids[0] != 0 ? "N2" : "Xp2, Yp2, Zp2",
+            "an axis: two different end points", "both ends at one point");
+  if (b.shape == BoxShape::Sphere && b.points[0] == Vec3{})
+    r.context.warn(b.where, box_keyword(b),
+                   "centre at the origin: the reference refuses such a sphere (undefined box limits), Crumple "
+                   "reads it as the manual does");
+}
+
+// A fixed skew's axes, or a moving one's at its nodes' initial positions (the reference, measured: the box follows
+// a /SKEW/MOV at 45 degrees). An undefined skew is reported with the skew (resolve_loads.cpp).
+void set_box_axes(Resolver& r, Box& b) {
+  if (b.skew_id == 0) return;
+  const Model& m = r.model;
+  const auto found = std::find_if(m.skews.begin(), m.skews.end(), [&](const Skew& k) { return k.user_id == b.skew_id; });
+  if (found == m.skews.end())
+    return r.error(b.where, box_keyword(b), "skew_ID", "an existing skew", fmt::format("skew {} not defined", b.skew_id));
+  Skew skew = *found;
+  if (skew.kind == SkewKind::Moving)
+    for (int k = 0; k < 3; ++k) {
+      const auto node = m.index.nodes.find(skew.node_ids[k]);
+      if (node == m.index.nodes.end()) return;
+      skew.nodes[k] = node->second;
+    }
+  if (skew_is_defined(skew, m.nodes.x, m.nodes.y, m.nodes.z)) b.axes = skew_axes(skew, m.nodes.x, m.nodes.y, m.nodes.z);
+}
+
+void list_combined_boxes(Resolver& r, Box& b) {
+  for (std::int64_t id : b.box_ids)
+    if (const auto k = r.find(r.model.index.boxes, id < 0 ? -id : id, b.where, box_keyword(b), "box_ID", "box"); k >= 0)
+      (id < 0 ? b.removed : b.added).push_back(k);
+}
+
+// 0 unvisited, 1 on the path, 2 done: a /BOX/BOX that lists itself, directly or not, is an error.
+bool boxes_acyclic(Resolver& r, std::size_t b, std::vector<int>& state, int depth = 0) {
+  Box& box = r.model.boxes[b];
+  if (state[b] == 2) return true;
+  if (state[b] == 1 || depth > kMaxBoxNesting) {
+    r.error(box.where, box_keyword(box), "box_ID",
+            fmt::format("boxes that do not contain themselves, nested at most {} deep", kMaxBoxNesting),
+            state[b] == 1 ? "a cycle of /BOX/BOX" : "a deeper nesting");
+    return false;
+  }
+  state[b] = 1;
+  bool ok = true;
+  for (const auto* list : {&box.added, &box.removed})
+    for (std::int32_t k : *list) ok = ok && boxes_acyclic(r, static_cast<std::size_t>(k), state, depth + 1);
+  state[b] = 2;
+  return ok;
+}
+
+void resolve_boxes(Resolver& r) {
+  Model& m = r.model;
+  r.index(m.boxes, m.index.boxes, "/BOX");
+  for (Box& b : m.boxes) {
+    place_box_points(r, b);
+    set_box_axes(r, b);
+    list_combined_boxes(r, b);
+  }
+  std::vector<int> state(m.boxes.size(), 0);
+  for (std::size_t b = 0; b < m.boxes.size(); ++b)
+    if (!boxes_acyclic(r, b, state)) {
+      for (Box& box : m.boxes) {  // reported; the box groups must not recurse
+        box.added.clear();
+        box.removed.clear();
+      }
+      return;
+    }
+}
+
+// The dense index of a box group's one box; -1 when missing (reported).
+std::int32_t group_box(Resolver& r, std::int64_t id, const SourceLocation& where, const std::string& keyword) {
+  return r.find(r.model.index.boxes, id, where, keyword, "box_ID", "box");
+}
+
+// Every node of the model in the box, at its initial position.
+void nodes_in_box(Resolver& r, NodeGroup& group, const std::string& keyword) {
+  const Model& m = r.model;
+  const auto box = group_box(r, group.items.front(), group.where, keyword);
+  if (box < 0) return;
+  for (std::size_t n = 0; n < m.nodes.size(); ++n)
+    if (box_contains(m.boxes, static_cast<std::size_t>(box), m.nodes.position(static_cast<std::int32_t>(n))))
+      group.nodes.push_back(static_cast<std::int32_t>(n));
+}
+
+// The elements of the group's kind with every node (/BOX) or at least one node (/BOX2) in the box.
+void elements_in_box(Resolver& r, ElementSet& group, const std::string& keyword) {
+  const Model& m = r.model;
+  const auto box = group_box(r, group.items.front(), group.where, keyword);
+  if (box < 0) return;
+  std::vector<char> inside(m.nodes.size(), 0);
+  for (std::size_t n = 0; n < m.nodes.size(); ++n)
+    inside[n] = box_contains(m.boxes, static_cast<std::size_t>(box), m.nodes.position(static_cast<std::int32_t>(n)));
+  const ElementTable& t = m.elements[static_cast<int>(group.kind)];
+  const int count = nodes_per_element(group.kind);
+  for (std::size_t e = 0; e < t.size(); ++e) {
+    const std::int32_t* nodes = t.nodes_of(e);
+    const auto in = [&](std::int32_t n) { return inside[static_cast<std::size_t>(n)] != 0; };
+    if (group.any_node_in_box ? std::any_of(nodes, nodes + count, in) : std::all_of(nodes, nodes + count, in))
+      group.elements.push_back(static_cast<std::int32_t>(e));
+  }
+}
+
 // Deepest /GRNOD/GRNOD nesting resolved (the resolution recurses; a deeper chain would overflow the stack).
 constexpr int kMaxGroupNesting = 1000;
 
@@ -40,6 +160,7 @@ void resolve_node_group(Resolver& r, std::size_t g, std::vector<int>& state, int
   const std::string keyword = fmt::format("/GRNOD/{}/{}", group.source == SetSource::Ids     ? "NODE"
                                                           : group.source == SetSource::Parts ? "PART"
                                                           : group.source == SetSource::Surfaces ? "SURF"
+                                                          : group.source == SetSource::Boxes    ? "BOX"
                                                                                              : "GRNOD",
                                           group.user_id);
   if (state[g] == 1) {
@@ -65,6 +186,9 @@ void resolve_node_group(Resolver& r, std::size_t g, std::vector<int>& state, int
         if (const auto k = r.find(m.index.surfaces, id, group.where, keyword, "surf_ID", "surface"); k >= 0)
           for (const Segment& seg : m.surfaces[static_cast<std::size_t>(k)].segments)
             group.nodes.insert(group.nodes.end(), seg.nodes.begin(), seg.nodes.end());
+      break;
+    case SetSource::Boxes:
+      nodes_in_box(r, group, keyword);
       break;
     case SetSource::Groups:
       for (std::int64_t id : group.items) {
@@ -102,9 +226,14 @@ ElementSetWords element_set_words(ElementKind kind) {
 void resolve_element_set(Resolver& r, ElementSet& group) {
   Model& m = r.model;
   const ElementSetWords words = element_set_words(group.kind);
-  const std::string keyword = fmt::format("{}/{}/{}", words.keyword,
-                                          group.source == SetSource::Ids ? words.item : "PART", group.user_id);
-  if (group.source == SetSource::Ids) {
+  const std::string_view how = group.source == SetSource::Ids     ? words.item
+                              : group.source == SetSource::Parts ? "PART"
+                              : group.any_node_in_box            ? "BOX2"
+                                                                 : "BOX";
+  const std::string keyword = fmt::format("{}/{}/{}", words.keyword, how, group.user_id);
+  if (group.source == SetSource::Boxes) {
+    elements_in_box(r, group, keyword);
+  } else if (group.source == SetSource::Ids) {
     for (std::int64_t id : group.items)
       if (const auto e = r.find(m.index.elements[static_cast<int>(group.kind)], id, group.where, keyword,
                                 words.field, words.what);
@@ -212,6 +341,7 @@ void resolve_sets(Resolver& r) {
   r.index(m.brick_groups, m.index.brick_groups, "/GRBRIC");
   r.index(m.surfaces, m.index.surfaces, "/SURF");
   r.index(m.subsets, m.index.subsets, "/SUBSET");
+  resolve_boxes(r);
   // Element groups, then surfaces (of parts, segments or element groups), then node groups (of surfaces too).
   for (auto* groups : {&m.shell_groups, &m.sh3n_groups, &m.brick_groups})
     for (ElementSet& g : *groups) resolve_element_set(r, g);

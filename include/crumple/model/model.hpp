@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "crumple/core/units.hpp"
+#include "crumple/model/boxes.hpp"
 #include "crumple/model/elements.hpp"
 #include "crumple/model/functions.hpp"
 #include "crumple/model/interfaces.hpp"
@@ -54,6 +55,7 @@ struct Model {
   std::vector<Subset> subsets;
   std::vector<Skew> skews;  // /SKEW/FIX, /SKEW/MOV, /SKEW/MOV2
   std::vector<Sensor> sensors;  // /SENSOR/TIME
+  std::vector<Box> boxes;       // /BOX/RECTA, /BOX/CYLIN, /BOX/SPHER, /BOX/BOX
 
   std::vector<BoundaryCondition> boundary_conditions;
   std::vector<ImposedMotion> imposed;  // /IMPVEL, /IMPDISP, /CLOAD
@@ -82,7 +84,7 @@ struct Model {
 
   struct Index {
     IdMap nodes, parts, properties, materials, functions, node_groups, shell_groups, sh3n_groups, brick_groups,
-        surfaces, subsets, skews, sensors, rigid_walls, rigid_bodies, interfaces, sections, accelerometers;
+        surfaces, subsets, skews, sensors, boxes, rigid_walls, rigid_bodies, interfaces, sections, accelerometers;
     std::array<IdMap, kElementKinds> elements;
   } index;
 

@@ -21,10 +21,11 @@ struct Part {
   std::int32_t material = -1;  // dense index (model build)
 };
 
-// How a group card lists its members: explicit ids, the parts whose elements give the members, or other groups.
-enum class SetSource : std::uint8_t { Ids, Parts, Groups, Surfaces };  // Surfaces: /GRNOD/SURF only
+// How a group card lists its members: explicit ids, the parts whose elements give the members, other groups, or a
+// box (/GRNOD/BOX, /GRSHEL/BOX, /BOX2...: one box id in `items`).
+enum class SetSource : std::uint8_t { Ids, Parts, Groups, Surfaces, Boxes };  // Surfaces: /GRNOD/SURF only
 
-struct NodeGroup {  // /GRNOD/NODE, /GRNOD/PART, /GRNOD/GRNOD, /GRNOD/SURF
+struct NodeGroup {  // /GRNOD/NODE, /GRNOD/PART, /GRNOD/GRNOD, /GRNOD/SURF, /GRNOD/BOX
   SourceLocation where;
   std::int64_t user_id = 0;
   std::string title;
@@ -33,15 +34,16 @@ struct NodeGroup {  // /GRNOD/NODE, /GRNOD/PART, /GRNOD/GRNOD, /GRNOD/SURF
   std::vector<std::int32_t> nodes;  // dense node indices, sorted, unique (model build)
 };
 
-// A group of elements of one kind: /GRSHEL/SHEL, /GRSHEL/PART (4-node shells), /GRSH3N/SH3N, /GRSH3N/PART
-// (3-node shells), /GRBRIC/BRIC, /GRBRIC/PART (bricks).
+// A group of elements of one kind: /GRSHEL/SHEL, /GRSHEL/PART, /GRSHEL/BOX, /GRSHEL/BOX2 (4-node shells), the same
+// four of /GRSH3N (3-node shells) and of /GRBRIC (bricks).
 struct ElementSet {
   SourceLocation where;
   std::int64_t user_id = 0;
   std::string title;
   SetSource source = SetSource::Ids;
   ElementKind kind = ElementKind::Shell4;
-  std::vector<std::int64_t> items;      // user ids of elements or parts
+  std::vector<std::int64_t> items;      // user ids of elements or parts, or the box id
+  bool any_node_in_box = false;         // source Boxes: /BOX2 (one node in the box), else /BOX (every node)
   std::vector<std::int32_t> elements;   // dense indices into the kind's table, sorted, unique (model build)
 };
 using ShellGroup = ElementSet;

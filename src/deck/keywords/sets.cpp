@@ -25,17 +25,31 @@ Group begin_group(CardReader& reader, SetSource source) {
   return g;
 }
 
+// The box groups' one box_ID (the manual's layout). The reference reads the first positive id of a longer list and
+// skips the rest, negative ids included, without a word (measured): a list is refused rather than cut.
+std::vector<std::int64_t> one_box_id(CardReader& reader) {
+  const std::vector<std::int64_t> ids = read_id_list(reader, "box_ID");
+  if (ids.size() != 1)
+    reader.fail("box_ID", "one box id (of a list, the reference would read only the first positive one)",
+                ids.empty() ? "none" : fmt::format("{} box ids", ids.size()));
+  if (ids[0] < 0)
+    reader.fail("box_ID", "a positive box id (the reference skips a negative one)", fmt::format("{}", ids[0]));
+  return ids;
+}
+
 void read_node_group(CardReader& reader, DeckContext& context, SetSource source, std::string_view item) {
   auto g = begin_group<NodeGroup>(reader, source);
-  g.items = positive_ids(reader, item);
+  g.items = source == SetSource::Boxes ? one_box_id(reader) : positive_ids(reader, item);
   context.model.node_groups.push_back(std::move(g));
 }
 
+// `any_node_in_box`: /BOX2 (source Boxes only).
 void read_element_group(CardReader& reader, DeckContext& context, ElementKind kind, SetSource source,
-                        std::string_view item) {
+                        std::string_view item, bool any_node_in_box = false) {
   auto g = begin_group<ElementSet>(reader, source);
   g.kind = kind;
-  g.items = positive_ids(reader, item);
+  g.items = source == SetSource::Boxes ? one_box_id(reader) : positive_ids(reader, item);
+  g.any_node_in_box = any_node_in_box;
   Model& m = context.model;
   (kind == ElementKind::Shell4 ? m.shell_groups : kind == ElementKind::Shell3 ? m.sh3n_groups : m.brick_groups)
       .push_back(std::move(g));
@@ -107,11 +121,24 @@ void register_set_keywords(KeywordTable& table) {
   auto element_group = [](ElementKind kind, SetSource source, std::string_view item) {
     return [kind, source, item](CardReader& r, DeckContext& c) { read_element_group(r, c, kind, source, item); };
   };
+  // /GRSHEL/BOX: the elements whose nodes are all in the box; /GRSHEL/BOX2: those with at least one node in it.
+  auto box_group = [](ElementKind kind, bool any_node_in_box) {
+    return [kind, any_node_in_box](CardReader& r, DeckContext& c) {
+      read_element_group(r, c, kind, SetSource::Boxes, "box_ID", any_node_in_box);
+    };
+  };
   using K = ElementKind;
   table.push_back({"/GRNOD/NODE", DeckPart::Starter, node_group(SetSource::Ids, "node_ID")});
   table.push_back({"/GRNOD/PART", DeckPart::Starter, node_group(SetSource::Parts, "part_ID")});
   table.push_back({"/GRNOD/GRNOD", DeckPart::Starter, node_group(SetSource::Groups, "grnod_ID")});
   table.push_back({"/GRNOD/SURF", DeckPart::Starter, node_group(SetSource::Surfaces, "surf_ID")});
+  table.push_back({"/GRNOD/BOX", DeckPart::Starter, node_group(SetSource::Boxes, "box_ID")});
+  table.push_back({"/GRSHEL/BOX", DeckPart::Starter, box_group(K::Shell4, false)});
+  table.push_back({"/GRSHEL/BOX2", DeckPart::Starter, box_group(K::Shell4, true)});
+  table.push_back({"/GRSH3N/BOX", DeckPart::Starter, box_group(K::Shell3, false)});
+  table.push_back({"/GRSH3N/BOX2", DeckPart::Starter, box_group(K::Shell3, true)});
+  table.push_back({"/GRBRIC/BOX", DeckPart::Starter, box_group(K::Brick8, false)});
+  table.push_back({"/GRBRIC/BOX2", DeckPart::Starter, box_group(K::Brick8, true)});
   table.push_back({"/GRSHEL/SHEL", DeckPart::Starter, element_group(K::Shell4, SetSource::Ids, "shell_ID")});
   table.push_back({"/GRSHEL/PART", DeckPart::Starter, element_group(K::Shell4, SetSource::Parts, "part_ID")});
   table.push_back({"/GRSH3N/SH3N", DeckPart::Starter, element_group(K::Shell3, SetSource::Ids, "sh3n_ID")});
