@@ -95,12 +95,41 @@ void check_selective_mass(Resolver& r, const RunControl& run) {
                                       skewed, std::to_string(im.skew_id)));
 }
 
+// /VEL/TRA: nodes, skew; a link may not hold a rigid body's secondary node (the body sets its velocity) and does not
+// act inside the selective mass solve, which would have to couple the linked dofs.
+void resolve_velocity_links(Resolver& r, RunControl& run) {
+  const Model& m = r.model;
+  for (RunControl::VelocityLink& link : run.velocity_links) {
+    const std::string kw = "/VEL/TRA";
+    link.skew = r.find_optional(m.index.skews, link.skew_id, link.where, kw, "skew_ID", "skew");
+    link.nodes.clear();
+    for (std::int64_t id : link.node_ids)
+      if (const auto n = r.find(m.index.nodes, id, link.where, kw, "node_ID", "node"); n >= 0) link.nodes.push_back(n);
+    std::sort(link.nodes.begin(), link.nodes.end());
+    link.nodes.erase(std::unique(link.nodes.begin(), link.nodes.end()), link.nodes.end());
+    for (const RigidBody& b : m.rigid_bodies)
+      for (std::int32_t n : link.nodes)
+        if (n == b.main_node ||
+            (b.node_group >= 0 && std::binary_search(m.node_groups[static_cast<std::size_t>(b.node_group)].nodes.begin(),
+                                                      m.node_groups[static_cast<std::size_t>(b.node_group)].nodes.end(), n)))
+          r.context.unsupported(DeckError(link.where, kw, "node_ID",
+                                            "nodes of no rigid body (the body sets their velocity; a link of a "
+                                            "body's node is not supported by Crumple)",
+                                            fmt::format("node {} of /RBODY/{}", m.nodes.user_id[static_cast<std::size_t>(n)],
+                                                        b.user_id)));
+    if (run.dt_ams.given)
+      r.context.unsupported(DeckError(link.where, kw, "", "no /VEL/TRA with /DT/AMS (the selective mass solve "
+                                      "does not couple linked nodes in Crumple)", "/VEL/TRA"));
+  }
+}
+
 void resolve_run_control(Resolver& r, RunControl& run) {
   Model& m = r.model;
   convert_run_times(run, m.units);
   resolve_rigid_body_switches(r, run.rbody_on, run.rbody_on_where, "/RBODY/ON", run.bodies_on);
   resolve_rigid_body_switches(r, run.rbody_off, run.rbody_off_where, "/RBODY/OFF", run.bodies_off);
   check_selective_mass(r, run);
+  resolve_velocity_links(r, run);
   // Radioss pairs the engine deck with the starter by run name; a different name usually means a stray file.
   if (run.present && !m.run_name.empty() && run.run_name != m.run_name)
     r.context.warn(run.where, "/RUN",

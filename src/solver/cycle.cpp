@@ -670,7 +670,14 @@ void integrate(SolverState& s, VelocityScratch& scratch, double dt_average, bool
 void apply_constraints(const Model& m, SolverState& s, VelocityScratch& scratch, double dt_average, double dt_next) {
   NodalState& n = s.nodes;
   const double body_work = update_rigid_bodies(m, s, dt_average, dt_next);
+  link_velocities(m, s);
   auto v = velocities(n);
+  // A link's sharing of momentum is internal to its nodes, as the reference counts it: what it dissipates shows in
+  // the energy error, not in the external work (L-8).
+  for (const auto& link : m.run.velocity_links)
+    for (std::int32_t node : link.nodes)
+      for (std::size_t d = 0; d < 3; ++d)
+        scratch.free[d][static_cast<std::size_t>(node)] = (*v[d])[static_cast<std::size_t>(node)];
   for (std::size_t d = 0; d < 6; ++d)  // rigid-body motion is internal to the body: not a constraint's work
     for (const auto& b : s.bodies) {
       for (std::int32_t node : b.secondary)

@@ -104,6 +104,10 @@ void gather_rigid_body_forces(SolverState& state);
 // Rigid bodies after the free velocity update: new momentum, rotation and the secondary nodes' velocities. Fixed
 // and imposed dofs of a main node drive its body; returns the work of those conditions over the step.
 double update_rigid_bodies(const Model& model, SolverState& state, double dt_average, double dt_next);
+// /VEL/TRA of the engine deck: each link's nodes take their mass-weighted mean velocity along its axes (L-8).
+void link_velocities(const Model& model, SolverState& state);
+// The same at the start of the engine deck; the energy balance starts from the linked velocities.
+void start_velocity_links(const Model& model, SolverState& state);
 // /RBODY/ON, /RBODY/OFF of the engine deck about to run: bodies switched off release their nodes, bodies switched
 // on are formed again from the nodes' current positions and velocities (docs/theory/rigid-bodies.md).
 void switch_rigid_bodies(const Model& model, SolverState& state);

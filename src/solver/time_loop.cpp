@@ -72,6 +72,7 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunObse
   const auto started = std::chrono::steady_clock::now();
   s.reducer = Reducer(options.exchange);
   if (options.resume == nullptr) switch_rigid_bodies(m, s);  // a resumed state has them switched already
+  if (options.resume == nullptr) start_velocity_links(m, s);  // the links act on the velocities the deck starts with
   const bool selective = selective_mass_on(m);
   if (!selective) s.selective_mass = SelectiveMassState{}, s.contact.selective_mass_added = nullptr;  // after one with it
   update_energies(m, s);  // for the listing's row of cycle 0

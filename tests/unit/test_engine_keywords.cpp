@@ -3,6 +3,7 @@
 // errors for malformed cards.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <map>
 
 #include "deck_files.hpp"
@@ -273,6 +274,38 @@ TEST(EngineKeywords, RigidBodiesSwitchedOnAndOff) {
   const std::string e = error_of(kRun + "/RBODY/ON\n7\n99\n", rigid_body());
   EXPECT_TRUE(contains(e, "node 99, which is the main node of no /RBODY")) << e;
   EXPECT_TRUE(contains(e, "TEST_0001.rad:5")) << e;  // the line that holds the id
+}
+
+// /VEL/TRA/dirs[/skew_ID] with its node list (docs/cards/loads-output-engine.md §7.2; docs/theory/loads.md, L-8).
+TEST(EngineKeywords, VelocityLinkAlongAxes) {
+  const RunControl run = run_of(kRun + "/VEL/TRA/XZ\n1 2 3\n4\n");
+  ASSERT_EQ(run.velocity_links.size(), 1u);
+  const auto& link = run.velocity_links[0];
+  EXPECT_EQ(link.along, (std::array<bool, 3>{true, false, true}));
+  EXPECT_EQ(link.skew, -1);
+  EXPECT_EQ(link.node_ids, (std::vector<std::int64_t>{1, 2, 3, 4}));
+  EXPECT_EQ(link.nodes, (std::vector<std::int32_t>{0, 1, 2, 3}));
+  const std::string skew = "/SKEW/FIX/5\nskew\n" + R(0.0) + R(0.0) + R(0.0) + "\n" + R(0.0) + R(1.0) + R(0.0) +
+                           "\n" + R(0.0) + R(0.0) + R(1.0) + "\n";
+  EXPECT_EQ(run_of(kRun + "/VEL/TRA/YX/5\n1 2\n", skew).velocity_links[0].skew, 0);
+}
+
+TEST(EngineKeywords, VelocityLinkErrorsNameTheField) {
+  const std::pair<std::string, std::string> cases[] = {
+      {"/VEL/TRA/XQ\n1 2\n", "Keyword3"},
+      {"/VEL/TRA/XX\n1 2\n", "Keyword3"},
+      {"/VEL/TRA\n1 2\n", "Keyword3"},
+      {"/VEL/TRA/X\n1\n", "at least two node ids"},
+      {"/VEL/TRA/X\n1 -2\n", "node_ID"},
+      {"/VEL/TRA/X\n1 99\n", "node 99 not defined"},
+      {"/VEL/TRA/X/8\n1 2\n", "skew 8 not defined"},
+      {"/VEL/ROT/X\n1 2\n", "TRA in /VEL/TRA"},
+      {"/VEL/TRA/X\n3 7\n", "/RBODY/7"},
+  };
+  for (const auto& [card, expected] : cases) {
+    const std::string e = error_of(kRun + card, rigid_body());
+    EXPECT_TRUE(contains(e, expected)) << card << ": " << e;
+  }
 }
 
 TEST(EngineKeywords, RunNameDifferentFromBeginIsAWarning) {

@@ -1,6 +1,7 @@
 #pragma once
 // Run control from the engine deck (docs/cards/loads-output-engine.md §7). Values are in working units once
 // read_deck returns. Zero means "not given"; the solver applies the defaults.
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -100,6 +101,18 @@ struct RunControl {
   std::vector<std::int64_t> rbody_on, rbody_off;
   std::vector<SourceLocation> rbody_on_where, rbody_off_where;  // the line of each id, parallel
   std::vector<std::int32_t> bodies_on, bodies_off;
+  // /VEL/TRA/dirs[/skew_ID]: nodes that move together along the listed axes (a rigid link): each cycle their
+  // velocity along each axis is their mass-weighted mean, and at the start of the engine deck too
+  // (docs/theory/loads.md, L-8).
+  struct VelocityLink {
+    SourceLocation where;
+    std::array<bool, 3> along{};      // X, Y, Z of the global axes or of the skew
+    std::int64_t skew_id = 0;
+    std::int32_t skew = -1;           // -1: the global axes (model build)
+    std::vector<std::int64_t> node_ids;
+    std::vector<std::int32_t> nodes;  // dense indices, sorted, unique (model build)
+  };
+  std::vector<VelocityLink> velocity_links;
   // /DTIX: the step of this engine deck's first cycle is at most dt_initial, every step at most dt_max [T]
   // (0: no bound).
   double dt_initial = 0.0, dt_max = 0.0;

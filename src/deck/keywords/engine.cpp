@@ -511,6 +511,39 @@ void read_rfile(CardReader& reader, DeckContext& context) {
     output_only(reader, context, fmt::format("{} rotating restart sets asked: Crumple keeps the last snapshot only", sets));
 }
 
+// /VEL/TRA/dirs[/skew_ID]: dirs a combination of X, Y and Z (each once); then node ids, any number per line.
+void read_velocity_link(CardReader& reader, DeckContext& context) {
+  const Card& card = reader.card();
+  path_at_most(reader, 4);
+  if (card.path.size() < 2 || card.path[1] != "TRA")
+    return context.unsupported(reader.error(
+        "Keyword2", "TRA in /VEL/TRA/dirs (the rotational and grid links are not supported by Crumple)",
+        in_quotes(card.path.size() > 1 ? card.path[1] : "")));
+  RunControl::VelocityLink link;
+  link.where = card.where;
+  const std::string dirs = card.path.size() > 2 ? card.path[2] : "";
+  for (char c : dirs) {
+    const std::size_t axis = c == 'X' ? 0 : c == 'Y' ? 1 : c == 'Z' ? 2 : 3;
+    if (axis > 2 || link.along[axis])
+      reader.fail("Keyword3", "X, Y and Z, each at most once (XY, XYZ, ...)", in_quotes(dirs));
+    link.along[axis] = true;
+  }
+  if (dirs.empty()) reader.fail("Keyword3", "X, Y and Z, each at most once (XY, XYZ, ...)", "none");
+  if (card.path.size() > 3) {
+    const auto skew = parse_integer(card.path[3]);
+    if (!skew || *skew < 0) reader.fail("skew_ID", "a skew id (blank: the global axes)", in_quotes(card.path[3]));
+    link.skew_id = *skew;
+  }
+  while (auto line = next_line(reader))
+    for (std::size_t k = 0; k < line->token_count(); ++k) {
+      const std::int64_t id = line->token_integer(k, "node_ID", std::nullopt);
+      if (id <= 0) line->fail_value(fmt::format("node_ID (value {})", k + 1), "a node id", fmt::format("{}", id));
+      link.node_ids.push_back(id);
+    }
+  if (link.node_ids.size() < 2) reader.fail("node_ID", "at least two node ids (the nodes linked)", "fewer");
+  context.model.run.velocity_links.push_back(std::move(link));
+}
+
 void read_rbody_switch(CardReader& reader, std::vector<std::int64_t>& ids, std::vector<SourceLocation>& where) {
   path_at_most(reader, 2);
   bool any = false;
@@ -583,6 +616,7 @@ void register_engine_keywords(KeywordTable& table) {
                    }});
   table.push_back({"/STOP", E, read_stop});
   table.push_back({"/RFILE", E, read_rfile});
+  table.push_back({"/VEL", E, read_velocity_link});
   table.push_back({"/RBODY/ON", E, [](CardReader& r, DeckContext& c) {
                      read_rbody_switch(r, c.model.run.rbody_on, c.model.run.rbody_on_where);
                    }});
