@@ -3,6 +3,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <string_view>
 #include <vector>
 
@@ -27,6 +28,10 @@ struct DeckContext {
   bool skip_unsupported = false;  // --skip-unknown: options Crumple lacks become warnings and skipped options
   std::array<RawElements, kElementKinds> raw_elements;
   std::vector<SourceLocation> node_where;  // location of each /NODE line, parallel to model.nodes
+  // /UNIT systems by id, read right after /BEGIN: a card with a unit_ID reads its values in one (its input sizes,
+  // a blank field being /BEGIN's input unit, and the deck's working units; docs/deck-format.md, "Units").
+  std::map<std::int64_t, UnitSystem> local_units;
+  std::map<std::int64_t, SourceLocation> local_units_where;
   bool begin_seen = false;
   bool run_seen = false;
   int engine_deck = 1;  // the engine deck being read: 1 for NAME_0001.rad, k for NAME_000k.rad
@@ -92,14 +97,15 @@ std::string read_title(CardReader& reader);  // the title line that follows many
 std::vector<std::int64_t> read_id_list(CardReader& reader, std::string_view name);
 // The text quoted for an error message's "found" part.
 std::string in_quotes(std::string_view text);
-// `/KEYWORD/.../id[/unit_ID]`: the object id at path part `index`, then an optional unit id that must be 0
-// (Crumple has no /UNIT, so a unit id is an error rather than a silently ignored conversion). A word where the
+// `/KEYWORD/.../id[/unit_ID]`: the object id at path part `index`, then an optional unit id (read_unit_id). A word
+// where the
 // id belongs is another form of the keyword (/IMPVEL/FGEO, /RBODY/LAGMUL...), which Crumple does not read.
 std::int64_t card_id(CardReader& reader, std::size_t index);
 // The keyword's object id (path part `index`); must be positive.
 std::int64_t object_id(CardReader& reader, std::size_t index);
-// The optional unit_ID at path part `index`: Crumple has no /UNIT, so a non-zero value is an error.
-void require_no_unit_id(CardReader& reader, std::size_t index);
+// The optional unit_ID at path part `index`: 0 or blank, the deck's input units; else the card's values are read in
+// that /UNIT system (an undefined one is an error).
+void read_unit_id(CardReader& reader, std::size_t index);
 // Cards whose layout in input versions 41 to 44 is not the 2017 one narrowed (other lines, other fields), which
 // Crumple does not read: an error in those versions (docs/deck-format.md, "Input versions").
 void refuse_narrow_layout(const CardReader& reader);

@@ -309,6 +309,16 @@ std::int64_t CardReader::path_id(std::size_t index, std::string_view name, bool 
                   quote_text(card_->path[index]));
 }
 
+void CardReader::use_local_units(std::int64_t id, std::string_view field) {
+  if (local_units_ != nullptr)
+    if (const auto found = local_units_->find(id); found != local_units_->end()) {
+      units_ = &found->second;
+      return;
+    }
+  throw DeckError(card_->where, card_->keyword, std::string(field), "the id of a /UNIT card of the deck (or 0)",
+                  fmt::format("unit {} not defined", id));
+}
+
 std::string CardReader::keyword_title() const {
   if (title_part_ == 0) return {};
   // After the title_part_-th slash that follows the leading one, as written (the path parts are upper-cased).

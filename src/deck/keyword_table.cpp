@@ -77,7 +77,7 @@ std::int64_t card_id(CardReader& reader, std::size_t index) {
                 in_quotes(card.path[index]));
   }
   const std::int64_t id = object_id(reader, index);
-  require_no_unit_id(reader, index + 1);
+  read_unit_id(reader, index + 1);
   if (reader.narrow()) return id;  // versions 41 to 44: the title follows the id
   if (card.path.size() > index + 2)
     reader.fail("keyword", "nothing after the unit id", in_quotes(card.path[index + 2]));
@@ -90,14 +90,12 @@ std::int64_t object_id(CardReader& reader, std::size_t index) {
   return id;
 }
 
-void require_no_unit_id(CardReader& reader, std::size_t index) {
+void read_unit_id(CardReader& reader, std::size_t index) {
   if (reader.narrow()) {  // input versions 41 to 44: the title takes the place of the unit id
     reader.title_after(index);
     return;
   }
-  if (reader.path_id(index, "unit_ID", false) != 0)
-    reader.fail("unit_ID", "0 or nothing after the id (/UNIT systems are not supported by Crumple)",
-                "'" + reader.card().path[index] + "'");
+  if (const std::int64_t id = reader.path_id(index, "unit_ID", false); id != 0) reader.use_local_units(id, "unit_ID");
 }
 
 void refuse_narrow_layout(const CardReader& reader) {

@@ -139,6 +139,7 @@ void dispatch(const Card& card, const SourceText& text, DeckContext& context, Re
   }
   try {
     CardReader reader(card, text, context.model.units);
+    reader.set_local_units(&context.local_units);
     if (!card.engine && narrow_layout_version(context.model.input_version) && !spec->same_layout_in_every_version)
       reader.use_narrow_layout();
     spec->handler(reader, context);
@@ -208,7 +209,7 @@ Deck read_deck(const std::filesystem::path& starter, const ReadOptions& options)
 
   Deck deck;
   deck.report.files = text.files;
-  DeckContext context{deck.model, deck.report, options.skip_unknown, {}, {}};
+  DeckContext context{deck.model, deck.report, options.skip_unknown, {}, {}, {}, {}};
   std::vector<DeckError> errors;
   auto record = [&](const DeckError& e) {
     if (errors.size() < kMaxErrors) errors.push_back(e);
@@ -218,6 +219,7 @@ Deck read_deck(const std::filesystem::path& starter, const ReadOptions& options)
   bool engine_seen = false;
   bool begin_first = false;
   bool starter_started = false;
+  bool units_read = false;
   const Card* first_starter_card = nullptr;
   for (std::size_t i = 0; i < cards.size(); ++i) {
     const Card& card = cards[i];
@@ -228,6 +230,8 @@ Deck read_deck(const std::filesystem::path& starter, const ReadOptions& options)
     // The engine deck may close with /END (as decks of every version do; the reference reads them).
     if (card.engine && (is_card(card, {"END", "ENGINE"}) || is_card(card, {"END"}))) continue;
     if (card.engine) engine_seen = true;
+    const bool unit_card = !card.engine && !card.path.empty() && card.path[0] == "UNIT";
+    if (unit_card && units_read) continue;  // read with /BEGIN
     if (!card.engine && !starter_started) {
       starter_started = true;
       begin_first = is_card(card, {"BEGIN"});
@@ -235,6 +239,12 @@ Deck read_deck(const std::filesystem::path& starter, const ReadOptions& options)
     }
 
     dispatch(card, text, context, record);
+    // The /UNIT systems right after /BEGIN (its units complete them), before any card that names one.
+    if (!card.engine && is_card(card, {"BEGIN"}) && !units_read) {
+      units_read = true;
+      for (const Card& unit : cards)
+        if (!unit.engine && !unit.path.empty() && unit.path[0] == "UNIT") dispatch(unit, text, context, record);
+    }
   }
 
   const SourceLocation starter_file{text.files.front(), 0};

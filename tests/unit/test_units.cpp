@@ -53,3 +53,61 @@ TEST(Units, DeckConvertedAtReadTime) {
   // mass = rho * t * A = 7800 * 1e-3 * 1e-4
   EXPECT_NEAR(d.model.total_mass(), 7800.0 * 1e-3 * 1e-4, 1e-12);
 }
+
+// /UNIT (docs/deck-format.md, "Units"): a card that names a /UNIT reads its values in it; a blank unit field is
+// /BEGIN's input unit. The reference reads the same: a /MAT/ELAST in (g, cm, s) under /BEGIN kg mm ms gives the
+// plate the mass of its twin in kg mm ms (7.85e-4 kg), an /IMPVEL in (g, cm, s) has Fscale 0.01 mm/ms and Ascale_x
+// 1000 ms in its starter listing, and a blank mass unit under /BEGIN g mm ms reads a density in grams.
+namespace {
+
+std::string unit_deck(const std::string& begin_mass, const std::string& units, const std::string& material_path,
+                      const std::string& nodes_path = "/NODE") {
+  using test::I;
+  using test::R;
+  std::string deck = "/BEGIN\nUNITS\n      2019         0\n" + R(begin_mass) + R("mm") + R("ms") + "\n" + R("kg") +
+                     R("mm") + R("ms") + "\n" + units;
+  deck += nodes_path + "\n" + I(1) + R(0.0) + R(0.0) + R(0.0) + "\n" + I(2) + R(1.0) + R(0.0) + R(0.0) + "\n" + I(3) +
+          R(1.0) + R(1.0) + R(0.0) + "\n" + I(4) + R(0.0) + R(1.0) + R(0.0) + "\n";
+  deck += "/SHELL/1\n" + I(1) + I(1) + I(2) + I(3) + I(4) + "\n/PART/1\np\n" + I(1) + I(1) + "\n";
+  deck += "/PROP/SHELL/1\ns\n" + I(0) + "\n\n" + I(0) + I(0) + R(1.0) + "\n";
+  return deck + material_path + "\nsteel\n" + R(7.85) + "\n" + R(2.1e12) + R(0.3) + "\n/END\n";
+}
+
+std::string unit_card(long long id, const std::string& mass, const std::string& length, const std::string& time) {
+  return "/UNIT/" + std::to_string(id) + "\nlocal\n" + test::R(mass) + test::R(length) + test::R(time) + "\n";
+}
+
+}  // namespace
+
+TEST(Units, CardsReadInTheirOwnUnitSystem) {
+  test::TempDir dir;
+  // 7.85 g/cm^3 = 7.85e-6 kg/mm^3; 2.1e12 g/(cm s^2) = 2.1e12 * 1e-3 / (10 * 1e6) = 210 kg/(mm ms^2).
+  const Deck d = read_deck(dir.write("U_0000.rad", unit_deck("kg", unit_card(7, "g", "cm", "s"), "/MAT/ELAST/1/7")));
+  EXPECT_NEAR(d.model.materials[0].density, 7.85e-6, 1e-18);
+  EXPECT_NEAR(d.model.materials[0].young, 210.0, 1e-9);
+  EXPECT_DOUBLE_EQ(d.model.nodes.x[1], 1.0);  // /NODE without a unit id: the deck's input units
+  // Nodes in their own unit: 1 cm = 10 mm.
+  std::string deck = unit_deck("kg", unit_card(3, "", "cm", ""), "/MAT/ELAST/1/7", "/NODE/3");
+  deck.insert(deck.rfind("/END"), unit_card(7, "g", "cm", "s"));  // after the card that names it
+  const Deck n = read_deck(dir.write("U_0000.rad", deck));
+  EXPECT_DOUBLE_EQ(n.model.nodes.x[1], 10.0);
+  EXPECT_NEAR(n.model.materials[0].density, 7.85e-6, 1e-18) << "a /UNIT after the card that names it";
+}
+
+TEST(Units, BlankUnitFieldIsTheInputUnit) {
+  test::TempDir dir;
+  // /BEGIN input g: a blank mass unit is the gram, 7.85 g/cm^3 = 7.85e-3 g/mm^3 = 7.85e-6 kg/mm^3.
+  const Deck d = read_deck(dir.write("U_0000.rad", unit_deck("g", unit_card(7, "", "cm", "s"), "/MAT/ELAST/1/7")));
+  EXPECT_NEAR(d.model.materials[0].density, 7.85e-6, 1e-18);
+}
+
+TEST(Units, UnitErrorsNameTheField) {
+  test::TempDir dir;
+  auto error = [&](const std::string& units, const std::string& material = "/MAT/ELAST/1/7") {
+    return test::first_error(dir.write("U_0000.rad", unit_deck("kg", units, material)));
+  };
+  EXPECT_NE(error("", "/MAT/ELAST/1/9").find("unit 9 not defined"), std::string::npos);
+  EXPECT_NE(error(unit_card(7, "furlong", "cm", "s")).find("mass_unit"), std::string::npos);
+  EXPECT_NE(error(unit_card(7, "g", "cm", "s") + unit_card(7, "g", "cm", "s")).find("also the id"), std::string::npos);
+  EXPECT_NE(error(unit_card(7, "1e300", "cm", "s")).find("finite"), std::string::npos);
+}

@@ -3,6 +3,7 @@
 // Starter data lines are fixed width (integers in 10 columns, reals in 20, on a 100-column line); engine data
 // lines are free format (fields separated by blanks). A blank field takes the card's default.
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -89,6 +90,10 @@ class CardReader {
 
   const Card& card() const { return *card_; }
   const UnitSystem& units() const { return *units_; }
+  // The deck's /UNIT systems by id (set by the reader before the handler runs; they outlive the card).
+  void set_local_units(const std::map<std::int64_t, UnitSystem>* local) { local_units_ = local; }
+  // The card's values are read in /UNIT system `id`; an undefined one is an error naming the field.
+  void use_local_units(std::int64_t id, std::string_view field);
   const SourceText& text() const { return *text_; }
 
   bool at_end() const { return next_ >= card_->lines.size(); }
@@ -129,6 +134,7 @@ class CardReader {
   const Card* card_;
   const SourceText* text_;
   const UnitSystem* units_;
+  const std::map<std::int64_t, UnitSystem>* local_units_ = nullptr;
   std::size_t next_ = 0;
   mutable std::vector<std::vector<bool>> read_columns_;  // per data line: the columns a field read
 };

@@ -11,6 +11,16 @@
 namespace crumple::deck {
 namespace {
 
+// Every conversion factor (up to the cube of a unit, as in a density) must stay finite and non-zero: with an
+// infinite factor a blank field (0 x inf) reads as NaN and passes every range check of its card.
+bool finite_factors(const UnitSystem& u) {
+  for (int mass = -3; mass <= 3; ++mass)
+    for (int length = -3; length <= 3; ++length)
+      for (int time = -3; time <= 3; ++time)
+        if (const double f = u.factor(Dimension{mass, length, time}); !std::isfinite(f) || f == 0.0) return false;
+  return true;
+}
+
 void read_begin(CardReader& reader, DeckContext& context) {
   if (context.begin_seen) reader.fail("", "a single /BEGIN", "a second /BEGIN");
   context.begin_seen = true;
@@ -50,19 +60,47 @@ void read_begin(CardReader& reader, DeckContext& context) {
       target = *size;
     }
   }
-  // Every conversion factor (up to the cube of a unit, as in a density) must stay finite and non-zero: with an
-  // infinite factor a blank field (0 x inf) reads as NaN and passes every range check of its card.
   const UnitSystem u = model.units;
-  for (int mass = -3; mass <= 3; ++mass)
-    for (int length = -3; length <= 3; ++length)
-      for (int time = -3; time <= 3; ++time)
-        if (const double f = u.factor(Dimension{mass, length, time}); !std::isfinite(f) || f == 0.0) {
-          model.units = UnitSystem{};  // the rest of the deck is read in SI rather than reporting every field
-          reader.fail("units", "input and working units whose conversion factors stay finite and non-zero",
-                      fmt::format("input/working size ratios {:g} (mass), {:g} (length), {:g} (time)",
-                                  u.input[0] / u.work[0], u.input[1] / u.work[1], u.input[2] / u.work[2]));
-        }
+  if (!finite_factors(u)) {
+    model.units = UnitSystem{};  // the rest of the deck is read in SI rather than reporting every field
+    reader.fail("units", "input and working units whose conversion factors stay finite and non-zero",
+                fmt::format("input/working size ratios {:g} (mass), {:g} (length), {:g} (time)", u.input[0] / u.work[0],
+                            u.input[1] / u.work[1], u.input[2] / u.work[2]));
+  }
   reader.finish();
+}
+
+// /UNIT/unit_ID: title; mass, length, time units in 20-column fields (codes or SI sizes, as in /BEGIN). A blank one
+// is /BEGIN's input unit (measured on the reference: a blank mass read a density in grams under /BEGIN g mm ms).
+// The cards that name it read their values in it, converted to the working units (docs/deck-format.md, "Units").
+// Read right after /BEGIN, whose units it needs.
+void read_unit(CardReader& reader, DeckContext& context) {
+  refuse_narrow_layout(reader);
+  if (context.model.input_version < 100)
+    reader.fail("Invers", "an input version of 100 or later for /UNIT/unit_ID (earlier versions have another "
+                "/UNIT card, which Crumple does not read)", std::to_string(context.model.input_version));
+  const std::int64_t id = object_id(reader, 1);
+  if (reader.card().path.size() > 2) reader.fail("keyword", "nothing after the unit id", in_quotes(reader.card().path[2]));
+  read_title(reader);
+  const Line line = reader.next("mass_unit, length_unit, time_unit");
+  UnitSystem u = context.model.units;
+  constexpr const char* kNames[3] = {"mass_unit", "length_unit", "time_unit"};
+  for (int base = 0; base < 3; ++base) {
+    const int column = 1 + 20 * base;
+    if (line.text(column, 20).empty()) continue;  // /BEGIN's input unit
+    const auto size = parse_unit(line.raw(column, 20), base);
+    if (!size) line.fail(column, 20, kNames[base], "a unit code (kg, g, Mg, m, mm, s, ms, lb, in...) or a positive real");
+    u.input[base] = *size;
+  }
+  reader.finish();
+  if (!finite_factors(u))
+    reader.fail("units", "units whose conversion factors to the working units stay finite and non-zero",
+                fmt::format("size ratios {:g} (mass), {:g} (length), {:g} (time)", u.input[0] / u.work[0],
+                            u.input[1] / u.work[1], u.input[2] / u.work[2]));
+  if (const auto seen = context.local_units_where.find(id); seen != context.local_units_where.end())
+    reader.fail("unit_ID", "an id no other /UNIT has", fmt::format("{} is also the id of the /UNIT at {}:{}", id, seen->second.file, seen->second.line));
+  context.local_units[id] = u;
+  context.local_units_where[id] = reader.card().where;
 }
 
 void read_title_card(CardReader& reader, DeckContext& context) {
@@ -281,6 +319,7 @@ void read_def_solid(CardReader& reader, DeckContext& context) {
 
 void register_control_keywords(KeywordTable& table) {
   table.push_back({"/BEGIN", DeckPart::Starter, read_begin, true});
+  table.push_back({"/UNIT", DeckPart::Starter, read_unit, true});
   table.push_back({"/TITLE", DeckPart::Starter, read_title_card});
   table.push_back({"/DEF_SHELL", DeckPart::Starter, read_def_shell, true});
   table.push_back({"/DEF_SOLID", DeckPart::Starter, read_def_solid});

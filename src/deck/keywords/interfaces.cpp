@@ -65,9 +65,7 @@ std::int64_t interface_id(CardReader& reader) {
     reader.title_after(3);
     return id;
   }
-  if (reader.path_id(3, "unit_ID", false) != 0)
-    reader.fail("unit_ID", "0 or nothing after the id (/UNIT systems are not supported by Crumple)",
-                fmt::format("'{}'", reader.card().path[3]));
+  read_unit_id(reader, 3);
   if (reader.card().path.size() > 4)
     reader.fail("keyword", "nothing after the unit id", fmt::format("'{}'", reader.card().path[4]));
   return id;

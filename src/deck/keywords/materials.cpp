@@ -13,7 +13,7 @@ Material begin_material(CardReader& reader, MaterialLaw law) {
   m.where = reader.card().where;
   m.law = law;
   m.user_id = object_id(reader, 2);
-  require_no_unit_id(reader, 3);
+  read_unit_id(reader, 3);
   m.title = read_title(reader);
   return m;
 }

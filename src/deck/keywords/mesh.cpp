@@ -8,7 +8,7 @@ namespace {
 
 void read_nodes(CardReader& reader, DeckContext& context) {
   Nodes& nodes = context.model.nodes;
-  require_no_unit_id(reader, 1);
+  read_unit_id(reader, 1);
   while (auto line = reader.next_nonblank()) {
     const std::int64_t id = line->integer(1, 10, "node_ID");
     if (id <= 0) line->fail(1, 10, "node_ID", "a positive node id");
@@ -23,7 +23,7 @@ void read_nodes(CardReader& reader, DeckContext& context) {
 // Elements: "id n1 .. nk" in 10-column fields; shells may add an orthotropy angle and a thickness.
 void read_elements(CardReader& reader, DeckContext& context, ElementKind kind) {
   const std::int64_t part_id = object_id(reader, 1);
-  require_no_unit_id(reader, 2);
+  read_unit_id(reader, 2);
   RawElements& raw = context.raw_elements[static_cast<int>(kind)];
   const int n = nodes_per_element(kind);
   while (auto line = reader.next_nonblank()) {
@@ -52,7 +52,7 @@ void read_part(CardReader& reader, DeckContext& context) {
   Part part;
   part.where = reader.card().where;
   part.user_id = object_id(reader, 1);
-  require_no_unit_id(reader, 2);
+  read_unit_id(reader, 2);
   part.title = read_title(reader);
   const Line line = reader.next("prop_ID, mat_ID, subset_ID");
   part.property_id = line.integer(1, 10, "prop_ID");

@@ -56,9 +56,7 @@ std::int64_t card_id(CardReader& reader, std::size_t index, bool unit_allowed) {
   }
   std::size_t end = index + 1;
   if (unit_allowed) {
-    if (reader.path_id(end, "unit_ID", false) != 0)
-      reader.fail("unit_ID", "0 or nothing after the id (/UNIT systems are not supported by Crumple)",
-                  in_quotes(card.path[end]));
+    read_unit_id(reader, end);
     ++end;
   }
   if (card.path.size() > end) reader.fail("keyword", "nothing after the id", in_quotes(card.path[end]));

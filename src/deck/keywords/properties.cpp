@@ -17,7 +17,7 @@ Property begin_property(CardReader& reader, PropertyKind kind) {
   p.where = reader.card().where;
   p.kind = kind;
   p.user_id = object_id(reader, 2);
-  require_no_unit_id(reader, 3);
+  read_unit_id(reader, 3);
   p.title = read_title(reader);
   return p;
 }

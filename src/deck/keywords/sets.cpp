@@ -19,7 +19,7 @@ Group begin_group(CardReader& reader, SetSource source) {
   Group g;
   g.where = reader.card().where;
   g.user_id = object_id(reader, 2);
-  require_no_unit_id(reader, 3);
+  read_unit_id(reader, 3);
   g.source = source;
   g.title = read_title(reader);
   return g;
@@ -66,7 +66,7 @@ void read_surface_parts(CardReader& reader, DeckContext& context) {
   Surface s;
   s.where = reader.card().where;
   s.user_id = object_id(reader, all ? 3 : 2);
-  require_no_unit_id(reader, all ? 4 : 3);
+  read_unit_id(reader, all ? 4 : 3);
   s.source = SetSource::Parts;
   s.title = read_title(reader);
   s.all_parts = all;
@@ -106,7 +106,7 @@ void read_subset(CardReader& reader, DeckContext& context) {
   Subset s;
   s.where = reader.card().where;
   s.user_id = object_id(reader, 1);
-  require_no_unit_id(reader, 2);
+  read_unit_id(reader, 2);
   s.title = read_title(reader);
   s.children = positive_ids(reader, "subset_ID");
   context.model.subsets.push_back(std::move(s));
