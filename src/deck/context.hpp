@@ -10,6 +10,7 @@
 #include "crumple/deck/fields.hpp"
 #include "crumple/deck/reader.hpp"
 #include "crumple/model/model.hpp"
+#include "crumple/model/transforms.hpp"
 
 namespace crumple::deck {
 
@@ -35,6 +36,9 @@ struct DeckContext {
   bool begin_seen = false;
   bool run_seen = false;
   int engine_deck = 1;  // the engine deck being read: 1 for NAME_0001.rad, k for NAME_000k.rad
+  // /TRANSFORM cards in deck order: they act on the nodes' positions during resolution and leave nothing else in
+  // the model (resolve_transforms.cpp).
+  std::vector<Transform> transforms = {};
 
   void warn(const SourceLocation& where, std::string_view keyword, std::string message) {
     report.warnings.push_back({where, std::string(keyword), std::move(message)});
@@ -85,6 +89,7 @@ void register_rigid_keywords(KeywordTable& table);
 void register_skew_keywords(KeywordTable& table);
 void register_sensor_keywords(KeywordTable& table);
 void register_box_keywords(KeywordTable& table);
+void register_transform_keywords(KeywordTable& table);
 void register_interface_keywords(KeywordTable& table);
 void register_output_keywords(KeywordTable& table);
 void register_engine_keywords(KeywordTable& table);

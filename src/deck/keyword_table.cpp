@@ -19,6 +19,7 @@ const KeywordTable& keyword_table() {
     register_skew_keywords(t);
     register_sensor_keywords(t);
     register_box_keywords(t);
+    register_transform_keywords(t);
     register_interface_keywords(t);
     register_output_keywords(t);
     register_engine_keywords(t);

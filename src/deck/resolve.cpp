@@ -39,9 +39,10 @@ void check_mass(Resolver& r) {
             fmt::format("{}", m.total_mass()));
 }
 
-// /RANDOM (docs/deck-format.md): each coordinate of each node moved by Xalea (2 u - 1), u uniform in [0, 1) from a
-// 64-bit Mersenne twister seeded by Seed, so that the same deck gives the same model everywhere. The reference
-// moves its nodes the same way (each axis within +-Xalea, measured in its starter listing) with its own sequence.
+// /RANDOM (docs/deck-format.md): after /TRANSFORM (the reference's order, measured), each coordinate of each node
+// moved by Xalea (2 u - 1), u uniform in [0, 1) from a 64-bit Mersenne twister seeded by Seed, so that the same
+// deck gives the same model everywhere. The reference moves its nodes the same way (each axis within +-Xalea,
+// measured in its starter listing) with its own sequence.
 void apply_random_noise(Model& m) {
   if (!(m.random_noise > 0.0)) return;
   std::mt19937_64 engine(static_cast<std::uint64_t>(m.random_seed * 9007199254740992.0) ^ 0x9e3779b97f4a7c15ULL);
@@ -91,12 +92,18 @@ void warn_defaults_without_elements(Resolver& r) {
 
 void resolve_model(DeckContext& context, std::vector<RunControl>& continued_runs) {
   Resolver r(context);
-  apply_random_noise(context.model);
   resolve_definitions(r);
   r.throw_if_errors();  // later stages need valid nodes, parts, materials and properties
   resolve_elements(r);
   r.throw_if_errors();
+  // The order of the positions, as the reference's (docs/deck-format.md, "Transformations", measured):
+  //  1. the deck's coordinates: element checks, boxes and the box groups (/GRNOD/BOX, /GRSHEL/BOX...);
+  //  2. /TRANSFORM, in deck order, on the nodes of their groups (box groups included);
+  //  3. /RANDOM noise, on the transformed positions;
+  //  4. everything after: skews, rigid walls (D_search), rigid bodies, sections, mass.
   resolve_sets(r);
+  if (r.errors.empty()) apply_transforms(r);  // they need their groups (any error is thrown below)
+  apply_random_noise(context.model);
   resolve_load_references(r);
   resolve_output_references(r, continued_runs);
   r.throw_if_errors();

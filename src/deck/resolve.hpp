@@ -76,6 +76,7 @@ void resolve_model(DeckContext& context, std::vector<RunControl>& continued_runs
 void resolve_definitions(Resolver& r);  // nodes, functions, materials, properties, parts
 void resolve_elements(Resolver& r);     // connectivity, part order, groups, geometry checks
 void resolve_sets(Resolver& r);         // node and element groups, surfaces, subsets
+void apply_transforms(Resolver& r);     // /TRANSFORM: the nodes of their groups moved, in deck order
 // A rigid wall's keyword for its messages, "/RWALL/PLANE/3".
 std::string rigid_wall_keyword(const RigidWall& w);
 // The window of the sensor a card names in `field` (docs/theory/loads.md, L-7); id 0: always on, clock from 0.
