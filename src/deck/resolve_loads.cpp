@@ -116,6 +116,20 @@ void resolve_initial_conditions(Resolver& r) {
 // ---------------------------------------------------------------------------------------------------------------
 // Rigid bodies
 
+// A body of its main node alone (its group empty or only that node) with no card inertia has none: the reference
+// stops (its error 274, "null or negative inertia", measured), where a body with secondary nodes is floored. The
+// first torque would otherwise spin it without bound.
+void refuse_body_without_inertia(Resolver& r, const RigidBody& b, const std::string& kw) {
+  if (b.node_group < 0 || b.main_node < 0) return;
+  const auto& nodes = nodes_of(r.model, b.node_group);
+  const bool only_main = std::all_of(nodes.begin(), nodes.end(), [&](std::int32_t n) { return n == b.main_node; });
+  const bool no_inertia = std::all_of(b.inertia.begin(), b.inertia.begin() + 3, [](double j) { return j == 0.0; });
+  if (only_main && no_inertia)
+    r.error(b.where, kw, "Jxx, Jyy, Jzz",
+            "an inertia for a body of one node (the card's Jxx, Jyy, Jzz, or secondary nodes to give it one)",
+            "no secondary node and no inertia");
+}
+
 void resolve_rigid_bodies(Resolver& r) {
   Model& m = r.model;
   const auto& ix = m.index;
@@ -138,6 +152,7 @@ void resolve_rigid_bodies(Resolver& r) {
     if (b.node_group >= 0 && nodes_of(m, b.node_group).empty())
       r.context.warn(b.where, kw, fmt::format("node group {} is empty: the body has no secondary nodes",
                                               b.node_group_id));
+    refuse_body_without_inertia(r, b, kw);
   }
 }
 
