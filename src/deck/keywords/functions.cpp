@@ -10,8 +10,10 @@ void read_function(CardReader& reader, DeckContext& context) {
   Function f;
   f.where = reader.card().where;
   f.user_id = object_id(reader, 1);
+  // Units: functions carry no dimension of their own; the card that uses one scales it. A unit id must name a
+  // /UNIT, and changes no value (the reference converts none: docs/deck-format.md, "Units").
+  read_unit_id(reader, 2);
   f.title = read_title(reader);
-  // Units: functions carry no dimension of their own; the card that uses one scales it.
   while (auto line = reader.next_nonblank()) {
     const double x = line->real(1, 20, "X", dim::none);
     const double y = line->real(21, 20, "Y", dim::none);
