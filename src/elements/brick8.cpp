@@ -305,15 +305,33 @@ bool point_kinematics(const Element& el, int g, PointKinematics& pk) {
   return true;
 }
 
+// The share of the 8-point element's pressure taken constant over it (eq. B-9c): 1 with Icpre 1, 0 with Icpre 3, and
+// with Icpre 2 sqrt(eps_p / (sigma_vm / E + eps_p)) of the element's mean plastic strain and mean stress before the
+// step: 0 while it is elastic, towards 1 as plastic flow, incompressible, takes over.
+double constant_pressure_share(const BrickGroupParameters& p, const BrickState& st, std::size_t first) {
+  if (p.constant_pressure) return 1.0;
+  if (!p.plastic_pressure) return 0.0;
+  double eps_p = 0.0, s[6] = {};
+  for (std::size_t g = 0; g < 8; ++g) {
+    const std::size_t ip = first + g;
+    eps_p += st.eps_p[ip] / 8.0;
+    const double point[6] = {st.sxx[ip], st.syy[ip], st.szz[ip], st.sxy[ip], st.syz[ip], st.szx[ip]};
+    for (int k = 0; k < 6; ++k) s[k] += point[k] / 8.0;
+  }
+  if (!(eps_p > 0.0)) return 0.0;
+  const double elastic_strain = materials::von_mises(s) / p.young;
+  return std::sqrt(eps_p / (elastic_strain + eps_p));
+}
+
 // Adds the forces of the 8 point stresses to f and returns sum det J p for the mean-gradient pressure forces
 // (eq. B-10): with a constant pressure the points carry their deviatoric stress, otherwise the whole stress.
-double point_forces(const PointKinematics* pk, const double (*sigma)[6], bool constant_pressure, double* fx,
+double point_forces(const PointKinematics* pk, const double (*sigma)[6], double constant_share, double* fx,
                     double* fy, double* fz) {
   double pressure_volume = 0.0;
   for (int g = 0; g < 8; ++g) {
     const auto& dn = kGauss.d[g];
     const double* s = sigma[g];
-    const double pressure = constant_pressure ? (s[0] + s[1] + s[2]) / 3.0 : 0.0;
+    const double pressure = constant_share * (s[0] + s[1] + s[2]) / 3.0;
     pressure_volume += pk[g].det_now * pressure;
     const double dxx = s[0] - pressure, dyy = s[1] - pressure, dzz = s[2] - pressure;
     const auto& cn = pk[g].cn;
@@ -480,6 +498,7 @@ void brick8_configure(int isolid, int icpre, BrickGroupParameters& p) {
   p.points = fully_integrated_brick(isolid) ? 8 : 1;
   p.assumed_shear = isolid == 14 || isolid == 18;      // shear-locking free 2x2x2 (eq. B-10a)
   p.constant_pressure = icpre == 1 || isolid == 12;  // Isolid 12: bulk always at one point (eq. B-10)
+  p.plastic_pressure = icpre == 2 && p.points == 8;
 }
 
 GroupStepResult brick8_forces(const ElementTable& table, const ElementGroup& group, const BrickGroupParameters& p,
@@ -665,9 +684,10 @@ GroupStepResult brick8_full_forces(const ElementTable& table, const ElementGroup
       average_local_shears(el.mx, el.my, el.mz, weight, true, d);
       for (int g = 0; g < 8; ++g) std::copy(d[g], d[g] + 6, r[g].d);
     }
-    if (p.constant_pressure)
+    const double share = constant_pressure_share(p, state, p.first_point + static_cast<std::size_t>(e - group.begin) * 8);
+    if (share > 0.0)
       for (auto& rg : r) {
-        const double correction = (dv_mean - (rg.d[0] + rg.d[1] + rg.d[2])) / 3.0;
+        const double correction = share * (dv_mean - (rg.d[0] + rg.d[1] + rg.d[2])) / 3.0;
         for (int k = 0; k < 3; ++k) rg.d[k] += correction;
       }
 
@@ -688,7 +708,7 @@ GroupStepResult brick8_full_forces(const ElementTable& table, const ElementGroup
       average_local_shears(el.x, el.y, el.z, weight, false, sigma);
     }
     double fx[8] = {}, fy[8] = {}, fz[8] = {};
-    const double mean_stress = point_forces(pk, sigma, p.constant_pressure, fx, fy, fz) / volume - visc.q;
+    const double mean_stress = point_forces(pk, sigma, share, fx, fy, fz) / volume - visc.q;
 
     // Pressure forces (sum det J p) B_bar - q V B_bar with B_bar = dV/dx / V (eq. B-10).
     double check = internal + mean_stress;

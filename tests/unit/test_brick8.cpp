@@ -1141,3 +1141,25 @@ TEST(Brick8, NegativeVolumeStopsTheRun) {
 }
 
 }  // namespace
+
+// Isolid 18 takes its Icpre from the law, as the reference resolves it: 2 (the plasticity-following share, eq. B-9c)
+// with a plastic law, 3 with an elastic one; Isolid 14 keeps a given 2.
+TEST(Brick8, Isolid18ResolvesIcpreFromTheLaw) {
+  auto icpre_of = [](int isolid, int icpre, const std::string& material) {
+    std::string s = test::begin_card("ICPRE") + "/NODE\n";
+    for (int k = 0; k < 8; ++k) s += I(k + 1) + R(kCorners[k][0]) + R(kCorners[k][1]) + R(kCorners[k][2]) + "\n";
+    s += "/BRICK/1\n" + I(1) + I(1) + I(2) + I(3) + I(4) + I(5) + I(6) + I(7) + I(8) + "\n";
+    s += "/PART/1\ncube\n" + I(1) + I(1) + "\n/PROP/SOLID/1\nsolid\n" + I(isolid) + I(0) + I(0) + I(icpre) + "\n" +
+         R(0.0) + R(0.0) + R(0.0) + "\n" + material + "/END\n";
+    test::TempDir dir;
+    const Model m = read_deck(dir.write("ICPRE_0000.rad", s)).model;
+    return m.formulations.at(0).icpre;
+  };
+  const std::string elastic = "/MAT/ELAST/1\nsteel\n" + R(kRho) + "\n" + R(kE) + R(kNu) + "\n";
+  const std::string plastic =
+      "/MAT/PLAS_JOHNS/1\nsteel\n" + R(kRho) + "\n" + R(kE) + R(kNu) + "\n" + R(3e8) + R(5e8) + R(0.3) + "\n";
+  EXPECT_EQ(icpre_of(18, 0, plastic), 2);
+  EXPECT_EQ(icpre_of(18, 0, elastic), 3);
+  EXPECT_EQ(icpre_of(14, 2, plastic), 2);
+  EXPECT_EQ(icpre_of(14, 0, plastic), 3);
+}

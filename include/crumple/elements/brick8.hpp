@@ -23,6 +23,7 @@ struct BrickGroupParameters {
   double hourglass = 0.1;          // viscous hourglass coefficient h (Isolid 1, 2, eq. B-6)
   double numerical_damping = 0.0;  // dn of the Isolid 24 stabilisation (eq. B-9b); the property default is 0.1
   bool constant_pressure = false;  // Icpre 1: the pressure is constant over the element (eq. B-9a, B-10)
+  bool plastic_pressure = false;   // Icpre 2 (2x2x2 points): the constant pressure's share follows plasticity (B-9c)
   bool assumed_shear = false;      // 2x2x2 points: shears of the element frame averaged (eq. B-10a), Isolid 14
   int points = 1;                  // integration points per element: 1, or 8 (2x2x2)
   bool corotational = false;       // Iframe 2: stresses turn with the element frame, not the material spin (B-3a)

@@ -70,7 +70,7 @@ struct ResolvedFormulation {
   int ishell = 24;  // 4-node shells: 1 or 24
   int ish3n = 2;    // 3-node shells: 1 or 2
   int isolid = 1;   // bricks: 1, 14 or 24
-  int icpre = 0;    // bricks: 1 constant pressure, 3 none (0 for the one-point Isolid 1)
+  int icpre = 0;    // bricks: 1 constant pressure, 2 its plasticity-following share (B-9c), 3 none (0: Isolid 1)
   int iframe = 1;   // bricks: 1 non co-rotational, 2 co-rotational
   int ismstr = 0;   // small-strain flag after /DEF_SHELL or /DEF_SOLID (shells: 1, 2 or 4)
   int n_points = 0; // shells: through-thickness points; 0 = global (stress-resultant) plasticity

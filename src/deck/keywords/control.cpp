@@ -297,9 +297,9 @@ void read_def_solid(CardReader& reader, DeckContext& context) {
               "0 (default, 4), 1 or 3 (small strain from t = 0), 2 (switchable by /DT/BRICK/CST) or 4 (large "
               "strain); the automatic -1, -2 and the total-strain 10, 11, 12 are not supported by Crumple");
   d.icpre = static_cast<int>(line.integer(21, 10, "Icpre"));
-  if (d.icpre != 0 && d.icpre != 1 && d.icpre != 3)
+  if (d.icpre < 0 || d.icpre > 3)
     line.fail(21, 10, "Icpre",
-              "0 (default), 1 (constant pressure) or 3 (none); 2 (plasticity-dependent pressure) and the automatic "
+              "0 (default), 1 (constant pressure), 2 (a share that follows plasticity) or 3 (none); the automatic "
               "-1, -2 are not supported by Crumple");
   d.istrain = static_cast<int>(line.integer(31, 10, "Istrain"));
   const auto warn_if = [&](int column, std::string_view name, std::string_view why) {

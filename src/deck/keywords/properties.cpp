@@ -84,7 +84,7 @@ void read_shell_property(CardReader& reader, DeckContext& context) {
 }
 
 constexpr const char* kIcpreChoices =
-    "0 (default), 1 (constant pressure) or 3 (none); 2 (plasticity-dependent pressure) and the automatic -1, -2 are "
+    "0 (default), 1 (constant pressure), 2 (a share that follows plasticity) or 3 (none); the automatic -1, -2 are "
     "not supported by Crumple";
 constexpr const char* kIsmstrChoices =
     "0 (default, 4), 1 or 3 (small strain from t = 0), 2 (switchable by /DT/BRICK/CST) or 4 (large strain); the "
@@ -109,7 +109,7 @@ void read_narrow_solid_flags(CardReader& reader, DeckContext& context, SolidSect
     if (flags.integer(column, 8, name) != 0)
       context.unsupported(flags.error(column, 8, name, default_only("this option of input version 44 is")));
   s.icpre = static_cast<int>(flags.integer(25, 8, "Icpre"));
-  if (s.icpre != 0 && s.icpre != 1 && s.icpre != 3) flags.fail(25, 8, "Icpre", kIcpreChoices);
+  if (s.icpre < 0 || s.icpre > 3) flags.fail(25, 8, "Icpre", kIcpreChoices);
   s.dn = flags.real(41, 16, "dn", dim::none);
   if (s.dn < 0.0) flags.fail(41, 16, "dn", "a non-negative numerical damping");
 }
@@ -122,7 +122,7 @@ void read_solid_flags(CardReader& reader, DeckContext& context, SolidSection& s)
   s.ismstr = static_cast<int>(flags.integer(11, 10, "Ismstr"));
   if (s.ismstr < 0 || s.ismstr > 4) flags.fail(11, 10, "Ismstr", kIsmstrChoices);
   s.icpre = static_cast<int>(flags.integer(31, 10, "Icpre"));
-  if (s.icpre != 0 && s.icpre != 1 && s.icpre != 3) flags.fail(31, 10, "Icpre", kIcpreChoices);
+  if (s.icpre < 0 || s.icpre > 3) flags.fail(31, 10, "Icpre", kIcpreChoices);
   note_if_set(flags, context, reader, flags.integer(41, 10, "Itetra10"), "Itetra10",
               "applies to /TETRA10 elements only; no effect on bricks");
   s.inpts = static_cast<int>(flags.integer(51, 10, "Inpts"));
