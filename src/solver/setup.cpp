@@ -42,6 +42,7 @@ void setup_nodes(const Model& m, SolverState& s) {
     }
   }
   for (const BoundaryCondition& bc : m.boundary_conditions) {
+    if (bc.skew >= 0) continue;  // its codes fix the skew's axes, not the global ones (eq. SK-5, loads.cpp)
     std::uint8_t mask = 0;
     for (int d = 0; d < 3; ++d) {
       if (bc.fixed_translation[static_cast<std::size_t>(d)]) mask |= static_cast<std::uint8_t>(1u << d);
