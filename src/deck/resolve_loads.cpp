@@ -130,6 +130,19 @@ void refuse_body_without_inertia(Resolver& r, const RigidBody& b, const std::str
             "no secondary node and no inertia");
 }
 
+// A body switched by a sensor: the manual says its added mass and inertia, its skew and ICoG are then not used and
+// Ikrem is 1. Crumple forms it from its nodes alone (RB-6): a value there would be dropped, so it is refused.
+void refuse_what_a_sensor_body_ignores(Resolver& r, RigidBody& b, const std::string& kw) {
+  const std::string expected = "0 or blank with a sensor_ID (a body switched by a sensor has no added mass, inertia "
+                               "or skew, and ICoG 1, as the manual says)";
+  if (b.mass != 0.0) r.error(b.where, kw, "Mass", expected, fmt::format("{}", b.mass));
+  if (std::any_of(b.inertia.begin(), b.inertia.end(), [](double j) { return j != 0.0; }))
+    r.error(b.where, kw, "Jxx..Jzx", expected, "a non-zero inertia");
+  if (b.skew_id != 0) r.error(b.where, kw, "skew_ID", expected, std::to_string(b.skew_id));
+  if (b.icog != 1) r.error(b.where, kw, "ICoG", expected, std::to_string(b.icog));
+  b.ikrem = 1;  // the manual: Ikrem forced to 1
+}
+
 void resolve_rigid_bodies(Resolver& r) {
   Model& m = r.model;
   const auto& ix = m.index;
@@ -137,7 +150,8 @@ void resolve_rigid_bodies(Resolver& r) {
   for (std::size_t i = 0; i < m.rigid_bodies.size(); ++i) {
     RigidBody& b = m.rigid_bodies[i];
     const std::string kw = fmt::format("/RBODY/{}", b.user_id);
-    r.require_zero(b.sensor_id, b.where, kw, "sensor_ID", "sensors are");
+    b.sensor = sensor_window(r, b.sensor_id, b.where, kw, "sensor_ID");
+    if (b.sensor_id != 0) refuse_what_a_sensor_body_ignores(r, b, kw);
     b.skew = r.find_optional(ix.skews, b.skew_id, b.where, kw, "skew_ID", "skew");
     r.require_zero(b.surface_id, b.where, kw, "surf_ID", "rigid body surfaces are");
     b.main_node = r.find(ix.nodes, b.main_node_id, b.where, kw, "RBID", "node");

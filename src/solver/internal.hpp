@@ -7,6 +7,7 @@
 
 #include "crumple/model/model.hpp"
 #include "crumple/solver/solver_state.hpp"
+#include "solver/cycle.hpp"
 
 namespace crumple::solver {
 
@@ -111,6 +112,14 @@ void start_velocity_links(const Model& model, SolverState& state);
 // /RBODY/ON, /RBODY/OFF of the engine deck about to run: bodies switched off release their nodes, bodies switched
 // on are formed again from the nodes' current positions and velocities (docs/theory/rigid-bodies.md).
 void switch_rigid_bodies(const Model& model, SolverState& state);
+// Bodies with a sensor: off while it is on, formed again when it turns off (docs/theory/rigid-bodies.md, RB-6).
+bool rigid_bodies_have_sensors(const Model& model);
+// The step of the elements a sensor body carries, on their initial shape (a rigid motion keeps it): they are not
+// computed while the body is on, but are from the cycle it turns off, so their step bounds the run's all along.
+// (The reference steps over a body-only stretch at once, measured; a step that then falls by orders of magnitude
+// gives the first free cycle a velocity kick, so Crumple keeps the elements' step, RB-6.)
+StepBound sensor_bodies_step(const Model& model, double scale);
+void switch_rigid_bodies_by_sensors(const Model& model, SolverState& state);
 
 // The velocity that /IMPVEL or /IMPDISP card `im` imposes on node k over the step from t to t + dt_next, or nullopt
 // when the card does not act then (its time window).

@@ -2,8 +2,10 @@
 // exact rigid placement of the secondary nodes every cycle (docs/theory/rigid-bodies.md).
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "crumple/state/element_status.hpp"
+#include "crumple/model/summary.hpp"
 #include "solver/internal.hpp"
 
 namespace crumple::solver {
@@ -283,19 +285,69 @@ void setup_rigid_bodies(const Model& m, SolverState& s) {
   if (!s.bodies.empty()) mark_elements_in_rigid_bodies(m, s), mark_contact_nodes_in_rigid_bodies(s);
 }
 
+namespace {
+
+// The body's nodes move on their own from now, with the velocities the body gave them.
+void release_body(SolverState& s, RigidBodyState& b) {
+  b.active = false;
+  for (std::int32_t node : b.secondary) s.rigid_owner[static_cast<std::size_t>(node)] = -1;
+  s.rigid_owner[static_cast<std::size_t>(b.main_node)] = -1;
+}
+
+}  // namespace
+
 void switch_rigid_bodies(const Model& m, SolverState& s) {
-  for (std::int32_t body : m.run.bodies_off) {
-    RigidBodyState& b = s.bodies[static_cast<std::size_t>(body)];
-    b.active = false;
-    for (std::int32_t node : b.secondary) s.rigid_owner[static_cast<std::size_t>(node)] = -1;
-    s.rigid_owner[static_cast<std::size_t>(b.main_node)] = -1;
-  }
+  for (std::int32_t body : m.run.bodies_off) release_body(s, s.bodies[static_cast<std::size_t>(body)]);
   for (std::int32_t body : m.run.bodies_on) {
     RigidBodyState& b = s.bodies[static_cast<std::size_t>(body)];
     if (!b.active) form_body(m.rigid_bodies[static_cast<std::size_t>(body)], m, s, body, b, false);
   }
   if (!m.run.bodies_on.empty() || !m.run.bodies_off.empty())
     mark_elements_in_rigid_bodies(m, s), mark_contact_nodes_in_rigid_bodies(s);
+}
+
+StepBound sensor_bodies_step(const Model& m, double scale) {
+  StepBound bound;
+  std::vector<std::int32_t> body_of(m.nodes.size(), -1);  // the sensor body each node is in
+  for (std::size_t i = 0; i < m.rigid_bodies.size(); ++i) {
+    const RigidBody& rb = m.rigid_bodies[i];
+    if (rb.sensor_id == 0) continue;
+    for (std::int32_t node : m.node_groups[static_cast<std::size_t>(rb.node_group)].nodes)
+      body_of[static_cast<std::size_t>(node)] = static_cast<std::int32_t>(i);
+    body_of[static_cast<std::size_t>(rb.main_node)] = static_cast<std::int32_t>(i);
+  }
+  for (const ElementTable& table : m.elements)
+    for (std::size_t e = 0; e < table.size(); ++e) {
+      const std::int32_t* nodes = table.nodes_of(e);
+      const std::int32_t body = body_of[static_cast<std::size_t>(nodes[0])];
+      bool carried = body >= 0;
+      for (int a = 1; a < nodes_per_element(table.kind) && carried; ++a)
+        carried = body_of[static_cast<std::size_t>(nodes[a])] == body;
+      if (!carried) continue;
+      const double dt = scale * initial_element_time_step(m, table.kind, e);
+      if (dt < bound.dt) bound.dt = dt, bound.control = StepControl::element(table.kind, static_cast<std::int32_t>(e));
+    }
+  return bound;
+}
+
+bool rigid_bodies_have_sensors(const Model& m) {
+  return std::any_of(m.rigid_bodies.begin(), m.rigid_bodies.end(), [](const RigidBody& b) { return b.sensor_id != 0; });
+}
+
+// A body with a sensor is off while the sensor is on (RB-6): released when it turns on, formed again from its nodes'
+// positions and velocities when it turns off. Every domain decides alike from the time.
+void switch_rigid_bodies_by_sensors(const Model& m, SolverState& s) {
+  bool switched = false;
+  for (std::size_t i = 0; i < m.rigid_bodies.size(); ++i) {
+    const RigidBody& rb = m.rigid_bodies[i];
+    RigidBodyState& b = s.bodies[i];
+    const bool on = !rb.sensor.holds(s.time);
+    if (rb.sensor_id == 0 || on == b.active) continue;
+    if (on) form_body(rb, m, s, static_cast<std::int32_t>(i), b, false);
+    else release_body(s, b);
+    switched = true;
+  }
+  if (switched) mark_elements_in_rigid_bodies(m, s), mark_contact_nodes_in_rigid_bodies(s);
 }
 
 // Each body's resultant about its centre (eq. RB-1, RB-2): exact sums of its nodes' forces and moments, each node

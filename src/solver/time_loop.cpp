@@ -96,9 +96,13 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunObse
   auto keep = [&control](const StepBound& bound) {
     if (bound.control.source != StepControl::Source::None) control = bound.control;
   };
+  const bool body_sensors = rigid_bodies_have_sensors(m);
+  const StepBound carried = body_sensors ? sensor_bodies_step(m, step_scale(m.run)) : StepBound{};
   for (;;) {
+    if (body_sensors) switch_rigid_bodies_by_sensors(m, s);
     bool elements_deleted = false;
     StepBound bound = compute_element_forces(m, s, events, elements_deleted, options.exchange);
+    if (carried.dt < bound.dt) bound.dt = carried.dt, bound.control = carried.control;  // RB-6
     const double element_step = bound.dt;
     keep(bound);
     clock.lap(phases.elements);

@@ -391,8 +391,8 @@ TEST(RigidKeywords, RigidBodyFieldErrors) {
   group.group = 0;
   EXPECT_NE(error_of(dir, group.card()).find("grnod_ID"), std::string::npos);
   Body sensor;
-  sensor.sensor = 2;
-  EXPECT_NE(error_of(dir, sensor.card()).find("sensor_ID"), std::string::npos);
+  sensor.sensor = 2;  // no /SENSOR 2 in the deck
+  EXPECT_NE(error_of(dir, sensor.card()).find("sensor 2 not defined"), std::string::npos);
   Body truncated;
   truncated.products = "";
   truncated.options = "";
@@ -441,4 +441,27 @@ TEST(RigidKeywords, OtherBodyFormsAndUnitsAreErrors) {
   EXPECT_NE(lagmul.find("/RBODY/LAGMUL form is not supported"), std::string::npos) << lagmul;
   const std::string unit = error_of(dir, "/RBODY/7/3" + card.substr(card.find('\n')));
   EXPECT_NE(unit.find("unit_ID"), std::string::npos) << unit;
+}
+
+// A body with a sensor (docs/theory/rigid-bodies.md, RB-6): off while the sensor is on; the manual's ignored fields
+// (added mass and inertia, skew, ICoG) must be blank, and Ikrem is 1.
+TEST(RigidKeywords, SensorBodyTakesTheWindowAndRefusesWhatItIgnores) {
+  test::TempDir dir;
+  const std::string sensor = "/SENSOR/TIME/2\ntimer\n" + R(0.25) + "\n";
+  Body body;
+  body.sensor = 2;
+  body.mass = R(0.0);
+  const Model m = read(dir, sensor + body.card());
+  ASSERT_EQ(m.rigid_bodies.size(), 1u);
+  EXPECT_DOUBLE_EQ(m.rigid_bodies[0].sensor.on, 0.25);
+  EXPECT_EQ(m.rigid_bodies[0].ikrem, 1);
+  Body heavy = body;
+  heavy.mass = R(3.0);
+  EXPECT_NE(error_of(dir, sensor + heavy.card()).find("Mass"), std::string::npos);
+  Body spinning = body;
+  spinning.diagonal = vec(1, 1, 1);
+  EXPECT_NE(error_of(dir, sensor + spinning.card()).find("Jxx"), std::string::npos);
+  Body centred = body;
+  centred.icog = 3;
+  EXPECT_NE(error_of(dir, sensor + centred.card()).find("ICoG"), std::string::npos);
 }

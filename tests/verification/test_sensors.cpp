@@ -43,7 +43,9 @@ struct Sample {
   double t, momentum, vz_min, vz_max;
 };
 
-std::vector<Sample> run(const std::string& starter, int version = 2019) {
+// `balanced`: the energy error stays 0 (false where a body formed again takes its nodes' kinetic energy away: the
+// error then falls, as in the reference's listing, -99.7 % on the same scene).
+std::vector<Sample> run(const std::string& starter, int version = 2019, bool balanced = true) {
   test::TempDir dir;
   std::vector<Sample> rows;
   const RunResult r = run_deck(
@@ -56,7 +58,11 @@ std::vector<Sample> run(const std::string& starter, int version = 2019) {
       },
       "", {}, version);
   EXPECT_EQ(r.summary.status, RunStatus::Normal) << r.summary.message;
-  EXPECT_NEAR(r.summary.energy.error_percent, 0.0, 0.1);
+  if (balanced) {
+    EXPECT_NEAR(r.summary.energy.error_percent, 0.0, 0.1);
+  } else {
+    EXPECT_LT(r.summary.energy.error_percent, -10.0);
+  }
   return rows;
 }
 
@@ -122,6 +128,46 @@ double upper_plate_velocity_at_end(double off) {
 TEST(Sensors, ContactActsOnlyWhileItsSensorIsOn) {
   EXPECT_GT(upper_plate_velocity_at_end(0.0), 0.0) << "on from 0.1 ms: the plate bounces";
   EXPECT_DOUBLE_EQ(upper_plate_velocity_at_end(3e-4), -1.0) << "off at 0.3 ms: it passes through";
+}
+
+// A rigid body with a sensor is off while the sensor is on (docs/theory/rigid-bodies.md, RB-6). The plate's nine
+// nodes are a body whose main node, apart from the plate, is clamped; a ramp load pulls one corner along Z. While
+// the body is on nothing moves; when the sensor turns on (kOn) the plate is free and the corner moves; when a 2023
+// sensor turns off again (off) the body is formed again from its nodes, held by its main node: everything stops.
+// The reference gives the same phases on the same scene in kg mm ms ("RIGID BODY SET OFF" at the sensor's
+// activation, "SET ON" at its stop, no kinetic energy after it).
+std::vector<Sample> run_released_plate(double off) {
+  const Strip strip = plate();
+  std::vector<NodeRow> nodes = strip.nodes();
+  nodes.push_back({100, 0.005, 0.005, 0.0});
+  std::string sensor = "/SENSOR/TIME/7\ntimer\n" + R(kOn) + "\n";
+  if (off > 0.0) sensor += R(off) + "\n";
+  const std::string starter = node_cards(nodes) + shell_cards(1, strip.shells()) + part_card() +
+                              shell_property(0.001, 3) + elastic_material(7850.0, 2.1e11, 0.3) +
+                              node_group(1, strip.all()) + node_group(2, {100}) + node_group(3, {1}) +
+                              function_card(1, {{0.0, 0.0}, {1.0, 1.0}}) + sensor +
+                              boundary_condition(1, "111 111", 2) +
+                              "/CLOAD/1\nload\n" + I(1) + "         Z" + I(0) + I(0) + I(3) + I(0) + R(0.0) +
+                              R(1e3) + "\n/RBODY/1\nbody\n" + I(100) + I(7) + I(0) + I(0) + R(0.0) + I(1) + I(0) +
+                              I(0) + I(0) + "\n" + R(0.0) + R(0.0) + R(0.0) + "\n" + R(0.0) + R(0.0) + R(0.0) +
+                              "\n" + I(0) + I(0) + "\n";
+  return run(starter, off > 0.0 ? 2023 : 2019, off == 0.0);
+}
+
+TEST(Sensors, RigidBodyIsOffWhileItsSensorIsOn) {
+  for (const Sample& s : run_released_plate(0.0)) {
+    if (s.t < kOn) {
+      EXPECT_EQ(s.vz_max, 0.0) << "t = " << s.t << ": the body holds the plate";
+    } else if (s.t > kOn + 5e-5) {
+      EXPECT_GT(s.vz_max, 0.0) << "t = " << s.t << ": released, the corner moves";
+    }
+  }
+  for (const Sample& s : run_released_plate(4e-4)) {
+    if (s.t > 4e-4 + 1e-5) {
+      EXPECT_EQ(s.vz_max, 0.0) << "t = " << s.t << ": formed again, held by its main node";
+      EXPECT_EQ(s.vz_min, 0.0) << "t = " << s.t;
+    }
+  }
 }
 
 }  // namespace

@@ -90,6 +90,9 @@ struct RigidBody {  // /RBODY
   std::int64_t main_node_id = 0;  // node_ID (RBID in HyperCrash decks)
   std::int32_t main_node = -1;
   std::int64_t sensor_id = 0;
+  // With a sensor the body is off while the sensor is on, and formed again from its nodes when the sensor turns off
+  // (measured on the reference: "RIGID BODY SET OFF" at its activation; docs/theory/rigid-bodies.md, RB-6).
+  SensorWindow sensor;            // resolved from sensor_id (model build)
   std::int64_t skew_id = 0;
   std::int32_t skew = -1;         // the added inertia's axes (-1: global)
   int ispher = 2;                 // 1 spherical inertia; 2 from the nodes + added inertia; 3 from data
