@@ -134,6 +134,32 @@ def card_warned(base, file_name, keyword_line):
     return any(marker in w and ("card" in w or "performance hint" in w) for w in warnings_of(base["output"]))
 
 
+def field_name(folder, file_name, n, end):
+    """The field's name in the comment line above its data line (the shared decks right-align each name over its
+    columns): the name whose last column is nearest the value's last column, within one 20-column field."""
+    lines = open(os.path.join(folder, file_name), errors="replace").read().split("\n")
+    header = next((lines[i] for i in range(n - 1, -1, -1) if lines[i].startswith(("#", "$"))
+                   or lines[i].startswith("/")), "")
+    if not header.startswith(("#", "$")):
+        return None
+    names = [(abs(m.end() - end), m.group()) for m in re.finditer(r"[A-Za-z][\w%]*", header) if end - 20 < m.end() <= end + 1]
+    return min(names)[1] if names else None
+
+
+def field_warned(base, folder, file_name, item):
+    """Whether the deck as written already has a warning on the value's card that names its field (hm, hf and hr
+    with Ishell 12): a changed value then draws the same warning, not a new one, and is no silent drop."""
+    n, start, end, token, keyword_line = item
+    name = field_name(folder, file_name, n, end)
+    if not name:
+        return False
+    for w in warnings_of(base["output"]):
+        m = re.match(r"warning: " + re.escape(file_name) + r":(\d+):", w)
+        if m and keyword_line < int(m.group(1)) <= n + 1 and re.search(r"\b" + re.escape(name) + r"\b", w):
+            return True
+    return False
+
+
 def probe_value(crumple, folder, files, file_name, item, new, base, timeout):
     n, start, end, token = item[:4]
     work = tempfile.mkdtemp(prefix="probe_")
@@ -161,7 +187,8 @@ def probe_value(crumple, folder, files, file_name, item, new, base, timeout):
         kind = "effect"
     elif r["code"] != base["code"]:
         kind = "effect"
-    elif warnings_of(r["output"]) - warnings_of(base["output"]) or card_warned(base, file_name, item[4]):
+    elif (warnings_of(r["output"]) - warnings_of(base["output"]) or card_warned(base, file_name, item[4])
+          or field_warned(base, folder, file_name, item)):
         kind = "warning"
     else:
         kind = "silent"

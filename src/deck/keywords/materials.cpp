@@ -108,6 +108,9 @@ void read_johnson_cook(CardReader& reader, DeckContext& context) {
       rate.fail(21, 20, "EPS_DOT_0", "a positive reference strain rate when c > 0");
     if (jc.chard < 0.0 || jc.chard > 1.0) rate.fail(81, 20, "Chard", "a hardening mix in [0, 1]");
     if (jc.fsmooth != 0 && jc.fsmooth != 1) rate.fail(51, 10, "Fsmooth", "0 (no smoothing) or 1 (smoothed strain rate)");
+    // docs/cards/starter-model.md, /MAT/PLAS_JOHNS reader checks: ICC in {0, 1, 2}.
+    if (jc.icc < 0 || jc.icc > 2)
+      rate.fail(41, 10, "ICC", "0 or 1 (the rate factor also scales SIG_max0) or 2 (SIG_max0 not rate dependent)");
     if (jc.c == 0.0 && jc.eps_dot_0 != 0.0)
       context.warn(rate.where(), reader.card().keyword,
                    "EPS_DOT_0 acts only with a strain-rate coefficient c > 0: ignored with c = 0");
