@@ -9,7 +9,8 @@ def vol(a,b,c,d):
 import os, sys
 I=lambda *v: "".join("%10d"%x for x in v)
 R=lambda *v: "".join("%20.10g"%x for x in v)
-def gen(name, kind, nx=10, ny=2, nz=2, L=100.0, W=20.0, isolid=0, law='elast', v=5.0, tend=0.2):
+def gen(name, kind, nx=10, ny=2, nz=2, L=100.0, W=20.0, isolid=0, law='elast', v=5.0, tend=0.2, icpre=0, push='X',
+        print_every=20):
     nodes={}; nid=lambda i,j,k: 1+i+(nx+1)*(j+(ny+1)*k)
     for k in range(nz+1):
         for j in range(ny+1):
@@ -48,7 +49,7 @@ def gen(name, kind, nx=10, ny=2, nz=2, L=100.0, W=20.0, isolid=0, law='elast', v
     s+="/NODE\n"+"".join(I(k)+R(*p)+"\n" for k,p in nodes.items())
     s+="/BRICK/1\n"+"".join(I(*x)+"\n" for x in els)
     s+="/PART/1\nbar\n"+I(1,1)+"\n"
-    s+="/PROP/SOLID/1\nsolid\n"+I(isolid,0)+"\n"+R(0,0,0)+"\n"
+    s+="/PROP/SOLID/1\nsolid\n"+(I(isolid,0,0,icpre) if icpre else I(isolid,0))+"\n"+R(0,0,0)+"\n"
     if law=='elast':
         s+="/MAT/ELAST/1\nsteel\n"+R(7.85e-6)+"\n"+R(210.0,0.3)+"\n"
     else:
@@ -62,11 +63,11 @@ def gen(name, kind, nx=10, ny=2, nz=2, L=100.0, W=20.0, isolid=0, law='elast', v
     s+=grp(1,left,"left")+grp(2,right,"right")
     s+="/BCS/1\nclamp\n   111 000"+I(0,1)+"\n"
     s+="/FUNCT/1\nconst\n"+R(0,1)+"\n"+R(1000,1)+"\n"
-    s+="/IMPVEL/1\npull\n"+I(1)+"         X"+I(0,0,2,0,0)+"\n"+R(0,v,0,0)+"\n"
+    s+="/IMPVEL/1\npull\n"+I(1)+"         "+push+I(0,0,2,0,0)+"\n"+R(0,v,0,0)+"\n"
     s+="/END\n"
     os.makedirs(name,exist_ok=True)
     open(f"{name}/{name}_0000.rad","w").write(s)
-    open(f"{name}/{name}_0001.rad","w").write(f"/RUN/{name}/1\n{tend}\n/PRINT/-20\n/TFILE/4\n{tend/100}\n/VERS/2019\n")
+    open(f"{name}/{name}_0001.rad","w").write(f"/RUN/{name}/1\n{tend}\n/PRINT/-{print_every}\n/TFILE/4\n{tend/100}\n/VERS/2019\n")
 if __name__ == "__main__":
     gen("PRI14", "prism", isolid=14)
     gen("TET", "tet")
