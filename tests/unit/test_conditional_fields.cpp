@@ -40,6 +40,17 @@ TEST(ConditionalFields, ShellDampingAndHourglassOutsideTheirFormulationsAreNamed
   EXPECT_EQ(warnings_of(shell_property(1, 0.1, 0.0), "").find("hm, hf and hr"), std::string::npos);
 }
 
+// 3-node shells have no hourglass modes: hm, hf, hr on a property of triangles alone act on nothing, as in the
+// reference (a bent plate of triangles, hm = hf = hr 0.01 and 0.5: the same listing to the last digit).
+TEST(ConditionalFields, HourglassCoefficientsOfTrianglesAloneAreNamed) {
+  const std::string triangles = "/PROP/SHELL/2\ntriangles\n" + I(0) + "\n" + R(0.1) + R(0.1) + R(0.1) + R(0.0) +
+                                R(0.0) + "\n" + I(3) + I(0) + R(0.001) + "\n/PART/2\ntriangles\n" + I(2) + I(1) +
+                                "\n/SH3N/2\n" + I(7) + I(1) + I(2) + I(5) + "\n";
+  const std::string w = warnings_of(shell_property(1, 0.0, 0.0), triangles);
+  EXPECT_NE(w.find("/PROP/SHELL/2: hm, hf and hr act only on 4-node shells"), std::string::npos) << w;
+  EXPECT_EQ(w.find("/PROP/SHELL/1: hm"), std::string::npos) << w;
+}
+
 TEST(ConditionalFields, DefaultsWithoutTheirElementsAreNamed) {
   const std::string def_solid = "/DEF_SOLID\n" + I(14) + "\n";
   EXPECT_NE(warnings_of(shell_property(24, 0.0, 0.0), def_solid).find("/DEF_SOLID: no brick in the model"),
