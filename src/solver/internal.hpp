@@ -105,6 +105,8 @@ void gather_rigid_body_forces(SolverState& state);
 // Rigid bodies after the free velocity update: new momentum, rotation and the secondary nodes' velocities. Fixed
 // and imposed dofs of a main node drive its body; returns the work of those conditions over the step.
 double update_rigid_bodies(const Model& model, SolverState& state, double dt_average, double dt_next);
+// The translational velocity of node k.
+inline Vec3 node_velocity(const NodalState& n, std::size_t k) { return {n.vx[k], n.vy[k], n.vz[k]}; }
 // /VEL/TRA of the engine deck: each link's nodes take their mass-weighted mean velocity along its axes (L-8).
 void link_velocities(const Model& model, SolverState& state);
 // The same at the start of the engine deck; the energy balance starts from the linked velocities.

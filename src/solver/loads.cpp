@@ -170,8 +170,7 @@ std::optional<double> imposed_velocity(const Model& m, const SolverState& s, con
   }
   if (im.kind != ImposedKind::Displacement || is_rotation(im.dof)) return std::nullopt;
   const double t_next = t + dt_next;
-  if (t_next < im.t_start || t > im.t_stop || dt_next <= 0.0) return std::nullopt;
-  if (t_next < im.sensor.on || t > im.sensor.off) return std::nullopt;
+  if (t_next < im.t_start || t > im.t_stop || dt_next <= 0.0 || !im.sensor.holds_during(t, t_next)) return std::nullopt;
   const double target = curve(m, im.function, im.scale_x, im.scale_y, im.sensor.clock(t_next));
   Vec3 e{};
   if (im.skew < 0) e[static_cast<std::size_t>(dof_axis(im.dof))] = 1.0;

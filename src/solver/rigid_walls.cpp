@@ -61,7 +61,6 @@ std::uint8_t free_translation_dofs(const Model& m, const SolverState& s, std::in
   return free;
 }
 
-Vec3 node_velocity(const NodalState& n, std::size_t k) { return {n.vx[k], n.vy[k], n.vz[k]}; }
 
 // The rigid body whose main node k is (its centre of mass, eq. RB-0), or null: a wall that holds it holds the body,
 // whose mass takes the impulse (eq. RW-3).

@@ -7,8 +7,6 @@
 namespace crumple::solver {
 namespace {
 
-Vec3 velocity(const NodalState& n, std::size_t k) { return {n.vx[k], n.vy[k], n.vz[k]}; }
-
 SkewAxes link_axes(const SolverState& s, const RunControl::VelocityLink& link) {
   return link.skew < 0 ? SkewAxes{} : s.skew_axes[static_cast<std::size_t>(link.skew)];
 }
@@ -28,7 +26,7 @@ void link_velocities(const Model& m, SolverState& s) {
       const auto k = static_cast<std::size_t>(node);
       if (!s.domain.owns(k)) continue;
       sums[4 * l].add(n.mass[k]);
-      for (std::size_t d = 0; d < 3; ++d) sums[4 * l + 1 + d].add(n.mass[k] * dot(velocity(n, k), axes.axis[d]));
+      for (std::size_t d = 0; d < 3; ++d) sums[4 * l + 1 + d].add(n.mass[k] * dot(node_velocity(n, k), axes.axis[d]));
     }
   }
   s.reducer.sum(sums);
@@ -38,7 +36,7 @@ void link_velocities(const Model& m, SolverState& s) {
     const SkewAxes axes = link_axes(s, links[l]);
     for (std::int32_t node : links[l].nodes) {
       const auto k = static_cast<std::size_t>(node);
-      Vec3 v = velocity(n, k);
+      Vec3 v = node_velocity(n, k);
       for (std::size_t d = 0; d < 3; ++d)
         if (links[l].along[d]) v = with_component(v, axes.axis[d], sums[4 * l + 1 + d].value() / mass);
       n.vx[k] = v.x, n.vy[k] = v.y, n.vz[k] = v.z;

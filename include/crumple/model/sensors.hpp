@@ -25,6 +25,7 @@ struct SensorWindow {
   double on = 0.0;                                         // [T]
   double off = std::numeric_limits<double>::infinity();  // [T]
   bool holds(double t) const { return t >= on && t <= off; }
+  bool holds_during(double from, double to) const { return to >= on && from <= off; }  // any part of [from, to]
   double clock(double t) const { return t - on; }  // the function's time
 };
 
