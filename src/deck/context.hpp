@@ -23,6 +23,16 @@ struct RawElements {
   std::vector<double> thickness;       // shells: the card's own thickness [L], 0 = the part's or property's
 };
 
+// A //SUBMODEL block being read, and what it held once closed (docs/deck-format.md, "Submodels").
+struct SubmodelScope {
+  std::int64_t user_id = 0;  // shifted by the enclosing submodels' off_sub
+  SourceLocation where;      // the //SUBMODEL line
+  IdOffsets offsets;         // its own plus the enclosing submodels'
+  std::int64_t unit_id = 0;  // the /UNIT its cards read their values in (0: /BEGIN's input units)
+  std::size_t first_node = 0, end_node = 0;  // the nodes it defines (nested blocks included): [first, end)
+  std::vector<std::string> keywords;         // the keywords it holds (nested blocks included)
+};
+
 struct DeckContext {
   Model& model;
   DeckReport& report;
@@ -39,6 +49,8 @@ struct DeckContext {
   // /TRANSFORM cards in deck order: they act on the nodes' positions during resolution and leave nothing else in
   // the model (resolve_transforms.cpp).
   std::vector<Transform> transforms = {};
+  std::vector<SubmodelScope> open_submodels = {};              // innermost last
+  std::map<std::int64_t, SubmodelScope> submodels = {};        // closed ones, by id
 
   void warn(const SourceLocation& where, std::string_view keyword, std::string message) {
     report.warnings.push_back({where, std::string(keyword), std::move(message)});
@@ -90,6 +102,7 @@ void register_skew_keywords(KeywordTable& table);
 void register_sensor_keywords(KeywordTable& table);
 void register_box_keywords(KeywordTable& table);
 void register_transform_keywords(KeywordTable& table);
+void register_submodel_keywords(KeywordTable& table);
 void register_interface_keywords(KeywordTable& table);
 void register_output_keywords(KeywordTable& table);
 void register_engine_keywords(KeywordTable& table);
@@ -98,15 +111,18 @@ const KeywordTable& keyword_table();
 
 // Shared card pieces.
 std::string read_title(CardReader& reader);  // the title line that follows many keyword lines (may be blank)
-// Integer ids in 10-column fields, 10 per line, until the end of the card; blank fields are skipped.
-std::vector<std::int64_t> read_id_list(CardReader& reader, std::string_view name);
+// Integer ids of objects of `kind` in 10-column fields, 10 per line, until the end of the card; blank fields are
+// skipped.
+std::vector<std::int64_t> read_id_list(CardReader& reader, std::string_view name, IdKind kind);
+// The kind of object a keyword's path id names: the object the card defines, or on an element card its part.
+IdKind defined_kind(const Card& card);
 // The text quoted for an error message's "found" part.
 std::string in_quotes(std::string_view text);
 // `/KEYWORD/.../id[/unit_ID]`: the object id at path part `index`, then an optional unit id (read_unit_id). A word
 // where the
 // id belongs is another form of the keyword (/IMPVEL/FGEO, /RBODY/LAGMUL...), which Crumple does not read.
 std::int64_t card_id(CardReader& reader, std::size_t index);
-// The keyword's object id (path part `index`); must be positive.
+// The keyword's object id (path part `index`), shifted by the enclosing //SUBMODEL's offset; must be positive.
 std::int64_t object_id(CardReader& reader, std::size_t index);
 // The optional unit_ID at path part `index`: 0 or blank, the deck's input units; else the card's values are read in
 // that /UNIT system (an undefined one is an error).

@@ -192,7 +192,29 @@ void Line::fail_value(std::string_view name, std::string_view expected, std::str
   throw DeckError(where(), reader_->card().keyword, std::string(name), std::string(expected), std::string(found));
 }
 
+namespace {
+// A field name that says it holds an id: "grnd_ID", "node_ID1", "fct_IDp", "Slav_id", "RBID" (not "Isolid").
+bool names_an_id(std::string_view name) {
+  std::string lower;
+  for (char c : name) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return lower.find("_id") != std::string::npos || name.ends_with("ID");
+}
+}  // namespace
+
 std::int64_t Line::integer(int column, int width, std::string_view name, std::int64_t fallback) const {
+  const std::int64_t value = parsed_integer(column, width, name, fallback);
+  if (value > 0 && reader_->id_offsets() != nullptr && names_an_id(name))
+    fail(column, width, name,
+         "blank or 0 inside //SUBMODEL (Crumple does not shift this id by the block's offset, so it would name "
+         "another object)");
+  return value;
+}
+
+std::int64_t Line::id(int column, int width, std::string_view name, IdKind kind) const {
+  return reader_->shifted_id(parsed_integer(column, width, name, 0), kind);
+}
+
+std::int64_t Line::parsed_integer(int column, int width, std::string_view name, std::int64_t fallback) const {
   const std::string field = raw(column, width);
   if (trim(field).empty()) return fallback;
   if (auto v = parse_integer(field)) {

@@ -20,6 +20,7 @@ const KeywordTable& keyword_table() {
     register_sensor_keywords(t);
     register_box_keywords(t);
     register_transform_keywords(t);
+    register_submodel_keywords(t);
     register_interface_keywords(t);
     register_output_keywords(t);
     register_engine_keywords(t);
@@ -35,11 +36,11 @@ std::string read_title(CardReader& reader) {
   return valid_utf8(reader.next("the title").text(1, 100));
 }
 
-std::vector<std::int64_t> read_id_list(CardReader& reader, std::string_view name) {
+std::vector<std::int64_t> read_id_list(CardReader& reader, std::string_view name, IdKind kind) {
   std::vector<std::int64_t> ids;
   while (auto line = reader.next_nonblank()) {
     for (int column = 1; column <= 91; column += 10) {
-      const std::int64_t id = line->integer(column, 10, name, 0);
+      const std::int64_t id = line->id(column, 10, name, kind);
       if (id != 0) ids.push_back(id);
     }
     if (line->content().size() > 100 && !trim(std::string_view(line->content()).substr(100)).empty())
@@ -85,10 +86,21 @@ std::int64_t card_id(CardReader& reader, std::size_t index) {
   return id;
 }
 
+IdKind defined_kind(const Card& card) {
+  const std::string_view head = card.path.empty() ? std::string_view() : std::string_view(card.path[0]);
+  if (head == "PART") return IdKind::Part;
+  if (head == "MAT" || head == "FAIL" || head == "EOS") return IdKind::Material;
+  if (head == "PROP") return IdKind::Property;
+  for (std::string_view element : {"SHELL", "SH3N", "BRICK", "SPRING", "BEAM", "TRUSS", "QUAD", "TRIA", "TETRA4",
+                                   "TETRA10", "PENTA6", "SHEL16", "BRIC20"})
+    if (head == element) return IdKind::Part;  // an element card's path id is its part's
+  return IdKind::Other;
+}
+
 std::int64_t object_id(CardReader& reader, std::size_t index) {
   const std::int64_t id = reader.path_id(index, "id", true);
   if (id <= 0) reader.fail("id", "a positive id in the keyword line", fmt::format("{}", id));
-  return id;
+  return reader.shifted_id(id, defined_kind(reader.card()));
 }
 
 void read_unit_id(CardReader& reader, std::size_t index) {
@@ -96,7 +108,8 @@ void read_unit_id(CardReader& reader, std::size_t index) {
     reader.title_after(index);
     return;
   }
-  if (const std::int64_t id = reader.path_id(index, "unit_ID", false); id != 0) reader.use_local_units(id, "unit_ID");
+  if (const std::int64_t id = reader.path_id(index, "unit_ID", false); id != 0)
+    reader.use_local_units(reader.shifted_id(id, IdKind::Other), "unit_ID");
 }
 
 void refuse_narrow_layout(const CardReader& reader) {

@@ -140,6 +140,12 @@ void dispatch(const Card& card, const SourceText& text, DeckContext& context, Re
   try {
     CardReader reader(card, text, context.model.units);
     reader.set_local_units(&context.local_units);
+    if (!card.engine && !context.open_submodels.empty()) {  // a card of a //SUBMODEL block: its offsets and units
+      SubmodelScope& block = context.open_submodels.back();
+      reader.set_id_offsets(&block.offsets);
+      if (block.unit_id != 0) reader.use_local_units(block.unit_id, "unit_ID");
+      block.keywords.push_back(name);
+    }
     if (!card.engine && narrow_layout_version(context.model.input_version) && !spec->same_layout_in_every_version)
       reader.use_narrow_layout();
     spec->handler(reader, context);
@@ -242,10 +248,23 @@ Deck read_deck(const std::filesystem::path& starter, const ReadOptions& options)
     // The /UNIT systems right after /BEGIN (its units complete them), before any card that names one.
     if (!card.engine && is_card(card, {"BEGIN"}) && !units_read) {
       units_read = true;
-      for (const Card& unit : cards)
-        if (!unit.engine && !unit.path.empty() && unit.path[0] == "UNIT") dispatch(unit, text, context, record);
+      int depth = 0;  // of //SUBMODEL blocks
+      for (const Card& unit : cards) {
+        if (unit.engine || unit.path.empty()) continue;
+        if (unit.path.size() > 1 && unit.path[0].empty()) depth += unit.path[1] == "SUBMODEL" ? 1 : unit.path[1] == "ENDSUB" ? -1 : 0;
+        if (unit.path[0] != "UNIT") continue;
+        if (depth > 0)
+          record(DeckError(unit.where, unit.keyword, "",
+                           "/UNIT outside //SUBMODEL blocks (a /UNIT inside one is not supported by Crumple: define "
+                           "it before the block, with the id the block's offset gives it)",
+                           "a /UNIT inside a //SUBMODEL block"));
+        else
+          dispatch(unit, text, context, record);
+      }
     }
   }
+  for (const SubmodelScope& open : context.open_submodels)
+    record(DeckError(open.where, "//SUBMODEL", "", "//ENDSUB closing the block before /END", "no //ENDSUB"));
 
   const SourceLocation starter_file{text.files.front(), 0};
   if (!begin_first)

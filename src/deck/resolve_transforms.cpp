@@ -4,9 +4,12 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <optional>
+#include <span>
+#include <string_view>
 
 #include "crumple/core/geometry.hpp"
 #include "resolve.hpp"
@@ -166,6 +169,51 @@ void check_bricks(Resolver& r, const std::vector<std::int32_t>& moved_by) {
   }
 }
 
+
+// Cards whose values hold positions or directions that a transformation of their //SUBMODEL block would have to carry
+// too (the manual: a submodel's transformation is complete). Crumple moves the block's nodes only, so such a card in
+// a transformed block is refused: positions for any transformation, directions for all but a translation.
+constexpr std::array<std::string_view, 3> kBlockPositionCards = {"/SKEW/FIX", "/RWALL", "/FRAME"};
+constexpr std::array<std::string_view, 9> kBlockDirectionCards = {"/INIVEL", "/GRAV",  "/CLOAD", "/IMPVEL", "/IMPDISP",
+                                                                  "/BCS",    "/RBODY", "/ACCEL", "/TH/NODE"};
+
+bool starts_with_any(const std::string& keyword, std::span<const std::string_view> cards) {
+  return std::any_of(cards.begin(), cards.end(), [&](std::string_view c) { return keyword.starts_with(c); });
+}
+
+// The dense indices of the nodes a transformation moves: its group's, or its //SUBMODEL block's.
+std::optional<std::vector<std::int32_t>> moved_nodes(Resolver& r, const Transform& t) {
+  const std::string keyword = transform_keyword(t);
+  if ((t.group_id != 0) == (t.submodel_id != 0)) {
+    r.error(t.where, keyword, "grnd_ID", "a node group id or a sub_ID (one of them)",
+            t.group_id != 0 ? "both" : "neither");
+    return std::nullopt;
+  }
+  if (t.group_id != 0) {
+    const auto g = r.find(r.model.index.node_groups, t.group_id, t.where, keyword, "grnd_ID", "node group");
+    if (g < 0) return std::nullopt;
+    return r.model.node_groups[static_cast<std::size_t>(g)].nodes;
+  }
+  const auto block = r.context.submodels.find(t.submodel_id);
+  if (block == r.context.submodels.end()) {
+    r.error(t.where, keyword, "sub_ID", "the id of a //SUBMODEL block of the deck", fmt::format("{}", t.submodel_id));
+    return std::nullopt;
+  }
+  for (const std::string& card : block->second.keywords)
+    if (starts_with_any(card, kBlockPositionCards) ||
+        (t.kind != TransformKind::Translation && starts_with_any(card, kBlockDirectionCards))) {
+      r.error(t.where, keyword, "sub_ID",
+              "a block whose cards hold no positions or directions besides its nodes (Crumple moves only the nodes "
+              "of a transformed //SUBMODEL)",
+              fmt::format("{} in block {}", card, t.submodel_id));
+      return std::nullopt;
+    }
+  std::vector<std::int32_t> nodes;
+  for (std::size_t n = block->second.first_node; n < block->second.end_node; ++n)
+    nodes.push_back(static_cast<std::int32_t>(n));
+  return nodes;
+}
+
 }  // namespace
 
 void apply_transforms(Resolver& r) {
@@ -173,10 +221,10 @@ void apply_transforms(Resolver& r) {
   std::vector<std::int32_t> moved_by(m.nodes.size(), -1);  // the last transformation that moved each node
   for (std::size_t k = 0; k < r.context.transforms.size(); ++k) {
     const Transform& t = r.context.transforms[k];
-    const auto g = r.find(m.index.node_groups, t.group_id, t.where, transform_keyword(t), "grnd_ID", "node group");
+    const auto nodes = moved_nodes(r, t);
     const auto a = affine_of(r, t);
-    if (g < 0 || !a) continue;
-    for (std::int32_t n : m.node_groups[static_cast<std::size_t>(g)].nodes) {
+    if (!nodes || !a) continue;
+    for (std::int32_t n : *nodes) {
       const Vec3 p = (*a)(m.nodes.position(n));
       const auto i = static_cast<std::size_t>(n);
       m.nodes.x[i] = p.x, m.nodes.y[i] = p.y, m.nodes.z[i] = p.z;

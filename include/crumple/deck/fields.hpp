@@ -2,6 +2,7 @@
 // Cards and their fields. A card is one keyword line and the data lines that follow it up to the next keyword.
 // Starter data lines are fixed width (integers in 10 columns, reals in 20, on a 100-column line); engine data
 // lines are free format (fields separated by blanks). A blank field takes the card's default.
+#include <array>
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -38,6 +39,18 @@ std::vector<Card> split_cards(const SourceText& text, std::int32_t first_engine_
 
 class CardReader;
 
+// //SUBMODEL id offsets (docs/deck-format.md, "Submodels"): every id read inside a submodel, whether it defines an
+// object or refers to one, is shifted by the offset of its kind; offsets of nested submodels add up. A blank or 0
+// id stays "none", and a negative one keeps its meaning.
+enum class IdKind : std::uint8_t { Node, Element, Part, Material, Property, Submodel, Other };
+inline constexpr std::size_t kIdKinds = 7;
+struct IdOffsets {
+  std::array<std::int64_t, kIdKinds> by_kind{};
+  std::int64_t shifted(std::int64_t id, IdKind kind) const {
+    return id > 0 ? id + by_kind[static_cast<std::size_t>(kind)] : id;
+  }
+};
+
 // One data line of a card, with typed field access that reports errors with file, line, keyword and field.
 class Line {
  public:
@@ -46,6 +59,9 @@ class Line {
 
   // Fixed-width fields; `column` is 1-based.
   std::int64_t integer(int column, int width, std::string_view name, std::int64_t fallback = 0) const;
+  // An id of an object of `kind`, shifted by the enclosing //SUBMODEL's offset. Inside a submodel, integer() refuses
+  // a field whose name says it is an id, so that no id escapes its offset unread.
+  std::int64_t id(int column, int width, std::string_view name, IdKind kind) const;
   double real(int column, int width, std::string_view name, Dimension d, double fallback = 0.0) const;
   std::string text(int column, int width) const;  // trimmed
   std::string raw(int column, int width) const;   // as written, padded with blanks to `width`
@@ -76,6 +92,7 @@ class Line {
   std::string field_label(int column, int width, std::string_view name) const;
   // The columns a field given in the 2017 layout is read at: the same, or 4/5 of them in the narrow layout.
   std::pair<int, int> placed(int column, int width) const;
+  std::int64_t parsed_integer(int column, int width, std::string_view name, std::int64_t fallback) const;
   const CardReader* reader_;
   const SourceLine* source_;
   std::size_t index_;  // data line of the card (for the columns read)
@@ -95,6 +112,12 @@ class CardReader {
   // The card's values are read in /UNIT system `id`; an undefined one is an error naming the field.
   void use_local_units(std::int64_t id, std::string_view field);
   const SourceText& text() const { return *text_; }
+  // Inside a //SUBMODEL: the id offsets of its kinds (set by the reader before the handler runs), else null.
+  void set_id_offsets(const IdOffsets* offsets) { id_offsets_ = offsets; }
+  const IdOffsets* id_offsets() const { return id_offsets_; }
+  std::int64_t shifted_id(std::int64_t id, IdKind kind) const {
+    return id_offsets_ != nullptr ? id_offsets_->shifted(id, kind) : id;
+  }
 
   bool at_end() const { return next_ >= card_->lines.size(); }
   // True when at least one non-blank line remains.
@@ -135,6 +158,7 @@ class CardReader {
   const SourceText* text_;
   const UnitSystem* units_;
   const std::map<std::int64_t, UnitSystem>* local_units_ = nullptr;
+  const IdOffsets* id_offsets_ = nullptr;
   std::size_t next_ = 0;
   mutable std::vector<std::vector<bool>> read_columns_;  // per data line: the columns a field read
 };

@@ -18,7 +18,8 @@ struct Transform {
   std::int64_t user_id = 0;
   std::string title;
   TransformKind kind = TransformKind::Translation;
-  std::int64_t group_id = 0;  // grnd_ID: the nodes moved
+  std::int64_t group_id = 0;     // grnd_ID: the nodes moved
+  std::int64_t submodel_id = 0;  // sub_ID: or the nodes of this //SUBMODEL block (docs/deck-format.md, "Submodels")
   // Nodes that define the transformation (0: none, the points are used). TRA, ROT, SYM: node_ID1, node_ID2; SCA:
   // node_IDc in [0]; POSITION: node_ID1..6. Their positions are taken when the transformation is applied, after the
   // transformations before it in the deck.

@@ -19,7 +19,7 @@ Box begin_box(CardReader& reader, BoxShape shape) {
 }
 
 std::int64_t node_id(const Line& line, int column, std::string_view name) {
-  const std::int64_t id = line.integer(column, 10, name);
+  const std::int64_t id = line.id(column, 10, name, IdKind::Node);
   if (id < 0) line.fail(column, 10, name, "a node id, or blank for the point by coordinates");
   return id;
 }
@@ -70,7 +70,7 @@ void read_rectangle(CardReader& reader, DeckContext& context) {
   Box b = begin_box(reader, BoxShape::Rectangle);
   const Line line = reader.next("N1, N2, skew_ID");
   read_two_nodes(line, b);
-  b.skew_id = line.integer(21, 10, "skew_ID");
+  b.skew_id = line.id(21, 10, "skew_ID", IdKind::Other);
   if (b.skew_id < 0) line.fail(21, 10, "skew_ID", "a skew id, or blank for the global axes");
   read_points(reader, context, b);
   reader.finish();
@@ -103,7 +103,7 @@ void read_sphere(CardReader& reader, DeckContext& context) {
 // none of the negative ones (measured: the order does not matter).
 void read_combination(CardReader& reader, DeckContext& context) {
   Box b = begin_box(reader, BoxShape::Combination);
-  b.box_ids = read_id_list(reader, "box_ID");
+  b.box_ids = read_id_list(reader, "box_ID", IdKind::Other);
   if (std::none_of(b.box_ids.begin(), b.box_ids.end(), [](std::int64_t id) { return id > 0; }))
     reader.fail("box_ID", "at least one positive box id (with none, the box holds nothing)",
                 b.box_ids.empty() ? "no box id" : "only negative box ids");

@@ -239,7 +239,7 @@ void read_shfra(CardReader& reader, DeckContext& context) {
 void read_ams(CardReader& reader, DeckContext& context) {
   if (context.model.ams_selected) reader.fail("", "a single /AMS card", "a second one");
   if (const auto line = optional_line(reader, "grpart_ID")) {
-    const std::int64_t group = line->integer(1, 10, "grpart_ID");
+    const std::int64_t group = line->id(1, 10, "grpart_ID", IdKind::Other);
     if (group < 0) line->fail(1, 10, "grpart_ID", "a non-negative part group id (0 or blank: the whole model)");
     if (group != 0)
       context.unsupported(line->error(1, 10, "grpart_ID", default_only("selective mass scaling on a part group is")));

@@ -77,9 +77,9 @@ struct Type7Lines {
 };
 
 void read_flags(const Line& line, Type7Interface& i) {
-  i.secondary_group_id = line.integer(1, 10, "Slav_id");
+  i.secondary_group_id = line.id(1, 10, "Slav_id", IdKind::Other);
   if (i.secondary_group_id <= 0) line.fail(1, 10, "Slav_id", "a positive node group id (secondary nodes)");
-  i.main_surface_id = line.integer(11, 10, "Mast_id");
+  i.main_surface_id = line.id(11, 10, "Mast_id", IdKind::Other);
   if (i.main_surface_id <= 0) line.fail(11, 10, "Mast_id", "a positive surface id (main surface)");
   i.istf = flag(line, 21, "Istf", {0, 1, 2, 3, 4, 5, kDefaultCode}, "0 to 5, or 1000 (default)");
   i.ithe = flag(line, 31, "Ithe", {0, 1}, "0 or 1");
@@ -113,7 +113,7 @@ void read_stiffness_line(const Line& line, Type7Interface& i) {
 void read_curvature_line(const Line& line, Type7Interface& i) {
   for (int k = 0; k < 2; ++k) {
     const std::string name = fmt::format("node_ID{}", k + 1);
-    const std::int64_t id = line.integer(1 + 10 * k, 10, name);
+    const std::int64_t id = line.id(1 + 10 * k, 10, name, IdKind::Node);
     if (id < 0) line.fail(1 + 10 * k, 10, name, "a node id or blank");
     i.curvature_node_ids[static_cast<std::size_t>(k)] = id;
   }
@@ -156,10 +156,10 @@ void read_friction_line(const Line& line, Type7Interface& i) {
   if (i.ifiltr > 0 && i.xfreq == 0.0) line.fail(21, 20, "Xfreq", "a positive filter coefficient when Ifiltr > 0");
   if (i.ifiltr == 1 && i.xfreq > 1.0) line.fail(21, 20, "Xfreq", "a filter factor in (0, 1] when Ifiltr = 1");
   i.iform = flag(line, 41, "Iform", {0, 1, 2}, "0 (default), 1 (viscous) or 2 (stiffness)");
-  i.sensor_id = line.integer(51, 10, "sens_ID");
-  i.friction_function_id = line.integer(61, 10, "fct_IDf");
+  i.sensor_id = line.id(51, 10, "sens_ID", IdKind::Other);
+  i.friction_function_id = line.id(61, 10, "fct_IDf", IdKind::Other);
   i.ascale_f = line.real(71, 20, "AscaleF", dim::none);
-  i.friction_id = line.integer(91, 10, "fric_ID");
+  i.friction_id = line.id(91, 10, "fric_ID", IdKind::Other);
 }
 
 // C1..C5 when Ifric > 0, C6 on its own line when Ifric > 1 (the layout the Radioss reader uses).

@@ -27,14 +27,14 @@ Record begin_record(CardReader& reader, std::size_t id_index) {
 
 // An id that must be given (> 0).
 std::int64_t required_id(const Line& line, int column, std::string_view name, std::string_view what, int width = 10) {
-  const std::int64_t id = line.integer(column, width, name);
+  const std::int64_t id = line.id(column, width, name, IdKind::Other);
   if (id <= 0) line.fail(column, width, name, fmt::format("a positive {} id", what));
   return id;
 }
 
 // An id that may be blank or 0 (= none).
 std::int64_t optional_id(const Line& line, int column, std::string_view name, int width = 10) {
-  const std::int64_t id = line.integer(column, width, name);
+  const std::int64_t id = line.id(column, width, name, IdKind::Other);
   if (id < 0) line.fail(column, width, name, "a non-negative id (0 or blank: none)");
   return id;
 }

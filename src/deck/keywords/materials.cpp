@@ -211,7 +211,7 @@ void read_tabulated_curves(CardReader& reader, TabulatedHardening& tab, std::int
     for (std::size_t k = 0; k < 5 && tab.function_id.size() < n; ++k) {
       const int column = 1 + 10 * static_cast<int>(k);
       const std::string name = fmt::format("fct_ID{}", tab.function_id.size() + 1);
-      const std::int64_t id = ids.integer(column, 10, name);
+      const std::int64_t id = ids.id(column, 10, name, IdKind::Other);
       if (id <= 0) ids.fail(column, 10, name, "a positive function id");
       tab.function_id.push_back(id);
     }

@@ -10,7 +10,7 @@ void read_nodes(CardReader& reader, DeckContext& context) {
   Nodes& nodes = context.model.nodes;
   read_unit_id(reader, 1);
   while (auto line = reader.next_nonblank()) {
-    const std::int64_t id = line->integer(1, 10, "node_ID");
+    const std::int64_t id = line->id(1, 10, "node_ID", IdKind::Node);
     if (id <= 0) line->fail(1, 10, "node_ID", "a positive node id");
     nodes.user_id.push_back(id);
     nodes.x.push_back(line->real(11, 20, "X", dim::length));
@@ -27,11 +27,11 @@ void read_elements(CardReader& reader, DeckContext& context, ElementKind kind) {
   RawElements& raw = context.raw_elements[static_cast<int>(kind)];
   const int n = nodes_per_element(kind);
   while (auto line = reader.next_nonblank()) {
-    const std::int64_t id = line->integer(1, 10, "elem_ID");
+    const std::int64_t id = line->id(1, 10, "elem_ID", IdKind::Element);
     if (id <= 0) line->fail(1, 10, "elem_ID", "a positive element id");
     for (int k = 0; k < n; ++k) {
       const std::string name = fmt::format("node_ID{}", k + 1);
-      const std::int64_t node = line->integer(11 + 10 * k, 10, name);
+      const std::int64_t node = line->id(11 + 10 * k, 10, name, IdKind::Node);
       if (node <= 0) line->fail(11 + 10 * k, 10, name, "a positive node id");
       raw.node_ids.push_back(node);
     }
@@ -55,9 +55,9 @@ void read_part(CardReader& reader, DeckContext& context) {
   read_unit_id(reader, 2);
   part.title = read_title(reader);
   const Line line = reader.next("prop_ID, mat_ID, subset_ID");
-  part.property_id = line.integer(1, 10, "prop_ID");
-  part.material_id = line.integer(11, 10, "mat_ID");
-  part.subset_id = line.integer(21, 10, "subset_ID");
+  part.property_id = line.id(1, 10, "prop_ID", IdKind::Property);
+  part.material_id = line.id(11, 10, "mat_ID", IdKind::Material);
+  part.subset_id = line.id(21, 10, "subset_ID", IdKind::Other);
   if (part.property_id <= 0) line.fail(1, 10, "prop_ID", "a positive property id");
   if (part.material_id <= 0) line.fail(11, 10, "mat_ID", "a positive material id");
   // Thick (columns 31-50) is the part's virtual thickness: the reference keeps its shells' thickness and mass

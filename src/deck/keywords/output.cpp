@@ -118,22 +118,34 @@ void add_object(TimeHistoryRequest& th, const Line& line, std::int64_t id, std::
   if (name) th.object_names.push_back(std::move(*name));
 }
 
+// The kind of id a /TH card lists: nodes, elements and parts by their own kinds, every other object by off_def.
+IdKind object_id_kind(HistoryObject object) {
+  switch (object) {
+    case HistoryObject::Node: return IdKind::Node;
+    case HistoryObject::Part: return IdKind::Part;
+    case HistoryObject::Shell:
+    case HistoryObject::Sh3n:
+    case HistoryObject::Brick: return IdKind::Element;
+    default: return IdKind::Other;
+  }
+}
+
 void read_object_line(const Line& line, const HistoryCard& kind, TimeHistoryRequest& th, DeckContext& context) {
   if (kind.lines == ObjectLines::Ids) {
     check_width(line, "Obj_ID");
     for (int column = 1; column <= 91; column += 10) {
-      const std::int64_t id = line.integer(column, 10, "Obj_ID");
+      const std::int64_t id = line.id(column, 10, "Obj_ID", object_id_kind(th.object));
       if (id < 0) line.fail(column, 10, "Obj_ID", "a positive object id");
       if (id != 0) add_object(th, line, id, std::nullopt, context);
     }
     return;
   }
   check_width(line, "name");
-  const std::int64_t id = line.integer(1, 10, "Obj_ID");
+  const std::int64_t id = line.id(1, 10, "Obj_ID", object_id_kind(th.object));
   if (id <= 0) line.fail(1, 10, "Obj_ID", "a positive object id (one object per line)");
   std::int64_t skew = 0;
   if (kind.lines == ObjectLines::IdSkewName) {
-    skew = line.integer(11, 10, "skew_ID");
+    skew = line.id(11, 10, "skew_ID", IdKind::Other);
     if (skew < 0) line.fail(11, 10, "skew_ID", "a non-negative skew id (0 or blank: the global axes)");
     // A node's vectors can be written in a skew (SK-4); an element's stresses in a skew are not.
     if (skew != 0 && th.object != HistoryObject::Node)
@@ -178,14 +190,14 @@ void read_history(CardReader& reader, DeckContext& context, const HistoryCard& k
 void read_section_frame(const Line& line, Section& s) {
   for (int k = 0; k < 3; ++k) {
     const std::string name = fmt::format("node_ID{}", k + 1);
-    s.node_ids[k] = line.integer(1 + 10 * k, 10, name);
+    s.node_ids[k] = line.id(1 + 10 * k, 10, name, IdKind::Node);
     if (s.node_ids[k] < 0) line.fail(1 + 10 * k, 10, name, "a node id or blank");
   }
-  s.node_group_id = line.integer(31, 10, "grnod_ID");
+  s.node_group_id = line.id(31, 10, "grnod_ID", IdKind::Other);
   if (s.node_group_id < 0) line.fail(31, 10, "grnod_ID", "a node group id or blank");
   s.isave = static_cast<int>(line.integer(41, 10, "ISAVE"));
   if (s.isave != 0) line.fail(41, 10, "ISAVE", "0 (saving or imposing cut motions is not supported by Crumple)");
-  s.frame_id = line.integer(51, 10, "frame_ID");
+  s.frame_id = line.id(51, 10, "frame_ID", IdKind::Other);
   if (s.frame_id != 0) line.fail(51, 10, "frame_ID", "0 or blank (moving frames are not supported by Crumple)");
   s.dt = line.real(61, 20, "Dt", dim::time);
   s.alpha = line.real(81, 20, "alpha", dim::none);
@@ -207,11 +219,11 @@ void read_section_groups(const Line& line, Section& s) {
     const std::int64_t id = line.integer(f.column, 10, f.name);
     if (id != 0) line.fail(f.column, 10, f.name, fmt::format("0 or blank ({} not supported by Crumple)", f.missing));
   }
-  s.brick_group_id = line.integer(1, 10, "grbric_ID");
+  s.brick_group_id = line.id(1, 10, "grbric_ID", IdKind::Other);
   if (s.brick_group_id < 0) line.fail(1, 10, "grbric_ID", "a brick group id or blank");
-  s.shell_group_id = line.integer(21, 10, "grshel_ID");
+  s.shell_group_id = line.id(21, 10, "grshel_ID", IdKind::Other);
   if (s.shell_group_id < 0) line.fail(21, 10, "grshel_ID", "a shell group id or blank");
-  s.sh3n_group_id = line.integer(61, 10, "grtria_ID");
+  s.sh3n_group_id = line.id(61, 10, "grtria_ID", IdKind::Other);
   if (s.sh3n_group_id < 0) line.fail(61, 10, "grtria_ID", "a 3-node shell group id or blank");
   s.ninter = static_cast<int>(line.integer(71, 10, "Ninter"));
   if (s.ninter < 0 || s.ninter > 10) line.fail(71, 10, "Ninter", "a number of interfaces from 0 to 10");
@@ -225,7 +237,7 @@ void read_section_groups(const Line& line, Section& s) {
 void read_section_interfaces(const Line& line, Section& s) {
   for (int k = 0; k < 10; ++k) {
     const std::string name = fmt::format("int_ID{}", k + 1);
-    const std::int64_t id = line.integer(1 + 10 * k, 10, name);
+    const std::int64_t id = line.id(1 + 10 * k, 10, name, IdKind::Other);
     if (k < s.ninter && id <= 0)
       line.fail(1 + 10 * k, 10, name, fmt::format("a positive interface id (Ninter = {})", s.ninter));
     if (k >= s.ninter && id != 0)
@@ -263,9 +275,9 @@ void read_accelerometer(CardReader& reader, DeckContext& context) {
   a.user_id = card_id(reader, 1, true);
   a.title = read_title(reader);
   const Line line = reader.next("node_ID, skew_ID, Fcut");
-  a.node_id = line.integer(1, 10, "node_ID");
+  a.node_id = line.id(1, 10, "node_ID", IdKind::Node);
   if (a.node_id <= 0) line.fail(1, 10, "node_ID", "a positive node id");
-  a.skew_id = line.integer(11, 10, "skew_ID");
+  a.skew_id = line.id(11, 10, "skew_ID", IdKind::Other);
   if (a.skew_id < 0) line.fail(11, 10, "skew_ID", "a non-negative skew id (0 or blank: the global axes)");
   // Input versions 41 to 44 put Fcut in columns 27-42, after a 10-column gap.
   const Line cut = reader.narrow() ? line.as_written() : line;

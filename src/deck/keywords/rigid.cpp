@@ -12,8 +12,8 @@ namespace crumple::deck {
 namespace {
 
 
-std::int64_t optional_id(const Line& line, int column, std::string_view name) {
-  const std::int64_t id = line.integer(column, 10, name);
+std::int64_t optional_id(const Line& line, int column, std::string_view name, IdKind kind = IdKind::Other) {
+  const std::int64_t id = line.id(column, 10, name, kind);
   if (id < 0) line.fail(column, 10, name, "a non-negative id (0 or blank: none)");
   return id;
 }
@@ -42,7 +42,7 @@ RigidWallShape wall_shape(const CardReader& reader) {
 
 // Line 2: node_ID, Slide, grnod_ID1, grnod_ID2.
 void read_wall_nodes(const Line& line, RigidWall& w, DeckContext& context) {
-  w.node_id = optional_id(line, 1, "node_ID");
+  w.node_id = optional_id(line, 1, "node_ID", IdKind::Node);
   const std::int64_t slide = line.integer(11, 10, "Slide");
   if (slide < 0 || slide > 2) line.fail(11, 10, "Slide", "0 (sliding), 1 (tied) or 2 (sliding with friction)");
   w.slide = static_cast<WallSliding>(slide);
@@ -152,7 +152,7 @@ int read_flag(const Line& line, int column, std::string_view name, int zero_mean
 
 // Line 2: RBID, sensor_ID, skew_ID, Ispher, Mass, grnod_ID, Ikrem, ICoG, surf_ID.
 void read_body_definition(const Line& line, RigidBody& b) {
-  b.main_node_id = line.integer(1, 10, "RBID");
+  b.main_node_id = line.id(1, 10, "RBID", IdKind::Node);
   if (b.main_node_id <= 0) line.fail(1, 10, "RBID", "a positive main node id");
   b.sensor_id = optional_id(line, 11, "sensor_ID");
   b.skew_id = optional_id(line, 21, "skew_ID");
@@ -160,7 +160,7 @@ void read_body_definition(const Line& line, RigidBody& b) {
                        "1 (spherical inertia), 2 (computed, default) or 3 (from data); 0 or blank: 2");
   b.mass = line.real(41, 20, "Mass", dim::mass);
   if (b.mass < 0.0) line.fail(41, 20, "Mass", "a non-negative added mass");
-  b.node_group_id = line.integer(61, 10, "grnod_ID");
+  b.node_group_id = line.id(61, 10, "grnod_ID", IdKind::Other);
   if (b.node_group_id <= 0) line.fail(61, 10, "grnod_ID", "a positive node group id (the secondary nodes)");
   b.ikrem = read_flag(line, 71, "Ikrem", 0, 0, 1, "0 (secondary nodes removed from rigid walls) or 1 (kept)");
   b.icog = read_flag(line, 81, "ICoG", 1, 1, 4, "1, 2, 3 or 4 (0 or blank: 1)");

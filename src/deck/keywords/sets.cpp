@@ -6,8 +6,8 @@
 namespace crumple::deck {
 namespace {
 
-std::vector<std::int64_t> positive_ids(CardReader& reader, std::string_view name) {
-  std::vector<std::int64_t> ids = read_id_list(reader, name);
+std::vector<std::int64_t> positive_ids(CardReader& reader, std::string_view name, IdKind kind) {
+  std::vector<std::int64_t> ids = read_id_list(reader, name, kind);
   for (std::int64_t id : ids)
     if (id < 0) reader.fail(name, "positive ids (removing members with negative ids is not supported by Crumple)",
                             fmt::format("{}", id));
@@ -28,7 +28,7 @@ Group begin_group(CardReader& reader, SetSource source) {
 // The box groups' one box_ID (the manual's layout). The reference reads the first positive id of a longer list and
 // skips the rest, negative ids included, without a word (measured): a list is refused rather than cut.
 std::vector<std::int64_t> one_box_id(CardReader& reader) {
-  const std::vector<std::int64_t> ids = read_id_list(reader, "box_ID");
+  const std::vector<std::int64_t> ids = read_id_list(reader, "box_ID", IdKind::Other);
   if (ids.size() != 1)
     reader.fail("box_ID", "one box id (of a list, the reference would read only the first positive one)",
                 ids.empty() ? "none" : fmt::format("{} box ids", ids.size()));
@@ -37,9 +37,15 @@ std::vector<std::int64_t> one_box_id(CardReader& reader) {
   return ids;
 }
 
+// The kind of the ids a group lists: its members' own (nodes or elements), parts, or other sets.
+IdKind member_kind(SetSource source, IdKind own) {
+  return source == SetSource::Ids ? own : source == SetSource::Parts ? IdKind::Part : IdKind::Other;
+}
+
 void read_node_group(CardReader& reader, DeckContext& context, SetSource source, std::string_view item) {
   auto g = begin_group<NodeGroup>(reader, source);
-  g.items = source == SetSource::Boxes ? one_box_id(reader) : positive_ids(reader, item);
+  g.items = source == SetSource::Boxes ? one_box_id(reader)
+                                       : positive_ids(reader, item, member_kind(source, IdKind::Node));
   context.model.node_groups.push_back(std::move(g));
 }
 
@@ -48,7 +54,8 @@ void read_element_group(CardReader& reader, DeckContext& context, ElementKind ki
                         std::string_view item, bool any_node_in_box = false) {
   auto g = begin_group<ElementSet>(reader, source);
   g.kind = kind;
-  g.items = source == SetSource::Boxes ? one_box_id(reader) : positive_ids(reader, item);
+  g.items = source == SetSource::Boxes ? one_box_id(reader)
+                                       : positive_ids(reader, item, member_kind(source, IdKind::Element));
   g.any_node_in_box = any_node_in_box;
   Model& m = context.model;
   (kind == ElementKind::Shell4 ? m.shell_groups : kind == ElementKind::Shell3 ? m.sh3n_groups : m.brick_groups)
@@ -70,7 +77,7 @@ void read_surface_parts(CardReader& reader, DeckContext& context) {
   s.source = SetSource::Parts;
   s.title = read_title(reader);
   s.all_parts = all;
-  if (!all) s.parts = positive_ids(reader, "part_ID");
+  if (!all) s.parts = positive_ids(reader, "part_ID", IdKind::Part);
   reader.finish();
   context.model.surfaces.push_back(std::move(s));
 }
@@ -78,11 +85,11 @@ void read_surface_parts(CardReader& reader, DeckContext& context) {
 void read_surface_segments(CardReader& reader, DeckContext& context) {
   auto s = begin_group<Surface>(reader, SetSource::Ids);
   while (auto line = reader.next_nonblank()) {
-    line->integer(1, 10, "seg_ID");
+    line->id(1, 10, "seg_ID", IdKind::Other);  // a label
     std::array<std::int64_t, 4> nodes{};
     for (int k = 0; k < 4; ++k) {
       const std::string name = fmt::format("node_ID{}", k + 1);
-      nodes[static_cast<std::size_t>(k)] = line->integer(11 + 10 * k, 10, name);
+      nodes[static_cast<std::size_t>(k)] = line->id(11 + 10 * k, 10, name, IdKind::Node);
       if (nodes[static_cast<std::size_t>(k)] < 0 || (k < 3 && nodes[static_cast<std::size_t>(k)] == 0))
         line->fail(11 + 10 * k, 10, name, k < 3 ? "a positive node id" : "a positive node id or blank (triangle)");
     }
@@ -97,7 +104,7 @@ void read_surface_segments(CardReader& reader, DeckContext& context) {
 void read_surface_element_groups(CardReader& reader, DeckContext& context, ElementKind kind) {
   auto s = begin_group<Surface>(reader, SetSource::Groups);
   s.group_kind = kind;
-  s.element_groups = positive_ids(reader, kind == ElementKind::Shell4 ? "grshel_ID" : "grsh3n_ID");
+  s.element_groups = positive_ids(reader, kind == ElementKind::Shell4 ? "grshel_ID" : "grsh3n_ID", IdKind::Other);
   reader.finish();
   context.model.surfaces.push_back(std::move(s));
 }
@@ -108,7 +115,7 @@ void read_subset(CardReader& reader, DeckContext& context) {
   s.user_id = object_id(reader, 1);
   read_unit_id(reader, 2);
   s.title = read_title(reader);
-  s.children = positive_ids(reader, "subset_ID");
+  s.children = positive_ids(reader, "subset_ID", IdKind::Other);
   context.model.subsets.push_back(std::move(s));
 }
 

@@ -43,7 +43,7 @@ void read_moving_skew(CardReader& reader, DeckContext& context, bool mov2) {
   const Line line = reader.next(mov2 ? "node_ID1, node_ID2, node_ID3" : "node_ID1, node_ID2, node_ID3, Dir");
   constexpr const char* kNames[3] = {"node_ID1", "node_ID2", "node_ID3"};
   for (int k = 0; k < 3; ++k) {
-    s.node_ids[k] = line.integer(1 + 10 * k, 10, kNames[k]);
+    s.node_ids[k] = line.id(1 + 10 * k, 10, kNames[k], IdKind::Node);
     if (s.node_ids[k] <= 0) line.fail(1 + 10 * k, 10, kNames[k], "a positive node id");
   }
   s.first_axis = 2;

@@ -28,21 +28,23 @@ Transform begin_transform(CardReader& reader, TransformKind kind) {
   return t;
 }
 
+// grnd_ID: the node group moved; blank when sub_ID names a submodel instead (checked once both are read, in
+// resolve_transforms.cpp).
 void read_group(const Line& line, Transform& t) {
-  t.group_id = line.integer(1, 10, "grnd_ID");
-  if (t.group_id <= 0) line.fail(1, 10, "grnd_ID", "a node group id (the nodes transformed)");
+  t.group_id = line.id(1, 10, "grnd_ID", IdKind::Other);
+  if (t.group_id < 0) line.fail(1, 10, "grnd_ID", "a node group id (the nodes transformed)");
 }
 
 std::int64_t read_node(const Line& line, int column, std::string_view name) {
-  const std::int64_t id = line.integer(column, 10, name);
+  const std::int64_t id = line.id(column, 10, name, IdKind::Node);
   if (id < 0) line.fail(column, 10, name, "a node id, or blank");
   return id;
 }
 
-// sub_ID: a sub-model moved instead of a node group, which Crumple does not read.
-void read_submodel(const Line& line, int column) {
-  if (line.integer(column, 10, "sub_ID") != 0)
-    line.fail(column, 10, "sub_ID", "0 or blank (/TRANSFORM of a sub-model is not supported by Crumple)");
+// sub_ID: a //SUBMODEL block whose nodes are moved, instead of (or beside) a node group.
+void read_submodel(const Line& line, int column, Transform& t) {
+  t.submodel_id = line.id(column, 10, "sub_ID", IdKind::Submodel);
+  if (t.submodel_id < 0) line.fail(column, 10, "sub_ID", "a submodel id, or blank");
 }
 
 // node_ID1 and node_ID2 (TRA, ROT, SYM): both, or neither (the points or the vector are then used). The manual
@@ -70,7 +72,7 @@ void read_translation(CardReader& reader, DeckContext& context) {
   read_group(line, t);
   t.vector = read_point(line, 11, "X_translation", "Y_translation", "Z_translation", dim::length);
   read_two_nodes(line, t);
-  if (context.model.input_version >= 100) read_submodel(line, 91);
+  if (context.model.input_version >= 100) read_submodel(line, 91, t);
   if (context.model.input_version >= 2026 && !reader.at_end()) {
     const Line skew = reader.next("skew_ID");
     if (skew.integer(1, 10, "skew_ID") != 0)
@@ -90,7 +92,7 @@ void read_rotation(CardReader& reader, DeckContext& context) {
   read_group(first, t);
   t.points[0] = read_point(first, 11, "X_point_1", "Y_point_1", "Z_point_1", dim::length);
   read_two_nodes(first, t);
-  if (context.model.input_version >= 100) read_submodel(first, 91);
+  if (context.model.input_version >= 100) read_submodel(first, 91, t);
   const Line second = reader.next("X_point_2, Y_point_2, Z_point_2, Angle");
   t.points[1] = read_point(second, 11, "X_point_2", "Y_point_2", "Z_point_2", dim::length);
   t.angle = second.real(71, 20, "Angle", dim::none);
@@ -113,7 +115,7 @@ void read_scaling(CardReader& reader, DeckContext& context) {
     t.vector[k] = f == 0.0 ? 1.0 : f;
   }
   t.node_ids[0] = read_node(line, 71, "node_IDc");
-  if (context.model.input_version >= 2026) read_submodel(line, 91);
+  if (context.model.input_version >= 2026) read_submodel(line, 91, t);
   reader.finish();
   context.transforms.push_back(std::move(t));
 }
@@ -128,7 +130,7 @@ void read_symmetry(CardReader& reader, DeckContext& context) {
   read_group(first, t);
   t.points[0] = read_point(first, 11, "X_point_1", "Y_point_1", "Z_point_1", dim::length);
   read_two_nodes(first, t);
-  if (context.model.input_version >= 2026) read_submodel(first, 91);
+  if (context.model.input_version >= 2026) read_submodel(first, 91, t);
   if (!(t.node_ids[0] != 0 && reader.at_end())) {
     const Line second = reader.next("X_point_2, Y_point_2, Z_point_2");
     t.points[1] = read_point(second, 11, "X_point_2", "Y_point_2", "Z_point_2", dim::length);
@@ -148,7 +150,7 @@ void read_matrix(CardReader& reader, DeckContext& context) {
     if (i == 0) read_group(line, t);
     t.rows[static_cast<std::size_t>(i)] = read_point(line, 11, m + "1", m + "2", m + "3", dim::none);
     t.shift[static_cast<std::size_t>(i)] = line.real(71, 20, "T" + shift, dim::length);
-    if (i == 0) read_submodel(line, 91);
+    if (i == 0) read_submodel(line, 91, t);
   }
   reader.finish();
   context.transforms.push_back(std::move(t));
@@ -168,7 +170,7 @@ void read_position(CardReader& reader, DeckContext& context) {
   }
   if (given != 0 && given != 6)
     first.fail(11, 60, "node_ID1..node_ID6", "all six nodes, or none (the points are then used)");
-  read_submodel(first, 91);
+  read_submodel(first, 91, t);
   for (std::size_t k = 0; k < 6; ++k) {
     if (given == 6 && reader.at_end()) break;
     const std::string n = std::to_string(k + 1);
