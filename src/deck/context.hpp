@@ -33,6 +33,15 @@ struct SubmodelScope {
   std::vector<std::string> keywords;         // the keywords it holds (nested blocks included)
 };
 
+// /MOVE_FUNCT/fct_ID: the function's points become (Ascale_x x + Ashift_x, Fscale_y y + Fshift_y), in deck order
+// (resolve_definitions.cpp).
+struct FunctionMove {
+  SourceLocation where;
+  std::string keyword;
+  std::int64_t function_id = 0;
+  double scale_x = 1.0, scale_y = 1.0, shift_x = 0.0, shift_y = 0.0;
+};
+
 struct DeckContext {
   Model& model;
   DeckReport& report;
@@ -49,6 +58,7 @@ struct DeckContext {
   // /TRANSFORM cards in deck order: they act on the nodes' positions during resolution and leave nothing else in
   // the model (resolve_transforms.cpp).
   std::vector<Transform> transforms = {};
+  std::vector<FunctionMove> function_moves = {};
   std::vector<SubmodelScope> open_submodels = {};              // innermost last
   std::map<std::int64_t, SubmodelScope> submodels = {};        // closed ones, by id
 

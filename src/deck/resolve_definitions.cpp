@@ -278,6 +278,17 @@ void check_shell_formulations(Resolver& r) {
   }
 }
 
+// /MOVE_FUNCT, in deck order, before anything reads a function (docs/deck-format.md, "Functions").
+void move_functions(Resolver& r) {
+  for (const FunctionMove& move : r.context.function_moves) {
+    const auto k = r.find(r.model.index.functions, move.function_id, move.where, move.keyword, "fct_ID", "/FUNCT");
+    if (k < 0) continue;
+    Function& f = r.model.functions[static_cast<std::size_t>(k)];
+    for (double& x : f.x) x = move.scale_x * x + move.shift_x;
+    for (double& y : f.y) y = move.scale_y * y + move.shift_y;
+  }
+}
+
 }  // namespace
 
 void resolve_definitions(Resolver& r) {
@@ -293,6 +304,7 @@ void resolve_definitions(Resolver& r) {
     }
   }
   r.index(m.functions, m.index.functions, "/FUNCT");
+  move_functions(r);
   r.index(m.materials, m.index.materials, "/MAT");
   r.index(m.properties, m.index.properties, "/PROP");
   r.index(m.parts, m.index.parts, "/PART");

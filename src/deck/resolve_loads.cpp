@@ -87,6 +87,35 @@ void resolve_imposed(Resolver& r) {
   }
 }
 
+// /IMPDISP/FGEO: the function, sensor and nodes, each node's displacement to its final position, and the nodes another
+// kinematic condition drives (a rigid body's, a moving wall's), which one card cannot share.
+void resolve_final_geometries(Resolver& r) {
+  Model& m = r.model;
+  std::vector<char> driven(m.nodes.size(), 0);
+  for (const RigidBody& b : m.rigid_bodies) {
+    if (b.main_node >= 0) driven[static_cast<std::size_t>(b.main_node)] = 1;
+    if (b.node_group >= 0)
+      for (std::int32_t n : m.node_groups[static_cast<std::size_t>(b.node_group)].nodes) driven[static_cast<std::size_t>(n)] = 1;
+  }
+  for (const RigidWall& w : m.rigid_walls)
+    if (w.node >= 0) driven[static_cast<std::size_t>(w.node)] = 1;
+  for (FinalGeometry& g : m.final_geometries) {
+    const std::string kw = fmt::format("/IMPDISP/FGEO/{}", g.user_id);
+    g.function = r.find(m.index.functions, g.function_id, g.where, kw, "fct_ID", "function");
+    g.sensor = sensor_window(r, g.sensor_id, g.where, kw, "sens_ID");
+    for (std::size_t i = 0; i < g.node_ids.size(); ++i) {
+      const auto n = r.find(m.index.nodes, g.node_ids[i], g.node_where[i], kw, "node_ID", "node");
+      if (n < 0) continue;
+      if (driven[static_cast<std::size_t>(n)] != 0)
+        r.error(g.node_where[i], kw, "node_ID",
+                "a node that no rigid body or moving rigid wall carries (Crumple drives a node by one condition)",
+                fmt::format("node {}", g.node_ids[i]));
+      g.nodes.push_back(n);
+      g.displacements.push_back(g.final_positions[i] - m.nodes.position(n));
+    }
+  }
+}
+
 void resolve_initial_conditions(Resolver& r) {
   Model& m = r.model;
   const auto& ix = m.index;
@@ -320,6 +349,7 @@ void resolve_load_references(Resolver& r) {
   resolve_rigid_bodies(r);
   warn_main_nodes_in_elements(r);
   resolve_rigid_walls(r);
+  resolve_final_geometries(r);
   // Secondary sets need every group and body resolved; skip them when a reference is missing.
   if (!r.errors.empty()) return;
   for (RigidWall& w : m.rigid_walls) {

@@ -95,9 +95,10 @@ double Hardening::slope(double eps_p, double eps_rate) const {
       const auto& t = *tabulated;
       return interpolate_rates(t, eps_rate, [&](std::size_t k) {
         const Function& f = (*functions)[static_cast<std::size_t>(t.function[k])];
-        // Slope of the segment that holds eps_p (0 beyond the last point: constant extrapolation).
+        // Slope of the segment that holds eps_p: the last one beyond the last point (linear extrapolation, as
+        // Function's value).
         const auto& x = f.x;
-        if (x.size() < 2 || eps_p >= x.back()) return 0.0;
+        if (x.size() < 2) return 0.0;
         std::size_t i = 1;
         while (i < x.size() - 1 && x[i] <= eps_p) ++i;
         return t.scale[k] * (f.y[i] - f.y[i - 1]) / (x[i] - x[i - 1]);

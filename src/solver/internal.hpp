@@ -127,6 +127,10 @@ void switch_rigid_bodies_by_sensors(const Model& model, SolverState& state);
 // when the card does not act then (its time window).
 std::optional<double> imposed_velocity(const Model& model, const SolverState& state, const ImposedMotion& im,
                                        std::size_t k, double t, double dt_next);
+// The velocity that brings node `i` of an /IMPDISP/FGEO card to f(t^(n+1) / scale_x) times its displacement to the
+// final position at the end of the step (eq. L-9), or nullopt outside Tstart..Tstop or while its sensor is off.
+std::optional<Vec3> final_geometry_velocity(const Model& model, const SolverState& state, const FinalGeometry& g,
+                                            std::size_t i, double t, double dt_next);
 
 // Kinematic conditions on the half-step velocities v^(n+1/2): fixed dofs, imposed velocity and displacement at
 // time t_next = t^(n+1) (the position the step reaches), then rigid walls.

@@ -159,6 +159,21 @@ void impose_kinematics(const Model& m, SolverState& s, double t, double dt_next)
         set_node_vector(n.vx, n.vy, n.vz, k, with_component(node_vector(n.vx, n.vy, n.vz, k), e, *value));
     }
   }
+  for (const FinalGeometry& g : m.final_geometries)
+    for (std::size_t i = 0; i < g.nodes.size(); ++i)
+      if (const auto v = final_geometry_velocity(m, s, g, i, t, dt_next))
+        set_node_vector(n.vx, n.vy, n.vz, static_cast<std::size_t>(g.nodes[i]), *v);
+}
+
+std::optional<Vec3> final_geometry_velocity(const Model& m, const SolverState& s, const FinalGeometry& g, std::size_t i,
+                                            double t, double dt_next) {
+  const double t_next = t + dt_next;
+  if (t_next < g.t_start || t > g.t_stop || dt_next <= 0.0 || !g.sensor.holds_during(t, t_next)) return std::nullopt;
+  const double share = load_curve(m, g.function, g.scale_x, 1.0, g.sensor.clock(t_next));
+  const auto k = static_cast<std::size_t>(g.nodes[i]);
+  const NodalState& n = s.nodes;
+  const Vec3 u{n.x[k] - s.x0[k], n.y[k] - s.y0[k], n.z[k] - s.z0[k]};
+  return scaled(scaled(g.displacements[i], share) - u, 1.0 / dt_next);
 }
 
 std::optional<double> imposed_velocity(const Model& m, const SolverState& s, const ImposedMotion& im, std::size_t k,

@@ -81,6 +81,10 @@ void hold_constrained_dofs(const Model& m, SolverState& s, double dt_average, do
       if (const auto velocity = imposed_velocity(m, s, im, static_cast<std::size_t>(node), s.time, dt_next))
         hold(static_cast<std::size_t>(node), d, *velocity);
   }
+  for (const FinalGeometry& g : m.final_geometries)
+    for (std::size_t i = 0; i < g.nodes.size(); ++i)
+      if (const auto velocity = final_geometry_velocity(m, s, g, i, s.time, dt_next))
+        for (std::size_t d = 0; d < 3; ++d) hold(static_cast<std::size_t>(g.nodes[i]), d, (*velocity)[d]);
   for (const RigidWallState& w : s.walls)
     for (std::size_t i = 0; i < w.nodes.size(); ++i) {
       const auto k = static_cast<std::size_t>(w.nodes[i]);

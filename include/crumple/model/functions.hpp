@@ -15,7 +15,9 @@ struct Function {
   std::vector<double> x;  // abscissa, strictly increasing (time [T] for loads, strain for hardening...)
   std::vector<double> y;  // ordinate; its unit is given by the card that uses the function
 
-  // Linear interpolation, constant extrapolation beyond the end points.
+  // Linear interpolation, and linear extrapolation beyond the end points along the first or last segment, as the
+  // reference does for load curves and yield curves alike (docs/deck-format.md, "Functions"); a one-point function
+  // is a constant.
   double operator()(double at) const;
 };
 

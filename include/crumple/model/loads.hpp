@@ -61,6 +61,27 @@ struct ImposedMotion {
   double t_stop = 1e30;   // [T]; /CLOAD: always 1e30
 };
 
+// /IMPDISP/FGEO: each listed node is driven from its initial position X0_i to the final one X_i given on the card,
+// u_i(t) = f(t / scale_x) (X_i - X0_i) for Tstart <= t <= Tstop while its sensor is on; after Tstop the node is free
+// (eq. L-9). f should run from 0 to 1.
+struct FinalGeometry {
+  SourceLocation where;
+  std::int64_t user_id = 0;
+  std::string title;
+  std::int64_t function_id = 0;
+  std::int32_t function = -1;
+  std::int64_t sensor_id = 0;
+  SensorWindow sensor;
+  double scale_x = 1.0;  // abscissa (time) scale [T]
+  double t_start = 0.0;  // [T]
+  double t_stop = 1e30;  // [T]
+  std::vector<std::int64_t> node_ids;
+  std::vector<SourceLocation> node_where;
+  std::vector<Vec3> final_positions;  // [L]
+  std::vector<std::int32_t> nodes;    // dense (model build)
+  std::vector<Vec3> displacements;    // X_i - X0_i [L] (model build, on the positions after /TRANSFORM)
+};
+
 struct InitialVelocity {  // /INIVEL/TRA, /INIVEL/T+G (the same on Lagrangian nodes), /INIVEL/ROT
   SourceLocation where;
   std::int64_t user_id = 0;

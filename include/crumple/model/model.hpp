@@ -59,6 +59,7 @@ struct Model {
 
   std::vector<BoundaryCondition> boundary_conditions;
   std::vector<ImposedMotion> imposed;  // /IMPVEL, /IMPDISP, /CLOAD
+  std::vector<FinalGeometry> final_geometries;  // /IMPDISP/FGEO
   std::vector<InitialVelocity> initial_velocities;
   std::vector<Gravity> gravity;
   std::vector<AddedMass> added_masses;

@@ -183,6 +183,38 @@ void read_imposed_motion(CardReader& reader, DeckContext& context, ImposedKind k
   context.model.imposed.push_back(std::move(im));
 }
 
+// /IMPDISP/FGEO/id[/unit_ID]: title; fct_ID, part_ID, (blank), sens_ID; Ascale, (blank), Tstart, Tstop; then one line
+// per node: node_ID, X, Y, Z (its final position). part_ID names a spring part the reference builds between the nodes
+// and their final positions, which Crumple does not have.
+void read_final_geometry(CardReader& reader, DeckContext& context) {
+  auto g = begin_record<FinalGeometry>(reader, 2);
+  const Line line = reader.next("fct_ID, part_ID, sens_ID");
+  g.function_id = required_id(line, 1, "fct_ID", "function");
+  if (line.id(11, 10, "part_ID", IdKind::Part) != 0)
+    context.unsupported(line.error(11, 10, "part_ID", default_only("a spring part between the nodes and their "
+                                                                   "final positions is")));
+  if (line.integer(21, 10, "(unused)") != 0) line.fail(21, 10, "(unused)", "blank or 0 in columns 21-30");
+  g.sensor_id = optional_id(line, 31, "sens_ID");
+  const Line times = reader.next("Ascale, Tstart, Tstop");
+  g.scale_x = scale_or_one(reader, times, 1, "Ascale", dim::time);
+  if (g.scale_x < 0.0) times.fail(1, 20, "Ascale", "a positive time scale (0 or blank: 1)");
+  if (times.real(21, 20, "(unused)", dim::none) != 0.0) times.fail(21, 20, "(unused)", "blank or 0 in columns 21-40");
+  g.t_start = times.real(41, 20, "Tstart", dim::time);
+  const double stop = times.real(61, 20, "Tstop", dim::time);
+  g.t_stop = stop == 0.0 ? kNever : stop;
+  if (g.t_stop < g.t_start) times.fail(61, 20, "Tstop", "a stop time not before Tstart (0 or blank: never)");
+  while (auto node = reader.next_nonblank()) {
+    const std::int64_t id = node->id(1, 10, "node_ID", IdKind::Node);
+    if (id <= 0) node->fail(1, 10, "node_ID", "a positive node id");
+    g.node_ids.push_back(id);
+    g.node_where.push_back(node->where());
+    g.final_positions.push_back({node->real(11, 20, "X", dim::length), node->real(31, 20, "Y", dim::length),
+                                 node->real(51, 20, "Z", dim::length)});
+  }
+  if (g.node_ids.empty()) reader.fail("node_ID", "at least one node and its final position", "none");
+  context.model.final_geometries.push_back(std::move(g));
+}
+
 void read_concentrated_load(CardReader& reader, DeckContext& context) {
   auto load = begin_record<ImposedMotion>(reader, 1);
   load.kind = ImposedKind::Force;
@@ -300,6 +332,7 @@ void register_load_keywords(KeywordTable& table) {
                    [](CardReader& r, DeckContext& c) { read_imposed_motion(r, c, ImposedKind::Velocity); }});
   table.push_back({"/IMPDISP", DeckPart::Starter,
                    [](CardReader& r, DeckContext& c) { read_imposed_motion(r, c, ImposedKind::Displacement); }});
+  table.push_back({"/IMPDISP/FGEO", DeckPart::Starter, read_final_geometry});
   table.push_back({"/CLOAD", DeckPart::Starter, read_concentrated_load});
   // /INIVEL is registered whole so that other types get a clear "not supported" rather than "unknown keyword".
   table.push_back({"/INIVEL", DeckPart::Starter, read_initial_velocity});
