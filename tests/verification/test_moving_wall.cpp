@@ -221,5 +221,50 @@ TEST(MovingWall, HoldsARigidBodyThroughItsMainNode) {
               wall_vz, worst_momentum, run.summary.energy.error_percent);
 }
 
+// A light moving wall (1e-10 kg) with two free plates behind its plane (0.5 mm inside it), one moving deeper (-z), the
+// other out (+z), at 1 m/s. The first pushes the wall along; the second is left alone (RW-1). Held, its nodes carried
+// the wall's own velocity, and the exchange with so light a wall drove it to 1e5 m/s: 193 J of kinetic energy out of
+// 7.85e-4 J, with an energy error of 0 % (measured before the fix; the same mechanism threw the light wall of the QA
+// deck SUBMODEL/TRANSF). The reference (RWI, the same scene in kg mm ms) stops the first plate and lets the second go:
+// 3.925e-4 J. Crumple keeps the momentum of the first plate, which the wall carries on: 7.85e-4 J, no energy made.
+TEST(MovingWall, ALightWallIsNotDraggedByNodesLeavingIt) {
+  const double a = 0.005;  // shell size
+  std::vector<NodeRow> nodes;
+  std::vector<ShellRow> shells;
+  for (long long offset : {0LL, 100LL})
+    for (int j = 0; j <= 2; ++j)
+      for (int i = 0; i <= 2; ++i) nodes.push_back({offset + 1 + i + 3 * j, (offset == 0 ? 0.0 : 0.02) + a * i, a * j, 0.0});
+  for (long long offset : {0LL, 100LL})
+    for (int j = 0; j < 2; ++j)
+      for (int i = 0; i < 2; ++i) {
+        const long long n1 = offset + 1 + i + 3 * j;
+        shells.push_back({offset + 1 + i + 2 * j, n1, n1 + 1, n1 + 4, n1 + 3});
+      }
+  std::vector<long long> first, second;
+  for (long long n = 1; n <= 9; ++n) first.push_back(n), second.push_back(100 + n);
+  std::vector<long long> both = first;
+  both.insert(both.end(), second.begin(), second.end());
+  WallCard w;
+  w.node = 1000, w.group = 1, w.mass = 1e-10;
+  w.m1 = {0.005, 0.005, 0.0015};  // normal +z from M = node 1000 at z = 0.5 mm
+  const std::string starter = node_cards(nodes) + shell_cards(1, shells) + part_card() + shell_property(kThick, 3) +
+                              elastic_material(7850.0, kE, 0.3) + node_cards({{1000, 0.005, 0.005, 0.0005}}) +
+                              node_group(1, both) + node_group(2, first) + node_group(3, second) +
+                              initial_velocity(1, 0.0, 0.0, -1.0, 2) + initial_velocity(2, 0.0, 0.0, 1.0, 3) +
+                              moving_wall(1, w);
+  double initial = -1.0, largest = 0.0, wall_speed = 0.0;
+  test::TempDir dir;
+  const RunResult run = run_deck(dir, starter, 2e-3, 1e-5, [&](const Model& m, const SolverState& s) {
+    const double e = s.energy.internal + s.energy.kinetic_translational + s.energy.kinetic_rotational;
+    if (initial < 0.0) initial = e;
+    largest = std::max(largest, e);
+    wall_speed = std::max(wall_speed, std::abs(s.nodes.vz[node_index(m, 1000)]));
+  });
+  ASSERT_EQ(run.summary.status, RunStatus::Normal) << run.summary.message;
+  EXPECT_NEAR(initial, 7.85e-4, 1e-9);
+  EXPECT_LT(largest, initial * (1.0 + 1e-9)) << "energy out of nothing";
+  EXPECT_LT(wall_speed, 1.0 + 1e-9) << "the wall moves no faster than the plate that pushes it";
+}
+
 }  // namespace
 }  // namespace crumple::verification
