@@ -102,6 +102,11 @@ void print_check_report(const Deck& deck, std::ostream& out) {
   fmt::print(out, "  node groups           {}\n", m.node_groups.size());
   fmt::print(out, "  shell groups          {}\n", m.shell_groups.size());
   fmt::print(out, "  surfaces              {}\n", m.surfaces.size());
+  if (!m.lines.empty()) {
+    std::size_t segments = 0;
+    for (const LineSet& l : m.lines) segments += l.segments.size();
+    fmt::print(out, "  lines                 {} ({} segments)\n", m.lines.size(), segments);
+  }
   fmt::print(out, "  subsets               {}\n", m.subsets.size());
   fmt::print(out, "  interfaces            {}\n", m.type7_interfaces.size());
   fmt::print(out, "  rigid walls           {}\n", m.rigid_walls.size());

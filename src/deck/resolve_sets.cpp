@@ -331,6 +331,29 @@ void surface_from_element_groups(Resolver& r, Surface& s) {
   }
 }
 
+// A line's segments from its surfaces' edges (docs/deck-format.md, "Lines"): each edge once, in the order first met;
+// for /LINE/EDGE only the edges one segment alone has.
+void resolve_line(Resolver& r, LineSet& l) {
+  Model& m = r.model;
+  const std::string keyword = fmt::format("/LINE/{}/{}", l.source == LineSource::SurfaceEdges ? "SURF" : "EDGE", l.user_id);
+  std::map<std::pair<std::int32_t, std::int32_t>, int> uses;
+  std::vector<std::pair<std::int32_t, std::int32_t>> order;
+  for (std::int64_t id : l.surfaces) {
+    const auto k = r.find(m.index.surfaces, id, l.where, keyword, "surf_ID", "surface");
+    if (k < 0) continue;
+    for (const Segment& seg : m.surfaces[static_cast<std::size_t>(k)].segments) {
+      const int corners = seg.nodes[3] == seg.nodes[2] || seg.nodes[3] < 0 ? 3 : 4;
+      for (int c = 0; c < corners; ++c) {
+        const std::int32_t a = seg.nodes[static_cast<std::size_t>(c)], b = seg.nodes[static_cast<std::size_t>((c + 1) % corners)];
+        const auto key = std::minmax(a, b);
+        if (uses[key]++ == 0) order.push_back(key);
+      }
+    }
+  }
+  for (const auto& edge : order)
+    if (l.source == LineSource::SurfaceEdges || uses[edge] == 1) l.segments.push_back({edge.first, edge.second});
+}
+
 }  // namespace
 
 void resolve_sets(Resolver& r) {
@@ -350,6 +373,8 @@ void resolve_sets(Resolver& r) {
     else if (s.source == SetSource::Groups) surface_from_element_groups(r, s);
     else surface_from_segments(r, s);
   }
+  r.index(m.lines, m.index.lines, "/LINE");
+  for (LineSet& l : m.lines) resolve_line(r, l);
   std::vector<int> state(m.node_groups.size(), 0);
   for (std::size_t g = 0; g < m.node_groups.size(); ++g) resolve_node_group(r, g, state);
   for (const Subset& s : m.subsets)

@@ -52,6 +52,7 @@ struct Model {
   std::vector<ElementSet> sh3n_groups;    // /GRSH3N
   std::vector<ElementSet> brick_groups;   // /GRBRIC
   std::vector<Surface> surfaces;
+  std::vector<LineSet> lines;  // /LINE/SURF, /LINE/EDGE
   std::vector<Subset> subsets;
   std::vector<Skew> skews;  // /SKEW/FIX, /SKEW/MOV, /SKEW/MOV2
   std::vector<Sensor> sensors;  // /SENSOR/TIME
@@ -85,7 +86,7 @@ struct Model {
 
   struct Index {
     IdMap nodes, parts, properties, materials, functions, node_groups, shell_groups, sh3n_groups, brick_groups,
-        surfaces, subsets, skews, sensors, boxes, rigid_walls, rigid_bodies, interfaces, sections, accelerometers;
+        surfaces, lines, subsets, skews, sensors, boxes, rigid_walls, rigid_bodies, interfaces, sections, accelerometers;
     std::array<IdMap, kElementKinds> elements;
   } index;
 

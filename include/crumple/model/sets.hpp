@@ -69,6 +69,19 @@ struct Surface {  // /SURF/PART, /SURF/SEG, /SURF/GRSHEL, /SURF/GRSH3N
   std::vector<Segment> segments;                      // model build
 };
 
+// A line: a set of 2-node segments. /LINE/SURF: every edge of its surfaces' segments, once; /LINE/EDGE: their free
+// edges, those of one segment only (measured on the reference: docs/deck-format.md, "Lines").
+enum class LineSource : std::uint8_t { SurfaceEdges, SurfaceFreeEdges };
+
+struct LineSet {  // /LINE/SURF, /LINE/EDGE
+  SourceLocation where;
+  std::int64_t user_id = 0;
+  std::string title;
+  LineSource source = LineSource::SurfaceEdges;
+  std::vector<std::int64_t> surfaces;                  // surface user ids
+  std::vector<std::array<std::int32_t, 2>> segments;  // dense node indices (model build)
+};
+
 struct Subset {  // /SUBSET
   SourceLocation where;
   std::int64_t user_id = 0;

@@ -1,4 +1,4 @@
-// Groups and surfaces: /GRNOD, /GRSHEL, /GRSH3N, /GRBRIC, /SURF, /SUBSET (docs/deck-format.md).
+// Groups, surfaces and lines: /GRNOD, /GRSHEL, /GRSH3N, /GRBRIC, /SURF, /LINE, /SUBSET (docs/deck-format.md).
 #include <fmt/format.h>
 
 #include "../context.hpp"
@@ -109,6 +109,19 @@ void read_surface_element_groups(CardReader& reader, DeckContext& context, Eleme
   context.model.surfaces.push_back(std::move(s));
 }
 
+// /LINE/SURF/line_ID and /LINE/EDGE/line_ID: title; surface ids, ten a line.
+void read_line_of_surfaces(CardReader& reader, DeckContext& context, LineSource source) {
+  LineSet l;
+  l.where = reader.card().where;
+  l.user_id = object_id(reader, 2);
+  read_unit_id(reader, 3);
+  l.source = source;
+  l.title = read_title(reader);
+  l.surfaces = positive_ids(reader, "surf_ID", IdKind::Other);
+  if (l.surfaces.empty()) reader.fail("surf_ID", "at least one surface id", "none");
+  context.model.lines.push_back(std::move(l));
+}
+
 void read_subset(CardReader& reader, DeckContext& context) {
   Subset s;
   s.where = reader.card().where;
@@ -158,6 +171,10 @@ void register_set_keywords(KeywordTable& table) {
   table.push_back({"/SURF/GRSH3N", DeckPart::Starter,
                    [](CardReader& r, DeckContext& c) { read_surface_element_groups(r, c, K::Shell3); }});
   table.push_back({"/SURF/SEG", DeckPart::Starter, read_surface_segments});
+  table.push_back({"/LINE/SURF", DeckPart::Starter,
+                   [](CardReader& r, DeckContext& c) { read_line_of_surfaces(r, c, LineSource::SurfaceEdges); }});
+  table.push_back({"/LINE/EDGE", DeckPart::Starter,
+                   [](CardReader& r, DeckContext& c) { read_line_of_surfaces(r, c, LineSource::SurfaceFreeEdges); }});
   table.push_back({"/SUBSET", DeckPart::Starter, read_subset});
 }
 
