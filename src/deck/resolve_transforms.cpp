@@ -147,26 +147,44 @@ std::optional<Affine> affine_of(Resolver& r, const Transform& t) {
   return std::nullopt;
 }
 
-// A mirror (SYM, or a MATRIX of determinant -1) turns bricks inside out. The reference accepts such a brick (measured:
-// a unit cube mirrored by /TRANSFORM/SYM keeps its mass, no message); Crumple's brick needs a positive volume.
-void check_bricks(Resolver& r, const std::vector<std::int32_t>& moved_by) {
-  const Model& m = r.model;
-  const ElementTable& bricks = m.elements[static_cast<int>(ElementKind::Brick8)];
+// A mirror (SYM, or a MATRIX of determinant -1) turns bricks inside out. The reference reads such a brick as the same
+// brick (measured: a cube compressed after /TRANSFORM/SYM gives the energies and the cycles of the cube as written, to
+// the last digit): Crumple renumbers it, its faces 1-2-3-4 and 5-6-7-8 swapped, which is the same brick the right way
+// out, and turns the surface segments it owns to face out again. A brick still inside out is an error.
+void renumber_mirrored_bricks(Resolver& r, const std::vector<std::int32_t>& moved_by) {
+  Model& m = r.model;
+  ElementTable& bricks = m.elements[static_cast<int>(ElementKind::Brick8)];
+  std::vector<char> renumbered(bricks.size(), 0);
+  std::vector<long long> count(r.context.transforms.size(), 0);
   for (std::size_t e = 0; e < bricks.size(); ++e) {
-    const std::int32_t* n = bricks.nodes_of(e);
+    std::int32_t* n = bricks.connectivity.data() + 8 * e;
     std::int32_t last = -1;
-    std::array<Vec3, 8> p;
-    for (std::size_t a = 0; a < 8; ++a) {
-      p[a] = m.nodes.position(n[a]);
-      last = std::max(last, moved_by[static_cast<std::size_t>(n[a])]);
-    }
-    if (last < 0 || geometry::brick_volume(p) > 0.0) continue;
+    for (std::size_t a = 0; a < 8; ++a) last = std::max(last, moved_by[static_cast<std::size_t>(n[a])]);
+    if (last < 0 || geometry::brick_volume(m.nodes.x, m.nodes.y, m.nodes.z, n) > 0.0) continue;
+    std::swap_ranges(n, n + 4, n + 4);
+    const double volume = geometry::brick_volume(m.nodes.x, m.nodes.y, m.nodes.z, n);
     const Transform& t = r.context.transforms[static_cast<std::size_t>(last)];
-    r.error(t.where, transform_keyword(t), "grnd_ID",
-            "transformed bricks of positive volume (a mirror turns a brick inside out: Crumple does not renumber it)",
-            fmt::format("BRICK {} of volume {:.6g} after it", bricks.user_id[e], geometry::brick_volume(p)));
-    return;
+    if (!(volume > 0.0)) {
+      r.error(t.where, transform_keyword(t), "grnd_ID", "transformed bricks of positive volume",
+              fmt::format("BRICK {} of volume {:.6g} after it, renumbered or not", bricks.user_id[e], volume));
+      return;
+    }
+    renumbered[e] = 1;
+    ++count[static_cast<std::size_t>(last)];
   }
+  for (Surface& s : m.surfaces)
+    for (Segment& seg : s.segments)
+      if (seg.owner.kind == ElementKind::Brick8 && seg.owner.index >= 0 &&
+          renumbered[static_cast<std::size_t>(seg.owner.index)] != 0)
+        seg.nodes[3] == seg.nodes[2] ? std::swap(seg.nodes[0], seg.nodes[1]) : std::swap(seg.nodes[1], seg.nodes[3]);
+  for (std::size_t k = 0; k < count.size(); ++k)
+    if (count[k] > 0) {
+      const Transform& t = r.context.transforms[k];
+      r.context.warn(t.where, transform_keyword(t),
+                     fmt::format("{} bricks it turned inside out (a mirror) are renumbered, faces 1-4 and 5-8 swapped: "
+                                 "the same bricks the right way out, as the reference reads them",
+                                 count[k]));
+    }
 }
 
 
@@ -231,7 +249,7 @@ void apply_transforms(Resolver& r) {
       moved_by[i] = static_cast<std::int32_t>(k);
     }
   }
-  if (r.errors.empty()) check_bricks(r, moved_by);
+  if (r.errors.empty()) renumber_mirrored_bricks(r, moved_by);
 }
 
 }  // namespace crumple::deck

@@ -5,6 +5,7 @@
 // through /TRANSFORM/TRA cards from its nodes to a node at the origin (their printed translation vectors).
 #include <gtest/gtest.h>
 
+#include "crumple/core/geometry.hpp"
 #include "deck_files.hpp"
 
 using namespace crumple;
@@ -234,7 +235,9 @@ TEST(Transforms, InputVersions) {
 }
 
 // A mirror turns bricks inside out: refused (the reference accepts it silently).
-TEST(Transforms, MirroredBrickRefused) {
+// A mirrored brick is renumbered, faces 1-4 and 5-8 swapped (the reference reads it as the same brick: a cube
+// compressed after /TRANSFORM/SYM gives the listing of the cube as written, to the last digit, MBA and MBB).
+TEST(Transforms, MirroredBrickRenumbered) {
   std::string s = test::begin_card() + "/NODE\n";
   const int corners[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
   for (int k = 0; k < 8; ++k) s += I(k + 1) + R(corners[k][0]) + R(corners[k][1]) + R(corners[k][2]) + "\n";
@@ -243,5 +246,13 @@ TEST(Transforms, MirroredBrickRefused) {
   s += "/MAT/ELAST/1\nsteel\n" + R(7800.0) + "\n" + R(2.1e11) + R(0.3) + "\n";
   s += "/GRNOD/NODE/1\nall\n" + I(1) + I(2) + I(3) + I(4) + I(5) + I(6) + I(7) + I(8) + "\n";
   s += card("SYM", 1, I(1) + R(2) + R(0) + R(0) + "\n" + points(3, 0, 0)) + "/END\n";
-  EXPECT_NE(error_of(s).find("BRICK 1 of volume -1"), std::string::npos) << error_of(s);
+  EXPECT_EQ(error_of(s), "");
+  const Deck deck = read(s);
+  const std::int32_t* n = deck.model.elements[static_cast<int>(ElementKind::Brick8)].nodes_of(0);
+  EXPECT_EQ(deck.model.nodes.user_id[static_cast<std::size_t>(n[0])], 5);  // 5 6 7 8 1 2 3 4
+  EXPECT_EQ(deck.model.nodes.user_id[static_cast<std::size_t>(n[4])], 1);
+  EXPECT_NEAR(geometry::brick_volume(deck.model.nodes.x, deck.model.nodes.y, deck.model.nodes.z, n), 1.0, 1e-12);
+  bool warned = false;
+  for (const auto& w : deck.report.warnings) warned = warned || w.message.find("renumbered") != std::string::npos;
+  EXPECT_TRUE(warned);
 }
