@@ -105,6 +105,16 @@ TEST(LoadKeywords, BcsWithoutFixedDofWarns) {
   EXPECT_NE(warnings_of(dir, bcs("   000 000")).find("no degree of freedom fixed"), std::string::npos);
 }
 
+// An imposed velocity on a dof that a /BCS fixes: the imposed motion wins, and the warning says what the reference's
+// listing makes of it (a quarter of the kinetic energy, measured; resolve_loads.cpp). A free dof says nothing.
+TEST(LoadKeywords, ImposedMotionOnAFixedDofIsNamed) {
+  test::TempDir dir;
+  const std::string velocity = imposed("/IMPVEL/2", "Z", R(0.0) + R(1.0));
+  const std::string w = warnings_of(dir, bcs("   001") + velocity);
+  EXPECT_NE(w.find("/IMPVEL/2: 6 of its nodes have this dof fixed by /BCS/1 too"), std::string::npos) << w;
+  EXPECT_EQ(warnings_of(dir, bcs("   110") + velocity).find("fixed by /BCS"), std::string::npos);
+}
+
 TEST(LoadKeywords, DuplicateIdsAreErrors) {
   test::TempDir dir;
   const std::string e = error_of(dir, bcs("   111") + bcs("   111"));
