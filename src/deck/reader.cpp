@@ -251,7 +251,8 @@ Deck read_deck(const std::filesystem::path& starter, const ReadOptions& options)
       int depth = 0;  // of //SUBMODEL blocks
       for (const Card& unit : cards) {
         if (unit.engine || unit.path.empty()) continue;
-        if (unit.path.size() > 1 && unit.path[0].empty()) depth += unit.path[1] == "SUBMODEL" ? 1 : unit.path[1] == "ENDSUB" ? -1 : 0;
+        if (unit.path.size() > 1 && unit.path[0].empty())
+          depth += unit.path[1] == "SUBMODEL" ? 1 : unit.path[1] == "ENDSUB" ? -1 : 0;
         if (unit.path[0] != "UNIT") continue;
         if (depth > 0)
           record(DeckError(unit.where, unit.keyword, "",

@@ -122,7 +122,8 @@ void resolve_final_geometries(Resolver& r) {
   for (const RigidBody& b : m.rigid_bodies) {
     if (b.main_node >= 0) driven[static_cast<std::size_t>(b.main_node)] = 1;
     if (b.node_group >= 0)
-      for (std::int32_t n : m.node_groups[static_cast<std::size_t>(b.node_group)].nodes) driven[static_cast<std::size_t>(n)] = 1;
+      for (std::int32_t n : m.node_groups[static_cast<std::size_t>(b.node_group)].nodes)
+        driven[static_cast<std::size_t>(n)] = 1;
   }
   for (const RigidWall& w : m.rigid_walls)
     if (w.node >= 0) driven[static_cast<std::size_t>(w.node)] = 1;

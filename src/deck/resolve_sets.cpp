@@ -335,7 +335,8 @@ void surface_from_element_groups(Resolver& r, Surface& s) {
 // for /LINE/EDGE only the edges one segment alone has.
 void resolve_line(Resolver& r, LineSet& l) {
   Model& m = r.model;
-  const std::string keyword = fmt::format("/LINE/{}/{}", l.source == LineSource::SurfaceEdges ? "SURF" : "EDGE", l.user_id);
+  const std::string keyword =
+      fmt::format("/LINE/{}/{}", l.source == LineSource::SurfaceEdges ? "SURF" : "EDGE", l.user_id);
   std::map<std::pair<std::int32_t, std::int32_t>, int> uses;
   std::vector<std::pair<std::int32_t, std::int32_t>> order;
   for (std::int64_t id : l.surfaces) {
@@ -344,7 +345,8 @@ void resolve_line(Resolver& r, LineSet& l) {
     for (const Segment& seg : m.surfaces[static_cast<std::size_t>(k)].segments) {
       const int corners = seg.nodes[3] == seg.nodes[2] || seg.nodes[3] < 0 ? 3 : 4;
       for (int c = 0; c < corners; ++c) {
-        const std::int32_t a = seg.nodes[static_cast<std::size_t>(c)], b = seg.nodes[static_cast<std::size_t>((c + 1) % corners)];
+        const std::int32_t a = seg.nodes[static_cast<std::size_t>(c)];
+        const std::int32_t b = seg.nodes[static_cast<std::size_t>((c + 1) % corners)];
         const auto key = std::minmax(a, b);
         if (uses[key]++ == 0) order.push_back(key);
       }

@@ -165,20 +165,22 @@ TEST(BoxGroups, BoxListsAndGroupListsAreChecked) {
 // starter listing (LINES, input version 2019, /IOFLAG Ipri 5) prints 12 segments for /LINE/SURF (every edge once) and
 // 8 for /LINE/EDGE (the free edges): 1-2, 2-3, 1-4, 3-6, 4-7, 7-8, 6-9, 8-9.
 TEST(Lines, SurfaceEdgesAndFreeEdges) {
+  using test::I;
+  using test::R;
   test::TempDir dir;
   std::string plate = "/NODE\n";
   for (int j = 0; j < 3; ++j)
-    for (int i = 0; i < 3; ++i) plate += test::I(1 + i + 3 * j) + test::R(0.005 * i) + test::R(0.005 * j) + test::R(0.0) + "\n";
+    for (int i = 0; i < 3; ++i) plate += I(1 + i + 3 * j) + R(0.005 * i) + R(0.005 * j) + R(0.0) + "\n";
   plate += "/SHELL/1\n";
   for (int j = 0, e = 1; j < 2; ++j)
     for (int i = 0; i < 2; ++i, ++e) {
       const int n1 = 1 + i + 3 * j;
-      plate += test::I(e) + test::I(n1) + test::I(n1 + 1) + test::I(n1 + 4) + test::I(n1 + 3) + "\n";
+      plate += I(e) + I(n1) + I(n1 + 1) + I(n1 + 4) + I(n1 + 3) + "\n";
     }
-  plate += "/PART/1\nplate\n" + test::I(1) + test::I(1) + "\n/PROP/SHELL/1\nshell\n" + test::I(24) + "\n" +
-           test::R(0.0) + "\n" + test::I(5) + test::I(0) + test::R(0.001) + "\n/MAT/ELAST/1\nsteel\n" + test::R(7850.0) +
-           "\n" + test::R(2.1e11) + test::R(0.3) + "\n/SURF/PART/5\nsurf\n" + test::I(1) + "\n";
-  const std::string lines = "/LINE/SURF/7\nall edges\n" + test::I(5) + "\n/LINE/EDGE/8\nfree edges\n" + test::I(5) + "\n";
+  plate += "/PART/1\nplate\n" + I(1) + I(1) + "\n/PROP/SHELL/1\nshell\n" + I(24) + "\n" + R(0.0) + "\n" + I(5) + I(0) +
+           R(0.001) + "\n/MAT/ELAST/1\nsteel\n" + R(7850.0) + "\n" + R(2.1e11) + R(0.3) + "\n/SURF/PART/5\nsurf\n" + I(1) +
+           "\n";
+  const std::string lines = "/LINE/SURF/7\nall edges\n" + I(5) + "\n/LINE/EDGE/8\nfree edges\n" + I(5) + "\n";
   dir.write("TEST_0001.rad", test::engine_cards());
   const Deck deck = read_deck(dir.write("TEST_0000.rad", test::begin_card() + plate + lines + "/END\n"));
   ASSERT_EQ(deck.model.lines.size(), 2u);
@@ -190,7 +192,7 @@ TEST(Lines, SurfaceEdgesAndFreeEdges) {
   const std::set<std::pair<std::int64_t, std::int64_t>> expected{{1, 2}, {2, 3}, {1, 4}, {3, 6},
                                                                  {4, 7}, {7, 8}, {6, 9}, {8, 9}};
   EXPECT_EQ(free, expected);
-  const std::string undefined = "/LINE/EDGE/8\nfree edges\n" + test::I(6) + "\n";
-  EXPECT_NE(test::first_error(dir.write("TEST_0000.rad", test::begin_card() + plate + undefined + "/END\n")).find("surf_ID"),
-            std::string::npos);
+  const std::string undefined = "/LINE/EDGE/8\nfree edges\n" + I(6) + "\n";
+  const auto path = dir.write("TEST_0000.rad", test::begin_card() + plate + undefined + "/END\n");
+  EXPECT_NE(test::first_error(path).find("surf_ID"), std::string::npos);
 }

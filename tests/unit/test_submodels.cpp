@@ -34,7 +34,9 @@ std::string plate(double z, double t) {
   return s + "\n";
 }
 
-std::string inivel(int id, double vz) { return "/INIVEL/TRA/" + std::to_string(id) + "\nv\n" + R(0) + R(0) + R(vz) + I(1) + "\n"; }
+std::string inivel(int id, double vz) {
+  return "/INIVEL/TRA/" + std::to_string(id) + "\nv\n" + R(0) + R(0) + R(vz) + I(1) + "\n";
+}
 
 std::string offsets(std::initializer_list<long long> values) {
   std::string s;

@@ -86,7 +86,8 @@ struct Model {
 
   struct Index {
     IdMap nodes, parts, properties, materials, functions, node_groups, shell_groups, sh3n_groups, brick_groups,
-        surfaces, lines, subsets, skews, sensors, boxes, rigid_walls, rigid_bodies, interfaces, sections, accelerometers;
+        surfaces, lines, subsets, skews, sensors, boxes, rigid_walls, rigid_bodies, interfaces, sections,
+        accelerometers;
     std::array<IdMap, kElementKinds> elements;
   } index;
 

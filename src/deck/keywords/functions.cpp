@@ -40,7 +40,8 @@ void read_function_move(CardReader& reader, DeckContext& context) {
   const double ascale = line.real(1, 20, "Ascale_x", dim::none);
   const double fscale = line.real(21, 20, "Fscale_y", dim::none);
   if (ascale < 0.0)
-    line.fail(1, 20, "Ascale_x", "a positive abscissa scale, or 0 or blank for 1 (a negative one reverses the abscissae)");
+    line.fail(1, 20, "Ascale_x",
+              "a positive abscissa scale, or 0 or blank for 1 (a negative one reverses the abscissae)");
   move.scale_x = ascale == 0.0 ? 1.0 : ascale;
   move.scale_y = fscale == 0.0 ? 1.0 : fscale;
   move.shift_x = line.real(41, 20, "Ashift_x", dim::none);

@@ -1,5 +1,5 @@
-// //SUBMODEL ... //ENDSUB: a block of cards whose ids are shifted by offsets of their kind, and whose values are read in
-// a unit system of their own (docs/deck-format.md, "Submodels"). The offsets themselves are applied where each id is
+// //SUBMODEL ... //ENDSUB: a block of cards whose ids are shifted by offsets of their kind, and whose values are read
+// in a unit system of their own (docs/deck-format.md, "Submodels"). The offsets themselves are applied where each id is
 // read (Line::id, object_id).
 #include <fmt/format.h>
 
@@ -56,7 +56,8 @@ void open_submodel(CardReader& reader, DeckContext& context) {
     scope.unit_id = context.open_submodels.back().unit_id;  // an enclosing block's units go on
   }
   check_block_version(reader, context);
-  if (reader.card().path.size() > 5) reader.fail("keyword", "nothing after Vers_number", in_quotes(reader.card().path[5]));
+  if (reader.card().path.size() > 5)
+    reader.fail("keyword", "nothing after Vers_number", in_quotes(reader.card().path[5]));
   if (context.submodels.count(scope.user_id) != 0 ||
       std::any_of(context.open_submodels.begin(), context.open_submodels.end(),
                   [&](const SubmodelScope& s) { return s.user_id == scope.user_id; }))
