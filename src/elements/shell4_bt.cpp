@@ -224,14 +224,6 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
     const double qx = state.qx[ue], qy = state.qy[ue];
     work += 0.5 * (old_qx + qx) * gxz * dt + 0.5 * (old_qy + qy) * gyz * dt;
     if (p.thickness_update && dt > 0.0) state.thickness[ue] = t * std::exp(thickness_strain);
-    if (p.membrane_damping > 0.0) {
-      // Membrane damping dm (eq. S-9d): a viscous mean stress, not stored; its work is internal energy.
-      const shell_section::MembraneForces d =
-          shell_section::membrane_damping(p.membrane_damping, p.density, wave_speed, area, t, dxx, dyy, gxy);
-      nxx += d.xx, nyy += d.yy, nxy += d.xy;
-      work += (d.xx * dxx + d.yy * dyy + d.xy * gxy) * dt;
-    }
-
     // Critical step: eq. T-1b for Ishell 1 to 4, T-1d for Ishell 24, T-1 for the triangle.
     double length = shell_section::one_point_length<NN>(p, lx, ly, area);
     if (small_strain) {  // eq. S-15: the step of the initial geometry
@@ -239,6 +231,17 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
       length = state.initial_length[ue];
     }
     const double step = length * step_factor / wave_speed;
+
+    double* last_viscous = &state.viscous[kShellViscousForces * ue];
+    if (p.membrane_damping > 0.0) {
+      // Membrane damping dm (eqs. S-9d, S-9f): a viscous mean stress, not stored; its work is internal energy,
+      // counted on the trapezoid with the last cycle's (eq. S-9e).
+      const shell_section::MembraneForces d = shell_section::membrane_damping(
+          p.membrane_damping, p.density, wave_speed, shell_section::membrane_damping_length(area, length), t, dxx, dyy, gxy);
+      nxx += d.xx, nyy += d.yy, nxy += d.xy;
+      const double now[3] = {d.xx, d.yy, d.xy}, rate[3] = {dxx, dyy, gxy};
+      for (int c = 0; c < 3; ++c) work += shell_section::viscous_work(last_viscous[c], now[c], rate[c], dt);
+    }
 
     // Hourglass stiffness on the five one-point hourglass modes of the quadrilateral (eq. S-5); the linear
     // triangle has none.
@@ -300,7 +303,7 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
           hq[m] += keep[m] * increment[m];
           hourglass_stored += 0.5 * (old + hq[m]) * rates[m] * dt;
           damping[m] = viscous * increment[m];
-          hourglass_work += damping[m] * rates[m] * dt;
+          hourglass_work += shell_section::viscous_work(last_viscous[3 + m], damping[m], rates[m], dt);  // eq. S-9e
         }
         for (int a = 0; a < 4; ++a) shear_moment_x[a] = cx[a], shear_moment_y[a] = cy[a];
       } else {

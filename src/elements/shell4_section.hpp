@@ -210,13 +210,27 @@ inline double work(const Update& u, const StrainRates& s, double dt) {
 struct MembraneForces {
   double xx, yy, xy;
 };
-// Membrane damping dm of a section of thickness t [L] and area A [L^2] (docs/theory/shell4.md, eq. S-9d): the viscous
-// mean stress eta (d_xx + d_yy / 2, d_yy + d_xx / 2, g_xy / 3), eta = sqrt(2) dm rho c sqrt(A), c the element's
-// wave speed [L/T], times t; d the membrane strain rates [1/T].
-inline MembraneForces membrane_damping(double dm, double density, double wave_speed, double area, double t, double dxx,
+// The length of the membrane damping (eq. S-9d, S-9f): the square root of the area [L^2], as the reference takes
+// it, but at most twice the element's step length [L], so that a sliver's damping stays within what its step holds.
+inline double membrane_damping_length(double area, double step_length) {
+  return std::min(std::sqrt(area), 2.0 * step_length);
+}
+// Membrane damping dm of a section of thickness t [L] (docs/theory/shell4.md, eq. S-9d): the viscous mean stress
+// eta (d_xx + d_yy / 2, d_yy + d_xx / 2, g_xy / 3), eta = sqrt(2) dm rho c l, c the element's wave speed [L/T] and
+// l membrane_damping_length, times t; d the membrane strain rates [1/T].
+inline MembraneForces membrane_damping(double dm, double density, double wave_speed, double length, double t, double dxx,
                                        double dyy, double gxy) {
-  const double eta = std::numbers::sqrt2 * dm * density * wave_speed * std::sqrt(area) * t;
+  const double eta = std::numbers::sqrt2 * dm * density * wave_speed * length * t;
   return {eta * (dxx + 0.5 * dyy), eta * (dyy + 0.5 * dxx), eta * gxy / 3.0};
+}
+// The work over dt of a viscous force `now` [F] that replaces `last`, the previous cycle's, on a rate [1/T] (eq.
+// S-9e): the trapezoid, as the stresses' (S-6), so that the force of a cycle is paired with the mean of the rates
+// before and after it; `last` becomes `now`. A force times the rate it was computed from counts, in a mode near
+// the step's limit whose rate changes sign each cycle, work that the mode does not lose.
+inline double viscous_work(double& last, double now, double rate, double dt) {
+  const double work = 0.5 * (last + now) * rate * dt;
+  last = now;
+  return work;
 }
 using crumple::damped_step_factor;  // eq. T-1c (model/properties.hpp)
 // The viscous fraction that shortens a one-point shell's step (eq. T-1c): dm, and for the QEPH shell also dn.

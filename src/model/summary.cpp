@@ -21,7 +21,7 @@ double initial_element_time_step(const Model& model, ElementKind kind, std::size
       const Vec3 a = x.position(n[0]), b = x.position(n[1]), c = x.position(n[2]), d = x.position(n[3]);
       if (ishell == 24) {
         const ShellSection& s = model.properties[static_cast<std::size_t>(part.property)].shell;
-        const double nu = std::max(qeph_membrane_damping(s, mat.law == MaterialLaw::Tabulated), qeph_numerical_damping(s));
+        const double nu = std::max(qeph_membrane_damping(s), qeph_numerical_damping(s));
         return geometry::qeph_length(a, b, c, d) * damped_step_factor(nu) / std::sqrt(mat.young / mat.density);
       }
       if (ishell == 12)

@@ -97,7 +97,7 @@ void setup_shells(const Model& m, SolverState& s, ElementKind kind) {
       st.initial_shape.assign(2 * static_cast<std::size_t>(nodes_per) * n, 0.0);
     if (kind == ElementKind::Shell3) p.membrane_damping = triangle_membrane_damping(prop.shell, f);
     if (p.physical_hourglass) {
-      p.membrane_damping = qeph_membrane_damping(prop.shell, mat.law == MaterialLaw::Tabulated);
+      p.membrane_damping = qeph_membrane_damping(prop.shell);
       p.numerical_damping = qeph_numerical_damping(prop.shell);
     } else {
       // A dm given acts on the Belytschko-Tsay shells too (S-9d; measured on the reference, shell4.md "Probes").

@@ -10,6 +10,9 @@ Crumple on the changed deck, and sort the change by what Crumple did with it:
            itself ignores);
   silent   none of these: a value read and dropped. The probe fails on any.
 
+A run past the time limit (--timeout) is an effect when a listing row it printed differs from the deck as
+written's at the same cycle, and fails the probe as "timeout" otherwise.
+
 A value is a non-blank token of a data line whose text parses as a number: a real (with a '.' or an exponent) is
 multiplied by 1.37 (0 becomes 0.37 in the token's place), an integer flag below 100 gets 1 added. The token is
 rewritten in its own columns, right-aligned, so the field keeps its place. Not probed: titles, node and element
@@ -93,13 +96,33 @@ def mutations(token):
     return [str(v) for v in (value + 1, value + 2, value + 3, value + 4, 37) if v != value]
 
 
+def listing_rows(out_dir):
+    """The energy rows of the run's listing (flushed row by row, so a run stopped at the time limit leaves the rows
+    it printed): cycle -> the row's numbers (time, step, error, energies, masses)."""
+    rows = {}
+    listings = [f for f in os.listdir(out_dir) if f.endswith(".out")] if os.path.isdir(out_dir) else []
+    for name in listings:
+        for line in open(os.path.join(out_dir, name), errors="replace"):
+            t = line.split()
+            if len(t) < 10 or not t[0].isdigit():
+                continue
+            numbers = []
+            for token in t[1:]:
+                try:
+                    numbers.append(float(token.rstrip("%")))
+                except ValueError:
+                    pass
+            rows[(name, int(t[0]))] = numbers
+    return rows
+
+
 def run(crumple, folder, starter, out_dir, timeout):
     try:
         p = subprocess.run([crumple, "run", os.path.join(folder, starter), "-o", out_dir, "--quiet"],
                            capture_output=True, text=True, timeout=timeout)
     except subprocess.TimeoutExpired:
-        return {"code": "timeout", "output": ""}
-    result = {"code": p.returncode, "output": p.stdout + p.stderr}
+        return {"code": "timeout", "output": "", "rows": listing_rows(out_dir)}
+    result = {"code": p.returncode, "output": p.stdout + p.stderr, "rows": listing_rows(out_dir)}
     summaries = [f for f in os.listdir(out_dir) if f.endswith(".summary.json")] if os.path.isdir(out_dir) else []
     if summaries:
         s = json.load(open(os.path.join(out_dir, summaries[0])))
@@ -115,6 +138,10 @@ def warnings_of(output):
 
 
 def differs(a, b):
+    if len(a) != len(b):
+        return True
+    if not a:
+        return False
     scale = max(max(abs(x) for x in a), max(abs(x) for x in b), 1e-300)
     return any(abs(x - y) > 1e-12 * scale for x, y in zip(a, b))
 
@@ -182,7 +209,10 @@ def probe_value(crumple, folder, files, file_name, item, new, base, timeout):
     if r["code"] == 2:
         kind = "error"
     elif r["code"] == "timeout":
-        kind = "timeout"
+        # Past the time limit: an effect if a row it printed differs from the deck as written's at the same cycle
+        # (a step that collapsed, a contact that closed elsewhere), else unsettled.
+        common = set(r["rows"]) & set(base.get("rows", {}))
+        kind = "effect" if any(differs(r["rows"][c], base["rows"][c]) for c in common) else "timeout"
     elif "values" in r and "values" in base and differs(r["values"], base["values"]):
         kind = "effect"
     elif r["code"] != base["code"]:

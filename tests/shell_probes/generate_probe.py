@@ -10,6 +10,8 @@ can be compared. Kinds:
   mode       one element whose four nodes are driven in an hourglass pattern (--mode membrane, bending, twist,
              shear): each node's velocity is --speed times the pattern's sign.
   fold       a strip nx x ny, clamped at x = 0, its far edge pushed along -x (buckling into a fold) at --speed.
+  edge       a free sheet nx x ny whose tip nodes (x = L) move along --drive at --speed for --rise ms, then stop:
+             the sheet rings, and what damps it and how its work is counted shows (shell4.md, S-9d, S-9e).
   pair       a free plate of side --top at --depth over a free 5 x 5 plate, inside a TYPE7 gap --type7: the first
              cycle's step is the interface nodal step's (docs/theory/time-step.md, T-4).
 
@@ -202,7 +204,11 @@ ramp to 1 over the rise time, then held
     row = a.nx + 1
     root = [j * row + 1 for j in range(a.ny + 1)]
     tip = [j * row + row for j in range(a.ny + 1)]
-    if a.kind in ("strip", "fold"):
+    if a.kind == "edge":  # a velocity pulse: --speed until --rise, then 0
+        text += "/FUNCT/2\npulse\n" + fmt_row([0, 1]) + "\n" + fmt_row([a.rise, 1]) + "\n"
+        text += fmt_row([a.rise * 1.0001, 0]) + "\n" + fmt_row([1e6, 0]) + "\n"
+        text += grnod(2, "tip", tip) + impvel(1, 2, a.drive.upper(), 2, a.speed)
+    elif a.kind in ("strip", "fold"):
         text += grnod(1, "root", root) + "/BCS/1\nclamp\n   111 111         0         1\n"
         text += grnod(2, "tip", tip)
         if a.kind == "strip":
@@ -222,7 +228,7 @@ ramp to 1 over the rise time, then held
 
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("kind", choices=["strip", "mode", "fold", "pair"])
+    p.add_argument("kind", choices=["strip", "mode", "fold", "pair", "edge"])
     p.add_argument("--out", required=True)
     p.add_argument("--nx", type=int, default=10)
     p.add_argument("--ny", type=int, default=2)

@@ -42,14 +42,45 @@ std::string clamped_strip(int nx, double side, bool tiny, bool launched) {
 
 TEST(FreeVibration, AMillionCyclesKeepTheEnergyBalance) {
   // 20 mm elements: a step of 0.9 x 20 mm / 5.4 km/s = 3.3 us, so 3.4 s is a million cycles (about 150 periods
-  // of the strip's first mode, 44 Hz).
+  // of the strip's first mode, 44 Hz). The launch, 1 m/s against the clamp's 0, also rings modes near the step's
+  // limit (a period of about four cycles). Their kinetic energy, 1/2 m v^2 at one half step as the listing prints
+  // it, swings the printed balance by +-2.5 % from one cycle to the next and lifts its mean by 1.2 % (measured,
+  // every cycle printed) without any energy gained or lost. What the central-difference scheme conserves is the
+  // kinetic energy of the two half steps around a cycle, 1/2 v_(n-1/2) . M v_(n+1/2), with the internal energy of
+  // the cycle (docs/theory/energy.md): the balance on it, read every cycle, must hold to 0.5 % for the whole run
+  // (measured: 0.098 % at worst, at 2.86 s, -0.03 % at the end; the strip's rotations of a few degrees make it
+  // slightly nonlinear).
   test::TempDir dir;
-  const RunResult r = run_deck(dir, clamped_strip(5, 0.02, false, true), 3.4, 0.1);
+  std::vector<double> last;  // the nodes' velocities and rotation rates of the last cycle
+  double worst = 0.0, at_end = 0.0, worst_time = 0.0;
+  long long rows = 0;
+  const RunResult r = run_deck(dir, clamped_strip(5, 0.02, false, true), 3.4, 1e-9,
+                               [&](const Model&, const SolverState& s) {
+                                 const NodalState& n = s.nodes;
+                                 std::vector<double> now;
+                                 for (std::size_t k = 0; k < n.size(); ++k)
+                                   now.insert(now.end(), {n.vx[k], n.vy[k], n.vz[k], n.wx[k], n.wy[k], n.wz[k]});
+                                 if (last.size() == now.size()) {
+                                   double kinetic = 0.0;
+                                   for (std::size_t k = 0; k < n.size(); ++k)
+                                     for (std::size_t d = 0; d < 6; ++d)
+                                       kinetic += 0.5 * (d < 3 ? n.mass[k] : n.inertia[k]) * last[6 * k + d] * now[6 * k + d];
+                                   const EnergyBalanceState& e = s.energy;
+                                   const double reference = e.initial_kinetic + e.external_work;
+                                   at_end = 100.0 * (e.internal + kinetic + e.hourglass - reference) / reference;
+                                   if (std::abs(at_end) > worst) worst = std::abs(at_end), worst_time = s.time;
+                                   ++rows;
+                                 }
+                                 last = std::move(now);
+                               });
   ASSERT_EQ(r.summary.status, RunStatus::Normal) << r.summary.message;
   EXPECT_GE(r.summary.cycles, 1000000);
-  EXPECT_TRUE(std::isfinite(r.summary.energy.error_percent));
-  EXPECT_LT(std::abs(r.summary.energy.error_percent), 1.0);
-  std::printf("[free vibration] %lld cycles, energy error %.4f %%\n", r.summary.cycles, r.summary.energy.error_percent);
+  EXPECT_GE(rows + 2, r.summary.cycles) << "the balance was not read every cycle";
+  EXPECT_TRUE(std::isfinite(worst));
+  EXPECT_LT(worst, 0.5);
+  std::printf("[free vibration] %lld cycles, %lld read; conserved balance at the end %.2e %%, worst %.2e %% at %.4g s; the "
+              "listing's at the end %.4f %%\n",
+              r.summary.cycles, rows, at_end, worst, worst_time, r.summary.energy.error_percent);
 }
 
 TEST(SmallElement, HoldsTheStepDownAndMassScalingBringsItBack) {

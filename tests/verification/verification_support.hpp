@@ -67,9 +67,9 @@ inline std::string part_card() { return "/PART/1\npart\n" + I(1) + I(1) + "\n"; 
 // N points, numerical damping dn (0: the formulation's default), small-strain flag Ismstr (0: default 2),
 // plane-stress return Iplas (0: default 2, the radial return; 1 the iterative projection).
 inline std::string shell_property(double thickness, int points, double hourglass = 0.0, int ishell = 1,
-                                  double dn = 0.0, int ismstr = 0, int iplas = 0) {
+                                  double dn = 0.0, int ismstr = 0, int iplas = 0, double dm = 0.0) {
   return "/PROP/SHELL/1\nshell\n" + I(ishell) + I(ismstr) + I(0) + "\n" + R(hourglass) + R(hourglass) + R(hourglass) +
-         (dn > 0.0 ? R(0.0) + R(dn) : std::string()) + "\n" + I(points) + I(0) + R(thickness) +
+         (dn > 0.0 || dm > 0.0 ? R(dm) + R(dn) : std::string()) + "\n" + I(points) + I(0) + R(thickness) +
          (iplas != 0 ? R(0.0) + I(0) + I(0) + I(iplas) : std::string()) + "\n";
 }
 

@@ -89,11 +89,9 @@ inline double damped_step_factor(double nu) { return std::sqrt(1.0 + nu * nu) - 
 inline double triangle_membrane_damping(const ShellSection& s, const ResolvedFormulation& f) {
   return s.dm > 0.0 ? s.dm : f.ishell == 24 ? kDefaultMembraneDamping : 0.0;
 }
-// The QEPH shell's (Ishell 24) membrane damping dm and numerical damping dn (S-9d, S-14): as given; blank, dm is
-// 0.015 with /MAT/PLAS_TAB (`tabulated`) and 0 with the other laws, dn 0.015, as the reference resolves them.
-inline double qeph_membrane_damping(const ShellSection& s, bool tabulated) {
-  return s.dm > 0.0 ? s.dm : tabulated ? kDefaultMembraneDamping : 0.0;
-}
+// The QEPH shell's (Ishell 24) membrane damping dm and numerical damping dn (S-9d, S-14): as given; blank, both
+// 0.015 with every law, as the reference resolves them (measured with /MAT/ELAST, /MAT/PLAS_JOHNS, /MAT/PLAS_TAB).
+inline double qeph_membrane_damping(const ShellSection& s) { return s.dm > 0.0 ? s.dm : kDefaultMembraneDamping; }
 inline double qeph_numerical_damping(const ShellSection& s) { return s.dn > 0.0 ? s.dn : kDefaultQephNumericalDamping; }
 
 }  // namespace crumple

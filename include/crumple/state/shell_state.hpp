@@ -12,6 +12,9 @@
 
 namespace crumple {
 
+// Viscous forces a shell keeps from one cycle to the next (ShellState::viscous): 3 membrane, 5 hourglass.
+inline constexpr std::size_t kShellViscousForces = 8;
+
 struct ShellState {
   // Per element group (index into Model::element_groups; unused for other kinds).
   std::vector<std::size_t> point_offset;  // index of the group's first point
@@ -38,6 +41,9 @@ struct ShellState {
   std::vector<double> gauss_bending;    // Ishell 12, N = 0: 6 M / t^2 (xx, yy, xy) at each Gauss point [stress]
   std::vector<double> mass;             // element mass [M] (nodal stiffness estimate of the nodal time step)
   std::vector<double> hourglass_energy; // [M L^2 T^-2]
+  // The last cycle's viscous forces, whose work is counted on the trapezoid (docs/theory/shell4.md, eq. S-9e):
+  // dm's membrane resultants (xx, yy, xy) [M T^-2], then Ishell 24's five dn hourglass forces, per element.
+  std::vector<double> viscous;
   std::vector<std::uint8_t> deleted;    // 1 once the element has failed
   ElementRecords records;               // the last cycle's loads and energies per element (several domains, or
                                         // the groups of the cut sections /TH/SECTIO writes)
@@ -50,6 +56,7 @@ struct ShellState {
     for (auto* v : {&qx, &qy, &internal_energy, &critical_dt, &initial_length, &mass, &hourglass_energy}) v->assign(n, 0.0);
     thickness.assign(n, initial_thickness);
     hourglass.assign(5 * n, 0.0);
+    viscous.assign(kShellViscousForces * n, 0.0);
     deleted.assign(n, 0);
     small_strain.assign(n, 0);
   }
