@@ -105,8 +105,9 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
   GroupStepResult result;
   const double E = p.young, nu = p.poisson, G = E / (2.0 * (1.0 + nu));
   // The bar speed sqrt(E / rho), as the reference takes for these elements (eq. T-1a: its printed element steps are
-  // L / sqrt(E / rho) to all their digits) [L/T].
-  const double wave_speed = std::sqrt(E / p.density);
+  // L / sqrt(E / rho) to all their digits), the plate speed with /MAT/PLAS_TAB [L/T].
+  const double wave_speed =
+      shell_step_wave_speed(E, nu, p.density, shell_step_at_plate_speed(p.hardening.law, p.fully_integrated));
   const double step_factor = shell_section::damped_step_factor(shell_section::step_damping(p));  // eq. T-1c
   const materials::PlaneStressElastic elastic{E, nu};
   const int np = p.points;
@@ -232,7 +233,7 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
     }
     const double step = length * step_factor / wave_speed;
 
-    double* last_viscous = &state.viscous[kShellViscousForces * ue];
+    float* last_viscous = &state.viscous[kShellViscousForces * ue];
     if (p.membrane_damping > 0.0) {
       // Membrane damping dm (eqs. S-9d, S-9f): a viscous mean stress, not stored; its work is internal energy,
       // counted on the trapezoid with the last cycle's (eq. S-9e).
@@ -429,10 +430,10 @@ double inertia_share(const ShellGroupParameters& p, const Vec3* x, double thickn
     b11 += b1 * b1, b22 += b2 * b2, b12 += b1 * b2;
   }
   const double lambda = 0.5 * (b11 + b22) + std::sqrt(0.25 * (b11 - b22) * (b11 - b22) + b12 * b12);
-  // The element's critical step, as its kernel takes it (eq. T-1a, T-1b; the plate speed for Ishell 12 and 24).
+  // The element's critical step, as its kernel takes it (eq. T-1a, T-1b; the plate speed for Ishell 12 and LAW36).
   const double E = p.young, nu = p.poisson;
   const bool plate = p.fully_integrated;
-  const double speed = plate ? std::sqrt(E / (p.density * (1.0 - nu * nu))) : std::sqrt(E / p.density);
+  const double speed = shell_step_wave_speed(E, nu, p.density, shell_step_at_plate_speed(p.hardening.law, plate));
   const double length = (plate ? shell_section::characteristic_length<NN>(lx, ly, area)
                                : shell_section::one_point_length<NN>(p, lx, ly, area)) *
                          shell_section::damped_step_factor(shell_section::step_damping(p));

@@ -218,7 +218,7 @@ GroupStepResult shell4_qbat_forces(const ElementTable& table, const ElementGroup
                                    NodalState& nodes, ShellState& state, double dt) {
   GroupStepResult result;
   const double E = p.young, nu = p.poisson, G = E / (2.0 * (1.0 + nu));
-  const double wave_speed = std::sqrt(E / (p.density * (1.0 - nu * nu)));  // plate wave speed
+  const double wave_speed = shell_step_wave_speed(E, nu, p.density, true);  // plate wave speed
   const materials::PlaneStressElastic elastic{E, nu};
   const Elastic viscous{E / (1.0 - nu * nu), nu};
   const int np = p.points;

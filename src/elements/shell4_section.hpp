@@ -227,9 +227,9 @@ inline MembraneForces membrane_damping(double dm, double density, double wave_sp
 // S-9e): the trapezoid, as the stresses' (S-6), so that the force of a cycle is paired with the mean of the rates
 // before and after it; `last` becomes `now`. A force times the rate it was computed from counts, in a mode near
 // the step's limit whose rate changes sign each cycle, work that the mode does not lose.
-inline double viscous_work(double& last, double now, double rate, double dt) {
-  const double work = 0.5 * (last + now) * rate * dt;
-  last = now;
+inline double viscous_work(float& last, double now, double rate, double dt) {
+  const double work = 0.5 * (static_cast<double>(last) + now) * rate * dt;
+  last = static_cast<float>(now);
   return work;
 }
 using crumple::damped_step_factor;  // eq. T-1c (model/properties.hpp)

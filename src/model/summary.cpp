@@ -15,26 +15,26 @@ double initial_element_time_step(const Model& model, ElementKind kind, std::size
   const Nodes& x = model.nodes;
   switch (kind) {
     case ElementKind::Shell4: {
-      // Ishell 1 to 4: the bar speed over eq. T-1b's length (T-1a), times T-1c's factor for a given dm; QEPH: over
-      // T-1d's, times T-1c's factor for max(dm, dn); QBAT: the plate speed over T-1's.
+      // Ishell 1 to 4: eq. T-1b's length, times T-1c's factor for a given dm; QEPH: T-1d's, times T-1c's factor for
+      // max(dm, dn); QBAT: T-1's; over the speed of T-1a.
       const int ishell = model.formulations[static_cast<std::size_t>(part.property)].ishell;
       const Vec3 a = x.position(n[0]), b = x.position(n[1]), c = x.position(n[2]), d = x.position(n[3]);
+      const double speed =
+          shell_step_wave_speed(mat.young, mat.poisson, mat.density, shell_step_at_plate_speed(mat.law, ishell == 12));
       if (ishell == 24) {
         const ShellSection& s = model.properties[static_cast<std::size_t>(part.property)].shell;
         const double nu = std::max(qeph_membrane_damping(s), qeph_numerical_damping(s));
-        return geometry::qeph_length(a, b, c, d) * damped_step_factor(nu) / std::sqrt(mat.young / mat.density);
+        return geometry::qeph_length(a, b, c, d) * damped_step_factor(nu) / speed;
       }
-      if (ishell == 12)
-        return geometry::quad_characteristic_length(a, b, c, d) /
-               std::sqrt(mat.young / (mat.density * (1.0 - mat.poisson * mat.poisson)));
+      if (ishell == 12) return geometry::quad_characteristic_length(a, b, c, d) / speed;
       const double dm = model.properties[static_cast<std::size_t>(part.property)].shell.dm;  // a given dm: T-1c
-      return geometry::belytschko_tsay_length(a, b, c, d) * damped_step_factor(dm) / std::sqrt(mat.young / mat.density);
+      return geometry::belytschko_tsay_length(a, b, c, d) * damped_step_factor(dm) / speed;
     }
-    case ElementKind::Shell3: {  // the bar speed (T-1a), T-1c's factor for dm (S-9d)
+    case ElementKind::Shell3: {  // T-1a's speed, T-1c's factor for dm (S-9d)
       const auto q = static_cast<std::size_t>(part.property);
       const double nu = triangle_membrane_damping(model.properties[q].shell, model.formulations[q]);
       return geometry::triangle_characteristic_length(x.position(n[0]), x.position(n[1]), x.position(n[2])) *
-             damped_step_factor(nu) / std::sqrt(mat.young / mat.density);
+             damped_step_factor(nu) / shell_step_wave_speed(mat.young, mat.poisson, mat.density, shell_step_at_plate_speed(mat.law, false));
     }
     case ElementKind::Brick8: {
       const double c = std::sqrt((mat.bulk_modulus() + 4.0 / 3.0 * mat.shear_modulus()) / mat.density);

@@ -105,6 +105,16 @@ PROBES = [
      [("EW", 3.143e-4, 0.3), ("BAL", 0.0, 1.0)]),
     ("edge_tria", EDGE + " --tria", 0.5454, 9.012e-4, 2.0, "9.77e-4 (error 7.9 %)",
      [("EW", 9.203e-4, 0.3), ("BAL", 0.0, 1.0)]),
+    # /MAT/PLAS_TAB (LAW36, here elastic): the reference times its shells of every kind at the plate speed,
+    # sqrt(1 - nu^2) of the step with LAW1 or LAW2 (time-step.md, T-1a); the first step is the element's.
+    ("edge_qeph_tab", EDGE + " --law 36", 0.5851, 8.378e-4, 1.0, "dt 7.667e-4 (the bar speed)",
+     [("EW", 8.607e-4, 0.5), ("DT", 7.314e-4, 0.3)]),
+    ("edge_bt_tab", EDGE + " --law 36 --ishell 1 --time 0.002 --print-every 1", 1.6e-3, None, 0.0,
+     "dt 8.699e-4 (the bar speed)", [("DT", 8.300e-4, 0.3)]),
+    # (Its triangles, of an Ishell 1 property, are undamped (dm 0): the plate rings on, and the energies at one
+    # instant are a phase of it; the external work is what the edge did.)
+    ("edge_tria_tab", EDGE + " --law 36 --tria --ishell 1", 0.5868, None, 0.0, "dt 6.152e-4 (the bar speed)",
+     [("EW", 1.103e-3, 0.5), ("DT", 5.868e-4, 0.3)]),
 ]
 
 

@@ -16,7 +16,7 @@ can be compared. Kinds:
              cycle's step is the interface nodal step's (docs/theory/time-step.md, T-4).
 
 --tria splits each quadrilateral on its 1-3 diagonal into two 3-node shells. --law 1 is elastic steel, --law 2
-Johnson-Cook steel (a 0.21, b 0.45, n 0.45, the shared rails' sheet). --skew s moves the free corner nodes of
+Johnson-Cook steel (a 0.21, b 0.45, n 0.45, the shared rails' sheet), --law 36 /MAT/PLAS_TAB yielding at 2 GPa. --skew s moves the free corner nodes of
 the mesh by s times the element size (distorted elements).
 
   generate_probe.py strip --tria --law 2 --out DIR     # writes DIR/PROBE_0000.rad and DIR/PROBE_0001.rad
@@ -54,6 +54,11 @@ def mesh(nx, ny, dx, dy, skew):
 
 
 def material(law):
+    if law == 36:  # /MAT/PLAS_TAB with a yield curve from 2 GPa: elastic in the probes that drive it gently
+        return ("/MAT/PLAS_TAB/1\nsteel, tabulated\n" + fmt_row([7.85e-06]) + "\n" + fmt_row([210, 0.3]) + "\n"
+                + ints([1, 0]) + fmt_row([0, 0]) + "\n" + ints([0]) + fmt_row([0]) + ints([0]) + "\n" + ints([5]) + "\n"
+                + fmt_row([1]) + "\n" + fmt_row([0]) + "\n/FUNCT/5\nhardening\n" + fmt_row([0, 2]) + "\n"
+                + fmt_row([1, 2.5]) + "\n")
     if law == 1:
         return """/MAT/ELAST/1
 steel
@@ -237,7 +242,7 @@ def main():
     p.add_argument("--thick", type=float, default=1.5)
     p.add_argument("--skew", type=float, default=0.0)
     p.add_argument("--tria", action="store_true")
-    p.add_argument("--law", type=int, default=1, choices=[1, 2])
+    p.add_argument("--law", type=int, default=1, choices=[1, 2, 36])
     p.add_argument("--ishell", type=int, default=24)
     p.add_argument("--ismstr", type=int, default=0)
     p.add_argument("--ish3n", type=int, default=0)

@@ -31,7 +31,7 @@ struct ShellGroupParameters {
                                            // on the membrane and bending resultants of Ishell 12 (eq. Q-8)
   // dm: membrane damping, a viscous mean stress sqrt(2) dm rho c sqrt(A) (d + ...) that is not stored and whose
   // work is internal energy, and the step factor sqrt(1 + dm^2) - dm (eqs. S-9d, T-1c): the 3-node shell's (0.015
-  // when blank) and the QEPH shell's (0.015 with /MAT/PLAS_TAB when blank, else 0); 0 for the other 4-node shells.
+  // when blank and Ishell 24) and the QEPH shell's (0.015 when blank); as given for Ishell 1 to 4.
   double membrane_damping = 0.0;
   int points = 1;                          // through-thickness integration points (1 when resultant_plasticity)
   bool resultant_plasticity = false;       // N = 0: plasticity on the stress resultants (RP-1 to RP-3)

@@ -1,5 +1,6 @@
 #pragma once
 // Materials (/MAT). Values in working units; stresses and moduli [M L^-1 T^-2], density [M L^-3].
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -57,5 +58,17 @@ struct Material {
   double shear_modulus() const { return young / (2.0 * (1.0 + poisson)); }
   double bulk_modulus() const { return young / (3.0 * (1.0 - 2.0 * poisson)); }
 };
+
+// Whether a shell's critical step takes the plate speed sqrt(E / (rho (1 - nu^2))) rather than the bar speed
+// sqrt(E / rho) (docs/theory/time-step.md, T-1a): Ishell 12, and every shell of /MAT/PLAS_TAB (LAW36), as the
+// reference times them (a LAW36 plate's step is sqrt(1 - nu^2) of the same plate's with LAW1 or LAW2, for Ishell
+// 1 and 24 and for 3-node shells alike).
+inline bool shell_step_at_plate_speed(MaterialLaw law, bool fully_integrated) {
+  return fully_integrated || law == MaterialLaw::Tabulated;
+}
+// The wave speed of a shell's critical step [L/T]: the plate speed where shell_step_at_plate_speed, else the bar speed.
+inline double shell_step_wave_speed(double young, double poisson, double density, bool plate) {
+  return plate ? std::sqrt(young / (density * (1.0 - poisson * poisson))) : std::sqrt(young / density);
+}
 
 }  // namespace crumple

@@ -52,8 +52,9 @@ void visit_shells(V& v, const std::string& at, ShellState& s) {
         {"bending_stress", &s.bending_stress}, {"hourglass", &s.hourglass}, {"internal_energy", &s.internal_energy},
         {"critical_dt", &s.critical_dt}, {"initial_length", &s.initial_length}, {"initial_shape", &s.initial_shape},
         {"gauss_shear", &s.gauss_shear}, {"gauss_bending", &s.gauss_bending}, {"mass", &s.mass},
-        {"hourglass_energy", &s.hourglass_energy}, {"viscous", &s.viscous}})
+        {"hourglass_energy", &s.hourglass_energy}})
     v(at + name, *field);
+  v(at + "viscous", s.viscous);  // float
   if (!s.section_work.empty()) v(at + "section_work", s.section_work);  // only when /TH/SECTIO asks WORK
   v(at + "small_strain", s.small_strain);
   v(at + "deleted", s.deleted);
