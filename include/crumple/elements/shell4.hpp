@@ -29,8 +29,9 @@ struct ShellGroupParameters {
   bool elastoplastic_hourglass = false;
   double numerical_damping = 0.015;        // dn: viscous fraction on the physical hourglass modes (eq. S-14), or
                                            // on the membrane and bending resultants of Ishell 12 (eq. Q-8)
-  // dm: membrane damping, a viscous mean stress sqrt(2) dm rho c sqrt(A) (d + ...) that is not stored and whose
-  // work is internal energy, and the step factor sqrt(1 + dm^2) - dm (eqs. S-9d, T-1c): the 3-node shell's (0.015
+  // dm: membrane damping, a viscous mean stress sqrt(2) dm rho c l (d + ...), l = min(sqrt(A), 2 L_step), that is not
+  // stored and whose work is internal energy on the trapezoid, and the step factor sqrt(1 + dm^2) - dm (eqs. S-9d
+  // to S-9f, T-1c): the 3-node shell's (0.015
   // when blank and Ishell 24) and the QEPH shell's (0.015 when blank); as given for Ishell 1 to 4.
   double membrane_damping = 0.0;
   int points = 1;                          // through-thickness integration points (1 when resultant_plasticity)
