@@ -59,25 +59,26 @@ void anticipate_contact_entry(const Model& model, RunControl& run, const std::st
   run.contact_entry_window = kFineContactEntryWindow;
 }
 
-// The unscaled step below which `share` of the elements lie, on the initial geometry (T-1).
-double element_step_quantile(const Model& m, double share) {
+// The unscaled nodal step of /DT/NODA/CST (T-2, T-2a) below which `share` of the elements lie, each alone on its
+// initial geometry.
+double nodal_step_quantile(const Model& m, double share) {
   std::vector<double> steps;
   for (const ElementGroup& g : m.element_groups)
     for (std::int32_t e = g.begin; e < g.end; ++e)
-      steps.push_back(initial_element_time_step(m, g.kind, static_cast<std::size_t>(e)));
+      steps.push_back(initial_element_nodal_step(m, g.kind, static_cast<std::size_t>(e)));
   if (steps.empty()) return 0.0;
   const auto at = steps.begin() + static_cast<std::ptrdiff_t>(share * static_cast<double>(steps.size() - 1));
   std::nth_element(steps.begin(), at, steps.end());
   return *at;
 }
 
-// draft: nodal mass scaling (T-2, T-3) at the nodal scale kDraftNodalScale, to kDraftStepShare of the step the deck
-// starts with on its kDraftMassScaledShare quantile of elements: the folds stop cutting the step, the nodes are
-// held with a margin to their stability (the nodal estimate is not a bound), and the rails and tubes of
-// docs/performance.md ("The presets") stay within 5 % of the reference. A deck that already scales to a larger
+// draft: nodal mass scaling (T-2, T-3) at the nodal scale kDraftNodalScale, to kDraftStepShare of the nodal step
+// (at the deck's /DT scale) its kDraftMassScaledShare quantile of elements starts with: the folds stop cutting the
+// step, the nodes are held with a margin to their stability (the nodal estimate is not a bound), and the rails and
+// tubes of docs/performance.md ("The presets") stay within 5 % of the reference. A deck that already scales to a larger
 // step, or selectively (its /DT/AMS holds the elements, time-step.md SM-0), keeps its own.
 void scale_nodal_mass(const Model& m, RunControl& run, const std::string& where, std::vector<std::string>& changes) {
-  const double quantile = element_step_quantile(m, kDraftMassScaledShare);
+  const double quantile = nodal_step_quantile(m, kDraftMassScaledShare);
   if (!(quantile > 0.0)) return;  // no element
   const double deck_scale = run.dt.scale > 0.0 ? run.dt.scale : kDefaultStepScale;
   const double target = kDraftStepShare * deck_scale * quantile;
@@ -85,7 +86,7 @@ void scale_nodal_mass(const Model& m, RunControl& run, const std::string& where,
   if (run.dt_ams.given) return;
   changes.push_back(fmt::format("/DT/NODA/CST {:g} {:.4g}: the step is the nodes' at scale {:g} instead of the "
                                 "elements' at /DT scale {:g}, and mass is added where it would fall below {:g} times "
-                                "the step the {:g} % smallest elements start with ({:.4g}){}{}", kDraftNodalScale, target,
+                                "the nodal step the {:g} % smallest elements start with at that scale ({:.4g}){}{}", kDraftNodalScale, target,
                                 kDraftNodalScale, deck_scale, kDraftStepShare, 100.0 * kDraftMassScaledShare,
                                 deck_scale * quantile,
                                 m.type7_interfaces.empty() ? "; without contact, the elements' step where it is larger"

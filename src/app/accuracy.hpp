@@ -21,9 +21,9 @@ const char* accuracy_preset_name(AccuracyPreset preset);
 inline constexpr double kFineStepScale = 0.6;       // fine: every /DT scale at most this
 inline constexpr int kFineShellPoints = 5;          // fine: shells with 1 to 4 points get 5 (N = 0 stays resultant)
 inline constexpr int kFineContactEntryWindow = contact::kAnticipatedEntrySteps;  // fine: TYPE7 entry anticipated
-inline constexpr double kDraftMassScaledShare = 0.01;  // draft: /DT/NODA/CST's target from the step the elements'
-                                                       // 1st percentile starts with,
-inline constexpr double kDraftStepShare = 0.6;         // this share of it,
+inline constexpr double kDraftMassScaledShare = 0.01;  // draft: /DT/NODA/CST's target from the nodal step (T-2,
+                                                       // T-2a) the elements' 1st percentile starts with at /DT scale,
+inline constexpr double kDraftStepShare = 0.63;        // this share of it (0.6 of the elements' step on QEPH, nu 0.3),
 inline constexpr double kDraftNodalScale = 0.67;       // at this nodal scale
 
 inline constexpr double kPresetEnergyErrorWarning = 5.0;  // draft and fine: the run warns beyond this energy

@@ -225,15 +225,16 @@ PointUpdate update_point(const BrickGroupParameters& p, const materials::SolidEl
   return u;
 }
 
-// Bulk viscosity pressure q and the speed Q it adds in the time-step estimate (eq. B-7, B-12).
+// Bulk viscosity pressure q and the speed Q it adds in the time-step estimate (eq. B-7, B-12): the pressure acts
+// in compression only, the linear term's speed bounds the step at rest and in tension too, as in the reference.
 struct Viscosity {
   double q = 0.0;      // [stress], > 0 in compression
-  double speed = 0.0;  // Q = qb c + qa^2 L |dv| [L/T]
+  double speed = 0.0;  // Q = qb c (+ qa^2 L |dv| in compression) [L/T]
 };
 Viscosity bulk_viscosity(const BrickGroupParameters& p, double rho, double c, double length, double dv) {
-  Viscosity v;
+  Viscosity v{0.0, p.qb * c};
   if (dv < 0.0) {
-    v.speed = p.qb * c + p.qa * p.qa * length * (-dv);
+    v.speed += p.qa * p.qa * length * (-dv);
     v.q = rho * length * v.speed * (-dv);
   }
   return v;

@@ -37,19 +37,52 @@ double initial_element_time_step(const Model& model, ElementKind kind, std::size
              damped_step_factor(nu) / shell_step_wave_speed(mat.young, mat.poisson, mat.density, shell_step_at_plate_speed(mat.law, false));
     }
     case ElementKind::Brick8: {
-      const double c = std::sqrt((mat.bulk_modulus() + 4.0 / 3.0 * mat.shear_modulus()) / mat.density);
+      // eq. B-12 at rest: the linear bulk viscosity's speed qb c lowers the step, L / (qb c + sqrt((qb c)^2 + c^2))
+      const double qb = model.properties[static_cast<std::size_t>(part.property)].solid.qb_or_default();
+      const double speed = std::sqrt((mat.bulk_modulus() + 4.0 / 3.0 * mat.shear_modulus()) / mat.density) *
+                           (qb + std::sqrt(1.0 + qb * qb));
       std::array<Vec3, 8> p;
       for (int a = 0; a < 8; ++a) p[static_cast<std::size_t>(a)] = x.position(n[a]);
       if (fully_integrated_brick(model.formulations[static_cast<std::size_t>(part.property)].isolid) &&
           geometry::repeats_a_node(n)) {  // B-12a
         double px[8], py[8], pz[8];
         for (std::size_t a = 0; a < 8; ++a) px[a] = p[a].x, py[a] = p[a].y, pz[a] = p[a].z;
-        return geometry::full_integration_length(px, py, pz, geometry::smallest_point_jacobian(px, py, pz)) / c;
+        return geometry::full_integration_length(px, py, pz, geometry::smallest_point_jacobian(px, py, pz)) / speed;
       }
-      return geometry::brick_characteristic_length(p) / c;
+      return geometry::brick_characteristic_length(p) / speed;
     }
   }
   return 0.0;
+}
+
+NodalStiffnessFactor nodal_stiffness_factor(ElementKind kind, int ishell, double poisson) {
+  const double plate = 1.0 / (1.0 - poisson * poisson);  // A11 / E
+  switch (kind) {
+    case ElementKind::Brick8: return {0.25, 0.25, false};             // 2 (m_e / 8) / dt_e^2
+    case ElementKind::Shell3: return {0.6561 * plate, plate, false};  // 0.6561 V A11 / L^2; V A11 / L^2
+    case ElementKind::Shell4:
+      if (ishell == 24) return {0.5 * plate, 0.5 * plate, false};     // (1/2) V A11 / L^2, QEPH
+      if (ishell == 12) return {2.0 / 3.0, 2.0 / 3.0, false};         // (2/3) V A11 / L^2 on its plate-speed step
+      return {0.405, 0.0, true};                                      // Ishell 1 to 4: 0.81 (1/2) V E / L^2; T-2a
+  }
+  return {};
+}
+
+double initial_element_nodal_step(const Model& model, ElementKind kind, std::size_t element) {
+  const ElementTable& table = model.elements[static_cast<int>(kind)];
+  const Part& part = model.parts[static_cast<std::size_t>(table.part[element])];
+  const Material& mat = model.materials[static_cast<std::size_t>(part.material)];
+  const NodalStiffnessFactor f =
+      nodal_stiffness_factor(kind, model.formulations[static_cast<std::size_t>(part.property)].ishell, mat.poisson);
+  const double n = nodes_per_element(kind);
+  if (f.mass_scaling_diagonal) {  // sqrt(2 (rho V / 4) / ((1/2) V A11 / L^2)) = L sqrt(rho / A11), eq. T-2a
+    const std::int32_t* c = table.nodes_of(element);
+    const Nodes& x = model.nodes;
+    return geometry::belytschko_tsay_nodal_length(x.position(c[0]), x.position(c[1]), x.position(c[2]),
+                                                  x.position(c[3])) /
+           shell_step_wave_speed(mat.young, mat.poisson, mat.density, true);
+  }
+  return initial_element_time_step(model, kind, element) * std::sqrt(2.0 / (n * f.mass_scaling));
 }
 
 ControllingElement smallest_element_time_step(const Model& model) {

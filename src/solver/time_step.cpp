@@ -5,27 +5,12 @@
 #include <limits>
 
 #include "crumple/core/geometry.hpp"
+#include "crumple/model/summary.hpp"
 #include "solver/cycle.hpp"
 #include "solver/internal.hpp"
 
 namespace crumple::solver {
 namespace {
-
-// The factor beta of an element in the interface nodal step (eq. T-4): it gives each of its nodes the stiffness
-// k = beta rho V / dt_e^2, V its current volume and dt_e its unscaled critical step. Measured on the reference solver
-// one kind at a time (docs/theory/time-step.md, T-4); beta = 2 / n is T-2's estimate.
-double interface_stiffness_factor(ElementKind kind, const ResolvedFormulation& f, const Material& mat) {
-  const double plate = 1.0 / (1.0 - mat.poisson * mat.poisson);  // A11 / E
-  switch (kind) {
-    case ElementKind::Brick8: return 0.25;              // 2 (m_e / 8) / dt_e^2
-    case ElementKind::Shell3: return 0.6561 * plate;    // 0.6561 V A11 / L^2
-    case ElementKind::Shell4:
-      if (f.ishell == 24) return 0.5 * plate;           // (1/2) V A11 / L^2, QEPH
-      if (f.ishell == 12) return 2.0 / 3.0;             // (2/3) V A11 / L^2 on its plate-speed step
-      return 0.405;                                     // 0.81 (1/2) V E / L^2, Ishell 1 to 4
-  }
-  return 0.0;
-}
 
 Vec3 current_position(const NodalState& x, std::int32_t k) {
   const auto i = static_cast<std::size_t>(k);
@@ -47,9 +32,10 @@ double current_volume(ElementKind kind, const State& st, std::size_t e, const st
   }
 }
 
-// Each element of this domain: the stiffness it gives each of its nodes (eq. T-4), 0 when it is not active.
+// Each element of this domain: the stiffness it gives each of its nodes (eqs. T-4, T-2a), 0 when it is not active.
 template <class State>
 void element_stiffness(const Model& m, ElementKind kind, const State& st, SolverState& s) {
+  const bool mass_scaling = m.run.dt_nodal_cst.given;
   const ElementTable& table = m.elements[static_cast<std::size_t>(kind)];
   std::vector<double>& k = s.interface_stiffness[static_cast<std::size_t>(kind)];
   k.resize(table.size());
@@ -59,8 +45,18 @@ void element_stiffness(const Model& m, ElementKind kind, const State& st, Solver
     if (element_condition(st.deleted[e]) != kElementActive || !(st.critical_dt[e] > 0.0)) continue;
     const Part& part = m.parts[static_cast<std::size_t>(table.part[e])];
     const Material& mat = m.materials[static_cast<std::size_t>(part.material)];
-    const double beta = interface_stiffness_factor(kind, m.formulations[static_cast<std::size_t>(part.property)], mat);
-    k[e] = beta * mat.density * current_volume(kind, st, e, table.nodes_of(e), s.nodes) /
+    const NodalStiffnessFactor beta =
+        nodal_stiffness_factor(kind, m.formulations[static_cast<std::size_t>(part.property)].ishell, mat.poisson);
+    const std::int32_t* c = table.nodes_of(e);
+    const double volume = current_volume(kind, st, e, c, s.nodes);
+    if (mass_scaling && beta.mass_scaling_diagonal) {  // eq. T-2a, on the current geometry
+      const double length = geometry::belytschko_tsay_nodal_length(
+          current_position(s.nodes, c[0]), current_position(s.nodes, c[1]), current_position(s.nodes, c[2]),
+          current_position(s.nodes, c[3]));
+      k[e] = 0.5 * volume * mat.young / (1.0 - mat.poisson * mat.poisson) / (length * length);
+      continue;
+    }
+    k[e] = (mass_scaling ? beta.mass_scaling : beta.interface) * mat.density * volume /
            (st.critical_dt[e] * st.critical_dt[e]);
   }
 }

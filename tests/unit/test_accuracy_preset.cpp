@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "app/accuracy.hpp"
 #include "crumple/model/summary.hpp"
@@ -85,14 +86,18 @@ TEST(AccuracyPreset, DraftKeepsThePointsAndHoldsAUniformMeshAtSixTenthsOfItsFirs
   Read r(strip(200, 5, false), kEngine);
   const auto changes = r.apply(app::AccuracyPreset::Draft);
   EXPECT_EQ(r.deck.model.formulations[0].n_points, 5);
-  // Every element has the same step: the target is 0.6 times the step the run starts with (/DT 0.9), at the
-  // nodal scale 0.67, and the run warns beyond 5 % of energy error.
+  // Every element has the same step: the target is 0.63 times the nodal step the run starts with (/DT 0.9), for
+  // QEPH sqrt(1 - nu^2) of the element's (T-2), so 0.6 times the element's; at the nodal scale 0.67, and the run
+  // warns beyond 5 % of energy error.
   const RunControl& run = r.deck.model.run;
   const TimeStepControl& cst = run.dt_nodal_cst;
   ASSERT_TRUE(cst.given);
   const double step = initial_element_time_step(r.deck.model, ElementKind::Shell4, 0);
+  const double nodal = initial_element_nodal_step(r.deck.model, ElementKind::Shell4, 0);
+  EXPECT_NEAR(nodal, std::sqrt(1.0 - 0.3 * 0.3) * step, 1e-12 * step);
   EXPECT_DOUBLE_EQ(cst.scale, 0.67);
-  EXPECT_NEAR(cst.minimum, 0.6 * 0.9 * step, 1e-9 * step);
+  EXPECT_NEAR(cst.minimum, 0.63 * 0.9 * nodal, 1e-9 * step);
+  EXPECT_NEAR(cst.minimum, 0.6 * 0.9 * step, 0.002 * step);
   EXPECT_DOUBLE_EQ(run.energy_error_warning, 5.0);
   EXPECT_TRUE(run.nodal_step_at_least_elements) << "no contact: the elements' step where larger (T-3c)";
   ASSERT_EQ(changes.size(), 1u);
@@ -104,9 +109,9 @@ TEST(AccuracyPreset, DraftMassScalesTheSmallestPercentOfTheElements) {
   const auto changes = r.apply(app::AccuracyPreset::Draft);
   const TimeStepControl& cst = r.deck.model.run.dt_nodal_cst;
   ASSERT_TRUE(cst.given);
-  const double big = initial_element_time_step(r.deck.model, ElementKind::Shell4, 0);
+  const double big = initial_element_nodal_step(r.deck.model, ElementKind::Shell4, 0);
   EXPECT_DOUBLE_EQ(cst.scale, 0.67);
-  EXPECT_NEAR(cst.minimum, 0.6 * 0.5 * big, 1e-9 * big);  // the 1st percentile is a 10 mm shell's, at /DT 0.5
+  EXPECT_NEAR(cst.minimum, 0.63 * 0.5 * big, 1e-9 * big);  // the 1st percentile is a 10 mm shell's, at /DT 0.5
   ASSERT_EQ(changes.size(), 1u);
   EXPECT_TRUE(any_contains(changes, "--accuracy draft: /DT/NODA/CST 0.67"));
 }

@@ -93,6 +93,11 @@ inline double belytschko_tsay_length(const Vec3& p1, const Vec3& p2, const Vec3&
   return belytschko_tsay_length(quad_area(p1, p2, p3, p4), *std::min_element(sides, sides + 4),
                                 *std::max_element(sides, sides + 4), longest_diagonal);
 }
+// The Belytschko-Tsay quadrilateral's length under /DT/NODA/CST (eq. T-2a): sqrt(2) A / longest diagonal [L]; a
+// square's side, a 10 x 2 rectangle's 2.77 (T-1b: 2).
+inline double belytschko_tsay_nodal_length(const Vec3& p1, const Vec3& p2, const Vec3& p3, const Vec3& p4) {
+  return std::sqrt(2.0) * quad_area(p1, p2, p3, p4) / std::max(norm(p3 - p1), norm(p4 - p2));
+}
 // Triangle: twice the area over the longest side, the smallest height.
 inline double triangle_characteristic_length(const Vec3& p1, const Vec3& p2, const Vec3& p3) {
   const double area = triangle_area(p1, p2, p3);

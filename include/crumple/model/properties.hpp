@@ -40,6 +40,8 @@ struct SolidSection {  // /PROP/TYPE14 (= /PROP/SOLID), the values as written (0
   int iframe = 0;  // element frame: 1 non co-rotational, 2 co-rotational
   int inpts = 0;   // integration points ijk for Isolid 14
   double qa = 0.0, qb = 0.0;  // bulk viscosity coefficients (0 -> 1.1 and 0.05)
+  double qa_or_default() const { return qa > 0.0 ? qa : 1.1; }
+  double qb_or_default() const { return qb > 0.0 ? qb : 0.05; }
   double dn = 0.0;            // numerical damping of the Isolid 24 stabilisation (0 -> 0.1)
   double h = 0.0;             // hourglass coefficient (0 -> 0.1)
   int ihkt = 0;               // Isolid 24 hourglass modulus: 0, 1 elastic (2, tangent, is refused)

@@ -12,6 +12,22 @@ namespace crumple {
 // dt = L / c with L the characteristic length and c the plate (shells) or dilatational (bricks) wave speed.
 double initial_element_time_step(const Model& model, ElementKind kind, std::size_t element);
 
+// The factor beta of an element in the nodal step: it gives each of its nodes the stiffness
+// k = beta rho V / dt_e^2, V its current volume and dt_e its unscaled critical step. Measured on the reference solver
+// one kind and one shape at a time (docs/theory/time-step.md, T-4, T-2, T-2a): the interface nodal step (T-4) and
+// the step of /DT/NODA/CST (T-2) take the same for QEPH, Ishell 12 and bricks; under /DT/NODA/CST the triangles take
+// their plate stiffness, and the Belytschko-Tsay shells a length of their own (T-2a), not their critical step's.
+struct NodalStiffnessFactor {
+  double interface = 0.0;              // T-4, with a TYPE7 and without mass scaling
+  double mass_scaling = 0.0;           // T-2, /DT/NODA/CST
+  bool mass_scaling_diagonal = false;  // T-2a: under /DT/NODA/CST, (1/2) V A11 / L^2 with L of eq. T-2a instead
+};
+NodalStiffnessFactor nodal_stiffness_factor(ElementKind kind, int ishell, double poisson);
+
+// The nodal step of /DT/NODA/CST (eqs. T-2, T-2a) that an element alone gives its nodes, unscaled, on the initial
+// geometry: sqrt(2 (m_e / n) / k_e), m_e its mass and n its nodes.
+double initial_element_nodal_step(const Model& model, ElementKind kind, std::size_t element);
+
 struct ControllingElement {
   double time_step = 0.0;  // unscaled critical step [T]; 0 when the model has no element
   ElementKind kind = ElementKind::Shell4;
