@@ -75,8 +75,9 @@ double nodal_step_quantile(const Model& m, double share) {
 // draft: nodal mass scaling (T-2, T-3) at the nodal scale kDraftNodalScale, to kDraftStepShare of the nodal step
 // (at the deck's /DT scale) its kDraftMassScaledShare quantile of elements starts with: the folds stop cutting the
 // step, the nodes are held with a margin to their stability (the nodal estimate is not a bound), and the rails and
-// tubes of docs/performance.md ("The presets") stay within 5 % of the reference. A deck that already scales to a larger
-// step, or selectively (its /DT/AMS holds the elements, time-step.md SM-0), keeps its own.
+// tubes of docs/performance.md ("The presets") stay within 5 % of the reference; never below the deck's own step
+// (T-3c). A deck that already scales to a larger step, or selectively (its /DT/AMS holds the elements, time-step.md
+// SM-0), keeps its own.
 void scale_nodal_mass(const Model& m, RunControl& run, const std::string& where, std::vector<std::string>& changes) {
   const double quantile = nodal_step_quantile(m, kDraftMassScaledShare);
   if (!(quantile > 0.0)) return;  // no element
@@ -86,14 +87,13 @@ void scale_nodal_mass(const Model& m, RunControl& run, const std::string& where,
   if (run.dt_ams.given) return;
   changes.push_back(fmt::format("/DT/NODA/CST {:g} {:.4g}: the step is the nodes' at scale {:g} instead of the "
                                 "elements' at /DT scale {:g}, and mass is added where it would fall below {:g} times "
-                                "the nodal step the {:g} % smallest elements start with at that scale ({:.4g}){}{}", kDraftNodalScale, target,
-                                kDraftNodalScale, deck_scale, kDraftStepShare, 100.0 * kDraftMassScaledShare,
-                                deck_scale * quantile,
-                                m.type7_interfaces.empty() ? "; without contact, the elements' step where it is larger"
-                                                           : "",
-                                where));
+                                "the nodal step the {:g} % smallest elements start with at that scale ({:.4g}); the "
+                                "deck's own step where it is larger{}",
+                                kDraftNodalScale, target, kDraftNodalScale, deck_scale, kDraftStepShare,
+                                100.0 * kDraftMassScaledShare, deck_scale * quantile, where));
   run.dt_nodal_cst.scale = kDraftNodalScale, run.dt_nodal_cst.minimum = target, run.dt_nodal_cst.given = true;
-  run.nodal_step_at_least_elements = m.type7_interfaces.empty();  // eq. T-3c
+  // eq. T-3c; with /DT/INTER/CST the contact pass sizes the contacts' masses and gives no step as written
+  run.nodal_step_at_least_as_written = !run.dt_inter_cst.given;
 }
 
 // fine: the shells' points through the thickness, at least `points`. N = 0 (resultant plasticity) and N = 1 (a

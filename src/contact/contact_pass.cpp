@@ -115,6 +115,12 @@ struct InterfaceCycle {
   std::vector<ExactSum>& sum;
   double max_ratio = 0.0;
   StepCandidate step;
+  StepCandidate step_as_written;  // without the nodal mass holding the pairs (T-3c)
+  // A kinematic step (C-11) bounds both: no mass holds a pair closing in.
+  void consider_kinematic(double dt, std::size_t place) {
+    step.consider(dt, place);
+    step_as_written.consider(dt, place);
+  }
 };
 
 struct PassSettings {
@@ -220,7 +226,7 @@ void compute_pairs(ContactState& c, ContactInterface& in, const NodalState& node
         // kinematic step 0.5 (g - p) / (dp/dt) = 0.5 d / (dp/dt) holds for it too (eq. C-11).
         forget();
         const double approach = scale * kinematic_step(g, p, penetration_rate);
-        if (!(ps.release_step > 0.0 && approach < ps.release_step)) out.step.consider(approach, q);
+        if (!(ps.release_step > 0.0 && approach < ps.release_step)) out.consider_kinematic(approach, q);
         // With an entry window (`--accuracy fine`), a node within that many steps of its normal motion of the gap
         // may enter it within the next steps (or turn back into it as it leaves) and meets the penalty's initial
         // stiffness K0: its first force acts over the mean of that step and the one before, so both are made
@@ -261,7 +267,7 @@ void compute_pairs(ContactState& c, ContactInterface& in, const NodalState& node
       }
       // The stiffness step is taken per node below, with the tangent stiffnesses of all its pairs summed (a node
       // at an edge or corner feels two or three segments at once); here the kinematic part.
-      out.step.consider(scale * kinematic_step(g, p, penetration_rate), q);
+      out.consider_kinematic(scale * kinematic_step(g, p, penetration_rate), q);
       in.node_tangent_sum[i] += kt;
       // With /DT/INTER/CST: the penetration the node can reach within the step (at most half its remaining
       // distance, the kinematic bound), and the stiffness there, which the added mass must hold (eq. C-11c).
@@ -371,6 +377,7 @@ void node_steps(ContactState& c, ContactInterface& in, NodalState& nodes, const 
     }
     double node_step = scaled_stiffness_step(body_mass > 0.0 ? body_mass : scaled_mass(c, nodes, n), stiffness,
                                              viscosity, viss, ps.scale);
+    if (!(ps.release_step > 0.0 && node_step < ps.release_step)) out.step_as_written.consider(node_step, pairs + ui);
     if (ps.nodal_mass_step > 0.0 && !(body_mass > 0.0)) {
       // Under /DT/NODA/CST the node's mass holds its elements and resolved pairs at the target step T (T-2), at
       // most the stiffness 2 M (scale / T)^2; the pairs closing faster than T resolves add theirs at the depth they
@@ -475,6 +482,14 @@ void apply_records(ContactState& c, ContactInterface& in, NodalState& nodes, con
   }
 }
 
+// The secondary node of a step candidate (its place: a pair, or pairs + the node's index), -1 for none.
+std::int32_t step_node(const ContactInterface& in, const StepCandidate& candidate) {
+  if (candidate.seq < 0) return -1;
+  const auto seq = static_cast<std::size_t>(candidate.seq), pairs = in.candidate_node.size();
+  const std::size_t i = seq < pairs ? static_cast<std::size_t>(in.candidate_node[seq]) : seq - pairs;
+  return in.secondary_nodes[i];
+}
+
 // The interface's results of the cycle from the sums over every domain.
 void finish_interface(const ContactInterface& in, InterfaceResult& res, const InterfaceCycle& cycle, double& added_mass) {
   const std::vector<ExactSum>& sum = cycle.sum;
@@ -494,12 +509,7 @@ void finish_interface(const ContactInterface& in, InterfaceResult& res, const In
   res.active_nodes = static_cast<int>(sum[kActiveNodes].value());
   res.released += static_cast<long long>(sum[kReleased].value());
   res.max_penetration_ratio = std::max(res.max_penetration_ratio, cycle.max_ratio);
-  res.dt = cycle.step.dt, res.dt_node = -1;
-  if (cycle.step.seq >= 0) {
-    const auto seq = static_cast<std::size_t>(cycle.step.seq), pairs = in.candidate_node.size();
-    const std::size_t i = seq < pairs ? static_cast<std::size_t>(in.candidate_node[seq]) : seq - pairs;
-    res.dt_node = in.secondary_nodes[i];
-  }
+  res.dt = cycle.step.dt, res.dt_node = step_node(in, cycle.step);
 }
 
 }  // namespace
@@ -524,6 +534,8 @@ ContactStep contact_forces(const Model& m, ContactState& c, NodalState& nodes, d
                               rc.dt_inter_cst.given ? rc.dt_inter_cst.minimum : 0.0,
                               static_cast<double>(rc.contact_entry_window),
                               rc.dt_nodal_cst.given && !rc.dt_inter_cst.given ? rc.dt_nodal_cst.minimum : 0.0};
+  // The deck as written's step beside the mass-scaled one, where the step takes the larger (time-step.md, T-3c).
+  const bool as_written = rc.nodal_step_at_least_as_written && settings.nodal_mass_step > 0.0;
   for (std::size_t f = 0; f < c.interfaces.size(); ++f) {
     ContactInterface& in = c.interfaces[f];
     InterfaceResult& res = c.results[f];
@@ -567,7 +579,7 @@ ContactStep contact_forces(const Model& m, ContactState& c, NodalState& nodes, d
     }
     in.touched_list.clear();
     c.cycle_sums.assign(kCycleSums, ExactSum{});
-    InterfaceCycle cycle{c.cycle_sums, 0.0, StepCandidate{}};
+    InterfaceCycle cycle{c.cycle_sums, 0.0, StepCandidate{}, StepCandidate{}};
     c.own_records.clear();
     compute_pairs(c, in, nodes, ps, cycle);
     node_steps(c, in, nodes, ps, scope, cycle);
@@ -579,6 +591,12 @@ ContactStep contact_forces(const Model& m, ContactState& c, NodalState& nodes, d
     }
     finish_interface(in, res, cycle, added_mass);
     if (res.dt < step.dt) step.dt = res.dt, step.interface = static_cast<int>(f), step.node = res.dt_node;
+    if (as_written) {  // eq. T-3c
+      if (domains != nullptr) domains->min_with_index(cycle.step_as_written.dt, cycle.step_as_written.seq);
+      if (cycle.step_as_written.dt < step.dt_as_written)
+        step.dt_as_written = cycle.step_as_written.dt, step.interface_as_written = static_cast<int>(f),
+        step.node_as_written = step_node(in, cycle.step_as_written);
+    }
   }
   return step;
 }

@@ -568,6 +568,11 @@ void compute_contact_forces(const Model& m, SolverState& s, RunEvents& events, b
     events.pending.push_back(released);
   }
   s.contact.bc_releases.clear();
+  // The deck as written's step (T-3c): the elements' (the bound so far) and the contacts' without the nodal mass.
+  bound.as_written_dt = bound.dt, bound.as_written_control = bound.control;
+  if (step.dt_as_written < bound.as_written_dt)
+    bound.as_written_dt = step.dt_as_written,
+    bound.as_written_control = StepControl::contact(step.interface_as_written, step.node_as_written);
   bound.contact_dt = step.dt, bound.contact_control = StepControl::contact(step.interface, step.node);
   if (step.dt < bound.dt) bound.dt = step.dt, bound.control = bound.contact_control;
 }
@@ -582,11 +587,15 @@ double choose_time_step(const Model& m, SolverState& s, RunEvents& events, StepB
   const RunControl& rc = m.run;
   if (rc.dt_nodal_cst.given) {
     const NodalStep nodal = nodal_time_step(m, s);
-    // Without contact the elements' step is stable for any added mass (it only lowers the frequencies), eq. T-3c.
-    const bool elements_bound = rc.nodal_step_at_least_elements && bound.dt > nodal.dt;
-    if (nodal.node >= 0 && !elements_bound) {
-      bound.dt = nodal.dt, bound.control = StepControl::node(nodal.node);
-      if (bound.contact_dt < bound.dt) bound.dt = bound.contact_dt, bound.control = bound.contact_control;
+    if (nodal.node >= 0) {
+      StepBound scaled{nodal.dt, StepControl::node(nodal.node)};
+      if (bound.contact_dt < scaled.dt) scaled.dt = bound.contact_dt, scaled.control = bound.contact_control;
+      // The deck as written's step is stable for any added mass (mass only lowers the frequencies), eq. T-3c;
+      // without contact it is the elements' (the bound so far).
+      const StepBound written = s.contact.interfaces.empty() ? StepBound{bound.dt, bound.control}
+                                                             : StepBound{bound.as_written_dt, bound.as_written_control};
+      const StepBound& chosen = rc.nodal_step_at_least_as_written && written.dt > scaled.dt ? written : scaled;
+      bound.dt = chosen.dt, bound.control = chosen.control;
     }
   } else if (interface_nodal_step_on(m)) {
     // With a TYPE7 interface the reference also bounds the step by its nodal one (eq. T-4).

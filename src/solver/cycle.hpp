@@ -22,6 +22,10 @@ struct StepBound {
   // contact's (docs/theory/time-step.md, T-3b).
   double contact_dt = std::numeric_limits<double>::infinity();
   StepControl contact_control{};
+  // The deck as written's step, elements' and contacts', where --accuracy draft takes the larger of it and the
+  // nodal step (T-3c).
+  double as_written_dt = std::numeric_limits<double>::infinity();
+  StepControl as_written_control{};
 };
 
 // Velocities before the update and after the free update (CD-2), for the work of the kinematic conditions.

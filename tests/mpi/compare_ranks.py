@@ -3,7 +3,7 @@
 (docs/parallel.md): the summary's energies, cycles and time, and every dataset of NAME.h5 (frames, histories,
 mesh), the run metadata (date, commit, ranks) aside.
 
-usage: compare_ranks.py CRUMPLE MPIRUN DECK WORK_DIR N [N ...]
+usage: compare_ranks.py CRUMPLE MPIRUN DECK WORK_DIR N [N ...] [OPTION ...]   (options of `crumple run`)
 Exit 0 when every rank count gives the one-process results, 1 otherwise (each difference printed).
 """
 import json
@@ -66,11 +66,11 @@ def compare(serial, parallel, ranks):
     return problems
 
 
-def main(crumple, mpirun, deck, work, counts):
+def main(crumple, mpirun, deck, work, counts, options):
     shutil.rmtree(work, ignore_errors=True)
     os.makedirs(work)
     serial = os.path.join(work, "serial")
-    if run([crumple, "run", deck, "-o", serial, "--quiet"], os.path.join(work, "serial.log")) != 0:
+    if run([crumple, "run", deck, "-o", serial, "--quiet", *options], os.path.join(work, "serial.log")) != 0:
         print("the one-process run failed:", open(os.path.join(work, "serial.log")).read())
         return 1
     failed = False
@@ -78,7 +78,7 @@ def main(crumple, mpirun, deck, work, counts):
         folder = os.path.join(work, f"np{n}")
         log = os.path.join(work, f"np{n}.log")
         code = run([mpirun, "--allow-run-as-root", "--oversubscribe", "--mca", "mpi_yield_when_idle", "1",
-                    "-np", str(n), crumple, "run", deck, "-o", folder, "--quiet"], log)
+                    "-np", str(n), crumple, "run", deck, "-o", folder, "--quiet", *options], log)
         if code != 0:
             print(f"{n} ranks: exit code {code}:\n{open(log).read()}")
             failed = True
@@ -95,4 +95,7 @@ if __name__ == "__main__":
     if len(sys.argv) < 6:
         print(__doc__)
         sys.exit(2)
-    sys.exit(main(sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4], [int(n) for n in sys.argv[5:]]))
+    # rank counts, then any options of `crumple run` (e.g. --accuracy draft)
+    counts = [a for a in sys.argv[5:] if a.isdigit()]
+    sys.exit(main(sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4], [int(n) for n in counts],
+                  [a for a in sys.argv[5:] if not a.isdigit()]))

@@ -90,8 +90,9 @@ PROBES = [
      "--speed 0.001 --time 0.003 --print-every 1", 7.813e-4, None, 0.0, "step 4.640e-4", [("DT", 7.813e-4, 0.3)]),
     ("tria_noda_strip", "strip --tria --noda 0.9,1e-9 --time 0.003 --print-every 1", 4.088e-4, None, 0.0,
      "step 5.047e-4", [("DT", 4.088e-4, 0.3)]),
-    ("tria_noda_parallelogram", "mode --nx 1 --ny 1 --tria --ishell 1 --corners 0,0,0;5,0,0;8,5,0;3,5,0 --noda 0.9,1e-9 "
-     "--speed 0.001 --time 0.003 --print-every 1", 2.519e-4, None, 0.0, "step 3.110e-4", [("DT", 2.519e-4, 0.3)]),
+    ("tria_noda_parallelogram", "mode --nx 1 --ny 1 --tria --ishell 1 --corners 0,0,0;5,0,0;8,5,0;3,5,0 "
+     "--noda 0.9,1e-9 --speed 0.001 --time 0.003 --print-every 1", 2.519e-4, None, 0.0, "step 3.110e-4",
+     [("DT", 2.519e-4, 0.3)]),
     ("tria_type7_elongated_step", "strip --tria --type7 0.1 --width 20 --time 0.003 --print-every 1", 2.554e-3, None,
      0.0, "", [("DT", 6.384e-4, 0.3)]),
     # A 4 x 4 mm plate pressed half its gap into a 5 x 5 plate ten times lighter: the lower plate's corner node

@@ -99,7 +99,7 @@ TEST(AccuracyPreset, DraftKeepsThePointsAndHoldsAUniformMeshAtSixTenthsOfItsFirs
   EXPECT_NEAR(cst.minimum, 0.63 * 0.9 * nodal, 1e-9 * step);
   EXPECT_NEAR(cst.minimum, 0.6 * 0.9 * step, 0.002 * step);
   EXPECT_DOUBLE_EQ(run.energy_error_warning, 5.0);
-  EXPECT_TRUE(run.nodal_step_at_least_elements) << "no contact: the elements' step where larger (T-3c)";
+  EXPECT_TRUE(run.nodal_step_at_least_as_written) << "the deck's own step where larger (T-3c)";
   ASSERT_EQ(changes.size(), 1u);
   EXPECT_TRUE(any_contains(changes, "--accuracy draft: /DT/NODA/CST 0.67"));
 }
@@ -141,7 +141,7 @@ TEST(AccuracyPreset, FineAnticipatesContactEntryWhenThereIsContact) {
   EXPECT_EQ(standard.deck.model.run.contact_entry_window, 0);
   Read draft(strip(4, 3, false) + contact, kEngine);
   draft.apply(app::AccuracyPreset::Draft);
-  EXPECT_FALSE(draft.deck.model.run.nodal_step_at_least_elements) << "a contact's stiffness is in the nodal step only";
+  EXPECT_TRUE(draft.deck.model.run.nodal_step_at_least_as_written) << "with its contacts' steps (T-3c)";
   Read fine(strip(4, 3, false) + contact, kEngine);
   EXPECT_TRUE(any_contains(fine.apply(app::AccuracyPreset::Fine), "TYPE7 contact steps count K0 from 3 steps"));
   EXPECT_EQ(fine.deck.model.run.contact_entry_window, app::kFineContactEntryWindow);

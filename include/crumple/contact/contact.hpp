@@ -28,6 +28,11 @@ struct ContactStep {
   double dt = 1e300;        // smallest interface step of the cycle, scaled [T]
   int interface = -1;       // its interface (index into Model::type7_interfaces)
   std::int32_t node = -1;   // its secondary node (dense index)
+  // Under /DT/NODA/CST with RunControl::nodal_step_at_least_as_written: the step the interfaces would bound
+  // without the nodal mass holding them, the deck as written's (C-11, time-step.md T-3c), its interface and node.
+  double dt_as_written = 1e300;
+  int interface_as_written = -1;
+  std::int32_t node_as_written = -1;
 };
 
 // Which nodes a domain of a run of several owns and advances (parallel/domain.hpp), as the contact pass needs it:

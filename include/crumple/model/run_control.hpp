@@ -73,9 +73,9 @@ struct RunControl {
   int print_header_lines = 0;     // /PRINT/n/Nline: repeat the column header every Nline lines
   TimeStepControl dt;             // /DT
   TimeStepControl dt_nodal_cst;   // /DT/NODA/CST
-  // --accuracy draft on a model without contact interfaces: the step is the larger of the nodal step and the
-  // elements' own, both stable bounds there (docs/theory/time-step.md, T-3c); a deck's /DT/NODA/CST takes the nodal.
-  bool nodal_step_at_least_elements = false;
+  // --accuracy draft: the step is the larger of the nodal step and the deck as written's (its elements' and its
+  // contacts' steps), both stable bounds (docs/theory/time-step.md, T-3c); a deck's /DT/NODA/CST takes the nodal.
+  bool nodal_step_at_least_as_written = false;
   TimeStepControl dt_shell, dt_brick, dt_sh3n;
   TimeStepControl dt_inter_del, dt_inter_cst;
   SelectiveMassControl dt_ams;    // /DT/AMS
