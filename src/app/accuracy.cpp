@@ -87,10 +87,10 @@ void scale_nodal_mass(const Model& m, RunControl& run, const std::string& where,
   if (run.dt_ams.given) return;
   changes.push_back(fmt::format("/DT/NODA/CST {:g} {:.4g}: the step is the nodes' at scale {:g} instead of the "
                                 "elements' at /DT scale {:g}, and mass is added where it would fall below {:g} times "
-                                "the nodal step the {:g} % smallest elements start with at that scale ({:.4g}); the "
-                                "deck's own step where it is larger{}",
+                                "the nodal step the {:g} % smallest elements start with at that scale ({:.4g}){}{}",
                                 kDraftNodalScale, target, kDraftNodalScale, deck_scale, kDraftStepShare,
-                                100.0 * kDraftMassScaledShare, deck_scale * quantile, where));
+                                100.0 * kDraftMassScaledShare, deck_scale * quantile,
+                                run.dt_inter_cst.given ? "" : "; the deck's own step where it is larger", where));
   run.dt_nodal_cst.scale = kDraftNodalScale, run.dt_nodal_cst.minimum = target, run.dt_nodal_cst.given = true;
   // eq. T-3c; with /DT/INTER/CST the contact pass sizes the contacts' masses and gives no step as written
   run.nodal_step_at_least_as_written = !run.dt_inter_cst.given;

@@ -1,5 +1,6 @@
 #pragma once
-// What `crumple check` reports about a model: counts, mass, bounding box and the smallest element time step.
+// What `crumple check` reports about a model: counts, mass, bounding box and the smallest element time step; and the
+// elements' step estimates the solver and the accuracy presets share (critical and nodal steps).
 #include <array>
 #include <cstdint>
 
