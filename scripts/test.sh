@@ -19,7 +19,7 @@ if [ "${CRUMPLE_SKIP_SANITIZERS:-0}" != "1" ]; then
   # signals, the shared QA decks: 500 of the label's 1030 s of test time under the sanitizers, 2026-12-05) are
   # the release build's
   ctest --preset debug -L "unit|badinput|fuzz|cli" -E \
-    "^cli\.(run_example_tube(_files)?|plot_example_tube(_png)?|paraview_tube|regress_shared_qa|watch_(sigterm|quiet|sigint|sigkill))$"
+    "^cli\.(run_example_tube(_files)?|plot_example_tube(_png)?|paraview_tube|regress_shared_qa(_junit)?|watch_(sigterm|quiet|sigint|sigkill))$"
 fi
 
 if [ "${CRUMPLE_SKIP_MIXED:-0}" != "1" ]; then

@@ -214,6 +214,12 @@ std::int64_t Line::id(int column, int width, std::string_view name, IdKind kind)
   return reader_->shifted_id(parsed_integer(column, width, name, 0), kind);
 }
 
+std::int64_t Line::optional_id(int column, int width, std::string_view name, IdKind kind) const {
+  const std::int64_t value = id(column, width, name, kind);
+  if (value < 0) fail(column, width, name, "a non-negative id (0 or blank: none)");
+  return value;
+}
+
 std::int64_t Line::parsed_integer(int column, int width, std::string_view name, std::int64_t fallback) const {
   const std::string field = raw(column, width);
   if (trim(field).empty()) return fallback;

@@ -15,9 +15,9 @@ namespace {
 
 constexpr double kNodeXi[4] = {-1.0, 1.0, 1.0, -1.0};
 constexpr double kNodeEta[4] = {-1.0, -1.0, 1.0, 1.0};
-constexpr double kGauss = 0.57735026918962576451;  // 1 / sqrt(3)
-constexpr double kGaussXi[4] = {-kGauss, kGauss, kGauss, -kGauss};
-constexpr double kGaussEta[4] = {-kGauss, -kGauss, kGauss, kGauss};
+constexpr double kGaussAbscissa = 0.57735026918962576451;  // 1 / sqrt(3)
+constexpr double kGaussXi[4] = {-kGaussAbscissa, kGaussAbscissa, kGaussAbscissa, -kGaussAbscissa};
+constexpr double kGaussEta[4] = {-kGaussAbscissa, -kGaussAbscissa, kGaussAbscissa, kGaussAbscissa};
 
 // Tangents of the bilinear surface x(xi, eta) = sum N_I x_I (eq. Q-1): d x / d xi on the line eta, d x / d eta on
 // the line xi.

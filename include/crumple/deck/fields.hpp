@@ -62,6 +62,8 @@ class Line {
   // An id of an object of `kind`, shifted by the enclosing //SUBMODEL's offset. Inside a submodel, integer() refuses
   // a field whose name says it is an id, so that no id escapes its offset unread.
   std::int64_t id(int column, int width, std::string_view name, IdKind kind) const;
+  // An id that may be blank or 0 (= none); a negative one is an error.
+  std::int64_t optional_id(int column, int width, std::string_view name, IdKind kind = IdKind::Other) const;
   double real(int column, int width, std::string_view name, Dimension d, double fallback = 0.0) const;
   std::string text(int column, int width) const;  // trimmed
   std::string raw(int column, int width) const;   // as written, padded with blanks to `width`

@@ -32,12 +32,6 @@ std::int64_t required_id(const Line& line, int column, std::string_view name, st
   return id;
 }
 
-// An id that may be blank or 0 (= none).
-std::int64_t optional_id(const Line& line, int column, std::string_view name, int width = 10) {
-  const std::int64_t id = line.id(column, width, name, IdKind::Other);
-  if (id < 0) line.fail(column, width, name, "a non-negative id (0 or blank: none)");
-  return id;
-}
 
 // Columns that Radioss 2019-2021 leave blank but newer versions use for an option Crumple lacks (a frame, a
 // function type): blank or 0, as Radioss 2021 reads them, or an option not supported by Crumple.
@@ -121,7 +115,7 @@ void read_bcs(CardReader& reader, DeckContext& context) {
     bc.fixed_translation[static_cast<std::size_t>(k)] = read_bcs_code(line, c.translations + k, kNames[0][k]);
     bc.fixed_rotation[static_cast<std::size_t>(k)] = read_bcs_code(line, c.rotations + k, kNames[1][k]);
   }
-  bc.skew_id = optional_id(line, c.skew, "skew_ID", c.width);
+  bc.skew_id = line.optional_id(c.skew, c.width, "skew_ID");
   bc.node_group_id = required_id(line, c.group, "grnod_ID", "node group", c.width);
   reader.finish();
   const auto fixed = [](const std::array<bool, 3>& a) { return std::count(a.begin(), a.end(), true); };
@@ -149,11 +143,11 @@ void read_imposed_motion(CardReader& reader, DeckContext& context, ImposedKind k
   const Line line = reader.next("funct_IDT, Dir, skew_ID, sensor_ID, grnod_ID, frame_ID, Icoor");
   im.function_id = required_id(line, 1, "funct_IDT", "function");
   im.dof = read_direction(line, true);
-  im.skew_id = optional_id(line, 21, "skew_ID");
-  im.sensor_id = optional_id(line, 31, "sensor_ID");
+  im.skew_id = line.optional_id(21, 10, "skew_ID");
+  im.sensor_id = line.optional_id(31, 10, "sensor_ID");
   im.node_group_id = required_id(line, 41, "grnod_ID", "node group");
   if (kind == ImposedKind::Velocity) {
-    im.frame_id = optional_id(line, 51, "frame_ID");
+    im.frame_id = line.optional_id(51, 10, "frame_ID");
     if (im.frame_id != 0 && im.skew_id != 0)
       line.fail(51, 10, "frame_ID", "0 when skew_ID is given (a skew and a frame exclude each other)");
   } else {
@@ -194,7 +188,7 @@ void read_final_geometry(CardReader& reader, DeckContext& context) {
     context.unsupported(line.error(11, 10, "part_ID", default_only("a spring part between the nodes and their "
                                                                    "final positions is")));
   if (line.integer(21, 10, "(unused)") != 0) line.fail(21, 10, "(unused)", "blank or 0 in columns 21-30");
-  g.sensor_id = optional_id(line, 31, "sens_ID");
+  g.sensor_id = line.optional_id(31, 10, "sens_ID");
   const Line times = reader.next("Ascale, Tstart, Tstop");
   g.scale_x = scale_or_one(reader, times, 1, "Ascale", dim::time);
   if (g.scale_x < 0.0) times.fail(1, 20, "Ascale", "a positive time scale (0 or blank: 1)");
@@ -222,8 +216,8 @@ void read_concentrated_load(CardReader& reader, DeckContext& context) {
   // Radioss gives fct_IDT = 0 no constant-load meaning: a missing function is an error, not a guess.
   load.function_id = required_id(line, 1, "funct_IDT", "function");
   load.dof = read_direction(line, true);
-  load.skew_id = optional_id(line, 21, "skew_ID");
-  load.sensor_id = optional_id(line, 31, "sensor_ID");
+  load.skew_id = line.optional_id(21, 10, "skew_ID");
+  load.sensor_id = line.optional_id(31, 10, "sensor_ID");
   if (reader.narrow()) {  // input versions 41 to 44: Fscale_Y 33-48, grnod_ID 49-56, no Ascale_x
     const Line w = line.as_written();
     load.scale_y = scale_or_one(reader, w, 33, "Fscale_Y", ordinate_dimension(load.kind, load.dof), 16);
@@ -261,7 +255,7 @@ void read_initial_velocity(CardReader& reader, DeckContext& context) {
     iv.velocity[static_cast<std::size_t>(k)] = line.real(1 + 20 * k, 20, kNames[iv.rotation ? 1 : 0][k],
                                                          iv.rotation ? dim::angular_velocity : dim::velocity);
   iv.node_group_id = required_id(line, 61, "grnod_ID", "node group");
-  iv.skew_id = optional_id(line, 71, "Skew_ID");
+  iv.skew_id = line.optional_id(71, 10, "Skew_ID");
   if (reader.has_data()) {
     const Line start = reader.next("Tstart, sens_ID");
     if (start.real(1, 20, "Tstart", dim::time) != 0.0)
@@ -276,19 +270,19 @@ void read_initial_velocity(CardReader& reader, DeckContext& context) {
 void read_gravity(CardReader& reader, DeckContext& context) {
   auto g = begin_record<Gravity>(reader, 1);
   const Line line = reader.next("funct_IDT, Dir, skew_ID, sensor_ID, grnod_ID, Ascale_x, Fscale_Y");
-  g.function_id = optional_id(line, 1, "funct_IDT");  // 0: constant acceleration
+  g.function_id = line.optional_id(1, 10, "funct_IDT");  // 0: constant acceleration
   g.dof = line.text(11, 10).empty() ? Dof::Z : read_direction(line, false);
-  g.skew_id = optional_id(line, 21, "skew_ID");
-  g.sensor_id = optional_id(line, 31, "sensor_ID");
+  g.skew_id = line.optional_id(21, 10, "skew_ID");
+  g.sensor_id = line.optional_id(31, 10, "sensor_ID");
   // Input versions 41 to 44: Fscale_Y 33-48, grnod_ID 49-56, no Ascale_x.
   const bool narrow = reader.narrow();
   const Line w = line.as_written();
   const int scale_column = narrow ? 33 : 81, scale_width = narrow ? 16 : 20;
   if (narrow) {
-    g.node_group_id = optional_id(w, 49, "grnod_ID", 8);  // 0: every node
+    g.node_group_id = w.optional_id(49, 8, "grnod_ID");  // 0: every node
     g.scale_x = reader.units().factor(dim::time);
   } else {
-    g.node_group_id = optional_id(line, 41, "grnod_ID");  // 0: every node
+    g.node_group_id = line.optional_id(41, 10, "grnod_ID");  // 0: every node
     require_blank_newer_field(line, context, 51, "Itypfun");
     g.scale_x = time_scale(reader, line, 61);
   }

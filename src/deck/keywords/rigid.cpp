@@ -11,13 +11,6 @@
 namespace crumple::deck {
 namespace {
 
-
-std::int64_t optional_id(const Line& line, int column, std::string_view name, IdKind kind = IdKind::Other) {
-  const std::int64_t id = line.id(column, 10, name, kind);
-  if (id < 0) line.fail(column, 10, name, "a non-negative id (0 or blank: none)");
-  return id;
-}
-
 // Three reals in columns 1-20, 21-40, 41-60 (a point, a velocity...) named `names`.
 Vec3 read_vector(const Line& line, const std::array<const char*, 3>& names, Dimension d, int first_column = 1) {
   Vec3 v{};
@@ -42,12 +35,12 @@ RigidWallShape wall_shape(const CardReader& reader) {
 
 // Line 2: node_ID, Slide, grnod_ID1, grnod_ID2.
 void read_wall_nodes(const Line& line, RigidWall& w, DeckContext& context) {
-  w.node_id = optional_id(line, 1, "node_ID", IdKind::Node);
+  w.node_id = line.optional_id(1, 10, "node_ID", IdKind::Node);
   const std::int64_t slide = line.integer(11, 10, "Slide");
   if (slide < 0 || slide > 2) line.fail(11, 10, "Slide", "0 (sliding), 1 (tied) or 2 (sliding with friction)");
   w.slide = static_cast<WallSliding>(slide);
-  w.node_group1_id = optional_id(line, 21, "grnod_ID1");
-  w.node_group2_id = optional_id(line, 31, "grnod_ID2");
+  w.node_group1_id = line.optional_id(21, 10, "grnod_ID1");
+  w.node_group2_id = line.optional_id(31, 10, "grnod_ID2");
   // Blank in the 2019-2021 layouts; later versions read a penalty formulation flag there (Iform), which Crumple
   // does not have: its walls are kinematic.
   const std::string penalty = line.text(41, 10);
@@ -154,8 +147,8 @@ int read_flag(const Line& line, int column, std::string_view name, int zero_mean
 void read_body_definition(const Line& line, RigidBody& b) {
   b.main_node_id = line.id(1, 10, "RBID", IdKind::Node);
   if (b.main_node_id <= 0) line.fail(1, 10, "RBID", "a positive main node id");
-  b.sensor_id = optional_id(line, 11, "sensor_ID");
-  b.skew_id = optional_id(line, 21, "skew_ID");
+  b.sensor_id = line.optional_id(11, 10, "sensor_ID");
+  b.skew_id = line.optional_id(21, 10, "skew_ID");
   b.ispher = read_flag(line, 31, "Ispher", 2, 1, 3,
                        "1 (spherical inertia), 2 (computed, default) or 3 (from data); 0 or blank: 2");
   b.mass = line.real(41, 20, "Mass", dim::mass);
@@ -164,7 +157,7 @@ void read_body_definition(const Line& line, RigidBody& b) {
   if (b.node_group_id <= 0) line.fail(61, 10, "grnod_ID", "a positive node group id (the secondary nodes)");
   b.ikrem = read_flag(line, 71, "Ikrem", 0, 0, 1, "0 (secondary nodes removed from rigid walls) or 1 (kept)");
   b.icog = read_flag(line, 81, "ICoG", 1, 1, 4, "1, 2, 3 or 4 (0 or blank: 1)");
-  b.surface_id = optional_id(line, 91, "surf_ID");
+  b.surface_id = line.optional_id(91, 10, "surf_ID");
 }
 
 // The solver (solver/rigid_bodies.cpp) computes the inertia from the nodes plus the added inertia (Ispher 2), made
