@@ -1,8 +1,10 @@
-# Unity builds: a library's sources compiled in batches of eight, so that the headers every source includes (fmt,
-# the standard library, HDF5, the model) are parsed once a batch, not once a file. Clean builds take a third of
-# the time, which is most of CI's (three builds on two cores). A batch is one translation unit: names local to a
-# file (anonymous namespaces, static functions) must differ between the files of a library. A source compiled
-# with its own options (contact/closest_point.cpp) stays on its own; CMake leaves such files out of batches.
+# Unity builds: the sources of a library or a test program compiled in batches of eight, so that the headers every
+# source includes (fmt, GoogleTest, the standard library, HDF5, the model) are parsed and their templates
+# instantiated once a batch, not once a file. A clean release build takes 3.0 minutes on two cores against 5.7
+# (2026-12-05), and builds are half of CI's time (three of them). A batch is one translation unit: names local to a
+# file (anonymous namespaces, static functions) must differ between the files of a library, and each test file
+# keeps its helpers and tests in a namespace named after the file. A source compiled with its own options
+# (contact/closest_point.cpp) stays on its own; CMake leaves such files out of batches.
 # Floating-point results do not change: every file is compiled with the same options, and ISO C++ mode
 # (CMAKE_CXX_EXTENSIONS OFF) keeps -ffp-contract=off whatever the compiler inlines.
 function(crumple_unity_build target)

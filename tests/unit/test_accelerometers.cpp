@@ -6,6 +6,9 @@
 
 #include "crumple/solver/accelerometers.hpp"
 
+// Its own namespace: the test programs are built in unity batches (cmake/Unity.cmake).
+namespace test_accelerometers {
+
 using namespace crumple;
 
 namespace {
@@ -108,3 +111,5 @@ TEST(Accelerometers, UpdateAfterTheVelocityUpdate) {
   update_accelerometers(meters, n, {&bx, &by, &bz}, 0.0, {}, h);
   EXPECT_DOUBLE_EQ(h.accel_velocity[0], 1.0);
 }
+
+}  // namespace test_accelerometers

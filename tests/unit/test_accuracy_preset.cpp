@@ -9,6 +9,9 @@
 #include "crumple/model/summary.hpp"
 #include "deck_files.hpp"
 
+// Its own namespace: the test programs are built in unity batches (cmake/Unity.cmake).
+namespace test_accuracy_preset {
+
 using namespace crumple;
 using test::I;
 using test::R;
@@ -154,3 +157,5 @@ TEST(AccuracyPreset, NamesAreTheThreePresets) {
 }
 
 }  // namespace
+
+}  // namespace test_accuracy_preset

@@ -10,6 +10,9 @@
 
 #include "deck_files.hpp"
 
+// Its own namespace: the test programs are built in unity batches (cmake/Unity.cmake).
+namespace test_box_groups {
+
 using namespace crumple;
 using test::I;
 using test::R;
@@ -196,3 +199,5 @@ TEST(Lines, SurfaceEdgesAndFreeEdges) {
   const auto path = dir.write("TEST_0000.rad", test::begin_card() + plate + undefined + "/END\n");
   EXPECT_NE(test::first_error(path).find("surf_ID"), std::string::npos);
 }
+
+}  // namespace test_box_groups

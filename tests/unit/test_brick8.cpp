@@ -19,6 +19,9 @@
 #include "crumple/solver/solver_state.hpp"
 #include "deck_files.hpp"
 
+// Its own namespace: the test programs are built in unity batches (cmake/Unity.cmake).
+namespace test_brick8 {
+
 using namespace crumple;
 using test::I;
 using test::R;
@@ -1166,3 +1169,5 @@ TEST(Brick8, Isolid18ResolvesIcpreFromTheLaw) {
   EXPECT_EQ(icpre_of(14, 2, plastic), 2);
   EXPECT_EQ(icpre_of(14, 0, plastic), 3);
 }
+
+}  // namespace test_brick8

@@ -9,6 +9,9 @@
 #include "app/child_runs.hpp"
 #include "deck_files.hpp"
 
+// Its own namespace: the test programs are built in unity batches (cmake/Unity.cmake).
+namespace test_child_runs {
+
 using namespace crumple::app;
 
 namespace {
@@ -61,3 +64,5 @@ TEST(ChildRuns, AProgramThatCannotStartIsReported) {
 }
 
 }  // namespace
+
+}  // namespace test_child_runs

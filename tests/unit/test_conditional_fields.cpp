@@ -4,6 +4,9 @@
 
 #include "deck_files.hpp"
 
+// Its own namespace: the test programs are built in unity batches (cmake/Unity.cmake).
+namespace test_conditional_fields {
+
 using namespace crumple;
 using test::I;
 using test::R;
@@ -56,3 +59,5 @@ TEST(ConditionalFields, DefaultsWithoutTheirElementsAreNamed) {
   EXPECT_NE(warnings_of(shell_property(24, 0.0, 0.0), def_solid).find("/DEF_SOLID: no brick in the model"),
             std::string::npos);
 }
+
+}  // namespace test_conditional_fields

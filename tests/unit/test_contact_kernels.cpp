@@ -9,6 +9,9 @@
 #include "crumple/contact/contact.hpp"
 #include "crumple/contact/kernels.hpp"
 
+// Its own namespace: the test programs are built in unity batches (cmake/Unity.cmake).
+namespace test_contact_kernels {
+
 using namespace crumple;
 using namespace crumple::contact;
 
@@ -448,3 +451,5 @@ TEST(ContactKernels, VectorisedBatchMatchesTheRegionWalk) {
     }
   }
 }
+
+}  // namespace test_contact_kernels

@@ -6,6 +6,9 @@
 
 #include "deck_files.hpp"
 
+// Its own namespace: the test programs are built in unity batches (cmake/Unity.cmake).
+namespace test_deck_aliases {
+
 using namespace crumple;
 using test::I;
 using test::R;
@@ -136,3 +139,5 @@ TEST(DeckAliases, RandomNoiseMovesEveryNodeWithinItsAmplitude) {
     EXPECT_TRUE(contains(e.what(), "field Seed")) << e.what();
   }
 }
+
+}  // namespace test_deck_aliases

@@ -8,6 +8,9 @@
 
 #include "deck_files.hpp"
 
+// Its own namespace: the test programs are built in unity batches (cmake/Unity.cmake).
+namespace test_engine_keywords {
+
 using namespace crumple;
 using test::I;
 using test::R;
@@ -413,3 +416,5 @@ TEST(EngineKeywords, SelectiveMassScalingCards) {
   for (const auto& w : read_deck(test::write_deck(alone, ams, kRun)).report.warnings) warnings += w.text();
   EXPECT_TRUE(contains(warnings, "/AMS: no effect")) << warnings;
 }
+
+}  // namespace test_engine_keywords

@@ -10,7 +10,7 @@
 
 #include "crumple/core/exact_sum.hpp"
 
-namespace crumple {
+namespace crumple::test_exact_sum {
 namespace {
 
 double exact(const std::vector<double>& terms) {
@@ -90,4 +90,4 @@ TEST(ExactSum, NonFiniteTermsGiveTheIeeeResult) {
 }
 
 }  // namespace
-}  // namespace crumple
+}  // namespace crumple::test_exact_sum

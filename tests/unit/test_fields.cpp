@@ -2,6 +2,9 @@
 
 #include "crumple/deck/fields.hpp"
 
+// Its own namespace: the test programs are built in unity batches (cmake/Unity.cmake).
+namespace test_fields {
+
 using crumple::parse_fortran_real;
 using crumple::parse_integer;
 
@@ -32,3 +35,5 @@ TEST(Fields, Integers) {
   for (const char* bad : {"", "1.0", "1e3", "x", "12 3", "99999999999999999999"})
     EXPECT_FALSE(parse_integer(bad).has_value()) << "'" << bad << "'";
 }
+
+}  // namespace test_fields

@@ -17,6 +17,9 @@
 #include "crumple/output/run.hpp"
 #include "deck_files.hpp"
 
+// Its own namespace: the test programs are built in unity batches (cmake/Unity.cmake).
+namespace test_frame_fields {
+
 using namespace crumple;
 using test::I;
 using test::R;
@@ -431,3 +434,5 @@ TEST(FrameFields, TheEndOfARunWritesItsLastStateOnce) {
   EXPECT_EQ(frames_after_close("2e-3 4e-4", 1e-3, false), 0u);  // Tstart past the end: no frame at all
   EXPECT_EQ(frames_after_close("0 4e-4", 1e-3, true), 1u);      // that cycle's frame is there already
 }
+
+}  // namespace test_frame_fields

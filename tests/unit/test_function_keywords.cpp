@@ -3,6 +3,9 @@
 
 #include "deck_files.hpp"
 
+// Its own namespace: the test programs are built in unity batches (cmake/Unity.cmake).
+namespace test_function_keywords {
+
 using namespace crumple;
 using test::I;
 using test::R;
@@ -66,3 +69,5 @@ TEST(FunctionKeywords, FinalGeometryReadsEachNodesTarget) {
   EXPECT_NE(test::first_error(test::write_deck(dir, card(0, 3) + body)).find("rigid body"), std::string::npos)
       << test::first_error(test::write_deck(dir, card(0, 3) + body));
 }
+
+}  // namespace test_function_keywords

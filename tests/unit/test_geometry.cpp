@@ -6,7 +6,7 @@
 
 #include "crumple/core/geometry.hpp"
 
-namespace crumple::geometry {
+namespace crumple::geometry::test_geometry {
 namespace {
 
 // A square and a rectangle: the shortest side, which is also the area over the longest side.
@@ -77,4 +77,4 @@ TEST(Geometry, TriangleCornerFractionsAreTheAnglesOverPi) {
 }
 
 }  // namespace
-}  // namespace crumple::geometry
+}  // namespace crumple::geometry::test_geometry

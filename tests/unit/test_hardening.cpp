@@ -9,7 +9,7 @@
 #include "crumple/materials/hardening.hpp"
 #include "crumple/materials/plane_stress.hpp"
 
-namespace crumple::materials {
+namespace crumple::materials::test_hardening {
 namespace {
 
 Material johnson_cook(int fsmooth, double f_cut) {
@@ -178,4 +178,4 @@ TEST(Hardening, SlopeFromTermIsTheSlope) {
 }
 
 }  // namespace
-}  // namespace crumple::materials
+}  // namespace crumple::materials::test_hardening

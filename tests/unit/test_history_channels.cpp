@@ -15,6 +15,9 @@
 #include "crumple/solver/solver.hpp"
 #include "deck_files.hpp"
 
+// Its own namespace: the test programs are built in unity batches (cmake/Unity.cmake).
+namespace test_history_channels {
+
 using namespace crumple;
 using test::blank;
 using test::I;
@@ -474,3 +477,5 @@ TEST(HistoryChannels, SectionValuesFromKnownLoads) {
   // About the origin: sum m + x2 x f2 + x5 x f5 = (0.56, 0.61, 0.93).
   expect(4, "MX MY MZ CX CY CZ", {0.56, 0.61, 0.93, 0, 0, 0});
 }
+
+}  // namespace test_history_channels

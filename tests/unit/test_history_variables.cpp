@@ -6,6 +6,9 @@
 
 #include "crumple/model/history_variables.hpp"
 
+// Its own namespace: the test programs are built in unity batches (cmake/Unity.cmake).
+namespace test_history_variables {
+
 using namespace crumple;
 
 namespace {
@@ -73,3 +76,5 @@ TEST(HistoryVariables, SectionGroupsAndWhatIsWritten) {
   for (const HistoryVariable& v : history_kind(HistoryObject::Section).variables)
     EXPECT_EQ(v.written, v.name != "WORKR" && !v.name.starts_with("DF") && !v.name.starts_with("DM")) << v.name;
 }
+
+}  // namespace test_history_variables

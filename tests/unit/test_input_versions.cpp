@@ -4,6 +4,9 @@
 
 #include "deck_files.hpp"
 
+// Its own namespace: the test programs are built in unity batches (cmake/Unity.cmake).
+namespace test_input_versions {
+
 using namespace crumple;
 using test::I;
 using test::R;
@@ -178,3 +181,5 @@ TEST(SurfaceKeywords, ShellGroupSurfacesAndSurfaceNodeGroups) {
   EXPECT_NE(test::first_error(deck(dir, 2019, "/SURF/GRSHEL/6\ns\n" + I(9) + "\n")).find("shell group 9 not defined"),
             std::string::npos);
 }
+
+}  // namespace test_input_versions

@@ -4,6 +4,9 @@
 
 #include "deck_files.hpp"
 
+// Its own namespace: the test programs are built in unity batches (cmake/Unity.cmake).
+namespace test_interface_keywords {
+
 using namespace crumple;
 using test::blank;
 using test::I;
@@ -223,10 +226,12 @@ TEST(InterfaceKeywords, CurvatureLineIsReadThenRejectedByName) {
   EXPECT_TRUE(contains(e, "not supported")) << e;
 }
 
+namespace {
 struct Unsupported {
   const char* field;
   void (*change)(Type7&);
 };
+}  // namespace
 
 TEST(InterfaceKeywords, OptionsWithoutImplementationAreErrorsNamingTheField) {
   const Unsupported cases[] = {
@@ -339,3 +344,5 @@ TEST(InterfaceKeywords, UnusedValuesAreWarnings) {
   EXPECT_TRUE(contains(w, "Gap_max")) << w;
   EXPECT_TRUE(contains(w, "Stmin and Stmax")) << w;
 }
+
+}  // namespace test_interface_keywords

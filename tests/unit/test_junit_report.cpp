@@ -7,6 +7,9 @@
 #include "crumple/output/junit_report.hpp"
 #include "deck_files.hpp"
 
+// Its own namespace: the test programs are built in unity batches (cmake/Unity.cmake).
+namespace test_junit_report {
+
 using namespace crumple;
 
 namespace {
@@ -63,3 +66,5 @@ TEST(JunitReport, WritesTheFileOrSaysWhyNot) {
 }
 
 }  // namespace
+
+}  // namespace test_junit_report

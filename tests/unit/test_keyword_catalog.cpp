@@ -9,6 +9,9 @@
 #include "deck/keyword_catalog.hpp"
 #include "deck_files.hpp"
 
+// Its own namespace: the test programs are built in unity batches (cmake/Unity.cmake).
+namespace test_keyword_catalog {
+
 using namespace crumple;
 using test::I;
 using test::R;
@@ -121,3 +124,5 @@ TEST(KeywordCatalog, SkipUnknownRecordsEverySkippedKeyword) {
   EXPECT_TRUE(contains(skipped[1].what, "unknown keyword skipped")) << skipped[1].what;
   EXPECT_TRUE(contains(skipped[1].text(), "[skipped]")) << skipped[1].text();
 }
+
+}  // namespace test_keyword_catalog

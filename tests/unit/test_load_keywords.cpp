@@ -6,6 +6,9 @@
 
 #include "deck_files.hpp"
 
+// Its own namespace: the test programs are built in unity batches (cmake/Unity.cmake).
+namespace test_load_keywords {
+
 using namespace crumple;
 using test::I;
 using test::R;
@@ -412,3 +415,5 @@ TEST(LoadKeywords, SensorErrors) {
   EXPECT_NE(missing.find("sensor_ID"), std::string::npos) << missing;
   EXPECT_NE(missing.find("sensor 8"), std::string::npos) << missing;
 }
+
+}  // namespace test_load_keywords

@@ -6,6 +6,9 @@
 #include "crumple/model/summary.hpp"
 #include "deck_files.hpp"
 
+// Its own namespace: the test programs are built in unity batches (cmake/Unity.cmake).
+namespace test_mesh_keywords {
+
 using namespace crumple;
 using test::I;
 using test::R;
@@ -89,3 +92,5 @@ TEST(MeshKeywords, ShellThicknessOverridesThePropertys) {
   EXPECT_EQ(shell_thickness(m, ElementKind::Shell4, 1), 0.001);
   EXPECT_NEAR(m.total_mass(), 3.12e-3, 1e-15);  // the reference's starter listing: 3.12e-3 kg
 }
+
+}  // namespace test_mesh_keywords

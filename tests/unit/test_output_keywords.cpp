@@ -5,6 +5,9 @@
 #include "crumple/model/cut_sections.hpp"
 #include "deck_files.hpp"
 
+// Its own namespace: the test programs are built in unity batches (cmake/Unity.cmake).
+namespace test_output_keywords {
+
 using namespace crumple;
 using test::blank;
 using test::I;
@@ -415,3 +418,5 @@ TEST(OutputKeywords, WrittenSectionsNeedAFrameAndNoInterfaces) {
   EXPECT_TRUE(skipped.model.sections[0].interfaces.empty());
   EXPECT_FALSE(skipped.report.skipped_options.empty());
 }
+
+}  // namespace test_output_keywords

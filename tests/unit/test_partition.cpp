@@ -12,6 +12,9 @@
 #include "crumple/parallel/partition.hpp"
 #include "deck_files.hpp"
 
+// Its own namespace: the test programs are built in unity batches (cmake/Unity.cmake).
+namespace test_partition {
+
 using namespace crumple;
 using test::I;
 using test::R;
@@ -257,3 +260,5 @@ TEST(Partition, DescribeGivesTheQualityLines) {
   ASSERT_GE(lines.size(), 1u);
   EXPECT_EQ(lines[0], "DOMAINS 2  EDGE CUT 1  SHARED NODES 2  IMBALANCE 1.000");
 }
+
+}  // namespace test_partition

@@ -13,6 +13,9 @@
 #include "crumple/deck/fields.hpp"
 #include "deck_files.hpp"
 
+// Its own namespace: the test programs are built in unity batches (cmake/Unity.cmake).
+namespace test_reader_robustness {
+
 using namespace crumple;
 using test::I;
 using test::R;
@@ -147,3 +150,5 @@ TEST(ReaderRobustness, IncludeOfAPipeOrDeviceIsAnErrorNotAHang) {
   EXPECT_NE(device_errors.find("expected a regular deck file, found special file '/dev/null'"), std::string::npos)
       << device_errors;
 }
+
+}  // namespace test_reader_robustness

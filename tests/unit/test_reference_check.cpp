@@ -9,6 +9,9 @@
 #include "crumple/output/reference_check.hpp"
 #include "deck_files.hpp"
 
+// Its own namespace: the test programs are built in unity batches (cmake/Unity.cmake).
+namespace test_reference_check {
+
 using namespace crumple;
 
 namespace {
@@ -208,3 +211,5 @@ TEST(RunPoint, ReadsTheHistoriesAndTheListingOfARun) {
 }
 
 }  // namespace
+
+}  // namespace test_reference_check

@@ -5,7 +5,7 @@
 
 #include "crumple/materials/resultant_plasticity.hpp"
 
-namespace crumple::materials {
+namespace crumple::materials::test_resultant_plasticity {
 namespace {
 
 constexpr double kE = 2.0e11, kA = 2.0e8;
@@ -87,4 +87,4 @@ TEST(ResultantPlasticity, CombinedLoadingStaysOnTheSurface) {
 }
 
 }  // namespace
-}  // namespace crumple::materials
+}  // namespace crumple::materials::test_resultant_plasticity

@@ -15,6 +15,9 @@
 #include "crumple/output/results_reader.hpp"
 #include "deck_files.hpp"
 
+// Its own namespace: the test programs are built in unity batches (cmake/Unity.cmake).
+namespace test_results_file {
+
 using namespace crumple;
 using test::I;
 using test::R;
@@ -541,3 +544,5 @@ print("ok")
   const int status = std::system(command.c_str());
   EXPECT_EQ(status, 0) << read_text(dir.path() / "out.txt");
 }
+
+}  // namespace test_results_file

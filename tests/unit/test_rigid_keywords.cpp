@@ -6,6 +6,9 @@
 
 #include "deck_files.hpp"
 
+// Its own namespace: the test programs are built in unity batches (cmake/Unity.cmake).
+namespace test_rigid_keywords {
+
 using namespace crumple;
 using test::I;
 using test::R;
@@ -465,3 +468,5 @@ TEST(RigidKeywords, SensorBodyTakesTheWindowAndRefusesWhatItIgnores) {
   centred.icog = 3;
   EXPECT_NE(error_of(dir, sensor + centred.card()).find("ICoG"), std::string::npos);
 }
+
+}  // namespace test_rigid_keywords

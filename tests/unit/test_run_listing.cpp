@@ -18,7 +18,7 @@
 #include "deck_files.hpp"
 #include "crumple/output/results_reader.hpp"
 
-namespace crumple {
+namespace crumple::test_run_listing {
 namespace {
 
 TEST(Progress, DurationsAreMinutesAndSecondsThenHours) {
@@ -201,4 +201,4 @@ TEST(RunListing, StopRequestOnTheLastCycleLeavesANormalRun) {
 }
 
 }  // namespace
-}  // namespace crumple
+}  // namespace crumple::test_run_listing

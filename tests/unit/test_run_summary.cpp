@@ -9,7 +9,7 @@
 #include "crumple/output/run_summary.hpp"
 #include "deck_files.hpp"
 
-namespace crumple {
+namespace crumple::test_run_summary {
 namespace {
 
 TEST(RunSummary, DeckFileChecksumIsTheStandardCrc32) {
@@ -40,4 +40,4 @@ TEST(RunSummary, JsonCarriesBuildDateDeckFilesAndDeletions) {
 }
 
 }  // namespace
-}  // namespace crumple
+}  // namespace crumple::test_run_summary

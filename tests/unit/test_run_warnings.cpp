@@ -5,7 +5,7 @@
 #include "crumple/output/run_recorder.hpp"
 #include "solver/cycle.hpp"
 
-namespace crumple {
+namespace crumple::test_run_warnings {
 namespace {
 
 TEST(RunWarnings, EnergyErrorBeyondTenPercentIsRaisedOnce) {
@@ -57,4 +57,4 @@ TEST(RunWarnings, UnderAPresetTheEnergyErrorBeyondFivePercentNamesItsKnobs) {
 }
 
 }  // namespace
-}  // namespace crumple
+}  // namespace crumple::test_run_warnings

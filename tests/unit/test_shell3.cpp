@@ -5,6 +5,9 @@
 #include "crumple/materials/hardening.hpp"
 #include "deck_files.hpp"
 
+// Its own namespace: the test programs are built in unity batches (cmake/Unity.cmake).
+namespace test_shell3 {
+
 using namespace crumple;
 using test::I;
 using test::R;
@@ -84,3 +87,5 @@ TEST(Shell3, RigidRotationGivesNoStress) {
   EXPECT_NEAR(t.state.qx[0], 0.0, 1e-6);
   EXPECT_NEAR(t.state.qy[0], 0.0, 1e-6);
 }
+
+}  // namespace test_shell3

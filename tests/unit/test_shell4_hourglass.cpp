@@ -5,6 +5,9 @@
 #include "elements/shell4_hourglass.hpp"  // kRotationHourglassViscosity (eq. S-19)
 #include "shell4_element.hpp"
 
+// Its own namespace: the test programs are built in unity batches (cmake/Unity.cmake).
+namespace test_shell4_hourglass {
+
 using namespace crumple;
 using namespace crumple::test;
 
@@ -236,3 +239,5 @@ TEST(Shell4Hourglass, Ishell3LimitsTheHourglassStressesByTheYieldStress) {
 }
 
 }  // namespace
+
+}  // namespace test_shell4_hourglass

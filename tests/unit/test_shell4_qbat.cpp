@@ -5,6 +5,9 @@
 // symmetric stiffness, and exact bending and twisting energies of a rectangle.
 #include "shell4_element.hpp"
 
+// Its own namespace: the test programs are built in unity batches (cmake/Unity.cmake).
+namespace test_shell4_qbat {
+
 using namespace crumple;
 using namespace crumple::test;
 
@@ -156,3 +159,5 @@ TEST(Shell4Qbat, KirchhoffTwistWithoutShearLocking) {
     EXPECT_NEAR(el.last.internal_energy, exact, 1e-10 * exact) << "aspect " << aspect;
   }
 }
+
+}  // namespace test_shell4_qbat

@@ -9,6 +9,9 @@
 #include "crumple/materials/hardening.hpp"
 #include "deck_files.hpp"
 
+// Its own namespace: the test programs are built in unity batches (cmake/Unity.cmake).
+namespace test_shell4_qeph {
+
 using namespace crumple;
 using test::I;
 using test::R;
@@ -136,3 +139,5 @@ TEST(Shell4Qeph, RigidRotationGivesNoHourglassForce) {
 }
 
 }  // namespace
+
+}  // namespace test_shell4_qeph

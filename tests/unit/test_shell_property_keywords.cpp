@@ -7,6 +7,9 @@
 
 #include "deck_files.hpp"
 
+// Its own namespace: the test programs are built in unity batches (cmake/Unity.cmake).
+namespace test_shell_property_keywords {
+
 using namespace crumple;
 using test::I;
 using test::R;
@@ -130,3 +133,5 @@ TEST(ShellPropertyKeywords, GlobalIntegrationOfJohnsonCookRunsThreePoints) {
 }
 
 }  // namespace
+
+}  // namespace test_shell_property_keywords

@@ -4,6 +4,9 @@
 #include "crumple/core/geometry.hpp"
 #include "shell4_element.hpp"
 
+// Its own namespace: the test programs are built in unity batches (cmake/Unity.cmake).
+namespace test_shell_small_strain {
+
 using namespace crumple;
 using namespace crumple::test;
 
@@ -103,3 +106,5 @@ TEST(ShellSmallStrain, TriangleSwitchFreezesItsShape) {
 }
 
 }  // namespace
+
+}  // namespace test_shell_small_strain

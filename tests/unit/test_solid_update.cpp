@@ -7,6 +7,9 @@
 
 #include "crumple/materials/solid_update.hpp"
 
+// Its own namespace: the test programs are built in unity batches (cmake/Unity.cmake).
+namespace test_solid_update {
+
 using namespace crumple;
 using namespace crumple::materials;
 
@@ -212,3 +215,5 @@ TEST(SolidUpdate, SmallSpinIsTheJaumannRate) {
   EXPECT_NEAR(s[3] - T[0][1], J[0][1], 1e-10);
   EXPECT_NEAR(s[4] - T[1][2], J[1][2], 1e-10);
 }
+
+}  // namespace test_solid_update

@@ -8,6 +8,9 @@
 #include "crumple/deck/fields.hpp"
 #include "deck_files.hpp"
 
+// Its own namespace: the test programs are built in unity batches (cmake/Unity.cmake).
+namespace test_submodels {
+
 using namespace crumple;
 using test::I;
 using test::R;
@@ -215,3 +218,5 @@ TEST(Submodels, AnIdReadWithoutItsOffsetIsRefused) {
   reader.set_id_offsets(nullptr);
   EXPECT_EQ(line.integer(11, 10, "sens_ID"), 7);  // outside a block
 }
+
+}  // namespace test_submodels

@@ -9,6 +9,9 @@
 #include "crumple/output/results_file.hpp"
 #include "deck_files.hpp"
 
+// Its own namespace: the test programs are built in unity batches (cmake/Unity.cmake).
+namespace test_th_command {
+
 using namespace crumple;
 
 namespace {
@@ -107,3 +110,5 @@ TEST(ThCommand, BadSelectionsAndFilesAreBadInput) {
   options.output = dir.path() / "no-such-folder" / "out.csv";
   EXPECT_EQ(run(options).code, app::kExitRunFailed);
 }
+
+}  // namespace test_th_command

@@ -8,6 +8,9 @@
 #include "crumple/core/geometry.hpp"
 #include "deck_files.hpp"
 
+// Its own namespace: the test programs are built in unity batches (cmake/Unity.cmake).
+namespace test_transforms {
+
 using namespace crumple;
 using test::I;
 using test::R;
@@ -256,3 +259,5 @@ TEST(Transforms, MirroredBrickRenumbered) {
   for (const auto& w : deck.report.warnings) warned = warned || w.message.find("renumbered") != std::string::npos;
   EXPECT_TRUE(warned);
 }
+
+}  // namespace test_transforms

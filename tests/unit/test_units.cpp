@@ -3,6 +3,9 @@
 #include "crumple/deck/units.hpp"
 #include "deck_files.hpp"
 
+// Its own namespace: the test programs are built in unity batches (cmake/Unity.cmake).
+namespace test_units {
+
 using namespace crumple;
 
 TEST(Units, CodesAndNumbers) {
@@ -111,3 +114,5 @@ TEST(Units, UnitErrorsNameTheField) {
   EXPECT_NE(error(unit_card(7, "g", "cm", "s") + unit_card(7, "g", "cm", "s")).find("also the id"), std::string::npos);
   EXPECT_NE(error(unit_card(7, "1e300", "cm", "s")).find("finite"), std::string::npos);
 }
+
+}  // namespace test_units

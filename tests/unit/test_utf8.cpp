@@ -6,6 +6,9 @@
 #include "crumple/deck/reader.hpp"
 #include "deck_files.hpp"
 
+// Its own namespace: the test programs are built in unity batches (cmake/Unity.cmake).
+namespace test_utf8 {
+
 using namespace crumple;
 using test::I;
 using test::R;
@@ -41,3 +44,5 @@ TEST(ValidUtf8, ADeckTitleInLatin1IsReadAsValidText) {
 }
 
 }  // namespace
+
+}  // namespace test_utf8

@@ -6,6 +6,9 @@
 
 #include "deck_files.hpp"
 
+// Its own namespace: the test programs are built in unity batches (cmake/Unity.cmake).
+namespace test_wall_selection {
+
 using namespace crumple;
 using test::I;
 using test::R;
@@ -55,3 +58,5 @@ TEST(WallSelection, DsearchSelectsAsTheReference) {
   EXPECT_EQ(secondary_count(wall("CYL", 0, round + point(0.5, 0.3, 1.0))), 30u);
   EXPECT_EQ(secondary_count(wall("SPHER", 0, round)), 31u);
 }
+
+}  // namespace test_wall_selection

@@ -16,7 +16,7 @@
 #include "crumple/output/history_reader.hpp"
 #include "verification_support.hpp"
 
-namespace crumple::verification {
+namespace crumple::verification::test_accelerometer {
 namespace {
 
 constexpr double kRamp = 1000.0;    // c [m/s^3]
@@ -110,4 +110,4 @@ TEST(Accelerometer, RawAndFilteredAccelerationOfARampAndItsIntegral) {
               "tau)\n", dt, kCutoff * dt, tau, worst_raw, worst_filtered);
 }
 
-}  // namespace crumple::verification
+}  // namespace crumple::verification::test_accelerometer

@@ -18,7 +18,7 @@
 
 #include "verification_support.hpp"
 
-namespace crumple::verification {
+namespace crumple::verification::test_brick_bending {
 namespace {
 
 constexpr double kE = 2.1e11, kRho = 7800.0, kH = 0.1, kL = 1.0, kP = 5000.0;
@@ -146,4 +146,4 @@ TEST_P(BrickCantilever, TipDeflectionMatchesTimoshenko) {
 }
 
 }  // namespace
-}  // namespace crumple::verification
+}  // namespace crumple::verification::test_brick_bending

@@ -25,7 +25,7 @@
 
 #include "verification_support.hpp"
 
-namespace crumple::verification {
+namespace crumple::verification::test_cantilever {
 namespace {
 
 // First cantilever mode shape, phi(0) = phi'(0) = 0, phi(L) = 2, and its slope.
@@ -99,4 +99,4 @@ TEST_P(Cantilever, FirstBendingFrequency) {
 }
 
 }  // namespace
-}  // namespace crumple::verification
+}  // namespace crumple::verification::test_cantilever

@@ -10,7 +10,7 @@
 
 #include "contact_cards.hpp"
 
-namespace crumple::verification {
+namespace crumple::verification::test_contact_bars {
 namespace {
 
 constexpr int kN = 20;
@@ -89,4 +89,4 @@ TEST_P(ContactBars, ElasticImpactExchangesVelocitiesAfterTwoTransits) {
 INSTANTIATE_TEST_SUITE_P(EntryWindow, ContactBars, ::testing::Values(0, 3));
 
 }  // namespace
-}  // namespace crumple::verification
+}  // namespace crumple::verification::test_contact_bars

@@ -32,7 +32,7 @@
 
 #include "contact_cards.hpp"
 
-namespace crumple::verification {
+namespace crumple::verification::test_contact_block {
 namespace {
 
 constexpr double kT = 0.002, kBlock = 0.05, kRho = 7800.0, kYoung = 2.1e11, kGap = 0.001;
@@ -157,4 +157,4 @@ TEST(ContactRebound, DampedBothWaysAndLeavesWhenTheForceIsZero) {
 }
 
 }  // namespace
-}  // namespace crumple::verification
+}  // namespace crumple::verification::test_contact_block

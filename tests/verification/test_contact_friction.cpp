@@ -17,7 +17,7 @@
 #include "contact_cards.hpp"
 #include "crumple/contact/kernels.hpp"
 
-namespace crumple::verification {
+namespace crumple::verification::test_contact_friction {
 namespace {
 
 constexpr double kMu = 0.3, kG = 9.81, kV0 = 1.0;
@@ -94,9 +94,9 @@ TEST_P(SlidingBlock, DeceleratesAtMuGAndStopsAtTheCoulombDistance) {
 }
 
 }  // namespace
-}  // namespace crumple::verification
+}  // namespace crumple::verification::test_contact_friction
 
-namespace crumple::verification {
+namespace crumple::verification::test_contact_friction {
 namespace {
 
 using contact::FrictionLaw;
@@ -187,4 +187,4 @@ TEST_P(FrictionLaws, BlockStopsWhereItsEquationOfMotionSays) {
 }
 
 }  // namespace
-}  // namespace crumple::verification
+}  // namespace crumple::verification::test_contact_friction

@@ -22,7 +22,7 @@
 
 #include "contact_cards.hpp"
 
-namespace crumple::verification {
+namespace crumple::verification::test_contact_hertz {
 namespace {
 
 constexpr double kRadius = 0.01, kE = 2.1e11, kNu = 0.3, kRho = 7800.0, kV = 10.0;
@@ -152,4 +152,4 @@ TEST(ContactHertz, SphereOnRigidPlateMatchesHertzPeakForceAndContactTime) { chec
 TEST(ContactHertz, CoarseViscousHourglassBallStaysStableAfterTheRebound) { check_against_hertz(16, 1, 2.0); }
 
 }  // namespace
-}  // namespace crumple::verification
+}  // namespace crumple::verification::test_contact_hertz

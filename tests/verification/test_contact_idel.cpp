@@ -4,7 +4,7 @@
 #include "crumple/contact/contact.hpp"
 #include "crumple/solver/solver.hpp"  // initial_state (the start state of a run)
 
-namespace crumple::verification {
+namespace crumple::verification::test_contact_idel {
 namespace {
 
 // Plate of two shells (part 2, main surface) and a block of two shells (part 1) sharing node 102, above it.
@@ -92,4 +92,4 @@ TEST(ContactIdel, ElementsDeletedBelowTheirMinimumStepLeaveTheInterface) {
 }
 
 }  // namespace
-}  // namespace crumple::verification
+}  // namespace crumple::verification::test_contact_idel

@@ -11,7 +11,7 @@
 
 #include "contact_cards.hpp"
 
-namespace crumple::verification {
+namespace crumple::verification::test_contact_impact {
 namespace {
 
 class ShellImpact : public ::testing::TestWithParam<double> {};
@@ -42,4 +42,4 @@ TEST_P(ShellImpact, MomentumConservedNoCrossingStable) {
 }
 
 }  // namespace
-}  // namespace crumple::verification
+}  // namespace crumple::verification::test_contact_impact

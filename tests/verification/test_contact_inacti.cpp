@@ -9,7 +9,7 @@
 
 #include "contact_cards.hpp"
 
-namespace crumple::verification {
+namespace crumple::verification::test_contact_inacti {
 namespace {
 
 constexpr double kGap = 1e-3, kP0 = 0.9 * kGap;
@@ -102,4 +102,4 @@ TEST(ContactIbc, ReleasesTheFlaggedBoundaryConditionsAtFirstImpact) {
 }
 
 }  // namespace
-}  // namespace crumple::verification
+}  // namespace crumple::verification::test_contact_inacti

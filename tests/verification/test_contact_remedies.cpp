@@ -5,7 +5,7 @@
 // remedy must keep the step at dtmin = 1e-6 s and report what it did; the run must stay stable.
 #include "contact_cards.hpp"
 
-namespace crumple::verification {
+namespace crumple::verification::test_contact_remedies {
 namespace {
 
 constexpr double kSpeed = 5.0, kDtMin = 1e-6;
@@ -104,4 +104,4 @@ TEST(ContactRemedies, HigherStfacStopsAFastImpactEarlier) {
 }
 
 }  // namespace
-}  // namespace crumple::verification
+}  // namespace crumple::verification::test_contact_remedies

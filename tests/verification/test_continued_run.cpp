@@ -14,7 +14,7 @@
 #include "crumple/solver/solver_state.hpp"
 #include "verification_support.hpp"
 
-namespace crumple::verification {
+namespace crumple::verification::test_continued_run {
 namespace {
 
 constexpr double kStep = 1.0 / 1048576.0;  // 2^-20 s
@@ -130,4 +130,4 @@ TEST(ContinuedRun, DtixSetsTheFirstAndTheLargestStep) {
 }
 
 }  // namespace
-}  // namespace crumple::verification
+}  // namespace crumple::verification::test_continued_run

@@ -15,7 +15,7 @@
 #include "crumple/solver/solver.hpp"
 #include "deck_files.hpp"
 
-namespace crumple {
+namespace crumple::test_domains {
 namespace {
 
 const std::filesystem::path kQa = CRUMPLE_QA_DIR;
@@ -228,4 +228,4 @@ INSTANTIATE_TEST_SUITE_P(Shared, Repartitioned,
                          [](const testing::TestParamInfo<DomainCase>& c) { return std::string(c.param.folder); });
 
 }  // namespace
-}  // namespace crumple
+}  // namespace crumple::test_domains

@@ -16,7 +16,7 @@
 
 #include "verification_support.hpp"
 
-namespace crumple::verification {
+namespace crumple::verification::test_functions {
 namespace {
 
 Strip plate() {
@@ -93,9 +93,9 @@ TEST(Functions, AYieldCurveGoesOnAlongItsLastSlope) {
   EXPECT_NEAR(internal, 6.913, 0.01 * 6.913);  // reference TAB36; a yield held at its last value: 4.45 J
 }
 
-}  // namespace crumple::verification
+}  // namespace crumple::verification::test_functions
 
-namespace crumple::verification {
+namespace crumple::verification::test_functions {
 
 // /IMPDISP/FGEO (docs/theory/loads.md, L-9): every node of the free plate driven to (1.01 x + 1 mm, y, 0) along the
 // ramp f = t / 1 ms, a stretch of 1 % and a shift of 1 mm. The reference (FGALL, input version 2019; the same card
@@ -129,4 +129,4 @@ TEST(Functions, FinalGeometryDrivesTheNodesToTheirPositions) {
   EXPECT_LT(x_error, 1e-12);
 }
 
-}  // namespace crumple::verification
+}  // namespace crumple::verification::test_functions

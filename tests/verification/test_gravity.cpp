@@ -8,7 +8,7 @@
 
 #include "verification_support.hpp"
 
-namespace crumple::verification {
+namespace crumple::verification::test_gravity {
 namespace {
 
 TEST(Gravity, BlankFunctionAndGroupAreAConstantAccelerationOnEveryNode) {
@@ -37,4 +37,4 @@ TEST(Gravity, BlankFunctionAndGroupAreAConstantAccelerationOnEveryNode) {
 }
 
 }  // namespace
-}  // namespace crumple::verification
+}  // namespace crumple::verification::test_gravity

@@ -15,7 +15,7 @@
 
 #include "verification_support.hpp"
 
-namespace crumple::verification {
+namespace crumple::verification::test_johnson_cook {
 namespace {
 
 // `plastic_share`: the plastic strain the return assigns per unit of inelastic strain ln(l/l0) - sigma/E in
@@ -89,4 +89,4 @@ TEST(JohnsonCook, UniaxialTensionWithStrainRateEffect) { uniaxial_tension(0.05, 
 TEST(JohnsonCook, RadialReturnUniaxialTension) { uniaxial_tension(0.0, 0.0, 0.0, 2, 2.0 * (1.0 + 0.3) / 3.0); }
 
 }  // namespace
-}  // namespace crumple::verification
+}  // namespace crumple::verification::test_johnson_cook

@@ -11,7 +11,7 @@
 
 #include "verification_support.hpp"
 
-namespace crumple::verification {
+namespace crumple::verification::test_moving_wall {
 namespace {
 
 constexpr double kE = 2.1e11, kRho = 7800.0, kThick = 0.001;
@@ -267,4 +267,4 @@ TEST(MovingWall, ALightWallIsNotDraggedByNodesLeavingIt) {
 }
 
 }  // namespace
-}  // namespace crumple::verification
+}  // namespace crumple::verification::test_moving_wall

@@ -17,7 +17,7 @@
 #include "crumple/solver/solver.hpp"  // initial_state (the start state of a run)
 #include "verification_support.hpp"
 
-namespace crumple::verification {
+namespace crumple::verification::test_patch {
 namespace {
 
 // Relative round-off of one step: a few hundred ulps of double; in the mixed build the point stresses are rounded
@@ -349,4 +349,4 @@ TEST(PatchSmallStrain, Ishell1WithIsmstr1TakesThePlainHourglassVector) {
 }
 
 }  // namespace
-}  // namespace crumple::verification
+}  // namespace crumple::verification::test_patch

@@ -24,7 +24,7 @@
 #include "crumple/output/history_reader.hpp"
 #include "crumple/output/results_reader.hpp"
 
-namespace crumple::test {
+namespace crumple::test::test_restart {
 namespace {
 
 std::string read_text(const std::filesystem::path& file) {
@@ -202,4 +202,4 @@ TEST(Restart, FileOfTheOtherPrecisionIsRefused) {
 }
 
 }  // namespace
-}  // namespace crumple::test
+}  // namespace crumple::test::test_restart

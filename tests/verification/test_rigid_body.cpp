@@ -7,7 +7,7 @@
 
 #include "tumbling_body.hpp"
 
-namespace crumple::verification {
+namespace crumple::verification::test_rigid_body {
 namespace {
 
 TEST(RigidBody, FreeTumblingKeepsAngularMomentum) {
@@ -65,4 +65,4 @@ TEST(RigidBody, MainNodeVelocityMovesTheBodyAndItsElementsSetNoStep) {
 }
 
 }  // namespace
-}  // namespace crumple::verification
+}  // namespace crumple::verification::test_rigid_body

@@ -21,7 +21,7 @@
 
 #include "verification_support.hpp"
 
-namespace crumple::verification {
+namespace crumple::verification::test_rigid_wall {
 namespace {
 
 // /RWALL/PLANE fixed at M = (0, 0, 0), normal towards M1 = (1, 0, 0), frictionless, secondary nodes: group.
@@ -79,4 +79,4 @@ TEST(RigidWall, ElasticBarReboundsAfterTwoTransits) {
 }
 
 }  // namespace
-}  // namespace crumple::verification
+}  // namespace crumple::verification::test_rigid_wall

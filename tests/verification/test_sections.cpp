@@ -29,7 +29,7 @@
 #include "crumple/output/history_reader.hpp"
 #include "verification_support.hpp"
 
-namespace crumple::verification {
+namespace crumple::verification::test_sections {
 namespace {
 
 constexpr double kE = 2.1e11, kRho = 7800.0, kNu = 0.3;
@@ -416,4 +416,4 @@ TEST(Sections, BoxCrushHistoriesFollowTheWallForce) {
 }
 
 }  // namespace
-}  // namespace crumple::verification
+}  // namespace crumple::verification::test_sections

@@ -13,7 +13,7 @@
 // SM-4, SM-4a: outside, the rail's balance lost 2 to 11 %).
 #include "verification_support.hpp"
 
-namespace crumple::verification {
+namespace crumple::verification::test_selective_mass {
 namespace {
 
 constexpr double kDensity = 7.85e-6, kYoung = 210.0;
@@ -181,4 +181,4 @@ TEST(SelectiveMass, PlateOnARigidBodyAgainstAWallKeepsItsEnergy) {
 }
 
 }  // namespace
-}  // namespace crumple::verification
+}  // namespace crumple::verification::test_selective_mass

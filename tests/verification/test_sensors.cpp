@@ -12,7 +12,7 @@
 #include "contact_cards.hpp"
 #include "verification_support.hpp"
 
-namespace crumple::verification {
+namespace crumple::verification::test_sensors {
 namespace {
 
 constexpr double kOn = 2e-4, kEnd = 6e-4;  // [s]
@@ -171,4 +171,4 @@ TEST(Sensors, RigidBodyIsOffWhileItsSensorIsOn) {
 }
 
 }  // namespace
-}  // namespace crumple::verification
+}  // namespace crumple::verification::test_sensors

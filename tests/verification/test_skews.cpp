@@ -10,7 +10,7 @@
 #include "crumple/output/history_reader.hpp"
 #include "verification_support.hpp"
 
-namespace crumple::verification {
+namespace crumple::verification::test_skews {
 namespace {
 
 std::string var(const std::string& name) { return name + std::string(10 - name.size(), ' '); }
@@ -185,4 +185,4 @@ TEST(Skews, RigidBodyCentreChoicesMatchTheReference) {
 }
 
 }  // namespace
-}  // namespace crumple::verification
+}  // namespace crumple::verification::test_skews

@@ -13,7 +13,7 @@
 #include "crumple/output/history_reader.hpp"
 #include "verification_support.hpp"
 
-namespace crumple::verification {
+namespace crumple::verification::test_time_histories {
 namespace {
 
 constexpr double kRho = 7800.0, kE = 2.1e11, kNu = 0.3, kT = 0.001, kH = 0.01;
@@ -179,9 +179,9 @@ TEST(TimeHistories, TheFileHoldsTheStateAtEveryRowAndThePartsSumToTheModel) {
   EXPECT_NE(h("BRIC_5/1/SX", rows.size() - 1), 0.0);
 }
 
-}  // namespace crumple::verification
+}  // namespace crumple::verification::test_time_histories
 
-namespace crumple::verification {
+namespace crumple::verification::test_time_histories {
 
 // /TH/NODE DRX DRY DRZ (docs/output-format.md, "NODE", eq. TH-1): a node of a free strip turned about z by /IMPVEL ZZ
 // at w = 2 rad/s (a drilling rotation, which no shell resists) has DRZ = w t at every row (the sum of w dt, the
@@ -220,4 +220,4 @@ TEST(TimeHistories, NodeRotationIsTheAngleOfAnImposedSpin) {
   }
 }
 
-}  // namespace crumple::verification
+}  // namespace crumple::verification::test_time_histories

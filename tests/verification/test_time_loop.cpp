@@ -6,7 +6,7 @@
 #include "solver/internal.hpp"
 #include "verification_support.hpp"
 
-namespace crumple::verification {
+namespace crumple::verification::test_time_loop {
 namespace {
 
 // Point masses alone: nothing has stiffness, so no step is stable or unstable; the run refuses to start instead
@@ -195,4 +195,4 @@ TEST(TimeLoop, BricksAtTheirMinimumStepSwitchWhenTheirFormulationCan) {
 }
 
 }  // namespace
-}  // namespace crumple::verification
+}  // namespace crumple::verification::test_time_loop

@@ -19,7 +19,7 @@
 
 #include "verification_support.hpp"
 
-namespace crumple::verification {
+namespace crumple::verification::test_twisted_beam {
 namespace {
 
 constexpr double kLength = 12.0, kWidth = 1.1, kThickness = 0.32, kYoung = 29e6, kNu = 0.22, kRho = 7.34e-4;
@@ -107,4 +107,4 @@ TEST(TwistedBeam, QbatTipDeflectionsQuasiStatic) {
 }
 
 }  // namespace
-}  // namespace crumple::verification
+}  // namespace crumple::verification::test_twisted_beam

@@ -10,7 +10,7 @@
 #include "contact_cards.hpp"
 #include "verification_support.hpp"
 
-namespace crumple::verification {
+namespace crumple::verification::test_velocity_links {
 namespace {
 
 struct LinkedPlates {
@@ -69,4 +69,4 @@ TEST(VelocityLinks, AlongTheAxesOfASkew) {
 }
 
 }  // namespace
-}  // namespace crumple::verification
+}  // namespace crumple::verification::test_velocity_links

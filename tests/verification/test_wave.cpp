@@ -17,7 +17,7 @@
 
 #include "verification_support.hpp"
 
-namespace crumple::verification {
+namespace crumple::verification::test_wave {
 namespace {
 
 TEST(ElasticWave, BarOfShellsVelocityStep) {
@@ -74,4 +74,4 @@ TEST(ElasticWave, BarOfShellsVelocityStep) {
 }
 
 }  // namespace
-}  // namespace crumple::verification
+}  // namespace crumple::verification::test_wave
