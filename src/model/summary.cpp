@@ -58,14 +58,23 @@ double initial_element_time_step(const Model& model, ElementKind kind, std::size
 NodalStiffnessFactor nodal_stiffness_factor(ElementKind kind, int ishell, double poisson) {
   const double plate = 1.0 / (1.0 - poisson * poisson);  // A11 / E
   switch (kind) {
-    case ElementKind::Brick8: return {0.25, 0.25, false};             // 2 (m_e / 8) / dt_e^2
-    case ElementKind::Shell3: return {0.6561 * plate, plate, false};  // 0.6561 V A11 / L^2; V A11 / L^2
+    case ElementKind::Brick8: return {0.25, 0.25};             // 2 (m_e / 8) / dt_e^2
+    case ElementKind::Shell3: return {0.6561 * plate, plate};  // 0.6561 V A11 / L^2; V A11 / L^2
     case ElementKind::Shell4:
-      if (ishell == 24) return {0.5 * plate, 0.5 * plate, false};     // (1/2) V A11 / L^2, QEPH
-      if (ishell == 12) return {2.0 / 3.0, 2.0 / 3.0, false};         // (2/3) V A11 / L^2 on its plate-speed step
-      return {0.405, 0.0, true};                                      // Ishell 1 to 4: 0.81 (1/2) V E / L^2; T-2a
+      if (ishell == 24) return {0.5 * plate, 0.5 * plate};  // (1/2) V A11 / L^2, QEPH
+      if (ishell == 12) return {2.0 / 3.0, 0.0, NodalLength::QbatAsQeph};  // (2/3) V A11 / L^2 on its plate step; T-2b
+      return {0.405, 0.0, NodalLength::BelytschkoTsay};     // Ishell 1 to 4: 0.81 (1/2) V E / L^2; T-2a
   }
   return {};
+}
+
+double mass_scaling_nodal_length(NodalLength length, const Vec3& p1, const Vec3& p2, const Vec3& p3, const Vec3& p4) {
+  // T-2b: the reference's QBAT nodal step is 0.982 of the QEPH's with dm and dn at their defaults, on squares,
+  // rectangles, parallelograms and at every Poisson's ratio measured (0.989 on a trapezoid)
+  constexpr double kQbatOfQeph = 0.982;
+  if (length == NodalLength::QbatAsQeph)
+    return kQbatOfQeph * damped_step_factor(kDefaultQephNumericalDamping) * geometry::qeph_length(p1, p2, p3, p4);
+  return geometry::belytschko_tsay_nodal_length(p1, p2, p3, p4);  // T-2a
 }
 
 double initial_element_nodal_step(const Model& model, ElementKind kind, std::size_t element) {
@@ -75,11 +84,11 @@ double initial_element_nodal_step(const Model& model, ElementKind kind, std::siz
   const NodalStiffnessFactor f =
       nodal_stiffness_factor(kind, model.formulations[static_cast<std::size_t>(part.property)].ishell, mat.poisson);
   const double n = nodes_per_element(kind);
-  if (f.mass_scaling_diagonal) {  // sqrt(2 (rho V / 4) / ((1/2) V A11 / L^2)) = L sqrt(rho / A11), eq. T-2a
+  if (f.mass_scaling_length != NodalLength::CriticalStep) {  // sqrt(2 (rho V / 4) / ((1/2) V A11 / L^2)) = L sqrt(rho / A11)
     const std::int32_t* c = table.nodes_of(element);
     const Nodes& x = model.nodes;
-    return geometry::belytschko_tsay_nodal_length(x.position(c[0]), x.position(c[1]), x.position(c[2]),
-                                                  x.position(c[3])) /
+    return mass_scaling_nodal_length(f.mass_scaling_length, x.position(c[0]), x.position(c[1]), x.position(c[2]),
+                                     x.position(c[3])) /
            shell_step_wave_speed(mat.young, mat.poisson, mat.density, true);
   }
   return initial_element_time_step(model, kind, element) * std::sqrt(2.0 / (n * f.mass_scaling));

@@ -49,10 +49,10 @@ void element_stiffness(const Model& m, ElementKind kind, const State& st, Solver
         nodal_stiffness_factor(kind, m.formulations[static_cast<std::size_t>(part.property)].ishell, mat.poisson);
     const std::int32_t* c = table.nodes_of(e);
     const double volume = current_volume(kind, st, e, c, s.nodes);
-    if (mass_scaling && beta.mass_scaling_diagonal) {  // eq. T-2a, on the current geometry
-      const double length = geometry::belytschko_tsay_nodal_length(
-          current_position(s.nodes, c[0]), current_position(s.nodes, c[1]), current_position(s.nodes, c[2]),
-          current_position(s.nodes, c[3]));
+    if (mass_scaling && beta.mass_scaling_length != NodalLength::CriticalStep) {  // eqs. T-2a, T-2b, current geometry
+      const double length = mass_scaling_nodal_length(
+          beta.mass_scaling_length, current_position(s.nodes, c[0]), current_position(s.nodes, c[1]),
+          current_position(s.nodes, c[2]), current_position(s.nodes, c[3]));
       k[e] = 0.5 * volume * mat.young / (1.0 - mat.poisson * mat.poisson) / (length * length);
       continue;
     }

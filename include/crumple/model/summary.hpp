@@ -15,15 +15,23 @@ double initial_element_time_step(const Model& model, ElementKind kind, std::size
 
 // The factor beta of an element in the nodal step: it gives each of its nodes the stiffness
 // k = beta rho V / dt_e^2, V its current volume and dt_e its unscaled critical step. Measured on the reference solver
-// one kind and one shape at a time (docs/theory/time-step.md, T-4, T-2, T-2a): the interface nodal step (T-4) and
-// the step of /DT/NODA/CST (T-2) take the same for QEPH, Ishell 12 and bricks; under /DT/NODA/CST the triangles take
-// their plate stiffness, and the Belytschko-Tsay shells a length of their own (T-2a), not their critical step's.
+// one kind and one shape at a time (docs/theory/time-step.md, T-4, T-2, T-2a, T-2b): the interface nodal step (T-4)
+// and the step of /DT/NODA/CST (T-2) take the same for QEPH and bricks; under /DT/NODA/CST the triangles take their
+// plate stiffness, and the Belytschko-Tsay (T-2a) and QBAT (T-2b) shells (1/2) V A11 / L^2 with a length of their
+// own, not their critical step's.
+enum class NodalLength : std::uint8_t {
+  CriticalStep,    // beta rho V / dt_e^2
+  BelytschkoTsay,  // T-2a: L = sqrt(2) A / D_max
+  QbatAsQeph,      // T-2b: L = 0.982 of the QEPH's damped length
+};
 struct NodalStiffnessFactor {
-  double interface = 0.0;              // T-4, with a TYPE7 and without mass scaling
-  double mass_scaling = 0.0;           // T-2, /DT/NODA/CST
-  bool mass_scaling_diagonal = false;  // T-2a: under /DT/NODA/CST, (1/2) V A11 / L^2 with L of eq. T-2a instead
+  double interface = 0.0;     // T-4, with a TYPE7 and without mass scaling
+  double mass_scaling = 0.0;  // T-2, /DT/NODA/CST
+  NodalLength mass_scaling_length = NodalLength::CriticalStep;  // T-2a, T-2b: under /DT/NODA/CST
 };
 NodalStiffnessFactor nodal_stiffness_factor(ElementKind kind, int ishell, double poisson);
+// The length L of k = (1/2) V A11 / L^2 (eqs. T-2a, T-2b) of a 4-node shell with these corners.
+double mass_scaling_nodal_length(NodalLength length, const Vec3& p1, const Vec3& p2, const Vec3& p3, const Vec3& p4);
 
 // The nodal step of /DT/NODA/CST (eqs. T-2, T-2a) that an element alone gives its nodes, unscaled, on the initial
 // geometry: sqrt(2 (m_e / n) / k_e), m_e its mass and n its nodes.
