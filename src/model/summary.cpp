@@ -61,9 +61,9 @@ NodalStiffnessFactor nodal_stiffness_factor(ElementKind kind, int ishell, double
     case ElementKind::Brick8: return {0.25, 0.25};             // 2 (m_e / 8) / dt_e^2
     case ElementKind::Shell3: return {0.6561 * plate, plate};  // 0.6561 V A11 / L^2; V A11 / L^2
     case ElementKind::Shell4:
-      if (ishell == 24) return {0.5 * plate, 0.5 * plate};  // (1/2) V A11 / L^2, QEPH
-      if (ishell == 12) return {2.0 / 3.0, 0.0, NodalLength::QbatAsQeph};  // (2/3) V A11 / L^2 on its plate step; T-2b
-      return {0.405, 0.0, NodalLength::BelytschkoTsay};     // Ishell 1 to 4: 0.81 (1/2) V E / L^2; T-2a
+      if (ishell == 24) return {0.5 * plate, 0.5 * plate};               // (1/2) V A11 / L^2, QEPH
+      if (ishell == 12) return {2.0 / 3.0, 0.0, NodalLength::QbatAsQeph};  // (2/3) V A11 / L^2 on its step; T-2b
+      return {0.405, 0.0, NodalLength::BelytschkoTsay};  // Ishell 1 to 4: 0.81 (1/2) V E / L^2; T-2a
   }
   return {};
 }
@@ -84,7 +84,8 @@ double initial_element_nodal_step(const Model& model, ElementKind kind, std::siz
   const NodalStiffnessFactor f =
       nodal_stiffness_factor(kind, model.formulations[static_cast<std::size_t>(part.property)].ishell, mat.poisson);
   const double n = nodes_per_element(kind);
-  if (f.mass_scaling_length != NodalLength::CriticalStep) {  // sqrt(2 (rho V / 4) / ((1/2) V A11 / L^2)) = L sqrt(rho / A11)
+  // T-2a, T-2b: sqrt(2 (rho V / 4) / ((1/2) V A11 / L^2)) = L sqrt(rho / A11)
+  if (f.mass_scaling_length != NodalLength::CriticalStep) {
     const std::int32_t* c = table.nodes_of(element);
     const Nodes& x = model.nodes;
     return mass_scaling_nodal_length(f.mass_scaling_length, x.position(c[0]), x.position(c[1]), x.position(c[2]),

@@ -32,7 +32,6 @@ std::int64_t required_id(const Line& line, int column, std::string_view name, st
   return id;
 }
 
-
 // Columns that Radioss 2019-2021 leave blank but newer versions use for an option Crumple lacks (a frame, a
 // function type): blank or 0, as Radioss 2021 reads them, or an option not supported by Crumple.
 void require_blank_newer_field(const Line& line, DeckContext& context, int column, std::string_view newer_field) {
