@@ -237,10 +237,11 @@ void check_shell_formulations(Resolver& r) {
   for (std::size_t i = 0; i < m.properties.size(); ++i) {
     const Property& p = m.properties[i];
     if (p.kind == PropertyKind::Shell && use[i].triangles) check_triangle_formulation(r, p, m.formulations[i]);
-    // dn damps QEPH's hourglass modes (S-14): the other formulations leave it, as the reference does (measured:
-    // box_crush, Ishell 1, dn 0.3, the same energies).
-    if (p.kind == PropertyKind::Shell && p.shell.dn > 0.0 && !(use[i].quads && m.formulations[i].ishell == 24))
-      r.context.warn(p.where, keyword_of(p), "dn acts only on 4-node shells with Ishell 24: ignored");
+    // dn damps QEPH's hourglass modes (S-14) and QBAT's (Ishell 12) step and deformation rates: the other
+    // formulations leave it, as the reference does (measured: box_crush, Ishell 1, dn 0.3, the same energies).
+    const bool dn_acts = use[i].quads && (m.formulations[i].ishell == 24 || m.formulations[i].ishell == 12);
+    if (p.kind == PropertyKind::Shell && p.shell.dn > 0.0 && !dn_acts)
+      r.context.warn(p.where, keyword_of(p), "dn acts only on 4-node shells with Ishell 24 or 12: ignored");
     // hm, hf, hr scale the hourglass forces of the one-point shells Ishell 1 to 4; QEPH (24) is stabilised by
     // its own physics, QBAT (12) integrated fully (docs/theory/shell4.md).
     const bool hourglass_given = p.shell.hm > 0.0 || p.shell.hf > 0.0 || p.shell.hr > 0.0;

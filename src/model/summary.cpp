@@ -68,12 +68,12 @@ NodalStiffnessFactor nodal_stiffness_factor(ElementKind kind, int ishell, double
   return {};
 }
 
-double mass_scaling_nodal_length(NodalLength length, const Vec3& p1, const Vec3& p2, const Vec3& p3, const Vec3& p4) {
-  // T-2b: the reference's QBAT nodal step is 0.982 of the QEPH's with dm and dn at their defaults, on squares,
-  // rectangles, parallelograms and at every Poisson's ratio measured (0.989 on a trapezoid)
-  constexpr double kQbatOfQeph = 0.982;
+double mass_scaling_nodal_length(NodalLength length, const ShellSection& section, const Vec3& p1, const Vec3& p2,
+                                 const Vec3& p3, const Vec3& p4) {
+  // T-2b: the QEPH's length, sqrt(15/16) and the damping factor of QBAT's own dn (measured: dn 0.001 to 0.1)
   if (length == NodalLength::QbatAsQeph)
-    return kQbatOfQeph * damped_step_factor(kDefaultQephNumericalDamping) * geometry::qeph_length(p1, p2, p3, p4);
+    return std::sqrt(15.0 / 16.0) * damped_step_factor(qbat_numerical_damping(section)) *
+           geometry::qeph_length(p1, p2, p3, p4);
   return geometry::belytschko_tsay_nodal_length(p1, p2, p3, p4);  // T-2a
 }
 
@@ -88,8 +88,8 @@ double initial_element_nodal_step(const Model& model, ElementKind kind, std::siz
   if (f.mass_scaling_length != NodalLength::CriticalStep) {
     const std::int32_t* c = table.nodes_of(element);
     const Nodes& x = model.nodes;
-    return mass_scaling_nodal_length(f.mass_scaling_length, x.position(c[0]), x.position(c[1]), x.position(c[2]),
-                                     x.position(c[3])) /
+    return mass_scaling_nodal_length(f.mass_scaling_length, model.properties[static_cast<std::size_t>(part.property)].shell,
+                                     x.position(c[0]), x.position(c[1]), x.position(c[2]), x.position(c[3])) /
            shell_step_wave_speed(mat.young, mat.poisson, mat.density, true);
   }
   return initial_element_time_step(model, kind, element) * std::sqrt(2.0 / (n * f.mass_scaling));

@@ -17,7 +17,6 @@ namespace crumple::solver {
 namespace {
 
 constexpr double kDefaultHourglass = 0.01;    // Radioss default hm, hf, hr for 4-node shells
-constexpr double kDefaultQbatDamping = 0.001; // Radioss default dn of Ishell 12 (QBAT)
 constexpr double kDefaultElastoplasticHourglass = 0.1;  // Radioss default hm, hr of Ishell 3
 
 void setup_nodes(const Model& m, SolverState& s) {
@@ -102,8 +101,8 @@ void setup_shells(const Model& m, SolverState& s, ElementKind kind) {
     } else {
       // A dm given acts on the Belytschko-Tsay shells too (S-9d; measured on the reference, shell4.md "Probes").
       if (kind == ElementKind::Shell4 && !p.fully_integrated) p.membrane_damping = prop.shell.dm;
-      if (prop.shell.dn > 0.0) p.numerical_damping = prop.shell.dn;
-      else if (p.fully_integrated) p.numerical_damping = kDefaultQbatDamping;
+      if (p.fully_integrated) p.numerical_damping = qbat_numerical_damping(prop.shell);
+      else if (prop.shell.dn > 0.0) p.numerical_damping = prop.shell.dn;
     }
     // Ishell 12 keeps a section per Gauss point (docs/theory/shell4.md, eq. Q-2).
     const int sections = p.fully_integrated ? 4 : 1;

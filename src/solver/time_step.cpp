@@ -51,8 +51,9 @@ void element_stiffness(const Model& m, ElementKind kind, const State& st, Solver
     const double volume = current_volume(kind, st, e, c, s.nodes);
     if (mass_scaling && beta.mass_scaling_length != NodalLength::CriticalStep) {  // eqs. T-2a, T-2b, current geometry
       const double length = mass_scaling_nodal_length(
-          beta.mass_scaling_length, current_position(s.nodes, c[0]), current_position(s.nodes, c[1]),
-          current_position(s.nodes, c[2]), current_position(s.nodes, c[3]));
+          beta.mass_scaling_length, m.properties[static_cast<std::size_t>(part.property)].shell,
+          current_position(s.nodes, c[0]), current_position(s.nodes, c[1]), current_position(s.nodes, c[2]),
+          current_position(s.nodes, c[3]));
       k[e] = 0.5 * volume * mat.young / (1.0 - mat.poisson * mat.poisson) / (length * length);
       continue;
     }

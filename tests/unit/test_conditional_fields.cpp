@@ -34,10 +34,12 @@ std::string shell_property(int ishell, double hm, double dn) {
 }  // namespace
 
 TEST(ConditionalFields, ShellDampingAndHourglassOutsideTheirFormulationsAreNamed) {
-  // dn damps QEPH only: the reference's box_crush with Ishell 1 and dn 0.3 has the same energies (measured).
-  EXPECT_NE(warnings_of(shell_property(1, 0.0, 0.3), "").find("dn acts only on 4-node shells with Ishell 24"),
+  // dn damps QEPH and QBAT only: the reference's box_crush with Ishell 1 and dn 0.3 has the same energies
+  // (measured); QBAT's nodal step under /DT/NODA/CST follows its dn (time-step.md, T-2b).
+  EXPECT_NE(warnings_of(shell_property(1, 0.0, 0.3), "").find("dn acts only on 4-node shells with Ishell 24 or 12"),
             std::string::npos);
   EXPECT_EQ(warnings_of(shell_property(24, 0.0, 0.3), "").find("dn acts only"), std::string::npos);
+  EXPECT_EQ(warnings_of(shell_property(12, 0.0, 0.3), "").find("dn acts only"), std::string::npos);
   EXPECT_NE(warnings_of(shell_property(24, 0.1, 0.0), "").find("hm, hf and hr act only with Ishell 1 to 4"),
             std::string::npos);
   EXPECT_EQ(warnings_of(shell_property(1, 0.1, 0.0), "").find("hm, hf and hr"), std::string::npos);

@@ -14,6 +14,7 @@ namespace crumple {
 // of the QEPH shell with /MAT/PLAS_TAB, as the reference runs them.
 inline constexpr double kDefaultQephNumericalDamping = 0.015;
 inline constexpr double kDefaultMembraneDamping = 0.015;
+inline constexpr double kDefaultQbatNumericalDamping = 0.001;  // Ishell 12 (QBAT)
 
 struct ShellSection {  // /PROP/TYPE1 (= /PROP/SHELL); flags and checks: docs/theory/shell4.md, "Formulation flags"
   int ishell = 0;          // 4-node formulation: 1, 2, 3 (Q4 hourglass variants), 12 QBAT, 24 QEPH (default)
@@ -95,5 +96,8 @@ inline double triangle_membrane_damping(const ShellSection& s, const ResolvedFor
 // 0.015 with every law, as the reference resolves them (measured with /MAT/ELAST, /MAT/PLAS_JOHNS, /MAT/PLAS_TAB).
 inline double qeph_membrane_damping(const ShellSection& s) { return s.dm > 0.0 ? s.dm : kDefaultMembraneDamping; }
 inline double qeph_numerical_damping(const ShellSection& s) { return s.dn > 0.0 ? s.dn : kDefaultQephNumericalDamping; }
+// The QBAT shell's (Ishell 12) numerical damping dn: as given; blank, 0.001 (its nodal step under /DT/NODA/CST follows
+// it as the reference's does, T-2b).
+inline double qbat_numerical_damping(const ShellSection& s) { return s.dn > 0.0 ? s.dn : kDefaultQbatNumericalDamping; }
 
 }  // namespace crumple

@@ -22,7 +22,7 @@ double initial_element_time_step(const Model& model, ElementKind kind, std::size
 enum class NodalLength : std::uint8_t {
   CriticalStep,    // beta rho V / dt_e^2
   BelytschkoTsay,  // T-2a: L = sqrt(2) A / D_max
-  QbatAsQeph,      // T-2b: L = 0.982 of the QEPH's damped length
+  QbatAsQeph,      // T-2b: L = sqrt(15/16) f(dn) times the QEPH's length
 };
 struct NodalStiffnessFactor {
   double interface = 0.0;     // T-4, with a TYPE7 and without mass scaling
@@ -30,8 +30,9 @@ struct NodalStiffnessFactor {
   NodalLength mass_scaling_length = NodalLength::CriticalStep;  // T-2a, T-2b: under /DT/NODA/CST
 };
 NodalStiffnessFactor nodal_stiffness_factor(ElementKind kind, int ishell, double poisson);
-// The length L of k = (1/2) V A11 / L^2 (eqs. T-2a, T-2b) of a 4-node shell with these corners.
-double mass_scaling_nodal_length(NodalLength length, const Vec3& p1, const Vec3& p2, const Vec3& p3, const Vec3& p4);
+// The length L of k = (1/2) V A11 / L^2 (eqs. T-2a, T-2b) of a 4-node shell of this section with these corners.
+double mass_scaling_nodal_length(NodalLength length, const ShellSection& section, const Vec3& p1, const Vec3& p2,
+                                 const Vec3& p3, const Vec3& p4);
 
 // The nodal step of /DT/NODA/CST (eqs. T-2, T-2a) that an element alone gives its nodes, unscaled, on the initial
 // geometry: sqrt(2 (m_e / n) / k_e), m_e its mass and n its nodes.
