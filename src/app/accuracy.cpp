@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "crumple/core/precision.hpp"
-#include "crumple/model/summary.hpp"
+#include "crumple/elements/critical_step.hpp"
 
 namespace crumple::app {
 

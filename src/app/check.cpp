@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <ostream>
 
+#include "crumple/elements/critical_step.hpp"
 #include "crumple/model/summary.hpp"
 
 namespace crumple::app {

@@ -7,26 +7,11 @@
 #include <numeric>
 
 #include "crumple/core/geometry.hpp"
+#include "crumple/model/mass.hpp"
 #include "resolve.hpp"
 
 namespace crumple::deck {
 namespace {
-
-// Area (shells) or exact volume (bricks) of an element given by dense node indices.
-double measure(const Nodes& nodes, ElementKind kind, const std::int32_t* n) {
-  switch (kind) {
-    case ElementKind::Shell4:
-      return geometry::quad_area(nodes.position(n[0]), nodes.position(n[1]), nodes.position(n[2]), nodes.position(n[3]));
-    case ElementKind::Shell3:
-      return geometry::triangle_area(nodes.position(n[0]), nodes.position(n[1]), nodes.position(n[2]));
-    case ElementKind::Brick8: {
-      std::array<Vec3, 8> p;
-      for (int a = 0; a < 8; ++a) p[static_cast<std::size_t>(a)] = nodes.position(n[a]);
-      return geometry::brick_volume(p);
-    }
-  }
-  return 0.0;
-}
 
 // A brick may repeat nodes to write a prism, pyramid or tetrahedron, as the reference accepts: the equal node ids
 // must sit at connectivity positions joined by edges of the hexahedron (nodes merged along edges, e.g. the prism
@@ -74,8 +59,9 @@ bool check_degenerate_brick(Resolver& r, const SourceLocation& where, const std:
 void resolve_kind(Resolver& r, ElementKind kind) {
   Model& m = r.model;
   const RawElements& raw = r.context.raw_elements[static_cast<int>(kind)];
-  const int n = nodes_per_element(kind);
-  const std::string_view name = element_kind_name(kind);
+  const ElementKindDescription& description = describe(kind);
+  const int n = description.nodes;
+  const std::string_view name = description.name;
   const std::size_t count = raw.user_id.size();
 
   std::vector<std::int32_t> part(count, -1);
@@ -98,7 +84,7 @@ void resolve_kind(Resolver& r, ElementKind kind) {
       const std::int32_t node = r.find(m.index.nodes, id, where, keyword, fmt::format("node_ID{}", k + 1), "node");
       connectivity[e * static_cast<std::size_t>(n) + static_cast<std::size_t>(k)] = node;
       nodes_ok = nodes_ok && node >= 0;
-      for (int j = 0; j < k && kind != ElementKind::Brick8; ++j)
+      for (int j = 0; j < k && !description.may_degenerate; ++j)
         if (raw.node_ids[e * static_cast<std::size_t>(n) + static_cast<std::size_t>(j)] == id) {
           r.error(where, keyword, fmt::format("node_ID{}", k + 1),
                   fmt::format("{} distinct nodes in {} {}", n, name, raw.user_id[e]),
@@ -107,12 +93,12 @@ void resolve_kind(Resolver& r, ElementKind kind) {
           break;
         }
     }
-    if (kind == ElementKind::Brick8 && nodes_ok)
+    if (description.may_degenerate && nodes_ok)
       nodes_ok = check_degenerate_brick(r, where, keyword, raw.user_id[e], &raw.node_ids[e * 8]);
     if (part[e] >= 0) {
       const Part& p = m.parts[static_cast<std::size_t>(part[e])];
       if (p.property >= 0) {
-        const PropertyKind want = kind == ElementKind::Brick8 ? PropertyKind::Solid : PropertyKind::Shell;
+        const PropertyKind want = description.property;
         if (m.properties[static_cast<std::size_t>(p.property)].kind != want)
           r.error(where, keyword, "part_ID (keyword line)",
                   fmt::format("a part with a {} property for {} {}",
@@ -122,17 +108,14 @@ void resolve_kind(Resolver& r, ElementKind kind) {
       }
     }
     if (nodes_ok) {
-      const double size = measure(m.nodes, kind, &connectivity[e * static_cast<std::size_t>(n)]);
+      const double size = element_measure(m.nodes, kind, &connectivity[e * static_cast<std::size_t>(n)]);
       if (!(size > 0.0))
-        r.error(where, keyword, "node_ID1..", kind == ElementKind::Brick8 ? "a brick of positive volume (nodes 1-4 "
-                                                                             "one face, 5-8 the opposite face)"
-                                                                           : "a shell of positive area",
-                fmt::format("{} {} with {} {:.6g}", name, raw.user_id[e],
-                            kind == ElementKind::Brick8 ? "volume" : "area", size));
+        r.error(where, keyword, "node_ID1..",
+                std::string(description.valid_shape),
+                fmt::format("{} {} with {} {:.6g}", name, raw.user_id[e], description.measure, size));
       else if (!std::isfinite(size))  // huge coordinates overflow: no usable size, mass or time step
         r.error(where, keyword, "node_ID1..", "node coordinates that give a finite size",
-                fmt::format("{} {} with an infinite {}", name, raw.user_id[e],
-                            kind == ElementKind::Brick8 ? "volume" : "area"));
+                fmt::format("{} {} with an infinite {}", name, raw.user_id[e], description.measure));
     }
   }
   if (!r.errors.empty()) return;
@@ -170,7 +153,7 @@ void resolve_kind(Resolver& r, ElementKind kind) {
 }  // namespace
 
 void resolve_elements(Resolver& r) {
-  for (ElementKind kind : {ElementKind::Shell4, ElementKind::Shell3, ElementKind::Brick8}) resolve_kind(r, kind);
+  for (ElementKind kind : kAllElementKinds) resolve_kind(r, kind);
 }
 
 }  // namespace crumple::deck

@@ -210,33 +210,20 @@ void resolve_node_group(Resolver& r, std::size_t g, std::vector<int>& state, int
   state[g] = 2;
 }
 
-// The keyword of an element group card and the words for its members: /GRSHEL/SHEL/6, "shell_ID", "4-node shell".
-struct ElementSetWords {
-  std::string_view keyword, item, field, what;
-};
-ElementSetWords element_set_words(ElementKind kind) {
-  switch (kind) {
-    case ElementKind::Shell4: return {"/GRSHEL", "SHEL", "shell_ID", "4-node shell"};
-    case ElementKind::Shell3: return {"/GRSH3N", "SH3N", "sh3n_ID", "3-node shell"};
-    case ElementKind::Brick8: return {"/GRBRIC", "BRIC", "brick_ID", "brick"};
-  }
-  return {};
-}
-
 void resolve_element_set(Resolver& r, ElementSet& group) {
   Model& m = r.model;
-  const ElementSetWords words = element_set_words(group.kind);
-  const std::string_view how = group.source == SetSource::Ids     ? words.item
+  const ElementKindDescription& words = describe(group.kind);
+  const std::string_view how = group.source == SetSource::Ids     ? words.group_item
                               : group.source == SetSource::Parts ? "PART"
                               : group.any_node_in_box            ? "BOX2"
                                                                  : "BOX";
-  const std::string keyword = fmt::format("{}/{}/{}", words.keyword, how, group.user_id);
+  const std::string keyword = fmt::format("{}/{}/{}", words.group_card, how, group.user_id);
   if (group.source == SetSource::Boxes) {
     elements_in_box(r, group, keyword);
   } else if (group.source == SetSource::Ids) {
     for (std::int64_t id : group.items)
       if (const auto e = r.find(m.index.elements[static_cast<int>(group.kind)], id, group.where, keyword,
-                                words.field, words.what);
+                                words.group_field, words.what);
           e >= 0)
         group.elements.push_back(e);
   } else {

@@ -233,9 +233,9 @@ inline double viscous_work(float& last, double now, double rate, double dt) {
   return work;
 }
 using crumple::damped_step_factor;  // eq. T-1c (model/properties.hpp)
-// The viscous fraction that shortens a one-point shell's step (eq. T-1c): dm, and for the QEPH shell also dn.
+// The viscous fraction that shortens a one-point shell's step (eq. T-1c, model/properties.hpp).
 inline double step_damping(const ShellGroupParameters& p) {
-  return p.physical_hourglass ? std::max(p.membrane_damping, p.numerical_damping) : p.membrane_damping;
+  return shell_step_damping(p.physical_hourglass, p.membrane_damping, p.numerical_damping);
 }
 
 // The linked deflection of the 3-node shell (docs/theory/shell4.md, eq. S-9a): along each side i-j the deflection

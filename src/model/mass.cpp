@@ -46,25 +46,26 @@ double shell_thickness(const Model& model, ElementKind kind, std::size_t shell) 
   return model.properties[static_cast<std::size_t>(part.property)].shell.thickness;
 }
 
-double element_mass(const Model& model, ElementKind kind, std::size_t element) {
-  const Part& part = part_of(model, kind, element);
-  const Material& material = model.materials[static_cast<std::size_t>(part.material)];
-  const std::int32_t* n = model.elements[static_cast<int>(kind)].nodes_of(element);
-  const Nodes& x = model.nodes;
+double element_measure(const Nodes& x, ElementKind kind, const std::int32_t* n) {
   switch (kind) {
     case ElementKind::Shell4:
-      return material.density * shell_thickness(model, kind, element) *
-             geometry::quad_area(x.position(n[0]), x.position(n[1]), x.position(n[2]), x.position(n[3]));
-    case ElementKind::Shell3:
-      return material.density * shell_thickness(model, kind, element) *
-             geometry::triangle_area(x.position(n[0]), x.position(n[1]), x.position(n[2]));
+      return geometry::quad_area(x.position(n[0]), x.position(n[1]), x.position(n[2]), x.position(n[3]));
+    case ElementKind::Shell3: return geometry::triangle_area(x.position(n[0]), x.position(n[1]), x.position(n[2]));
     case ElementKind::Brick8: {
       std::array<Vec3, 8> p;
       for (int a = 0; a < 8; ++a) p[static_cast<std::size_t>(a)] = x.position(n[a]);
-      return material.density * geometry::brick_volume(p) * one_point_volume_scale(model, element);
+      return geometry::brick_volume(p);
     }
   }
   return 0.0;
+}
+
+double element_mass(const Model& model, ElementKind kind, std::size_t element) {
+  const Part& part = part_of(model, kind, element);
+  const double density = model.materials[static_cast<std::size_t>(part.material)].density;
+  const double measure = element_measure(model.nodes, kind, model.elements[static_cast<int>(kind)].nodes_of(element));
+  if (describe(kind).property == PropertyKind::Shell) return density * shell_thickness(model, kind, element) * measure;
+  return density * measure * one_point_volume_scale(model, element);
 }
 
 void compute_mass(Model& model) {

@@ -216,9 +216,9 @@ std::vector<double> row(const std::vector<ShellValues>& values, Stress3 ShellVal
 void add_shell_fields(FieldSink& out, const Model& m, const SolverState& state, ElementKind kind) {
   const std::size_t n = m.elements[static_cast<std::size_t>(kind)].size();
   if (n == 0) return;
-  const ShellState& s = kind == ElementKind::Shell4 ? state.shells : state.shells3;
-  const char* name = kind == ElementKind::Shell4 ? "shell4" : "shell3";
-  check_shells(m, kind, s, n, name);
+  const ShellState& s = shell_state(state, kind);
+  const std::string name(describe(kind).mesh_group);
+  check_shells(m, kind, s, n, name.c_str());
   std::vector<ShellValues> values(n);
   Stress3 scratch{};
   for (std::size_t g = 0; g < m.element_groups.size(); ++g) {

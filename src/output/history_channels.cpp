@@ -253,7 +253,7 @@ NodeValues in_skew(NodeValues values, const SolverState& s, std::int32_t skew) {
 
 // ---- Element values.
 ShellValues shell_values(const Model& m, const SolverState& s, ElementKind kind, std::size_t group, std::int32_t e) {
-  const ShellState& state = kind == ElementKind::Shell4 ? s.shells : s.shells3;
+  const ShellState& state = shell_state(s, kind);
   const ShellElementOutput o = shell_element_output(s.shell_groups[group], state, m.element_groups[group], e);
   const auto ue = static_cast<std::size_t>(e);
   return {{o.n[0], o.n[1], o.n[2]}, {o.m[0], o.m[1], o.m[2]}, o.q[0], o.q[1],
@@ -324,14 +324,10 @@ AccelerometerValues accelerometer_values(const HistoryIntegrals& h, std::size_t 
 }
 
 // ---- Cut sections (docs/output-format.md, "SECTIO").
-const ElementRecords& records_of(const SolverState& s, ElementKind kind) {
-  return kind == ElementKind::Brick8 ? s.bricks.records
-                                     : (kind == ElementKind::Shell4 ? s.shells : s.shells3).records;
-}
+const ElementRecords& records_of(const SolverState& s, ElementKind kind) { return element_state(s, kind).records; }
 
 const std::vector<double>& section_work_of(const SolverState& s, ElementKind kind) {
-  return kind == ElementKind::Brick8 ? s.bricks.section_work
-                                     : (kind == ElementKind::Shell4 ? s.shells : s.shells3).section_work;
+  return element_state(s, kind).section_work;
 }
 
 SectionValues section_values(const Model& m, const SolverState& s, const Section& section,
@@ -526,15 +522,12 @@ HistoryChannels::PartSums HistoryChannels::part_sums(const SolverState& s) const
       for (std::size_t c = 0; c < 3; ++c) sums.momentum[p][c] += mass * v[c], sums.first_moment[p][c] += mass * x[c];
     }
   }
-  const std::array<const std::vector<double>*, kElementKinds> ie{&s.shells.internal_energy, &s.shells3.internal_energy,
-                                                                 &s.bricks.internal_energy};
-  const std::array<const std::vector<double>*, kElementKinds> he{&s.shells.hourglass_energy, &s.shells3.hourglass_energy,
-                                                                 &s.bricks.hourglass_energy};
   for (std::size_t kind = 0; kind < static_cast<std::size_t>(kElementKinds); ++kind) {
     const ElementTable& table = model_.elements[kind];
+    const ElementKindState& state = element_state(s, table.kind);
     for (std::size_t e = 0; e < table.size(); ++e) {
       const auto p = static_cast<std::size_t>(table.part[e]);
-      sums.ie[p] += (*ie[kind])[e], sums.he[p] += (*he[kind])[e];
+      sums.ie[p] += state.internal_energy[e], sums.he[p] += state.hourglass_energy[e];
     }
   }
   return sums;

@@ -34,14 +34,6 @@ constexpr int kFormatVersion = 1;
 constexpr hsize_t kHistoryChunkRows = 512;   // rows per chunk of the 1-D history datasets
 constexpr std::size_t kHistoryBuffer = 256;  // history rows kept in memory before they are appended
 
-struct MeshKind {
-  ElementKind kind;
-  const char* group;     // /mesh/<group>
-  const char* topology;  // XDMF TopologyType
-};
-constexpr std::array<MeshKind, kElementKinds> kMeshKinds{{{ElementKind::Shell4, "shell4", "Quadrilateral"},
-                                                          {ElementKind::Shell3, "shell3", "Triangle"},
-                                                          {ElementKind::Brick8, "brick8", "Hexahedron"}}};
 
 // What NAME.xdmf says of a frame's field: its dataset and attribute name, where it lives, its width and type.
 struct FieldEntry {
@@ -295,13 +287,13 @@ struct ResultsFile::Impl {
     dataset(parts.get(), "ids", part_ids.data(), {part_ids.size()});
     string_dataset(parts.get(), "titles", part_titles);
 
-    for (const MeshKind& k : kMeshKinds) {
+    for (const ElementKindDescription& k : kElementKindTable) {
       const ElementTable& table = model.elements[static_cast<std::size_t>(k.kind)];
       const std::size_t n = table.size();
       elements[static_cast<std::size_t>(k.kind)] = n;
       if (n == 0) continue;
       const auto npe = static_cast<hsize_t>(nodes_per_element(k.kind));
-      Handle g = group(mesh.get(), k.group);
+      Handle g = group(mesh.get(), std::string(k.mesh_group));
       dataset(g.get(), "connectivity", table.connectivity.data(), {n, npe});
       dataset(g.get(), "ids", table.user_id.data(), {n});
       dataset(g.get(), "part", table.part.data(), {n});
@@ -464,10 +456,10 @@ struct ResultsFile::Impl {
     };
     if (model.nodes.size() != nodes)
       mismatch(fmt::format("the model has {} nodes, the mesh {}", model.nodes.size(), nodes));
-    for (const MeshKind& k : kMeshKinds)
+    for (const ElementKindDescription& k : kElementKindTable)
       if (model.elements[static_cast<std::size_t>(k.kind)].size() != elements[static_cast<std::size_t>(k.kind)])
         mismatch(fmt::format("the model has {} {} elements, the mesh {}",
-                             model.elements[static_cast<std::size_t>(k.kind)].size(), k.group,
+                             model.elements[static_cast<std::size_t>(k.kind)].size(), k.mesh_group,
                              elements[static_cast<std::size_t>(k.kind)]));
     if (model.element_groups.size() != element_groups)
       mismatch(fmt::format("the model has {} element groups, the mesh {}", model.element_groups.size(),
@@ -496,7 +488,8 @@ struct ResultsFile::Impl {
           std::size_t rows = file.nodes;
           if (field.kind >= 0) {
             const auto k = static_cast<std::size_t>(field.kind);
-            if (!kind_groups[k].valid()) kind_groups[k] = file.group(frame, kMeshKinds[k].group);
+            if (!kind_groups[k].valid())
+              kind_groups[k] = file.group(frame, std::string(kElementKindTable[k].mesh_group));
             at = kind_groups[k].get(), rows = file.elements[k];
           }
           if (field.is_bytes) file.dataset(at, field.name, field.bytes.data(), {rows});
@@ -544,12 +537,14 @@ struct ResultsFile::Impl {
   // The frame's nodal fields and, for the grid of element kind `kind` (nullptr: the cloud of points), its cell
   // fields, in the order written (the kind's vtkGhostType last: ParaView's XDMF reader takes the first scalar of
   // a grid as its active one).
-  void xdmf_fields(std::string& x, const Frame& frame, const MeshKind* kind, const std::string& in) const {
+  void xdmf_fields(std::string& x, const Frame& frame, const ElementKindDescription* kind,
+                   const std::string& in) const {
     for (const FieldEntry& field : frame.fields) {
       const bool cell = field.kind >= 0;
       if (cell && (kind == nullptr || field.kind != static_cast<int>(kind->kind))) continue;
       const std::string at =
-          "/frames/" + frame.name + (cell ? std::string("/") + kind->group : std::string()) + "/" + field.name;
+          "/frames/" + frame.name + (cell ? std::string("/") + std::string(kind->mesh_group) : std::string()) + "/" +
+          field.name;
       const std::size_t rows = cell ? elements[static_cast<std::size_t>(field.kind)] : nodes;
       const std::string dims = field.width == 1 ? std::to_string(rows) : fmt::format("{} {}", rows, field.width);
       attribute_xml(x, in, field.name, attribute_type(field.width), cell ? "Cell" : "Node",
@@ -557,16 +552,16 @@ struct ResultsFile::Impl {
     }
   }
 
-  void xdmf_grid(std::string& x, const MeshKind& k, const Frame* frame, const std::string& indent) const {
+  void xdmf_grid(std::string& x, const ElementKindDescription& k, const Frame* frame, const std::string& indent) const {
     const std::size_t n = elements[static_cast<std::size_t>(k.kind)];
     const int npe = nodes_per_element(k.kind);
-    const std::string mesh = std::string("/mesh/") + k.group;
+    const std::string mesh = std::string("/mesh/") + std::string(k.mesh_group);
     const std::string in = indent + "  ";
-    x += fmt::format("{}<Grid Name=\"{}\" GridType=\"Uniform\">\n", indent, k.group);
+    x += fmt::format("{}<Grid Name=\"{}\" GridType=\"Uniform\">\n", indent, k.mesh_group);
     if (frame != nullptr) x += fmt::format("{}<Time Value=\"{:.17g}\"/>\n", in, frame->time);
     x += fmt::format("{}<Topology TopologyType=\"{}\" NumberOfElements=\"{}\" NodesPerElement=\"{}\">\n{}  {}\n{}"
                      "</Topology>\n",
-                     in, k.topology, n, npe, in,
+                     in, k.xdmf_topology, n, npe, in,
                      item<std::int32_t>(fmt::format("{} {}", n, npe), mesh + "/connectivity"), in);
     x += fmt::format("{}<Geometry GeometryType=\"XYZ\">\n{}  {}\n{}</Geometry>\n", in, in,
                      item<double>(fmt::format("{} 3", nodes), "/mesh/coordinates"), in);
@@ -593,14 +588,14 @@ struct ResultsFile::Impl {
   // The grids of one instant: one uniform grid per element kind present, in a spatial collection when there
   // are several.
   void xdmf_instant(std::string& x, const Frame* frame, const std::string& indent, const std::string& name) const {
-    std::vector<const MeshKind*> kinds;
-    for (const MeshKind& k : kMeshKinds)
+    std::vector<const ElementKindDescription*> kinds;
+    for (const ElementKindDescription& k : kElementKindTable)
       if (elements[static_cast<std::size_t>(k.kind)] > 0) kinds.push_back(&k);
     if (kinds.empty()) return xdmf_points(x, frame, indent);
     if (kinds.size() == 1) return xdmf_grid(x, *kinds.front(), frame, indent);
     x += fmt::format("{}<Grid Name=\"{}\" GridType=\"Collection\" CollectionType=\"Spatial\">\n", indent, name);
     if (frame != nullptr) x += fmt::format("{}  <Time Value=\"{:.17g}\"/>\n", indent, frame->time);
-    for (const MeshKind* k : kinds) xdmf_grid(x, *k, frame, indent + "  ");
+    for (const ElementKindDescription* k : kinds) xdmf_grid(x, *k, frame, indent + "  ");
     x += indent + "</Grid>\n";
   }
 

@@ -121,11 +121,11 @@ std::string describe(const RunEvent& e, const Model& m) {
     case K::ElementDeletedBelowMinimumStep:
       return fmt::format("{} {} of part {} DELETED: time step {:.4e} below its minimum (/DT/{}/DEL)", when,
                          element_name(m, e.element_kind, e.index), part_id_of(m, e.element_kind, e.index), e.value,
-                         e.element_kind == ElementKind::Brick8 ? "BRICK" : e.element_kind == ElementKind::Shell3 ? "SH_3N" : "SHELL");
+                         describe(e.element_kind).step_card);
     case K::ElementSwitchedToSmallStrain:
       return fmt::format("{} {} of part {} SWITCHED TO SMALL STRAIN: time step {:.4e} at its minimum (/DT/{}/CST)", when,
                          element_name(m, e.element_kind, e.index), part_id_of(m, e.element_kind, e.index), e.value,
-                         e.element_kind == ElementKind::Brick8 ? "BRICK" : e.element_kind == ElementKind::Shell3 ? "SH_3N" : "SHELL");
+                         describe(e.element_kind).step_card);
     case K::ShellDeletedInverted:
       return fmt::format("{} {} of part {} DELETED: turned inside out (zero area or two folded corners){}", when,
                          element_name(m, e.element_kind, e.index), part_id_of(m, e.element_kind, e.index),
@@ -356,8 +356,8 @@ RunSummary summarize_run(const Model& m, const std::string& name, const SolverSt
   summary.crumple_version = build::version();
   summary.commit = build::commit();
   summary.precision = kPrecision;
-  summary.deleted_elements =
-      deleted_count(s.shells.deleted) + deleted_count(s.shells3.deleted) + deleted_count(s.bricks.deleted);
+  summary.deleted_elements = 0;
+  for (ElementKind kind : kAllElementKinds) summary.deleted_elements += deleted_count(element_state(s, kind).deleted);
   summary.phases = phases;
   summary.cycles = s.cycle;
   summary.cycles_total = s.cycles_done + s.cycle;

@@ -3,18 +3,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <initializer_list>
 #include <optional>
-#include <stdexcept>
-#include <string>
-#include <string_view>
-#include <type_traits>
 
 #include "crumple/contact/contact.hpp"
-#include "crumple/solver/snapshot.hpp"
-#include "crumple/solver/accelerometers.hpp"
-#include "crumple/solver/node_rotations.hpp"
-#include "crumple/solver/sections.hpp"
+#include "solver/domain_sharing.hpp"
 #include "solver/internal.hpp"
 
 namespace crumple::solver {
@@ -23,9 +15,7 @@ namespace {
 std::array<std::vector<double>*, 6> velocities(NodalState& n) { return {&n.vx, &n.vy, &n.vz, &n.wx, &n.wy, &n.wz}; }
 
 // /DT/SHELL, /DT/SH_3N, /DT/BRICK: the step control of an element kind.
-const TimeStepControl& type_control(const RunControl& rc, ElementKind kind) {
-  return kind == ElementKind::Shell4 ? rc.dt_shell : kind == ElementKind::Shell3 ? rc.dt_sh3n : rc.dt_brick;
-}
+const TimeStepControl& type_control(const RunControl& rc, ElementKind kind) { return rc.*describe(kind).step_control; }
 
 GroupStepResult group_forces(const Model& m, SolverState& s, std::size_t g) {
   const ElementGroup& group = m.element_groups[g];
@@ -50,10 +40,9 @@ StopReason element_stop(StopReason::Kind kind, ElementKind element_kind, std::in
 // Returns how many were deleted.
 long long delete_below_minimum(const ElementGroup& group, SolverState& s, RunEvents& events, double type_scale,
                           double minimum, GroupStepResult& r) {
-  const bool brick = group.kind == ElementKind::Brick8;
-  ShellState& shells = group.kind == ElementKind::Shell4 ? s.shells : s.shells3;
-  auto& deleted = brick ? s.bricks.deleted : shells.deleted;
-  const auto& critical_dt = brick ? s.bricks.critical_dt : shells.critical_dt;
+  ElementKindState& state = element_state(s, group.kind);
+  auto& deleted = state.deleted;
+  const auto& critical_dt = state.critical_dt;
   r.min_dt = std::numeric_limits<double>::infinity();
   long long count = 0;
   for (std::int32_t e = group.begin; e < group.end; ++e) {
@@ -79,8 +68,7 @@ bool switch_element(const Model& m, std::size_t g, SolverState& s, std::int32_t 
   const ElementGroup& group = m.element_groups[g];
   const ElementTable& table = m.elements[static_cast<int>(group.kind)];
   if (group.kind != ElementKind::Brick8) {
-    ShellState& shells = group.kind == ElementKind::Shell4 ? s.shells : s.shells3;
-    return shell_switch_to_small_strain(table, s.shell_groups[g], s.nodes, shells, e);
+    return shell_switch_to_small_strain(table, s.shell_groups[g], s.nodes, shell_state(s, group.kind), e);
   }
   if (s.brick_groups[g].ismstr != 2 || s.bricks.small_strain[static_cast<std::size_t>(e)] != 0) return false;
   brick8_switch_to_small_strain(table, e, s.nodes, s.bricks);
@@ -93,10 +81,9 @@ bool switch_element(const Model& m, std::size_t g, SolverState& s, std::int32_t 
 void switch_below_minimum(const Model& m, std::size_t g, SolverState& s, RunEvents& events, double type_scale,
                           double minimum) {
   const ElementGroup& group = m.element_groups[g];
-  const bool brick = group.kind == ElementKind::Brick8;
-  const ShellState& shells = group.kind == ElementKind::Shell4 ? s.shells : s.shells3;
-  const auto& status = brick ? s.bricks.deleted : shells.deleted;
-  const auto& critical_dt = brick ? s.bricks.critical_dt : shells.critical_dt;
+  const ElementKindState& state = element_state(s, group.kind);
+  const auto& status = state.deleted;
+  const auto& critical_dt = state.critical_dt;
   for (std::int32_t e = group.begin; e < group.end; ++e) {
     const auto ue = static_cast<std::size_t>(e);
     if (element_condition(status[ue]) != kElementActive || !(type_scale * critical_dt[ue] < minimum)) continue;
@@ -129,8 +116,6 @@ long long control_group_step(const Model& m, std::size_t g, SolverState& s, RunE
   return 0;
 }
 
-// Power of the /CLOAD and /GRAV loads on the mid-step velocities, times the step, into `work`: each node's terms
-// from the domain that owns it.
 // Work of the kinematic conditions: the impulse that changed the free velocity, on the mid-step velocity, into
 // `work` (owned nodes).
 void add_constraint_work(SolverState& s, const VelocityScratch& scratch, ExactSum& work) {
@@ -149,30 +134,6 @@ void add_constraint_work(SolverState& s, const VelocityScratch& scratch, ExactSu
   });
 }
 
-// Hourglass energy above 10 % of the internal energy is a mesh or formulation problem the user must see
-// (docs/theory/energy.md): one event, the first time it happens once the energy counts (above 0.1 % of the
-// balance's scale, so that the first cycles' round-off does not raise it).
-void warn_hourglass_share(const SolverState& s, RunEvents& events) {
-  const EnergyBalanceState& e = s.energy;
-  const double scale = std::abs(e.initial_kinetic) + std::abs(e.external_work);
-  if (events.hourglass_warned || !(e.hourglass > 0.1 * std::abs(e.internal)) || !(e.hourglass > 1e-3 * scale)) return;
-  events.hourglass_warned = true;
-  RunEvent event{RunEvent::Kind::HourglassShare, s.cycle, s.time};
-  event.value = e.internal != 0.0 ? e.hourglass / std::abs(e.internal) : std::numeric_limits<double>::infinity();
-  events.pending.push_back(event);
-}
-
-// An energy error beyond 10 % (5 % under a preset) means the balance is not kept: an instability growing, or a
-// remedy (mass scaling, a contact released deep in its gap) adding or taking energy. A run must not end "normal"
-// without saying so (docs/theory/energy.md): one event, the first time, unless /STOP Emax stops the run before.
-void warn_energy_error(const RunControl& rc, const SolverState& s, RunEvents& events) {
-  const double error = s.energy.error_percent();
-  if (events.energy_error_warned || !(std::abs(error) > rc.energy_error_warning)) return;
-  events.energy_error_warned = true;
-  RunEvent event{RunEvent::Kind::EnergyErrorLarge, s.cycle, s.time};
-  event.value = error, event.second_value = rc.energy_error_warning;
-  events.pending.push_back(event);
-}
 
 // The elements' forces on the nodes, before contact and loads add theirs (field frames, /ANIM/VECT/FINT).
 void record_internal_forces(SolverState& s) {
@@ -183,238 +144,10 @@ void record_internal_forces(SolverState& s) {
                       [&](std::size_t k) { out[3 * k] = n.fx[k], out[3 * k + 1] = n.fy[k], out[3 * k + 2] = n.fz[k]; });
 }
 
-// a^n from the velocity change of the step, after the kinematic conditions (field frames, /ANIM/VECT/ACC).
-void record_acceleration(SolverState& s, const VelocityScratch& scratch, double dt_average) {
-  std::vector<double>& out = s.recorded.acceleration;
-  if (out.empty() || !(dt_average > 0.0)) return;
-  const NodalState& n = s.nodes;
-  for_each_local_node(s.domain, n.size(), [&](std::size_t k) {
-    out[3 * k] = (n.vx[k] - scratch.before[0][k]) / dt_average;
-    out[3 * k + 1] = (n.vy[k] - scratch.before[1][k]) / dt_average;
-    out[3 * k + 2] = (n.vz[k] - scratch.before[2][k]) / dt_average;
-  });
-}
-
 }  // namespace
 
 double step_scale(const RunControl& run) { return run.dt.scale > 0.0 ? run.dt.scale : 0.9; }
 
-namespace {
-
-// The per-type step controls and the nodal step read every element's critical step; otherwise only the groups'
-// smallest steps matter, which travel anyway.
-bool critical_steps_needed(const RunControl& rc) {
-  return rc.dt_nodal_cst.given || rc.dt_ams.given || rc.dt_shell.minimum > 0.0 || rc.dt_sh3n.minimum > 0.0 ||
-         rc.dt_brick.minimum > 0.0;
-}
-
-// Every domain's elements' conditions from their owners (an element that failed in its kernel is deleted
-// everywhere).
-void share_conditions(SolverState& s, Exchange& exchange) {
-  for (int k = 0; k < kElementKinds; ++k) {
-    const std::vector<std::int32_t>& owner = s.domain.owner[static_cast<std::size_t>(k)];
-    std::vector<std::uint8_t>& status = element_view(s, static_cast<ElementKind>(k)).status;
-    exchange.share(status, 1, owner);  // the owner's condition, without the flag
-    for (std::size_t e = 0; e < owner.size(); ++e)
-      if (owner[e] != s.domain.index) status[e] = static_cast<std::uint8_t>(status[e] | kElementElsewhere);
-  }
-}
-
-// The groups' results as one domain finds them (GroupStepResult over all of a group's elements): the smallest step
-// with the first element that has it, the last inverted and the last non-finite element, the failed count. The
-// energies are not combined here: the balance takes each element's running energy when it is checked
-// (update_energies, docs/theory/energy.md).
-void share_group_results(const Model& m, SolverState& s, Exchange& exchange) {
-  SolverState::GroupShare& w = s.group_share;
-  const std::size_t groups = m.element_groups.size();
-  for (auto* v : {&w.controlling, &w.last_inverted, &w.last_non_finite, &w.failed, &w.inverted_count}) v->resize(groups);
-  w.min_dt.resize(groups);
-  for (std::size_t g = 0; g < groups; ++g) {
-    const GroupStepResult& r = s.group_results[g];
-    w.min_dt[g] = r.min_dt, w.controlling[g] = r.controlling;
-    w.last_inverted[g] = r.inverted, w.last_non_finite[g] = r.non_finite, w.failed[g] = r.failed;
-    w.inverted_count[g] = r.inverted_count;
-  }
-  exchange.min_with_index(w.min_dt, w.controlling);
-  exchange.max(w.last_inverted);
-  exchange.max(w.last_non_finite);
-  exchange.sum(w.failed);
-  exchange.sum(w.inverted_count);
-  bool failed = false;
-  for (std::size_t g = 0; g < groups; ++g) {
-    GroupStepResult r;
-    if (w.controlling[g] >= 0) r.min_dt = w.min_dt[g], r.controlling = w.controlling[g];
-    r.inverted = w.last_inverted[g], r.non_finite = w.last_non_finite[g], r.failed = w.failed[g];
-    r.inverted_count = w.inverted_count[g];
-    failed = failed || r.failed > 0;
-    s.group_results[g] = r;
-  }
-  if (failed) share_conditions(s, exchange);
-}
-
-}  // namespace
-
-// What one domain computed of its own elements reaches the domains that need it (docs/parallel.md, "Exchange"): the
-// loads of the elements at shared nodes, the critical steps when a step control reads them, then the groups' results as one domain finds them, then the local shared nodes' sums in model order.
-void share_element_results(const Model& m, SolverState& s, Exchange& exchange) {
-  const Domain& d = s.domain;
-  const bool critical_steps = critical_steps_needed(m.run);
-  exchange.halo_finish();  // the records' halo, started by run_element_kernels
-  for (int k = 0; k < kElementKinds; ++k) {
-    ElementStateView v = element_view(s, static_cast<ElementKind>(k));
-    if (critical_steps) exchange.share(v.critical_dt, 1, d.owner[static_cast<std::size_t>(k)]);
-    if (nodal_stiffness_on(m))
-      exchange.share(s.interface_stiffness[static_cast<std::size_t>(k)], 1, d.owner[static_cast<std::size_t>(k)]);
-  }
-  share_group_results(m, s, exchange);
-  assemble_element_loads(d, s.shells, s.shells3, s.bricks, s.nodes);
-}
-
-namespace {
-
-// Every field of one kind's element state from the elements' owners: point fields by the points' owners, element
-// fields (one or more values per element) by the elements'. The status is shared every cycle already.
-template <class State, class Visit>
-void share_kind_state(Exchange& exchange, State& state, Visit visit, const std::vector<std::int32_t>& owner,
-                      const std::vector<std::int32_t>& point_owner, std::initializer_list<std::string_view> point_fields) {
-  const std::size_t n = owner.size();
-  auto share = [&](const std::string& name, auto& values) {
-    using Values = std::remove_reference_t<decltype(values)>;
-    if constexpr (std::is_same_v<Values, std::vector<double>> || std::is_same_v<Values, std::vector<float>> ||
-                  std::is_same_v<Values, std::vector<std::uint8_t>>) {
-      if (values.empty() || name == "deleted") return;
-      if (std::find(point_fields.begin(), point_fields.end(), name) != point_fields.end()) {
-        exchange.share(values, 1, point_owner);
-      } else {
-        if (n == 0 || values.size() % n != 0) throw std::logic_error("element field " + name + " is not per element");
-        exchange.share(values, static_cast<int>(values.size() / n), owner);
-      }
-    }
-  };
-  visit(share, std::string(), state);
-}
-
-}  // namespace
-
-bool histories_read_nodes(const Model& m) {
-  for (const TimeHistoryRequest& th : m.histories) {
-    const HistoryObject o = th.object;
-    if (o == HistoryObject::Node || o == HistoryObject::Part || o == HistoryObject::Subset || o == HistoryObject::Section ||
-        o == HistoryObject::Accelerometer)
-      return true;
-  }
-  return false;
-}
-
-ElementStateNeed history_needs(const Model& m) {
-  ElementStateNeed need = ElementStateNeed::None;
-  for (const TimeHistoryRequest& th : m.histories) {
-    const HistoryObject o = th.object;
-    if (o == HistoryObject::Shell || o == HistoryObject::Sh3n || o == HistoryObject::Brick || o == HistoryObject::Section)
-      return ElementStateNeed::All;
-    if (o == HistoryObject::Part || o == HistoryObject::Subset) need = ElementStateNeed::Energies;
-  }
-  return need;
-}
-
-void share_element_state(SolverState& s, Exchange& exchange, ElementStateNeed need) {
-  if (need == ElementStateNeed::None) return;
-  if (need == ElementStateNeed::Energies) {
-    const auto& owner = s.domain.owner;
-    for (auto* state : {&s.shells, &s.shells3}) {
-      const auto& o = owner[state == &s.shells ? 0 : 1];
-      exchange.share(state->internal_energy, 1, o), exchange.share(state->hourglass_energy, 1, o);
-    }
-    exchange.share(s.bricks.internal_energy, 1, owner[2]), exchange.share(s.bricks.hourglass_energy, 1, owner[2]);
-    return;
-  }
-  const auto& owner = s.domain.owner;
-  const auto& points = s.point_owner;
-  auto shells = [](auto& v, const std::string& at, ShellState& st) { snapshot_detail::visit_shells(v, at, st); };
-  auto bricks = [](auto& v, const std::string& at, BrickState& st) { snapshot_detail::visit_bricks(v, at, st); };
-  const auto shell_points = {std::string_view("sxx"), std::string_view("syy"), std::string_view("sxy"),
-                             std::string_view("eps_p"), std::string_view("eps_rate"), std::string_view("hardening_term")};
-  const auto brick_points = {std::string_view("sxx"), std::string_view("syy"), std::string_view("szz"),
-                             std::string_view("sxy"), std::string_view("syz"), std::string_view("szx"),
-                             std::string_view("eps_p"), std::string_view("eps_rate")};
-  share_kind_state(exchange, s.shells, shells, owner[0], points[0], shell_points);
-  share_kind_state(exchange, s.shells3, shells, owner[1], points[1], shell_points);
-  share_kind_state(exchange, s.bricks, bricks, owner[2], points[2], brick_points);
-}
-
-namespace {
-
-// Before a restart snapshot: the contact state each domain keeps for the secondary nodes it owns and for their
-// pairs (docs/parallel.md, "Contact"), from those domains.
-void share_contact_state(SolverState& s, Exchange& exchange) {
-  SolverState::GroupShare& w = s.group_share;
-  w.secondary_owner.resize(s.contact.interfaces.size()), w.pair_owner.resize(s.contact.interfaces.size());
-  for (std::size_t f = 0; f < s.contact.interfaces.size(); ++f) {
-    ContactInterface& in = s.contact.interfaces[f];
-    std::vector<std::int32_t>& node = w.secondary_owner[f];
-    if (node.empty())
-      for (std::int32_t k : in.secondary_nodes) node.push_back(s.domain.node_owner[static_cast<std::size_t>(k)]);
-    std::vector<std::int32_t>& pair = w.pair_owner[f];
-    pair.clear();
-    for (std::int32_t i : in.candidate_node) pair.push_back(node[static_cast<std::size_t>(i)]);
-    exchange.renew(pair);
-    for (auto* v : {&in.friction_x, &in.friction_y, &in.friction_z}) exchange.share(*v, 1, pair);
-    for (auto* v : {&in.gap_reduction, &in.gap_clearance}) exchange.share(*v, 1, node);
-    exchange.share(in.node_impacted, 1, node);
-    if (!in.friction_mu.empty()) {
-      exchange.share(in.friction_mu, 1, node);
-      std::vector<double> pass(in.friction_mu_pass.begin(), in.friction_mu_pass.end());
-      exchange.share(pass, 1, node);
-      for (std::size_t i = 0; i < pass.size(); ++i) in.friction_mu_pass[i] = static_cast<long long>(pass[i]);
-    }
-  }
-}
-
-}  // namespace
-
-void share_node_state(const Model& m, SolverState& s, Exchange& exchange, bool restart) {
-  NodalState& n = s.nodes;
-  const std::vector<std::int32_t>& owner = s.domain.node_owner;
-  // The mass and rotational inertia too: /DT/INTER/CST adds mass where the node's pairs are computed, /DT/NODA/CST
-  // both where the node is advanced (time-step.md, T-3, T-3a).
-  for (auto* v : {&n.x, &n.y, &n.z, &n.vx, &n.vy, &n.vz, &n.wx, &n.wy, &n.wz, &n.fx, &n.fy, &n.fz, &n.mx, &n.my, &n.mz,
-                  &n.mass, &n.inertia})
-    exchange.share(*v, 1, owner);
-  // Tied walls keep which nodes they hold, where the node is local.
-  SolverState::GroupShare& w = s.group_share;
-  if (w.wall_node_owner.size() != s.walls.size()) {
-    w.wall_node_owner.assign(s.walls.size(), {});
-    for (std::size_t i = 0; i < s.walls.size(); ++i)
-      for (std::int32_t k : s.walls[i].nodes) w.wall_node_owner[i].push_back(owner[static_cast<std::size_t>(k)]);
-  }
-  for (std::size_t i = 0; i < s.walls.size(); ++i) exchange.share(s.walls[i].tied, 1, w.wall_node_owner[i]);
-  if (!s.contact.interfaces.empty()) {
-    // The contact force field: each node's from its owner; every node with one is then to be cleared by the next
-    // pass (so that a restart starts with the same list everywhere).
-    ContactState& c = s.contact;
-    for (auto* v : {&c.fx, &c.fy, &c.fz}) exchange.share(*v, 1, owner);
-    c.touched.clear();
-    for (std::size_t k = 0; k < c.fx.size(); ++k)
-      if (c.fx[k] != 0.0 || c.fy[k] != 0.0 || c.fz[k] != 0.0) c.touched.push_back(static_cast<std::int32_t>(k));
-    if (restart) share_contact_state(s, exchange);
-  }
-  RecordedNodalResults& r = s.recorded;
-  for (auto* v : {&r.acceleration, &r.internal_force, &r.external_force})
-    if (!v->empty()) exchange.share(*v, 3, owner);
-  // Output-only integrals of the cycle, kept right by the domain their node is local to.
-  HistoryIntegrals& h = s.histories;
-  if (!m.accelerometers.empty()) {
-    if (w.accelerometer_owner.empty())
-      for (const Accelerometer& a : m.accelerometers) w.accelerometer_owner.push_back(owner[static_cast<std::size_t>(a.node)]);
-    exchange.share(h.accel_filtered, 3, w.accelerometer_owner), exchange.share(h.accel_velocity, 3, w.accelerometer_owner);
-    exchange.share(h.accel_memory, 18, w.accelerometer_owner);
-  }
-  if (!h.rotation_nodes.empty()) {
-    if (w.rotation_owner.empty())
-      for (std::int32_t k : h.rotation_nodes) w.rotation_owner.push_back(owner[static_cast<std::size_t>(k)]);
-    exchange.share(h.rotation, 3, w.rotation_owner);
-  }
-}
 
 void run_element_kernels(const Model& m, SolverState& s, Exchange* exchange) {
   NodalState& n = s.nodes;
@@ -427,8 +160,8 @@ void run_element_kernels(const Model& m, SolverState& s, Exchange* exchange) {
   const std::int32_t last_sending = s.domain.last_sending_group;
   auto start_halo = [&] {
     for (int k = 0; k < kElementKinds; ++k) {
-      ElementStateView v = element_view(s, static_cast<ElementKind>(k));
-      exchange->halo_start(v.records.load, v.records.nodes_per_element * v.records.values_per_node,
+      ElementRecords& records = element_state(s, static_cast<ElementKind>(k)).records;
+      exchange->halo_start(records.load, records.nodes_per_element * records.values_per_node,
                            s.domain.record_halo[static_cast<std::size_t>(k)]);
     }
   };
@@ -492,64 +225,6 @@ StepBound compute_element_forces(const Model& m, SolverState& s, RunEvents& even
   }
   return combine_group_results(m, s, events, elements_deleted);
 }
-
-namespace {
-
-// The contact pass's view of the other domains (contact/contact.hpp, ContactDomains), over the run's exchange.
-class ContactExchange final : public contact::ContactDomains {
- public:
-  ContactExchange(SolverState& s, Exchange& exchange) : s_(s), exchange_(exchange) {
-    scope_.node_owner = &s.domain.node_owner, scope_.me = s.domain.index;
-    scope_.local = &s.domain.local, scope_.multi_local = &s.domain.multi_local;
-  }
-  const contact::ContactScope& scope() const override { return scope_; }
-  double max(double value) override {
-    values_.assign(1, value);
-    exchange_.max(values_);
-    return values_[0];
-  }
-  void sum(std::vector<ExactSum>& sums) override { exchange_.sum(sums); }
-  void min_with_index(double& value, std::int32_t& index) override {
-    values_.assign(1, value), indices_.assign(1, index);
-    exchange_.min_with_index(values_, indices_);
-    value = values_[0], index = indices_[0];
-  }
-  void union_of(std::vector<std::int32_t>& flags) override { exchange_.max(flags); }
-  void gather_positions(const ContactInterface& in) override {
-    const std::vector<std::int32_t>& owner = interface_owner(in);
-    NodalState& n = s_.nodes;
-    for (auto* v : {&n.x, &n.y, &n.z}) exchange_.share(*v, 1, owner);
-  }
-  void share_ghosts(const ContactInterface& in, bool changed) override {
-    if (changed) exchange_.renew(in.ghost_owner);
-    NodalState& n = s_.nodes;
-    for (auto* v : {&n.x, &n.y, &n.z, &n.vx, &n.vy, &n.vz}) exchange_.share(*v, 1, in.ghost_owner);
-  }
-  void gather(const std::vector<double>& mine, std::vector<double>& all) override { exchange_.gather(mine, all); }
-
- private:
-  // Per node, its owner when it is one of the interface's nodes, else -1 (kept: the exchange's layouts use it).
-  const std::vector<std::int32_t>& interface_owner(const ContactInterface& in) {
-    const auto f = static_cast<std::size_t>(&in - s_.contact.interfaces.data());
-    std::vector<std::vector<std::int32_t>>& owners = s_.group_share.interface_node_owner;
-    if (owners.size() <= f) owners.resize(s_.contact.interfaces.size());
-    std::vector<std::int32_t>& owner = owners[f];
-    if (owner.empty()) {
-      owner.assign(s_.nodes.size(), -1);
-      for (std::int32_t k : in.secondary_nodes) owner[static_cast<std::size_t>(k)] = s_.domain.node_owner[static_cast<std::size_t>(k)];
-      for (std::int32_t k : in.main_nodes) owner[static_cast<std::size_t>(k)] = s_.domain.node_owner[static_cast<std::size_t>(k)];
-    }
-    return owner;
-  }
-
-  SolverState& s_;
-  Exchange& exchange_;
-  contact::ContactScope scope_;
-  std::vector<double> values_;
-  std::vector<std::int32_t> indices_;
-};
-
-}  // namespace
 
 void compute_contact_forces(const Model& m, SolverState& s, RunEvents& events, bool elements_deleted,
                             StepBound& bound) {
@@ -708,12 +383,6 @@ void apply_constraints(const Model& m, SolverState& s, VelocityScratch& scratch,
   s.reducer.sum(work);
   s.energy.external_work += work[0].value() + body_work;
   if (!s.contact.interfaces.empty()) s.energy.contact = contact::absorb_contact_work(s.contact, work.data() + 1, dt_average);
-  record_acceleration(s, scratch, dt_average);
-  // /ACCEL: only a deck with accelerometers has any (a loop over them, not over the nodes).
-  update_accelerometers(m.accelerometers, n, {&scratch.before[0], &scratch.before[1], &scratch.before[2]}, dt_average,
-                        s.skew_axes, s.histories);
-  // /TH/SECTIO WORK: only a deck that asks it (a loop over the sections' elements, not over the model).
-  add_section_work(m, s, scratch.before, dt_average);
 }
 
 void advance_positions(SolverState& s, double dt_next) {
@@ -723,137 +392,9 @@ void advance_positions(SolverState& s, double dt_next) {
     n.y[k] += dt_next * n.vy[k];
     n.z[k] += dt_next * n.vz[k];
   });
-  // /TH/NODE DRX DRY DRZ: only the nodes a request asks them of (none: no loop).
-  integrate_node_rotations(n, dt_next, s.histories);
   s.time += dt_next;
   s.dt = dt_next;
   ++s.cycle;
-}
-
-// A continued run's outputs follow its own /ANIM/DT and /TFILE from where it starts (the one at its first time
-// was written by the run before).
-OutputSchedule::OutputSchedule(const RunControl& rc, double time, long long max)
-    : next_frame(std::numeric_limits<double>::infinity()),
-      next_history(std::numeric_limits<double>::infinity()),
-      print_every(rc.print_every != 0 ? std::llabs(rc.print_every) : 100),
-      max_cycles(max) {
-  if (rc.anim_interval > 0.0)
-    next_frame = time > rc.anim_start ? next_output_time(time, rc.anim_start, rc.anim_interval) : rc.anim_start;
-  if (rc.history_interval > 0.0) next_history = time > 0.0 ? next_output_time(time, 0.0, rc.history_interval) : 0.0;
-  if (rc.history_every_cycle()) next_history = 0.0;  // due at every cycle
-}
-
-void keep_requested_results(const RunControl& rc, SolverState& s) {
-  const std::size_t values = 3 * s.nodes.size();
-  RecordedNodalResults& r = s.recorded;
-  r.acceleration.assign(rc.anim.acceleration ? values : 0, 0.0);
-  r.internal_force.assign(rc.anim.internal_force ? values : 0, 0.0);
-  r.external_force.assign(rc.anim.external_force ? values : 0, 0.0);
-}
-
-bool frame_due(const SolverState& s, const OutputSchedule& schedule) {
-  return s.time >= schedule.next_frame * (1.0 - 1e-12);
-}
-
-bool MonitorDue::energies() const { return print || frame || history || cycle % 64 == 0; }
-
-MonitorDue outputs_due(const Model& m, const SolverState& s, const OutputSchedule& schedule, double dt_next) {
-  MonitorDue due{};
-  due.cycle = s.cycle;
-  due.finished = s.time >= m.run.end_time * (1.0 - 1e-12) || dt_next <= 0.0 ||
-                 (schedule.max_cycles >= 0 && s.cycle >= schedule.max_cycles);
-  due.print = s.cycle % schedule.print_every == 0 || due.finished;
-  due.frame = frame_due(s, schedule);
-  due.history = s.time >= schedule.next_history * (1.0 - 1e-12);
-  return due;
-}
-
-void update_energies(const Model& m, SolverState& s) {
-  const auto [translational, rotational] = kinetic_energy(s);
-  // Under selective mass scaling the deformation modes' added mass moves too (eq. SM-6), as the reference lists it.
-  s.energy.kinetic_translational = translational + selective_mass_kinetic_energy(m, s);
-  s.energy.kinetic_rotational = rotational;
-  const auto [internal, hourglass] = element_energies(s);
-  s.energy.internal = internal;
-  s.energy.hourglass = hourglass;
-}
-
-// A step far below what the elements allow (a contact closing fast on a small gap, a node's mass) slows the run
-// by that factor without failing it: the user must see it once (docs/theory/time-step.md, "Step drops").
-void warn_step_drop(const SolverState& s, double element_step, double dt, const StepControl& control, RunEvents& events) {
-  if (events.step_drop_warned || !(dt < 1e-3 * element_step) || !(element_step < 1e300)) return;
-  events.step_drop_warned = true;
-  RunEvent event{RunEvent::Kind::StepDropped, s.cycle, s.time};
-  event.value = dt, event.second_value = element_step, event.control = control;
-  events.pending.push_back(event);
-}
-
-namespace {
-
-// No element computed any more: every one deleted (an element in a rigid body is still there).
-bool no_element_left(const SolverState& s) {
-  for (const auto* status : {&s.shells.deleted, &s.shells3.deleted, &s.bricks.deleted})
-    for (std::uint8_t e : *status)
-      if (element_condition(e) != kElementDeleted) return false;
-  return true;
-}
-
-// A run whose elements were all deleted by numerical causes (turned inside out, below their minimum step) has no
-// answer to give, unlike one whose elements failed by their material's failure model (which runs on, as the
-// reference does): it stops, abnormally. Looked for when such deletions have happened since the last look.
-bool every_element_lost(const SolverState& s, RunEvents& events) {
-  const long long numerical = events.deleted_inverted + events.deleted_below_minimum_step;
-  if (numerical == events.numerical_deletions_checked) return false;
-  events.numerical_deletions_checked = numerical;
-  return no_element_left(s);
-}
-
-}  // namespace
-
-void check_run_limits(const Model& m, const SolverState& s, RunEvents& events) {
-  const RunControl& rc = m.run;
-  warn_hourglass_share(s, events);
-  warn_energy_error(rc, s, events);
-  StopReason& stop = events.stop;
-  const double total = s.energy.internal + s.energy.kinetic_translational + s.energy.kinetic_rotational;
-  if (every_element_lost(s, events)) {
-    stop.kind = StopReason::Kind::EveryElementLost, stop.cycle = s.cycle, stop.time = s.time;
-    stop.index = static_cast<std::int32_t>(events.deleted_inverted);
-    stop.value = static_cast<double>(events.deleted_below_minimum_step);
-  } else if (!std::isfinite(total)) {
-    stop.kind = StopReason::Kind::EnergyNotFinite, stop.cycle = s.cycle, stop.time = s.time;
-  } else if (rc.stop_mass_error > 0.0 && s.mass_added > rc.stop_mass_error * s.mass_initial) {
-    stop.kind = StopReason::Kind::AddedMassLimit, stop.cycle = s.cycle, stop.time = s.time;
-    stop.value = s.mass_added, stop.minimum = rc.stop_mass_error;
-  } else if (const double ratio = std::abs(s.energy.error_percent()) / 100.0;
-             rc.stop_energy_error > 0.0 && ratio > rc.stop_energy_error) {
-    stop.kind = StopReason::Kind::EnergyErrorLimit, stop.cycle = s.cycle, stop.time = s.time;
-    stop.value = ratio;
-  }
-}
-
-bool stop_requested(const std::atomic<int>* request, SolverState& s, RunEvents& events, Exchange* exchange,
-                    bool check_now) {
-  int signal = request != nullptr ? request->load(std::memory_order_relaxed) : 0;
-  if (s.domain.several()) {
-    // Every domain stops at the same cycle: the requests are combined every 64 cycles (the energy checks' rhythm).
-    if (!check_now) return false;
-    std::vector<std::int32_t>& any = s.group_share.stop_signal;
-    any.assign(1, signal);
-    exchange->max(any);
-    signal = any[0];
-  }
-  if (signal == 0) return false;
-  StopReason& stop = events.stop;
-  stop.kind = StopReason::Kind::Requested, stop.cycle = s.cycle, stop.time = s.time, stop.index = signal;
-  return true;
-}
-
-void advance_schedule(const Model& m, const SolverState& s, const MonitorDue& due, OutputSchedule& schedule) {
-  const RunControl& rc = m.run;
-  if (due.frame) schedule.next_frame = next_output_time(s.time, rc.anim_start, rc.anim_interval);
-  if (due.history && !rc.history_every_cycle())
-    schedule.next_history = next_output_time(s.time, 0.0, rc.history_interval);
 }
 
 }  // namespace crumple::solver

@@ -52,13 +52,11 @@ double relative_kinetic_energy(SolverState& s, const RigidBodyState& b, bool who
 std::pair<double, double> element_energies(SolverState& s) {
   std::vector<ExactSum>& sums = s.reducer.sums;
   sums.assign(2, ExactSum{});
-  auto add = [&](ElementKind kind, const std::vector<double>& internal, const std::vector<double>& hourglass) {
-    for (std::size_t e = 0; e < internal.size(); ++e)
-      if (s.domain.mine(kind, e)) sums[0].add(internal[e]), sums[1].add(hourglass[e]);
-  };
-  add(ElementKind::Shell4, s.shells.internal_energy, s.shells.hourglass_energy);
-  add(ElementKind::Shell3, s.shells3.internal_energy, s.shells3.hourglass_energy);
-  add(ElementKind::Brick8, s.bricks.internal_energy, s.bricks.hourglass_energy);
+  for (ElementKind kind : kAllElementKinds) {
+    const ElementKindState& state = element_state(s, kind);
+    for (std::size_t e = 0; e < state.internal_energy.size(); ++e)
+      if (s.domain.mine(kind, e)) sums[0].add(state.internal_energy[e]), sums[1].add(state.hourglass_energy[e]);
+  }
   s.reducer.sum(sums);
   return {sums[0].value(), sums[1].value()};
 }

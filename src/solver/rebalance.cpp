@@ -9,6 +9,7 @@
 
 #include "crumple/parallel/partition.hpp"
 #include "solver/cycle.hpp"
+#include "solver/domain_sharing.hpp"
 #include "solver/internal.hpp"
 
 namespace crumple::solver {
@@ -21,15 +22,14 @@ namespace {
 RunningCost running_cost(const Model& m, const SolverState& s) {
   RunningCost cost;
   for (int k = 0; k < kElementKinds; ++k) cost.plastic[static_cast<std::size_t>(k)].assign(m.elements[static_cast<std::size_t>(k)].size(), 0);
-  const std::array<std::vector<point_real>, kElementKinds>& before = s.rebalancing.eps_p_at_check;
+  const std::array<std::vector<point_real>, kElementKinds>& before = s.domain_scratch.rebalancing.eps_p_at_check;
   for (std::size_t g = 0; g < m.element_groups.size(); ++g) {
     const ElementGroup& group = m.element_groups[g];
-    const bool brick = group.kind == ElementKind::Brick8;
-    const ShellState& shell = group.kind == ElementKind::Shell4 ? s.shells : s.shells3;
-    const std::vector<point_real>& eps_p = brick ? s.bricks.eps_p : shell.eps_p;
+    const ElementKindState& state = element_state(s, group.kind);
+    const std::vector<point_real>& eps_p = state.eps_p;
     const std::vector<point_real>& then = before[static_cast<std::size_t>(group.kind)];
-    const std::size_t first = brick ? s.bricks.point_offset[g] : shell.point_offset[g];
-    const auto points = static_cast<std::size_t>(brick ? s.bricks.points[g] : shell.points[g]);
+    const std::size_t first = state.point_offset[g];
+    const auto points = static_cast<std::size_t>(state.points[g]);
     std::vector<std::uint8_t>& counts = cost.plastic[static_cast<std::size_t>(group.kind)];
     for (std::int32_t e = group.begin; e < group.end; ++e) {
       if (!s.domain.mine(group.kind, static_cast<std::size_t>(e))) continue;
@@ -61,10 +61,8 @@ RunningCost running_cost(const Model& m, const SolverState& s) {
 
 // The next check counts from the plastic strains of now.
 void keep_plastic_strains(SolverState& s) {
-  std::array<std::vector<point_real>, kElementKinds>& then = s.rebalancing.eps_p_at_check;
-  then[static_cast<std::size_t>(ElementKind::Shell4)] = s.shells.eps_p;
-  then[static_cast<std::size_t>(ElementKind::Shell3)] = s.shells3.eps_p;
-  then[static_cast<std::size_t>(ElementKind::Brick8)] = s.bricks.eps_p;
+  std::array<std::vector<point_real>, kElementKinds>& then = s.domain_scratch.rebalancing.eps_p_at_check;
+  for (ElementKind kind : kAllElementKinds) then[static_cast<std::size_t>(kind)] = element_state(s, kind).eps_p;
 }
 
 // The largest domain's estimated cost over the mean, of the element phase and of the contact pass, whichever is

@@ -5,7 +5,7 @@
 #include <limits>
 
 #include "crumple/state/element_status.hpp"
-#include "crumple/model/summary.hpp"
+#include "crumple/elements/critical_step.hpp"
 #include "solver/internal.hpp"
 
 namespace crumple::solver {
@@ -232,9 +232,7 @@ double drive_body(const Model& m, const SolverState& s, RigidBodyState& b, const
 // after /RBODY/OFF. Deleted elements stay deleted.
 void mark_elements_in_rigid_bodies(const Model& m, SolverState& s) {
   for (const ElementTable& table : m.elements) {
-    std::vector<std::uint8_t>& status = table.kind == ElementKind::Brick8   ? s.bricks.deleted
-                                        : table.kind == ElementKind::Shell4 ? s.shells.deleted
-                                                                            : s.shells3.deleted;
+    std::vector<std::uint8_t>& status = element_state(s, table.kind).deleted;
     const int n = nodes_per_element(table.kind);
     for (std::size_t e = 0; e < table.size(); ++e) {
       if (element_condition(status[e]) == kElementDeleted) continue;

@@ -13,12 +13,9 @@ namespace {
 
 constexpr std::string_view kWork[] = {"WORK"};
 
-ElementRecords& records_of(SolverState& s, ElementKind kind) { return element_view(s, kind).records; }
+ElementRecords& records_of(SolverState& s, ElementKind kind) { return element_state(s, kind).records; }
 
-std::vector<double>& section_work_of(SolverState& s, ElementKind kind) {
-  return kind == ElementKind::Brick8 ? s.bricks.section_work
-                                     : (kind == ElementKind::Shell4 ? s.shells : s.shells3).section_work;
-}
+std::vector<double>& section_work_of(SolverState& s, ElementKind kind) { return element_state(s, kind).section_work; }
 
 // Per kind, per element: 1 when one of `sections` reads it.
 std::array<std::vector<std::uint8_t>, kElementKinds> read_elements(const Model& m,
@@ -52,7 +49,7 @@ void record_groups(const Model& m, SolverState& s, const std::array<std::vector<
     if (end[static_cast<std::size_t>(k)] == 0) continue;
     const auto kind = static_cast<ElementKind>(k);
     ElementRecords& records = records_of(s, kind);
-    records.start(end[static_cast<std::size_t>(k)], nodes_per_element(kind), kind == ElementKind::Brick8 ? 3 : 6);
+    records.start(end[static_cast<std::size_t>(k)], nodes_per_element(kind), describe(kind).values_per_node);
     records.only = std::move(only[static_cast<std::size_t>(k)]);
   }
 }

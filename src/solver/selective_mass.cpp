@@ -15,18 +15,14 @@ namespace {
 using PerKind = std::array<std::vector<double>, kElementKinds>;
 using ElementLists = std::array<std::vector<std::int32_t>, kElementKinds>;
 
-constexpr ElementKind kKinds[] = {ElementKind::Shell4, ElementKind::Shell3, ElementKind::Brick8};
-
 const std::vector<double>& critical_steps(const SolverState& s, ElementKind kind) {
-  return kind == ElementKind::Shell4 ? s.shells.critical_dt : kind == ElementKind::Shell3 ? s.shells3.critical_dt
-                                                                                           : s.bricks.critical_dt;
+  return element_state(s, kind).critical_dt;
 }
 const std::vector<double>& element_masses(const SolverState& s, ElementKind kind) {
-  return kind == ElementKind::Shell4 ? s.shells.mass : kind == ElementKind::Shell3 ? s.shells3.mass : s.bricks.mass;
+  return element_state(s, kind).mass;
 }
 const std::vector<std::uint8_t>& element_status(const SolverState& s, ElementKind kind) {
-  return kind == ElementKind::Shell4 ? s.shells.deleted : kind == ElementKind::Shell3 ? s.shells3.deleted
-                                                                                       : s.bricks.deleted;
+  return element_state(s, kind).deleted;
 }
 
 // The share f_a of corner a of element e in its mass (eq. SM-1): the 3-node shell's by its corner angles, the
@@ -113,7 +109,7 @@ void size_selective_mass(const Model& m, SolverState& s) {
   const std::size_t nodes = s.nodes.size();
   const std::size_t unknowns = 3 * nodes + 3 * s.bodies.size();  // the nodes' translations, then the bodies' rotations
   if (sm.x.size() == unknowns) return;
-  for (ElementKind kind : kKinds) {
+  for (ElementKind kind : kAllElementKinds) {
     const auto k = static_cast<std::size_t>(kind);
     const std::size_t count = m.elements[static_cast<int>(kind)].size();
     if (sm.element_added[k].size() != count) sm.element_added[k].assign(count, 0.0), sm.started = false;
@@ -290,7 +286,7 @@ void scale_selective_mass(const Model& m, SolverState& s) {
   const double scale = ams.scale_or_default();
   sm.node_added_before.swap(sm.node_added);
   sm.node_added.assign(s.nodes.size(), 0.0);
-  for (ElementKind kind : kKinds) {
+  for (ElementKind kind : kAllElementKinds) {
     const auto k = static_cast<std::size_t>(kind);
     const ElementTable& table = m.elements[static_cast<int>(kind)];
     const std::vector<double>& dt = critical_steps(s, kind);
@@ -316,7 +312,7 @@ void scale_selective_mass(const Model& m, SolverState& s) {
   }
   // What each element's matrix changed by since the last cycle (eq. SM-5a); none at the first, whose velocities
   // are taken as moving with the scaled mass already.
-  for (ElementKind kind : kKinds) {
+  for (ElementKind kind : kAllElementKinds) {
     const auto k = static_cast<std::size_t>(kind);
     if (!sm.started) sm.element_added_before[k] = sm.element_added[k], sm.node_added_before = sm.node_added;
     sm.changed[k].clear();
@@ -524,7 +520,7 @@ double selective_mass_kinetic_energy(const Model& m, SolverState& s) {
   const NodalState& n = s.nodes;
   std::vector<ExactSum>& sums = s.reducer.sums;
   sums.assign(1, ExactSum{});
-  for (ElementKind kind : kKinds) {
+  for (ElementKind kind : kAllElementKinds) {
     const ElementTable& table = m.elements[static_cast<int>(kind)];
     const std::vector<double>& added = sm.element_added[static_cast<std::size_t>(kind)];
     const int count = nodes_per_element(kind);

@@ -57,7 +57,7 @@ void setup_shells(const Model& m, SolverState& s, ElementKind kind) {
   const ElementTable& table = m.elements[static_cast<int>(kind)];
   const int nodes_per = nodes_per_element(kind);
   const std::size_t n = table.size();
-  ShellState& st = kind == ElementKind::Shell4 ? s.shells : s.shells3;
+  ShellState& st = shell_state(s, kind);
   st.resize_elements(n, 0.0);
   st.point_offset.assign(m.element_groups.size(), 0);
   st.points.assign(m.element_groups.size(), 0);
@@ -94,16 +94,8 @@ void setup_shells(const Model& m, SolverState& s, ElementKind kind) {
     p.small_strain_switchable = f.ismstr == 2;  // eq. S-16; Ismstr 4 never switches
     if ((p.small_strain || p.small_strain_switchable) && st.initial_shape.empty())
       st.initial_shape.assign(2 * static_cast<std::size_t>(nodes_per) * n, 0.0);
-    if (kind == ElementKind::Shell3) p.membrane_damping = triangle_membrane_damping(prop.shell, f);
-    if (p.physical_hourglass) {
-      p.membrane_damping = qeph_membrane_damping(prop.shell);
-      p.numerical_damping = qeph_numerical_damping(prop.shell);
-    } else {
-      // A dm given acts on the Belytschko-Tsay shells too (S-9d; measured on the reference, shell4.md "Probes").
-      if (kind == ElementKind::Shell4 && !p.fully_integrated) p.membrane_damping = prop.shell.dm;
-      if (p.fully_integrated) p.numerical_damping = qbat_numerical_damping(prop.shell);
-      else if (prop.shell.dn > 0.0) p.numerical_damping = prop.shell.dn;
-    }
+    const ShellDamping damping = shell_damping(kind == ElementKind::Shell3, prop.shell, f);
+    p.membrane_damping = damping.membrane, p.numerical_damping = damping.numerical;
     // Ishell 12 keeps a section per Gauss point (docs/theory/shell4.md, eq. Q-2).
     const int sections = p.fully_integrated ? 4 : 1;
     if (p.fully_integrated && st.gauss_shear.empty()) st.gauss_shear.assign(8 * n, 0.0);
@@ -121,7 +113,7 @@ void setup_shells(const Model& m, SolverState& s, ElementKind kind) {
     st.points[g] = sections * np;
     total_points += static_cast<std::size_t>(group.end - group.begin) * static_cast<std::size_t>(sections * np);
     // The step the elements' rotations must be stable at: the shells' own /DT scale, else the run's.
-    const TimeStepControl& type = kind == ElementKind::Shell4 ? m.run.dt_shell : m.run.dt_sh3n;
+    const TimeStepControl& type = m.run.*describe(kind).step_control;
     const double scale = type.given && type.scale > 0.0 ? type.scale : m.run.dt.scale > 0.0 ? m.run.dt.scale : 0.9;
     for (std::int32_t e = group.begin; e < group.end; ++e) {
       const double thickness = shell_thickness(m, kind, static_cast<std::size_t>(e));
@@ -166,7 +158,7 @@ void mark_domain(SolverState& s) {
   if (!s.domain.several()) return;
   for (int k = 0; k < kElementKinds; ++k) {
     const auto kind = static_cast<ElementKind>(k);
-    std::vector<std::uint8_t>& status = element_view(s, kind).status;
+    std::vector<std::uint8_t>& status = element_state(s, kind).deleted;
     for (std::size_t e = 0; e < status.size(); ++e)
       status[e] = static_cast<std::uint8_t>(element_condition(status[e]) | (s.domain.mine(kind, e) ? 0 : kElementElsewhere));
   }
@@ -186,8 +178,8 @@ void take_domain(const Model& m, SolverState& s, Domain domain) {
   for (int k = 0; k < kElementKinds; ++k) {
     const auto kind = static_cast<ElementKind>(k);
     const std::size_t size = m.elements[static_cast<std::size_t>(k)].size();
-    ElementRecords& records = element_view(s, kind).records;
-    records.start(size, nodes_per_element(kind), kind == ElementKind::Brick8 ? 3 : 6);
+    ElementRecords& records = element_state(s, kind).records;
+    records.start(size, nodes_per_element(kind), describe(kind).values_per_node);
     std::vector<std::uint8_t> sent(size, 0);
     for (const auto& list : s.domain.record_halo[static_cast<std::size_t>(k)].send)
       for (std::uint32_t e : list) sent[e] = 1;
@@ -200,13 +192,11 @@ void take_domain(const Model& m, SolverState& s, Domain domain) {
     }
   }
   mark_domain(s);
-  for (auto& owner : s.point_owner) owner.clear();
+  for (auto& owner : s.domain_scratch.point_owner) owner.clear();
   for (std::size_t g = 0; g < m.element_groups.size(); ++g) {  // groups are kind by kind, points group by group
     const ElementGroup& group = m.element_groups[g];
-    const bool brick = group.kind == ElementKind::Brick8;
-    const ShellState& shell = group.kind == ElementKind::Shell4 ? s.shells : s.shells3;
-    const int points = brick ? s.bricks.points[g] : shell.points[g];
-    auto& owner = s.point_owner[static_cast<std::size_t>(group.kind)];
+    const int points = element_state(s, group.kind).points[g];
+    auto& owner = s.domain_scratch.point_owner[static_cast<std::size_t>(group.kind)];
     for (std::int32_t e = group.begin; e < group.end; ++e)
       owner.insert(owner.end(), static_cast<std::size_t>(points),
                    s.domain.owner[static_cast<std::size_t>(group.kind)][static_cast<std::size_t>(e)]);
@@ -219,7 +209,7 @@ void rebind_domain(const Model& m, SolverState& s, Domain domain) {
   take_domain(m, s, std::move(domain));
   // What was made of the old domain: the exchange scratch's owner arrays, the contact pass's division of its pairs
   // and its node scratch, the cut sections' owners and recorded groups.
-  SolverState::GroupShare& w = s.group_share;
+  DomainScratch::GroupShare& w = s.domain_scratch.group_share;
   w.accelerometer_owner.clear(), w.rotation_owner.clear(), w.interface_node_owner.clear();
   w.secondary_owner.clear(), w.pair_owner.clear(), w.wall_node_owner.clear();
   for (ContactInterface& in : s.contact.interfaces) {

@@ -5,6 +5,8 @@
 #include "crumple/solver/snapshot.hpp"
 #include "crumple/solver/solver.hpp"
 #include "solver/cycle.hpp"
+#include "solver/domain_sharing.hpp"
+#include "solver/monitor.hpp"
 #include "solver/internal.hpp"
 
 namespace crumple {
@@ -128,6 +130,7 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunObse
     }
     integrate(s, scratch, dt_average, selective);
     apply_constraints(m, s, scratch, dt_average, dt_next);
+    record_step_outputs(m, s, scratch, dt_average, dt_next);
     advance_positions(s, dt_next);
     if (!m.skews.empty()) update_skew_axes(m, s);  // SK-3: the loads, conditions and histories of the new positions
     clock.lap(phases.update);

@@ -5,7 +5,7 @@
 #include <limits>
 
 #include "crumple/core/geometry.hpp"
-#include "crumple/model/summary.hpp"
+#include "crumple/elements/critical_step.hpp"
 #include "solver/cycle.hpp"
 #include "solver/internal.hpp"
 

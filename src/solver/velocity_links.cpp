@@ -2,6 +2,7 @@
 // momentum of each link along each axis is an exact sum over the owned nodes, combined over the domains, so the
 // linked velocity is the same on every domain and for any partition.
 #include "solver/cycle.hpp"
+#include "solver/monitor.hpp"
 #include "solver/internal.hpp"
 
 namespace crumple::solver {

@@ -5,7 +5,7 @@
 #include <sstream>
 
 #include "crumple/deck/reader.hpp"
-#include "crumple/model/summary.hpp"
+#include "crumple/elements/critical_step.hpp"
 
 namespace {
 

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "app/accuracy.hpp"
-#include "crumple/model/summary.hpp"
+#include "crumple/elements/critical_step.hpp"
 #include "deck_files.hpp"
 
 // Its own namespace: the test programs are built in unity batches (cmake/Unity.cmake).

@@ -3,7 +3,7 @@
 #include "crumple/core/geometry.hpp"
 
 #include "crumple/model/mass.hpp"
-#include "crumple/model/summary.hpp"
+#include "crumple/elements/critical_step.hpp"
 #include "deck_files.hpp"
 
 // Its own namespace: the test programs are built in unity batches (cmake/Unity.cmake).

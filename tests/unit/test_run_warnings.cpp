@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "crumple/output/run_recorder.hpp"
-#include "solver/cycle.hpp"
+#include "solver/monitor.hpp"
 
 namespace crumple::test_run_warnings {
 namespace {

@@ -6,18 +6,52 @@
 #include <string_view>
 #include <vector>
 
+#include "crumple/model/properties.hpp"
+#include "crumple/model/run_control.hpp"
+
 namespace crumple {
 
 enum class ElementKind : std::uint8_t { Shell4, Shell3, Brick8 };
 inline constexpr int kElementKinds = 3;
+inline constexpr ElementKind kAllElementKinds[kElementKinds] = {ElementKind::Shell4, ElementKind::Shell3,
+                                                                ElementKind::Brick8};
 inline constexpr int kElementGroupSize = 128;
 
-constexpr int nodes_per_element(ElementKind kind) {
-  return kind == ElementKind::Shell4 ? 4 : kind == ElementKind::Shell3 ? 3 : 8;
+// What an element kind is, as data: one row per kind in kElementKindTable, which the reader, the model, the
+// solver and the output read instead of asking the kind (docs/architecture.md, "Adding an element kind").
+struct ElementKindDescription {
+  ElementKind kind;
+  std::string_view name;       // the listing's word for one element: "SHELL 12 of part 3"
+  std::string_view what;       // the messages' word: "4-node shell"
+  std::string_view card;       // the element card: /SHELL
+  std::string_view step_card;  // its /DT/<type> option: /DT/SHELL/DEL
+  int nodes;                   // nodes per element
+  int values_per_node;         // what an element hands each node: force (3), and moment (6) for kinds with rotations
+  PropertyKind property;       // the property kind its parts take
+  std::string_view measure;    // what its nodes span: "area" or "volume"
+  std::string_view valid_shape;  // the rule an element's measure must keep, as the reader's errors state it
+  bool may_degenerate;           // written with repeated nodes for a prism, pyramid or tetrahedron (bricks)
+  // Element groups of this kind: /GRSHEL/SHEL/6 reads its members by "shell_ID".
+  std::string_view group_card, group_item, group_field;
+  std::string_view mesh_group, xdmf_topology;  // NAME.h5's /mesh/<group> and its XDMF TopologyType
+  TimeStepControl RunControl::*step_control;   // /DT/SHELL, /DT/SH_3N, /DT/BRICK
+};
+
+inline constexpr ElementKindDescription kElementKindTable[kElementKinds] = {
+    {ElementKind::Shell4, "SHELL", "4-node shell", "/SHELL", "SHELL", 4, 6, PropertyKind::Shell, "area",
+     "a shell of positive area", false, "/GRSHEL", "SHEL", "shell_ID", "shell4", "Quadrilateral", &RunControl::dt_shell},
+    {ElementKind::Shell3, "SH3N", "3-node shell", "/SH3N", "SH_3N", 3, 6, PropertyKind::Shell, "area",
+     "a shell of positive area", false, "/GRSH3N", "SH3N", "sh3n_ID", "shell3", "Triangle", &RunControl::dt_sh3n},
+    {ElementKind::Brick8, "BRICK", "brick", "/BRICK", "BRICK", 8, 3, PropertyKind::Solid, "volume",
+     "a brick of positive volume (nodes 1-4 one face, 5-8 the opposite face)", true, "/GRBRIC",
+     "BRIC", "brick_ID", "brick8", "Hexahedron", &RunControl::dt_brick},
+};
+
+constexpr const ElementKindDescription& describe(ElementKind kind) {
+  return kElementKindTable[static_cast<int>(kind)];
 }
-constexpr std::string_view element_kind_name(ElementKind kind) {
-  return kind == ElementKind::Shell4 ? "SHELL" : kind == ElementKind::Shell3 ? "SH3N" : "BRICK";
-}
+constexpr int nodes_per_element(ElementKind kind) { return describe(kind).nodes; }
+constexpr std::string_view element_kind_name(ElementKind kind) { return describe(kind).name; }
 
 struct ElementTable {
   ElementKind kind = ElementKind::Shell4;

@@ -24,7 +24,11 @@ double one_point_volume_scale(const Model& model, std::size_t brick);
 // for contact gaps, not the shell's: measured on the reference solver's part masses).
 double shell_thickness(const Model& model, ElementKind kind, std::size_t shell);
 
-// Mass of one element [M].
+// What an element's nodes span, by its kind's measure (ElementKindDescription::measure): a shell's mid-surface
+// area [L^2], a brick's exact volume [L^3]. `n`: its node indices.
+double element_measure(const Nodes& nodes, ElementKind kind, const std::int32_t* n);
+
+// Mass of one element [M]: rho t A (shells), rho V (bricks, with the one-point volume scale).
 double element_mass(const Model& model, ElementKind kind, std::size_t element);
 
 }  // namespace crumple

@@ -1,6 +1,7 @@
 #pragma once
 // Properties (/PROP) and the global element defaults (/DEF_SHELL, /DEF_SOLID). The flags keep the values the
 // deck gave (0 = default); the model build resolves them into the effective formulation fields.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -99,5 +100,32 @@ inline double qeph_numerical_damping(const ShellSection& s) { return s.dn > 0.0 
 // The QBAT shell's (Ishell 12) numerical damping dn: as given; blank, 0.001 (its nodal step under /DT/NODA/CST follows
 // it as the reference's does, T-2b).
 inline double qbat_numerical_damping(const ShellSection& s) { return s.dn > 0.0 ? s.dn : kDefaultQbatNumericalDamping; }
+
+// The viscous fraction that shortens a one-point shell's critical step (eq. T-1c): dm, and for the QEPH shell
+// (physical hourglass) the larger of dm and dn. The kernels and the model's initial steps take it.
+inline double shell_step_damping(bool physical_hourglass, double dm, double dn) {
+  return physical_hourglass ? std::max(dm, dn) : dm;
+}
+
+// The viscous fractions a shell runs with, as its formulation takes them: the one definition the kernels' set-up,
+// `crumple check` and the listing's steps read.
+struct ShellDamping {
+  double membrane = 0.0;   // dm, the membrane damping (S-9d)
+  double numerical = 0.0;  // dn: on QEPH's hourglass modes (S-14), on QBAT's resultants; 0 for the others
+  double step = 0.0;       // the fraction that shortens the element's critical step (T-1c)
+};
+inline ShellDamping shell_damping(bool triangle, const ShellSection& s, const ResolvedFormulation& f) {
+  if (triangle) {
+    const double dm = triangle_membrane_damping(s, f);
+    return {dm, 0.0, shell_step_damping(false, dm, 0.0)};
+  }
+  if (f.ishell == 24) {
+    const double dm = qeph_membrane_damping(s), dn = qeph_numerical_damping(s);
+    return {dm, dn, shell_step_damping(true, dm, dn)};
+  }
+  if (f.ishell == 12) return {0.0, qbat_numerical_damping(s), 0.0};
+  // Ishell 1 to 4: a given dm acts (S-9d; measured on the reference, shell4.md "Probes").
+  return {s.dm, 0.0, shell_step_damping(false, s.dm, 0.0)};
+}
 
 }  // namespace crumple
