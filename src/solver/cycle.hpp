@@ -51,7 +51,7 @@ StepBound compute_element_forces(const Model& model, SolverState& state, RunEven
 // model order: stops, the per-type step control and the bound. A group's step control touches only its own
 // elements, so the halves give what one pass group by group gives. With `exchange` (several domains) the first half
 // also starts the records' halo (Exchange::halo_start) once it has computed the last group with a sent element;
-// share_element_results completes it.
+// share_element_results (domain_sharing.hpp) completes it.
 void run_element_kernels(const Model& model, SolverState& state, Exchange* exchange = nullptr);
 StepBound combine_group_results(const Model& model, SolverState& state, RunEvents& events, bool& elements_deleted);
 

@@ -12,8 +12,9 @@
 
 namespace crumple::solver {
 
-// Between them in a run of several domains (docs/parallel.md, "Assembly"): what each domain computed of its own
-// elements reaches every domain, and every node's sum is assembled in the model's order.
+// Between the two halves of step 1 (cycle.hpp: run_element_kernels, combine_group_results) in a run of several
+// domains (docs/parallel.md, "Assembly"): what each domain computed of its own elements reaches every domain, and
+// every node's sum is assembled in the model's order.
 void share_element_results(const Model& model, SolverState& state, Exchange& exchange);
 // Before an output of a run of several domains: every element's whole state from the domain that computes it, so
 // that the domain that writes (0) writes what one domain writes.

@@ -1,5 +1,5 @@
-// Step 7 of a cycle, the monitor (docs/theory/time-loop.md, "One cycle"): time_loop.cpp calls it after the
-// positions are advanced.
+// The outputs' side of a cycle (docs/theory/time-loop.md, "One cycle"): the integrals of the step, recorded after
+// the kinematic conditions (record_step_outputs), and step 7, the monitor, after the positions are advanced.
 #include "solver/monitor.hpp"
 
 #include <cmath>
