@@ -70,7 +70,7 @@ void resolve_kind(Resolver& r, ElementKind kind) {
   seen.reserve(count);
   for (std::size_t e = 0; e < count; ++e) {
     const SourceLocation& where = raw.where[e];
-    const std::string keyword = fmt::format("/{}/{}", name, raw.part_id[e]);
+    const std::string keyword = fmt::format("{}/{}", description.card, raw.part_id[e]);
     const auto [first, inserted] = seen.emplace(raw.user_id[e], static_cast<std::int32_t>(e));
     if (!inserted) {
       const auto& other = raw.where[static_cast<std::size_t>(first->second)];

@@ -6,7 +6,6 @@
 #include <limits>
 
 #include "crumple/core/geometry.hpp"
-#include "crumple/model/mass.hpp"
 
 namespace crumple {
 
