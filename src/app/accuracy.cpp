@@ -26,10 +26,10 @@ void cap_step_scales(RunControl& run, const std::string& where, std::vector<std:
     changes.push_back(fmt::format("/DT scale {:g} -> {:g}{}", run_scale, kFineStepScale, where));
     run.dt.scale = kFineStepScale;
   }
-  for (auto [card, control] : {std::pair{"/DT/SHELL", &run.dt_shell}, {"/DT/SH_3N", &run.dt_sh3n},
-                               {"/DT/BRICK", &run.dt_brick}}) {
+  for (const ElementKindDescription& kind : kElementKindTable) {
+    TimeStepControl* control = &(run.*kind.step_control);
     if (control->given && control->scale > kFineStepScale) {
-      changes.push_back(fmt::format("{} scale {:g} -> {:g}{}", card, control->scale, kFineStepScale, where));
+      changes.push_back(fmt::format("/DT/{} scale {:g} -> {:g}{}", kind.step_card, control->scale, kFineStepScale, where));
       control->scale = kFineStepScale;
     }
   }

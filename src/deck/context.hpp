@@ -107,6 +107,7 @@ void register_property_keywords(KeywordTable& table);
 void register_function_keywords(KeywordTable& table);
 void register_set_keywords(KeywordTable& table);
 void register_load_keywords(KeywordTable& table);
+void register_damping_keywords(KeywordTable& table);
 void register_rigid_keywords(KeywordTable& table);
 void register_skew_keywords(KeywordTable& table);
 void register_sensor_keywords(KeywordTable& table);

@@ -15,6 +15,7 @@ const KeywordTable& keyword_table() {
     register_function_keywords(t);
     register_set_keywords(t);
     register_load_keywords(t);
+    register_damping_keywords(t);
     register_rigid_keywords(t);
     register_skew_keywords(t);
     register_sensor_keywords(t);

@@ -20,7 +20,7 @@ bool one_of(int value, std::initializer_list<int> allowed) {
 }
 
 std::string keyword_of(const Property& p) {
-  return fmt::format("/PROP/{}/{}", p.kind == PropertyKind::Shell ? "SHELL" : "SOLID", p.user_id);
+  return fmt::format("/PROP/{}/{}", describe(p.kind).name, p.user_id);
 }
 
 // Shell flags: the property's, else /DEF_SHELL's, else the defaults (docs/theory/shell4.md, "Formulation flags";
@@ -114,7 +114,7 @@ ResolvedFormulation formulation_of(Resolver& r, const Property& p) {
   ResolvedFormulation f;
   if (p.kind == PropertyKind::Shell) {
     shell_formulation(r, p, f);
-  } else {
+  } else if (p.kind == PropertyKind::Solid) {
     f.isolid = pick(p.solid.isolid, dv.isolid, 1);
     f.ismstr = solid_ismstr(r, p, f.isolid, pick(p.solid.ismstr, dv.ismstr, 0));
     if (!one_of(f.isolid, {1, 2, 12, 14, 17, 18, 24}))
@@ -313,7 +313,14 @@ void resolve_definitions(Resolver& r) {
   for (Part& part : m.parts) {
     const std::string keyword = fmt::format("/PART/{}", part.user_id);
     part.property = r.find(m.index.properties, part.property_id, part.where, keyword, "prop_ID", "property");
-    part.material = r.find(m.index.materials, part.material_id, part.where, keyword, "mat_ID", "material");
+    if (part.material_id != 0) {
+      part.material = r.find(m.index.materials, part.material_id, part.where, keyword, "mat_ID", "material");
+      continue;
+    }
+    part.material = -1;  // mat_ID 0: the property carries the law
+    if (part.property >= 0 && !describe(m.properties[static_cast<std::size_t>(part.property)].kind).carries_law)
+      r.error(part.where, keyword, "mat_ID",
+              "a positive material id (only a part whose property carries the law, a spring, takes mat_ID 0)", "0");
   }
   // After the parts: a default may depend on the material the property is used with (Isolid 18).
   m.formulations.clear();

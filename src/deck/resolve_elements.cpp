@@ -101,9 +101,8 @@ void resolve_kind(Resolver& r, ElementKind kind) {
         const PropertyKind want = description.property;
         if (m.properties[static_cast<std::size_t>(p.property)].kind != want)
           r.error(where, keyword, "part_ID (keyword line)",
-                  fmt::format("a part with a {} property for {} {}",
-                              want == PropertyKind::Shell ? "shell (/PROP/TYPE1)" : "solid (/PROP/TYPE14)", name,
-                              raw.user_id[e]),
+                  fmt::format("a part with a {} ({}) property for {} {}", describe(want).what,
+                              describe(want).card, name, raw.user_id[e]),
                   fmt::format("part {} with property {}", p.user_id, p.property_id));
       }
     }

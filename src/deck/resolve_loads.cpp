@@ -365,6 +365,10 @@ void resolve_load_references(Resolver& r) {
   r.index(m.sensors, m.index.sensors, "/SENSOR");
   r.index(m.rigid_walls, m.index.rigid_walls, "/RWALL");
   r.index(m.rigid_bodies, m.index.rigid_bodies, "/RBODY");
+  r.index(m.dampings, m.index.dampings, "/DAMP");
+  for (RayleighDamping& d : m.dampings)
+    d.node_group = r.find(m.index.node_groups, d.node_group_id, d.where, fmt::format("/DAMP/{}", d.user_id), "grnod_ID",
+                          "node group");
   check_unique(r, m.boundary_conditions, "/BCS");
   check_unique_imposed(r, m.imposed);
   check_unique(r, m.initial_velocities, "/INIVEL/TRA");

@@ -17,11 +17,11 @@ void convert_run_times(RunControl& run, const UnitSystem& units) {
   run.history_interval *= t;
   run.anim_start *= t;
   run.anim_interval *= t;
-  for (TimeStepControl* c : {&run.dt, &run.dt_nodal_cst, &run.dt_shell, &run.dt_brick, &run.dt_sh3n,
-                             &run.dt_inter_del, &run.dt_inter_cst})
-    c->minimum *= t;
+  for (TimeStepControl* c : {&run.dt, &run.dt_nodal_cst, &run.dt_inter_del, &run.dt_inter_cst}) c->minimum *= t;
+  for (const ElementKindDescription& kind : kElementKindTable) (run.*kind.step_control).minimum *= t;
   run.dt_ams.minimum *= t;
   run.dt_initial *= t;
+  for (DampingChange& change : run.damping_changes) change.alpha /= t, change.beta *= t;
   run.dt_max *= t;
 }
 
@@ -34,6 +34,7 @@ const IdMap* history_map(const Model::Index& ix, HistoryObject object, std::stri
     case HistoryObject::Shell: what = "shell"; return &ix.elements[static_cast<int>(ElementKind::Shell4)];
     case HistoryObject::Sh3n: what = "3-node shell"; return &ix.elements[static_cast<int>(ElementKind::Shell3)];
     case HistoryObject::Brick: what = "brick"; return &ix.elements[static_cast<int>(ElementKind::Brick8)];
+    case HistoryObject::Spring: what = "spring"; return &ix.elements[static_cast<int>(ElementKind::Spring)];
     case HistoryObject::Subset: what = "subset"; return &ix.subsets;
     case HistoryObject::Section: what = "section"; return &ix.sections;
     case HistoryObject::RigidBody: what = "rigid body"; return &ix.rigid_bodies;
@@ -130,6 +131,9 @@ void resolve_run_control(Resolver& r, RunControl& run) {
   resolve_rigid_body_switches(r, run.rbody_off, run.rbody_off_where, "/RBODY/OFF", run.bodies_off);
   check_selective_mass(r, run);
   resolve_velocity_links(r, run);
+  for (DampingChange& change : run.damping_changes)
+    change.damping = r.find(m.index.dampings, change.damping_id, change.where, fmt::format("/DAMP/{}", change.damping_id),
+                            "damp_ID (keyword line)", "starter /DAMP");
   // Radioss pairs the engine deck with the starter by run name; a different name usually means a stray file.
   if (run.present && !m.run_name.empty() && run.run_name != m.run_name)
     r.context.warn(run.where, "/RUN",

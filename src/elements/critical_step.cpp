@@ -6,13 +6,16 @@
 #include <limits>
 
 #include "crumple/core/geometry.hpp"
+#include "crumple/elements/spring.hpp"
 
 namespace crumple {
 
 double initial_element_time_step(const Model& model, ElementKind kind, std::size_t element) {
   const ElementTable& table = model.elements[static_cast<int>(kind)];
   const Part& part = model.parts[static_cast<std::size_t>(table.part[element])];
-  const Material& mat = model.materials[static_cast<std::size_t>(part.material)];
+  const Property& property = model.properties[static_cast<std::size_t>(part.property)];
+  // Springs carry their law in the property (mat_ID 0): their cases read no material.
+  const Material& mat = model.materials[static_cast<std::size_t>(std::max(part.material, 0))];
   const std::int32_t* n = table.nodes_of(element);
   const Nodes& x = model.nodes;
   switch (kind) {
@@ -47,6 +50,7 @@ double initial_element_time_step(const Model& model, ElementKind kind, std::size
       }
       return geometry::brick_characteristic_length(p) / speed;
     }
+    case ElementKind::Spring: return spring_critical_step(spring_parameters(property.spring));  // eq. SP-4
   }
   return 0.0;
 }
@@ -55,6 +59,7 @@ NodalStiffnessFactor nodal_stiffness_factor(ElementKind kind, int ishell, double
   const double plate = 1.0 / (1.0 - poisson * poisson);  // A11 / E
   switch (kind) {
     case ElementKind::Brick8: return {0.25, 0.25};             // 2 (m_e / 8) / dt_e^2
+    case ElementKind::Spring: return {1.0, 1.0};               // K at each node: M / dt_e^2 (eq. SP-4a)
     case ElementKind::Shell3: return {0.6561 * plate, plate};  // 0.6561 V A11 / L^2; V A11 / L^2
     case ElementKind::Shell4:
       if (ishell == 24) return {0.5 * plate, 0.5 * plate};               // (1/2) V A11 / L^2, QEPH
@@ -76,12 +81,13 @@ double mass_scaling_nodal_length(NodalLength length, const ShellSection& section
 double initial_element_nodal_step(const Model& model, ElementKind kind, std::size_t element) {
   const ElementTable& table = model.elements[static_cast<int>(kind)];
   const Part& part = model.parts[static_cast<std::size_t>(table.part[element])];
-  const Material& mat = model.materials[static_cast<std::size_t>(part.material)];
+  const double poisson = part.material >= 0 ? model.materials[static_cast<std::size_t>(part.material)].poisson : 0.0;
   const NodalStiffnessFactor f =
-      nodal_stiffness_factor(kind, model.formulations[static_cast<std::size_t>(part.property)].ishell, mat.poisson);
+      nodal_stiffness_factor(kind, model.formulations[static_cast<std::size_t>(part.property)].ishell, poisson);
   const double n = nodes_per_element(kind);
   // T-2a, T-2b: sqrt(2 (rho V / 4) / ((1/2) V A11 / L^2)) = L sqrt(rho / A11)
   if (f.mass_scaling_length != NodalLength::CriticalStep) {
+    const Material& mat = model.materials[static_cast<std::size_t>(part.material)];
     const std::int32_t* c = table.nodes_of(element);
     const Nodes& x = model.nodes;
     return mass_scaling_nodal_length(f.mass_scaling_length, model.properties[static_cast<std::size_t>(part.property)].shell,

@@ -158,12 +158,26 @@ constexpr std::array<V, 6> kAccelerometer{{
 constexpr std::array<S, 3> kAccelerometerDef{"AX", "AY", "AZ"}, kAccelerometerW{"WX", "WY", "WZ"};
 constexpr std::array<G, 2> kAccelerometerGroups{{{"DEF", kAccelerometerDef}, {"W", kAccelerometerW}}};
 
+// ---- /TH/SPRING: the manual's variables in the spring's frame (X along its nodes); a /PROP/TYPE4 spring carries
+// the axial force FX and the elongation LX only, so the others are 0. LENGTH, the current length, is in the
+// reference's DEF (its starter listing of damping_springs: "15 VAR ... IE LENGTH"). F1, F2 are the pulley's.
+constexpr std::array<V, 17> kSpring{{
+    {"OFF", "-", kNone, true},      {"FX", "F", kForce, true},       {"FY", "F", kForce, true},
+    {"FZ", "F", kForce, true},      {"MX", "F L", kMoment, true},    {"MY", "F L", kMoment, true},
+    {"MZ", "F L", kMoment, true},   {"LX", "L", kLength, true},      {"LY", "L", kLength, true},
+    {"LZ", "L", kLength, true},     {"RX", "-", kNone, true},        {"RY", "-", kNone, true},
+    {"RZ", "-", kNone, true},       {"IE", "E", kMoment, true},      {"LENGTH", "L", kLength, true},
+    {"F1", "F", kForce, false},     {"F2", "F", kForce, false}}};
+constexpr std::array<S, 15> kSpringDef{"OFF", "FX", "FY", "FZ", "MX", "MY", "MZ", "LX",
+                                       "LY",  "LZ", "RX", "RY", "RZ", "IE", "LENGTH"};
+constexpr std::array<G, 1> kSpringGroups{{{"DEF", kSpringDef}}};
+
 constexpr HistoryKind kNodeKind{"NODE", kNode, kNodeGroups}, kPartKind{"PART", kPart, kPartGroups},
     kSubsetKind{"SUBS", kPart, kPartGroups}, kShellKind{"SHEL", kShell, kShellGroups},
     kSh3nKind{"SH3N", kShell, kShellGroups}, kBrickKind{"BRIC", kBrick, kBrickGroups},
     kInterfaceKind{"INTER", kInterface, kInterfaceGroups}, kWallKind{"RWALL", kWall, kWallGroups},
     kBodyKind{"RBODY", kBody, kBodyGroups}, kSectionKind{"SECTIO", kSection, kSectionGroups},
-    kAccelerometerKind{"ACCEL", kAccelerometer, kAccelerometerGroups};
+    kAccelerometerKind{"ACCEL", kAccelerometer, kAccelerometerGroups}, kSpringKind{"SPRING", kSpring, kSpringGroups};
 
 const HistoryVariable* find_variable(const HistoryKind& kind, std::string_view name) {
   for (const HistoryVariable& v : kind.variables)
@@ -186,6 +200,7 @@ const HistoryKind& history_kind(HistoryObject object) {
     case HistoryObject::RigidBody: return kBodyKind;
     case HistoryObject::Section: return kSectionKind;
     case HistoryObject::Accelerometer: return kAccelerometerKind;
+    case HistoryObject::Spring: return kSpringKind;
   }
   return kNodeKind;
 }

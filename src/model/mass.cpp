@@ -56,12 +56,15 @@ double element_measure(const Nodes& x, ElementKind kind, const std::int32_t* n) 
       for (int a = 0; a < 8; ++a) p[static_cast<std::size_t>(a)] = x.position(n[a]);
       return geometry::brick_volume(p);
     }
+    case ElementKind::Spring: return norm(x.position(n[1]) - x.position(n[0]));
   }
   return 0.0;
 }
 
 double element_mass(const Model& model, ElementKind kind, std::size_t element) {
   const Part& part = part_of(model, kind, element);
+  const Property& property = model.properties[static_cast<std::size_t>(part.property)];
+  if (property.kind == PropertyKind::Spring) return property.spring.mass;  // the property's, half at each node
   const double density = model.materials[static_cast<std::size_t>(part.material)].density;
   const double measure = element_measure(model.nodes, kind, model.elements[static_cast<int>(kind)].nodes_of(element));
   if (describe(kind).property == PropertyKind::Shell) return density * shell_thickness(model, kind, element) * measure;

@@ -315,6 +315,20 @@ void add_brick_fields(FieldSink& out, const Model& m, const SolverState& state) 
   add_status_fields(out, ElementKind::Brick8, b.deleted);
 }
 
+// Springs (docs/theory/spring.md): the axial force (positive in tension) and the elongation, per spring.
+void add_spring_fields(FieldSink& out, const Model& m, const SolverState& state) {
+  const std::size_t n = m.elements[static_cast<std::size_t>(ElementKind::Spring)].size();
+  if (n == 0) return;
+  const SpringState& s = state.springs;
+  for (const auto* v : {&s.force, &s.elongation, &s.internal_energy, &s.mass, &s.critical_dt})
+    require_size(*v, n, "spring values");
+  const int k = static_cast<int>(ElementKind::Spring);
+  out.push_back(field("spring_force", k, 1, s.force));
+  out.push_back(field("elongation", k, 1, s.elongation));
+  add_element_scalars(out, m.run.anim, k, n, s.internal_energy, s.mass, s.hourglass_energy, s.critical_dt);
+  add_status_fields(out, ElementKind::Spring, s.deleted);
+}
+
 }  // namespace
 
 void frame_fields(const Model& model, const SolverState& state, FieldSink& out) {
@@ -322,6 +336,7 @@ void frame_fields(const Model& model, const SolverState& state, FieldSink& out) 
   add_shell_fields(out, model, state, ElementKind::Shell4);
   add_shell_fields(out, model, state, ElementKind::Shell3);
   add_brick_fields(out, model, state);
+  add_spring_fields(out, model, state);
 }
 
 std::vector<FrameField> frame_fields(const Model& model, const SolverState& state) {

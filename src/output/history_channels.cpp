@@ -91,6 +91,18 @@ constexpr Evaluator<B> kBrick[] = {
     {"SXY", brick_stress<3>},    {"SYZ", brick_stress<4>}, {"SXZ", brick_stress<5>}, {"IE", scalar<B, &B::ie>},
     {"DENS", scalar<B, &B::density>}, {"VOL", scalar<B, &B::volume>}, {"PLAS", scalar<B, &B::plastic_strain>}};
 
+struct SpringValues {  // in the spring's frame: X along its nodes (a TYPE4 spring: FX and LX only)
+  Vec3 f, m, l, r;
+  double off, ie, length;
+};
+using SP = SpringValues;
+constexpr Evaluator<SP> kSpring[] = {
+    {"OFF", scalar<SP, &SP::off>},        {"FX", component<SP, &SP::f, 0>}, {"FY", component<SP, &SP::f, 1>},
+    {"FZ", component<SP, &SP::f, 2>},     {"MX", component<SP, &SP::m, 0>}, {"MY", component<SP, &SP::m, 1>},
+    {"MZ", component<SP, &SP::m, 2>},     {"LX", component<SP, &SP::l, 0>}, {"LY", component<SP, &SP::l, 1>},
+    {"LZ", component<SP, &SP::l, 2>},     {"RX", component<SP, &SP::r, 0>}, {"RY", component<SP, &SP::r, 1>},
+    {"RZ", component<SP, &SP::r, 2>},     {"IE", scalar<SP, &SP::ie>},      {"LENGTH", scalar<SP, &SP::length>}};
+
 struct ForceValues {  // interfaces and rigid walls: normal and tangential force, interface energies
   Vec3 fn, ft;
   double elastic = 0.0, friction = 0.0, damping = 0.0;
@@ -157,6 +169,7 @@ int evaluator_of(HistoryObject object, std::string_view name) {
     case HistoryObject::Shell:
     case HistoryObject::Sh3n: return find(kShell, name);
     case HistoryObject::Brick: return find(kBrick, name);
+    case HistoryObject::Spring: return find(kSpring, name);
     case HistoryObject::Interface:
     case HistoryObject::RigidWall: return find(kForces, name);
     case HistoryObject::RigidBody: return find(kBody, name);
@@ -277,6 +290,19 @@ BrickValues brick_values(const Model& m, const SolverState& s, std::size_t group
   out.density = s.brick_groups[group].density * b.volume0[ue] / out.volume;
   out.ie = b.internal_energy[ue];
   out.off = element_condition(b.deleted[ue]) == kElementDeleted ? 0.0 : 1.0;
+  return out;
+}
+
+// FX: the axial force, positive in tension; LX: the elongation (docs/theory/spring.md, SP-1, SP-2).
+SpringValues spring_values(const SolverState& s, std::int32_t e) {
+  const SpringState& sp = s.springs;
+  const auto ue = static_cast<std::size_t>(e);
+  SpringValues out{};
+  out.f = {sp.force[ue], 0.0, 0.0};
+  out.l = {sp.elongation[ue], 0.0, 0.0};
+  out.ie = sp.internal_energy[ue];
+  out.length = sp.length0[ue] + sp.elongation[ue];
+  out.off = element_condition(sp.deleted[ue]) == kElementDeleted ? 0.0 : 1.0;
   return out;
 }
 
@@ -570,6 +596,7 @@ void HistoryChannels::evaluate(const Request& r, const SolverState& s, const Vel
         append(kBrick, brick_values(m, s, g, object), r.getters, row);
         break;
       }
+      case HistoryObject::Spring: append(kSpring, spring_values(s, object), r.getters, row); break;
       case HistoryObject::Interface: append(kForces, interface_values(s.contact.results[o]), r.getters, row); break;
       case HistoryObject::RigidWall: append(kForces, wall_values(s.walls[o]), r.getters, row); break;
       case HistoryObject::RigidBody: append(kBody, body_values(s, s.bodies[o]), r.getters, row); break;

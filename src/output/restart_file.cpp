@@ -20,15 +20,18 @@ namespace {
 using hdf5::Handle;
 using hdf5::H5Types;
 
-constexpr int kRestartFormat = 3;  // 2: marks/deleted_inverted and marks/step_drop_warned; 3: shells' hardening_term
+// 2: marks/deleted_inverted and marks/step_drop_warned; 3: shells' hardening_term; 4: springs and /DAMP's alpha
+constexpr int kRestartFormat = 4;
 
 // The counts a snapshot's arrays are sized by; a restart file is read only by a model with the same counts.
-std::array<long long, 6> model_counts(const Model& m, const SolverState& s) {
+std::array<long long, 7> model_counts(const Model& m, const SolverState& s) {
   return {static_cast<long long>(m.nodes.size()), static_cast<long long>(m.elements[0].size()),
           static_cast<long long>(m.elements[1].size()), static_cast<long long>(m.elements[2].size()),
-          static_cast<long long>(s.bodies.size()), static_cast<long long>(s.contact.interfaces.size())};
+          static_cast<long long>(m.elements[3].size()), static_cast<long long>(s.bodies.size()),
+          static_cast<long long>(s.contact.interfaces.size())};
 }
-constexpr std::array<const char*, 6> kCountNames{"nodes", "shells4", "shells3", "bricks", "rigid_bodies", "interfaces"};
+constexpr std::array<const char*, 7> kCountNames{"nodes",   "shells4",      "shells3",   "bricks",
+                                                 "springs", "rigid_bodies", "interfaces"};
 
 template <class T>
 using Stored = std::conditional_t<std::is_same_v<T, bool>, std::uint8_t, T>;

@@ -190,9 +190,8 @@ Domain make_domain(const Model& m, const Partition& partition, int index) {
   return d;
 }
 
-void assemble_element_loads(const Domain& d, const ShellState& shell4, const ShellState& shell3,
-                            const BrickState& brick8, NodalState& n) {
-  const ElementRecords* records[kElementKinds] = {&shell4.records, &shell3.records, &brick8.records};
+void assemble_element_loads(const Domain& d, const std::array<const ElementRecords*, kElementKinds>& records,
+                            NodalState& n) {
   for (std::size_t i = 0; i < d.shared_nodes.size(); ++i) {
     double f[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
     for (std::uint32_t j = d.first[i]; j < d.first[i + 1]; ++j) {

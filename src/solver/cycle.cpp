@@ -24,6 +24,7 @@ GroupStepResult group_forces(const Model& m, SolverState& s, std::size_t g) {
     case ElementKind::Shell4: return shell4_forces(table, group, s.shell_groups[g], s.nodes, s.shells, s.dt);
     case ElementKind::Shell3: return shell3_forces(table, group, s.shell_groups[g], s.nodes, s.shells3, s.dt);
     case ElementKind::Brick8: return brick8_forces(table, group, s.brick_groups[g], s.nodes, s.bricks, s.dt);
+    case ElementKind::Spring: return spring_forces(table, group, s.spring_groups[g], s.nodes, s.springs, s.dt);
   }
   return {};
 }
@@ -277,6 +278,8 @@ double choose_time_step(const Model& m, SolverState& s, RunEvents& events, StepB
     const NodalStep nodal = interface_nodal_step(m, s);
     if (nodal.node >= 0 && nodal.dt < bound.dt) bound.dt = nodal.dt, bound.control = StepControl::node(nodal.node);
   }
+  // /DAMP: the mass damping lowers the stable step (eq. D-3).
+  if (!m.dampings.empty()) bound.dt *= damping_step_factor(m, s, bound.dt);
   // /DTIX: never above DTmax; the first cycle of the engine deck at most DTini.
   if (rc.dt_max > 0.0 && !(bound.dt <= rc.dt_max)) bound = {rc.dt_max, {StepControl::Source::MaximumStep}};
   if (rc.dt_initial > 0.0 && s.cycle == 0 && rc.dt_initial < bound.dt)
@@ -375,6 +378,7 @@ void apply_constraints(const Model& m, SolverState& s, VelocityScratch& scratch,
   std::vector<ExactSum>& work = s.reducer.sums;
   work.assign(1 + s.contact.interfaces.size(), ExactSum{});
   add_load_work(m, s, scratch.before, s.time, dt_average, work[0]);
+  add_damping_work(m, s, scratch, dt_average, work[0]);
   add_constraint_work(s, scratch, work[0]);
   if (!s.contact.interfaces.empty())
     contact::add_contact_work(s.contact, n, scratch.before.data(), s.domain.node_owner, s.domain.index, work.data() + 1);

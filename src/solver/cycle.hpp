@@ -6,6 +6,7 @@
 #include <limits>
 #include <vector>
 
+#include "crumple/core/exact_sum.hpp"
 #include "crumple/model/model.hpp"
 #include "crumple/parallel/exchange.hpp"
 #include "crumple/parallel/partition.hpp"
@@ -39,6 +40,14 @@ struct VelocityScratch {
 
 // The /DT scale (default 0.9).
 double step_scale(const RunControl& run);
+
+// /DAMP (damping.cpp, docs/theory/damping.md): the factor the active mass damping takes off the scaled step dt
+// (eq. D-3); the damping forces of the step added to the nodal forces (eq. D-2), before the velocity update; their
+// work on the step's velocities into the external work (eq. D-4).
+double damping_step_factor(const Model& model, const SolverState& state, double dt);
+void apply_damping(const Model& model, SolverState& state, double dt_average);
+void add_damping_work(const Model& model, const SolverState& state, const VelocityScratch& scratch, double dt_average,
+                      ExactSum& work);
 
 // The phases' exchanges between domains are in solver/domain_sharing.hpp, step 7's monitor in solver/monitor.hpp.
 

@@ -20,8 +20,9 @@ namespace {
 // The per-type step controls and the nodal step read every element's critical step; otherwise only the groups'
 // smallest steps matter, which travel anyway.
 bool critical_steps_needed(const RunControl& rc) {
-  return rc.dt_nodal_cst.given || rc.dt_ams.given || rc.dt_shell.minimum > 0.0 || rc.dt_sh3n.minimum > 0.0 ||
-         rc.dt_brick.minimum > 0.0;
+  bool per_type = false;
+  for (const ElementKindDescription& kind : kElementKindTable) per_type = per_type || (rc.*kind.step_control).minimum > 0.0;
+  return rc.dt_nodal_cst.given || rc.dt_ams.given || per_type;
 }
 
 // Every domain's elements' conditions from their owners (an element that failed in its kernel is deleted
@@ -83,7 +84,9 @@ void share_element_results(const Model& m, SolverState& s, Exchange& exchange) {
       exchange.share(s.interface_stiffness[static_cast<std::size_t>(k)], 1, d.owner[static_cast<std::size_t>(k)]);
   }
   share_group_results(m, s, exchange);
-  assemble_element_loads(d, s.shells, s.shells3, s.bricks, s.nodes);
+  std::array<const ElementRecords*, kElementKinds> records{};
+  for (ElementKind kind : kAllElementKinds) records[static_cast<std::size_t>(kind)] = &element_state(s, kind).records;
+  assemble_element_loads(d, records, s.nodes);
 }
 
 namespace {
@@ -126,7 +129,8 @@ ElementStateNeed history_needs(const Model& m) {
   ElementStateNeed need = ElementStateNeed::None;
   for (const TimeHistoryRequest& th : m.histories) {
     const HistoryObject o = th.object;
-    if (o == HistoryObject::Shell || o == HistoryObject::Sh3n || o == HistoryObject::Brick || o == HistoryObject::Section)
+    if (o == HistoryObject::Shell || o == HistoryObject::Sh3n || o == HistoryObject::Brick || o == HistoryObject::Spring ||
+        o == HistoryObject::Section)
       return ElementStateNeed::All;
     if (o == HistoryObject::Part || o == HistoryObject::Subset) need = ElementStateNeed::Energies;
   }
@@ -155,6 +159,8 @@ void share_element_state(SolverState& s, Exchange& exchange, ElementStateNeed ne
   share_kind_state(exchange, s.shells, shells, owner[0], points[0], shell_points);
   share_kind_state(exchange, s.shells3, shells, owner[1], points[1], shell_points);
   share_kind_state(exchange, s.bricks, bricks, owner[2], points[2], brick_points);
+  auto springs = [](auto& v, const std::string& at, SpringState& st) { snapshot_detail::visit_springs(v, at, st); };
+  share_kind_state(exchange, s.springs, springs, owner[3], points[3], std::initializer_list<std::string_view>{});
 }
 
 namespace {

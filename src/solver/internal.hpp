@@ -38,6 +38,8 @@ void setup_rigid_bodies(const Model& model, SolverState& state);
 void update_skew_axes(const Model& model, SolverState& state);
 // Brick groups' parameters and state (setup_bricks.cpp, docs/theory/brick8.md).
 void setup_bricks(const Model& model, SolverState& state);
+// Spring groups' parameters and state (setup_springs.cpp, docs/theory/spring.md).
+void setup_springs(const Model& model, SolverState& state);
 void setup_rigid_walls(const Model& model, SolverState& state);
 
 // Nodal time step of the cycle with mass scaling (/DT/NODA/CST): adds mass where the nodal step (on the stiffness

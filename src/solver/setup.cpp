@@ -236,6 +236,8 @@ SolverState make_state(const Model& m, std::vector<std::string>& notes, Domain d
   setup_shells(m, s, ElementKind::Shell4);
   setup_shells(m, s, ElementKind::Shell3);
   setup_bricks(m, s);
+  setup_springs(m, s);
+  for (const RayleighDamping& d : m.dampings) s.damping_alpha.push_back(d.alpha);
   s.group_results.assign(m.element_groups.size(), GroupStepResult{});
   take_domain(m, s, std::move(domain));
   setup_sections(m, s);  // /TH/SECTIO: after the domain, whose records it may restrict or read

@@ -75,6 +75,8 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunObse
   s.reducer = Reducer(options.exchange);
   if (options.resume == nullptr) switch_rigid_bodies(m, s);  // a resumed state has them switched already
   if (options.resume == nullptr) start_velocity_links(m, s);  // the links act on the velocities the deck starts with
+  for (const DampingChange& change : m.run.damping_changes)  // engine /DAMP: from this deck on
+    s.damping_alpha[static_cast<std::size_t>(change.damping)] = change.alpha;
   const bool selective = selective_mass_on(m);
   if (!selective) s.selective_mass = SelectiveMassState{}, s.contact.selective_mass_added = nullptr;  // after one with it
   update_energies(m, s);  // for the listing's row of cycle 0
@@ -124,6 +126,7 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunObse
 
     // dt^n (CD-2); the very first cycle of a run is a half step from the initial velocities.
     const double dt_average = s.cycle + s.cycles_done == 0 ? 0.5 * dt_next : 0.5 * (s.dt + dt_next);
+    apply_damping(m, s, dt_average);
     if (selective) {
       solve_accelerations(m, s, events, dt_average, dt_next);
       if (events.stop.stopped()) break;

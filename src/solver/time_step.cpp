@@ -44,6 +44,10 @@ void element_stiffness(const Model& m, ElementKind kind, const State& st, Solver
     k[e] = 0.0;
     if (element_condition(st.deleted[e]) != kElementActive || !(st.critical_dt[e] > 0.0)) continue;
     const Part& part = m.parts[static_cast<std::size_t>(table.part[e])];
+    if constexpr (requires { st.length0; }) {  // a spring gives each node its stiffness K (eq. SP-4a)
+      k[e] = m.properties[static_cast<std::size_t>(part.property)].spring.stiffness;
+      continue;
+    }
     const Material& mat = m.materials[static_cast<std::size_t>(part.material)];
     const NodalStiffnessFactor beta =
         nodal_stiffness_factor(kind, m.formulations[static_cast<std::size_t>(part.property)].ishell, mat.poisson);
@@ -76,6 +80,7 @@ void element_interface_stiffness(const Model& m, SolverState& s) {
   element_stiffness(m, ElementKind::Shell4, s.shells, s);
   element_stiffness(m, ElementKind::Shell3, s.shells3, s);
   element_stiffness(m, ElementKind::Brick8, s.bricks, s);
+  element_stiffness(m, ElementKind::Spring, s.springs, s);
 }
 
 void nodal_interface_stiffness(const Model& m, SolverState& s) {

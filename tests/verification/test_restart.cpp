@@ -5,8 +5,9 @@
 // the /TH datasets' included.
 // The decks cover shells with a rigid body and a rigid wall (the example tube), TYPE7 contact with friction and a
 // rigid body of bricks (contact_idel), a continued run (ball_two_runs, stopped in its first engine deck),
-// accelerometers, whose filters and integrals carry over (accel_strip), and cut sections, whose work integrals
-// carry over and whose loads the first cycle after the restart records again (section_strip).
+// accelerometers, whose filters and integrals carry over (accel_strip), cut sections, whose work integrals
+// carry over and whose loads the first cycle after the restart records again (section_strip), and springs under
+// the mass damping of an engine /DAMP (damping_springs).
 #include <gtest/gtest.h>
 #include <hdf5.h>
 
@@ -153,7 +154,9 @@ INSTANTIATE_TEST_SUITE_P(
                       RestartCase{"contact_idel", kQa / "contact_idel" / "IDEL8_0000.rad", 333},
                       RestartCase{"ball_two_runs", kQa / "ball_two_runs" / "BOULE1V4_0000.rad", 777},
                       RestartCase{"accel_strip", kTestDecks / "accel_strip" / "ACCEL_0000.rad", 300},
-                      RestartCase{"section_strip", kTestDecks / "section_strip" / "SECT_0000.rad", 600}),
+                      RestartCase{"section_strip", kTestDecks / "section_strip" / "SECT_0000.rad", 600},
+                      // springs, /DAMP changed by the engine deck, /TH/SPRING (issue 28)
+                      RestartCase{"damping_springs", kQa / "damping_springs" / "DAMPC_0000.rad", 150}),
     [](const auto& p) { return std::string(p.param.name); });
 
 TEST(Restart, FileOfAnotherModelIsRefusedWithItsCounts) {

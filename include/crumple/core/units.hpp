@@ -25,6 +25,7 @@ inline constexpr Dimension pressure{1, -1, -2};        // stress, modulus
 inline constexpr Dimension density{1, -3, 0};
 inline constexpr Dimension inertia{1, 2, 0};           // mass moment of inertia
 inline constexpr Dimension stiffness{1, 0, -2};        // force per length
+inline constexpr Dimension viscous_damping{1, 0, -1};  // force per velocity
 inline constexpr Dimension angular_velocity{0, 0, -1};
 inline constexpr Dimension energy_per_volume{1, -1, -2};
 }  // namespace dim

@@ -2,6 +2,7 @@
 // Elements as structures of arrays, one table per element kind, ordered by part. The solver walks them in
 // ElementGroups: contiguous runs of at most kElementGroupSize elements of one kind, part, property and material,
 // sized so that a kernel's inner loop over a group vectorises.
+#include <array>
 #include <cstdint>
 #include <string_view>
 #include <vector>
@@ -11,10 +12,10 @@
 
 namespace crumple {
 
-enum class ElementKind : std::uint8_t { Shell4, Shell3, Brick8 };
-inline constexpr int kElementKinds = 3;
+enum class ElementKind : std::uint8_t { Shell4, Shell3, Brick8, Spring };
+inline constexpr int kElementKinds = 4;
 inline constexpr ElementKind kAllElementKinds[kElementKinds] = {ElementKind::Shell4, ElementKind::Shell3,
-                                                                ElementKind::Brick8};
+                                                                ElementKind::Brick8, ElementKind::Spring};
 inline constexpr int kElementGroupSize = 128;
 
 // What an element kind is, as data: one row per kind in kElementKindTable, which the reader, the model, the
@@ -28,7 +29,7 @@ struct ElementKindDescription {
   int nodes;                   // nodes per element
   int values_per_node;         // what an element hands each node: force (3), and moment (6) for kinds with rotations
   PropertyKind property;       // the property kind its parts take
-  std::string_view measure;    // what its nodes span: "area" or "volume"
+  std::string_view measure;    // what its nodes span: "area", "volume" or "length"
   std::string_view valid_shape;  // the rule an element's measure must keep, as the reader's errors state it
   bool may_degenerate;           // written with repeated nodes for a prism, pyramid or tetrahedron (bricks)
   // Element groups of this kind: /GRSHEL/SHEL/6 reads its members by "shell_ID".
@@ -45,6 +46,9 @@ inline constexpr ElementKindDescription kElementKindTable[kElementKinds] = {
     {ElementKind::Brick8, "BRICK", "brick", "/BRICK", "BRICK", 8, 3, PropertyKind::Solid, "volume",
      "a brick of positive volume (nodes 1-4 one face, 5-8 the opposite face)", true, "/GRBRIC",
      "BRIC", "brick_ID", "brick8", "Hexahedron", &RunControl::dt_brick},
+    {ElementKind::Spring, "SPRING", "spring", "/SPRING", "SPRING", 2, 3, PropertyKind::Spring, "length",
+     "a spring of positive length", false, "/GRSPRI", "SPRI", "spring_ID", "spring2", "Polyline",
+     &RunControl::dt_spring},
 };
 
 constexpr const ElementKindDescription& describe(ElementKind kind) {
@@ -64,6 +68,13 @@ struct ElementTable {
     return connectivity.data() + element * static_cast<std::size_t>(nodes_per_element(kind));
   }
 };
+
+// One empty table per kind, in kAllElementKinds order (Model::elements).
+inline std::array<ElementTable, kElementKinds> empty_element_tables() {
+  std::array<ElementTable, kElementKinds> tables;
+  for (ElementKind kind : kAllElementKinds) tables[static_cast<std::size_t>(kind)].kind = kind;
+  return tables;
+}
 
 struct ElementGroup {
   ElementKind kind;

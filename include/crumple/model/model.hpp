@@ -9,6 +9,7 @@
 
 #include "crumple/core/units.hpp"
 #include "crumple/model/boxes.hpp"
+#include "crumple/model/damping.hpp"
 #include "crumple/model/elements.hpp"
 #include "crumple/model/functions.hpp"
 #include "crumple/model/interfaces.hpp"
@@ -34,9 +35,7 @@ struct Model {
   UnitSystem units;
 
   Nodes nodes;
-  std::array<ElementTable, kElementKinds> elements{
-      ElementTable{ElementKind::Shell4, {}, {}, {}, {}}, ElementTable{ElementKind::Shell3, {}, {}, {}, {}},
-      ElementTable{ElementKind::Brick8, {}, {}, {}, {}}};
+  std::array<ElementTable, kElementKinds> elements = empty_element_tables();
   std::vector<ElementGroup> element_groups;
 
   std::vector<Part> parts;
@@ -66,6 +65,7 @@ struct Model {
   std::vector<AddedMass> added_masses;
   std::vector<RigidWall> rigid_walls;
   std::vector<RigidBody> rigid_bodies;
+  std::vector<RayleighDamping> dampings;  // /DAMP
   std::vector<Type7Interface> type7_interfaces;
   std::vector<TimeHistoryRequest> histories;
   std::vector<Section> sections;
@@ -87,7 +87,7 @@ struct Model {
   struct Index {
     IdMap nodes, parts, properties, materials, functions, node_groups, shell_groups, sh3n_groups, brick_groups,
         surfaces, lines, subsets, skews, sensors, boxes, rigid_walls, rigid_bodies, interfaces, sections,
-        accelerometers;
+        accelerometers, dampings;
     std::array<IdMap, kElementKinds> elements;
   } index;
 

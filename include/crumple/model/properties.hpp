@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <string>
+#include <string_view>
 
 #include "crumple/core/source_location.hpp"
 
@@ -49,7 +50,35 @@ struct SolidSection {  // /PROP/TYPE14 (= /PROP/SOLID), the values as written (0
   int ihkt = 0;               // Isolid 24 hourglass modulus: 0, 1 elastic (2, tangent, is refused)
 };
 
-enum class PropertyKind : std::uint8_t { Shell, Solid };
+// /PROP/TYPE4 (= /PROP/SPRING): a one-degree-of-freedom spring along its two nodes (docs/theory/spring.md). The
+// reader refuses the options Crumple lacks (functions, hardening, sensors, rate effects, input per unit length).
+struct SpringSection {
+  double mass = 0.0;       // M, the spring's mass, half at each node [M]; > 0 (the reference refuses 0)
+  double stiffness = 0.0;  // K, the linear loading and unloading stiffness [F/L]
+  double damping = 0.0;    // C, the viscous damping [F T/L]
+  double delta_min = -1e30, delta_max = 1e30;  // the elongations that break it (0 or blank: never) [L]
+};
+
+enum class PropertyKind : std::uint8_t { Shell, Solid, Spring };
+inline constexpr int kPropertyKinds = 3;
+
+// What a property kind is, as data: its keyword's two names and whether it carries the law (a part of it needs
+// no material: mat_ID 0).
+struct PropertyKindDescription {
+  PropertyKind kind;
+  std::string_view name;  // /PROP/<name>: SHELL, SOLID, SPRING
+  std::string_view card;  // /PROP/TYPE1, /PROP/TYPE14, /PROP/TYPE4
+  std::string_view what;  // the messages' word: "shell"
+  bool carries_law;
+};
+inline constexpr PropertyKindDescription kPropertyKindTable[kPropertyKinds] = {
+    {PropertyKind::Shell, "SHELL", "/PROP/TYPE1", "shell", false},
+    {PropertyKind::Solid, "SOLID", "/PROP/TYPE14", "solid", false},
+    {PropertyKind::Spring, "SPRING", "/PROP/TYPE4", "spring", true},
+};
+constexpr const PropertyKindDescription& describe(PropertyKind kind) {
+  return kPropertyKindTable[static_cast<int>(kind)];
+}
 
 struct Property {
   SourceLocation where;
@@ -58,6 +87,7 @@ struct Property {
   PropertyKind kind = PropertyKind::Shell;
   ShellSection shell;
   SolidSection solid;
+  SpringSection spring;
 };
 
 struct ShellDefaults {  // /DEF_SHELL

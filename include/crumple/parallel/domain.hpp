@@ -16,9 +16,8 @@
 
 #include "crumple/model/model.hpp"
 #include "crumple/parallel/partition.hpp"
-#include "crumple/state/brick_state.hpp"
+#include "crumple/state/element_records.hpp"
 #include "crumple/state/nodal_state.hpp"
-#include "crumple/state/shell_state.hpp"
 
 namespace crumple {
 
@@ -99,10 +98,10 @@ void for_each_owned_node(const Domain& d, std::size_t nodes, F f) {
   for_each_node_in(d.owned_nodes, f);
 }
 
-// Every local shared node's sum of element loads from the records of the three element kinds (Shell4, Shell3, Brick8),
+// Every local shared node's sum of element loads from the records of every element kind (kAllElementKinds order),
 // each node's loads in its list's order: forces into n.fx, n.fy, n.fz and the shells' moments into n.mx, n.my,
 // n.mz, from zero. The result is what the kernels give adding directly, bit for bit.
-void assemble_element_loads(const Domain& domain, const ShellState& shell4, const ShellState& shell3,
-                            const BrickState& brick8, NodalState& n);
+void assemble_element_loads(const Domain& domain, const std::array<const ElementRecords*, kElementKinds>& records,
+                            NodalState& n);
 
 }  // namespace crumple

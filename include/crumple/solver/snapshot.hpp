@@ -77,6 +77,17 @@ void visit_bricks(V& v, const std::string& at, BrickState& b) {
 }
 
 template <class V>
+void visit_springs(V& v, const std::string& at, SpringState& sp) {
+  for (auto [name, field] :
+       {std::pair{"length0", &sp.length0}, {"elongation", &sp.elongation}, {"force", &sp.force},
+        {"internal_energy", &sp.internal_energy}, {"hourglass_energy", &sp.hourglass_energy},
+        {"critical_dt", &sp.critical_dt}, {"mass", &sp.mass}})
+    v(at + name, *field);
+  if (!sp.section_work.empty()) v(at + "section_work", sp.section_work);
+  v(at + "deleted", sp.deleted);
+}
+
+template <class V>
 void visit_body(V& v, const std::string& at, RigidBodyState& b) {
   v(at + "rx", b.rx), v(at + "ry", b.ry), v(at + "rz", b.rz);
   v(at + "mass", b.mass);
@@ -155,6 +166,8 @@ void visit_state(V& v, SolverState& s, ResumeMarks& marks) {
   visit_shells(v, "shells4/", s.shells);
   visit_shells(v, "shells3/", s.shells3);
   visit_bricks(v, "bricks/", s.bricks);
+  visit_springs(v, "springs/", s.springs);
+  v("damping_alpha", s.damping_alpha);
   for (std::size_t k = 0; k < s.bodies.size(); ++k) visit_body(v, "bodies/" + std::to_string(k) + "/", s.bodies[k]);
   for (std::size_t k = 0; k < s.walls.size(); ++k) visit_wall(v, "walls/" + std::to_string(k) + "/", s.walls[k]);
   for (std::size_t k = 0; k < s.contact.interfaces.size(); ++k)

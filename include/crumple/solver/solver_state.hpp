@@ -9,6 +9,7 @@
 #include "crumple/state/contact_state.hpp"
 #include "crumple/elements/brick8.hpp"
 #include "crumple/elements/shell4.hpp"
+#include "crumple/elements/spring.hpp"
 #include "crumple/model/model.hpp"
 #include "crumple/parallel/domain.hpp"
 #include "crumple/parallel/reducer.hpp"
@@ -32,11 +33,14 @@ struct SolverState {
   std::vector<double> shell_zeta, shell_membrane_weight, shell_bending_weight;  // through-thickness rules, 11 per n
   BrickState bricks;                                // 8-node bricks
   std::vector<BrickGroupParameters> brick_groups;  // per element group (meaningful for brick groups only)
+  SpringState springs;                              // 2-node springs
+  std::vector<SpringGroupParameters> spring_groups;  // per element group (meaningful for spring groups only)
   std::vector<RigidBodyState> bodies;
   std::vector<RigidWallState> walls;
   ContactState contact;                             // TYPE7 interfaces (empty without /INTER/TYPE7)
   SelectiveMassState selective_mass;                // /DT/AMS (empty without it)
   std::vector<std::int32_t> rigid_owner;           // per node: rigid body index, -1 when none
+  std::vector<double> damping_alpha;  // per /DAMP: the mass coefficient the engine deck runs with [1/T] (D-1)
   std::vector<SkewAxes> skew_axes;                  // per skew of the model: its axes at the current positions (SK-3)
   double time = 0.0;
   double dt = 0.0;        // step of the last position update dt^(n-1/2) [T]
@@ -60,9 +64,13 @@ struct SolverState {
 // The state every element kind has (state/element_kind_state.hpp), for code that treats the kinds alike: the one
 // place that maps a kind to its state.
 inline ElementKindState& element_state(SolverState& s, ElementKind kind) {
-  return kind == ElementKind::Brick8 ? static_cast<ElementKindState&>(s.bricks)
-         : kind == ElementKind::Shell4 ? static_cast<ElementKindState&>(s.shells)
-                                       : static_cast<ElementKindState&>(s.shells3);
+  switch (kind) {
+    case ElementKind::Shell4: return s.shells;
+    case ElementKind::Shell3: return s.shells3;
+    case ElementKind::Brick8: return s.bricks;
+    case ElementKind::Spring: return s.springs;
+  }
+  return s.shells;
 }
 inline const ElementKindState& element_state(const SolverState& s, ElementKind kind) {
   return element_state(const_cast<SolverState&>(s), kind);

@@ -401,9 +401,9 @@ void read_dt(CardReader& reader, DeckContext& context) {
   if (card.path.size() == 1) return read_dt_values(reader, run.dt, TimeStepAction::Default, false);
   const std::string& type = card.path[1];
   const std::string keyword3 = card.path.size() > 2 ? card.path[2] : std::string();
-  if (type == "SHELL") return read_dt_element(reader, run.dt_shell, true);
-  if (type == "BRICK") return read_dt_element(reader, run.dt_brick, true);
-  if (type == "SH_3N" || type == "SH3N") return read_dt_element(reader, run.dt_sh3n, true);
+  for (const ElementKindDescription& kind : kElementKindTable)
+    if (type == kind.step_card || (kind.kind == ElementKind::Shell3 && type == "SH3N"))
+      return read_dt_element(reader, run.*kind.step_control, true);
   if (type == "NODA") {
     // CST is Radioss' name for CST2 (mass added to keep DTmin); CST1, SET and STOP are other methods.
     if (keyword3 != "CST" && keyword3 != "CST2")

@@ -1,4 +1,4 @@
-// /NODE, /SHELL, /SH3N, /BRICK, /PART (docs/deck-format.md).
+// /NODE, the element cards (/SHELL, /SH3N, /BRICK, /SPRING) and /PART (docs/deck-format.md).
 #include <fmt/format.h>
 
 #include "../context.hpp"
@@ -20,8 +20,37 @@ void read_nodes(CardReader& reader, DeckContext& context) {
   }
 }
 
-// Elements: "id n1 .. nk" in 10-column fields; shells may add an orthotropy angle and a thickness.
-void read_elements(CardReader& reader, DeckContext& context, ElementKind kind) {
+// Shells: an orthotropy angle (20 columns), then the element's own thickness (20 columns).
+void read_shell_extras(const Line& line, int after, RawElements& raw, DeckContext&) {
+  line.real(after, 20, "Phi", dim::none);
+  const double thick = line.real(after + 20, 20, "Thick", dim::length);
+  if (thick < 0.0) line.fail(after + 20, 20, "Thick", "a non-negative thickness (0 or blank: the property's)");
+  raw.thickness.push_back(thick);
+}
+void read_no_extras(const Line&, int, RawElements&, DeckContext&) {}
+// Springs: node_ID3 to node_ID6 (the third node of the types that take one), then Skew_ID (columns 91-100).
+void read_spring_extras(const Line& line, int after, RawElements&, DeckContext& context) {
+  for (int k = 0; k < 4; ++k)
+    if (line.optional_id(after + 10 * k, 10, fmt::format("node_ID{}", k + 3), IdKind::Node) != 0)
+      context.unsupported(line.error(after + 10 * k, 10, fmt::format("node_ID{}", k + 3),
+                                     default_only("a third node (springs of /PROP/TYPE4 take two) is")));
+  if (line.optional_id(91, 10, "Skew_ID") != 0)
+    context.unsupported(line.error(91, 10, "Skew_ID", default_only("a spring skew (/PROP/TYPE4 acts along its nodes) is")));
+}
+
+// Each element card: its kind and what its lines hold after the nodes.
+struct ElementCard {
+  ElementKind kind;
+  void (*read_extras)(const Line& line, int after, RawElements& raw, DeckContext& context);
+};
+constexpr ElementCard kElementCards[] = {{ElementKind::Shell4, read_shell_extras},
+                                         {ElementKind::Shell3, read_shell_extras},
+                                         {ElementKind::Brick8, read_no_extras},
+                                         {ElementKind::Spring, read_spring_extras}};
+
+// Elements: "id n1 .. nk" in 10-column fields, then the kind's extras.
+void read_elements(CardReader& reader, DeckContext& context, const ElementCard& card) {
+  const ElementKind kind = card.kind;
   const std::int64_t part_id = object_id(reader, 1);
   read_unit_id(reader, 2);
   RawElements& raw = context.raw_elements[static_cast<int>(kind)];
@@ -35,13 +64,7 @@ void read_elements(CardReader& reader, DeckContext& context, ElementKind kind) {
       if (node <= 0) line->fail(11 + 10 * k, 10, name, "a positive node id");
       raw.node_ids.push_back(node);
     }
-    if (kind != ElementKind::Brick8) {
-      const int after = 11 + 10 * n;  // orthotropy angle (20 columns), then element thickness (20 columns)
-      line->real(after, 20, "Phi", dim::none);
-      const double thick = line->real(after + 20, 20, "Thick", dim::length);
-      if (thick < 0.0) line->fail(after + 20, 20, "Thick", "a non-negative thickness (0 or blank: the property's)");
-      raw.thickness.push_back(thick);
-    }
+    card.read_extras(*line, 11 + 10 * n, raw, context);
     raw.user_id.push_back(id);
     raw.part_id.push_back(part_id);
     raw.where.push_back(line->where());
@@ -59,7 +82,8 @@ void read_part(CardReader& reader, DeckContext& context) {
   part.material_id = line.id(11, 10, "mat_ID", IdKind::Material);
   part.subset_id = line.id(21, 10, "subset_ID", IdKind::Other);
   if (part.property_id <= 0) line.fail(1, 10, "prop_ID", "a positive property id");
-  if (part.material_id <= 0) line.fail(11, 10, "mat_ID", "a positive material id");
+  // mat_ID 0: a part whose property carries the law (springs); the model build checks the property's kind.
+  if (part.material_id < 0) line.fail(11, 10, "mat_ID", "a positive material id (0 for a spring part)");
   // Thick (columns 31-50) is the part's virtual thickness: the reference keeps its shells' thickness and mass
   // (measured: its starter listing's part mass, "VIRT. THICKN") and uses it for contact gaps, which Crumple does not.
   if (line.real(31, 20, "Thick", dim::length) != 0.0)
@@ -74,12 +98,9 @@ void read_part(CardReader& reader, DeckContext& context) {
 
 void register_mesh_keywords(KeywordTable& table) {
   table.push_back({"/NODE", DeckPart::Starter, read_nodes});
-  table.push_back({"/SHELL", DeckPart::Starter,
-                   [](CardReader& r, DeckContext& c) { read_elements(r, c, ElementKind::Shell4); }, true});
-  table.push_back({"/SH3N", DeckPart::Starter,
-                   [](CardReader& r, DeckContext& c) { read_elements(r, c, ElementKind::Shell3); }, true});
-  table.push_back({"/BRICK", DeckPart::Starter,
-                   [](CardReader& r, DeckContext& c) { read_elements(r, c, ElementKind::Brick8); }, true});
+  for (const ElementCard& card : kElementCards)
+    table.push_back({describe(card.kind).card, DeckPart::Starter,
+                     [&card](CardReader& r, DeckContext& c) { read_elements(r, c, card); }, true});
   table.push_back({"/PART", DeckPart::Starter, read_part});
 }
 

@@ -125,7 +125,8 @@ IdKind object_id_kind(HistoryObject object) {
     case HistoryObject::Part: return IdKind::Part;
     case HistoryObject::Shell:
     case HistoryObject::Sh3n:
-    case HistoryObject::Brick: return IdKind::Element;
+    case HistoryObject::Brick:
+    case HistoryObject::Spring: return IdKind::Element;
     default: return IdKind::Other;
   }
 }
@@ -306,6 +307,7 @@ void register_output_keywords(KeywordTable& table) {
   table.push_back({"/TH/SHELL", DeckPart::Starter, history(H::Shell, L::IdSkewName)});
   table.push_back({"/TH/SH3N", DeckPart::Starter, history(H::Sh3n, L::IdSkewName)});
   table.push_back({"/TH/BRIC", DeckPart::Starter, history(H::Brick, L::IdBlankName)});
+  table.push_back({"/TH/SPRING", DeckPart::Starter, history(H::Spring, L::IdBlankName)});
   table.push_back({"/TH/SECTIO", DeckPart::Starter, history(H::Section, L::Ids)});
   table.push_back({"/TH/RBODY", DeckPart::Starter, history(H::RigidBody, L::Ids)});
   table.push_back({"/TH/ACCEL", DeckPart::Starter, history(H::Accelerometer, L::Ids)});

@@ -1,4 +1,4 @@
-// /PROP/TYPE1 (SHELL) and /PROP/TYPE14 (SOLID). Layouts: docs/cards/starter-model.md.
+// /PROP/TYPE1 (SHELL), /PROP/TYPE14 (SOLID) and /PROP/TYPE4 (SPRING). Layouts: docs/cards/starter-model.md.
 #include <fmt/format.h>
 
 #include <utility>
@@ -177,6 +177,78 @@ void read_solid_property(CardReader& reader, DeckContext& context) {
   context.model.properties.push_back(std::move(p));
 }
 
+// A field of /PROP/TYPE4 that acts only with an option Crumple lacks: its default (0, or `neutral`) or an error.
+void spring_default_only(const Line& line, DeckContext& context, int column, int width, std::string_view name,
+                         double value, double neutral, std::string_view feature) {
+  if (value != 0.0 && value != neutral)
+    context.unsupported(line.error(column, width, name, default_only(feature)));
+}
+
+// Line 1: Mass, sens_ID, Isflag, Ileng. Line 2: K, C, A, B, D.
+void read_spring_mass_and_stiffness(CardReader& reader, DeckContext& context, SpringSection& s) {
+  const Line first = reader.next("Mass, sens_ID, Isflag, Ileng");
+  s.mass = first.real(1, 20, "Mass", dim::mass);
+  if (!(s.mass > 0.0)) first.fail(1, 20, "Mass", "a positive spring mass (the reference refuses a spring without mass)");
+  if (first.optional_id(51, 10, "sens_ID", IdKind::Other) != 0)
+    context.unsupported(first.error(51, 10, "sens_ID", default_only("a spring switched by a sensor is")));
+  spring_default_only(first, context, 61, 10, "Isflag", static_cast<double>(first.integer(61, 10, "Isflag")), 0.0,
+                      "the sensor flag (with a sensor) is");
+  spring_default_only(first, context, 71, 10, "Ileng", static_cast<double>(first.integer(71, 10, "Ileng")), 0.0,
+                      "input per unit length is");
+  const Line second = reader.next("K, C, A, B, D");
+  s.stiffness = second.real(1, 20, "K", dim::stiffness);
+  s.damping = second.real(21, 20, "C", dim::viscous_damping);
+  if (s.stiffness < 0.0) second.fail(1, 20, "K", "a non-negative stiffness");
+  if (s.damping < 0.0) second.fail(21, 20, "C", "a non-negative damping");
+  if (!(s.stiffness > 0.0) && !(s.damping > 0.0)) second.fail(1, 40, "K, C", "a stiffness or a damping (or both)");
+  // A scales the force function only: the reference prints A = 1 for a spring without one (measured, /PROP/SPRING
+  // with K 1000 and A 2: the same energies as A 1), so a linear spring ignores it, as the reference does.
+  const double a = second.real(41, 20, "A", dim::none);
+  if (a != 0.0 && a != 1.0)
+    context.note(second.where(), reader.card().keyword, "A (columns 41-60)",
+                 "the function scale factor acts on fct_ID11 only; a linear spring ignores it, as the reference does",
+                 SkipKind::Unsupported);
+  spring_default_only(second, context, 61, 20, "B", second.real(61, 20, "B", dim::none), 0.0,
+                      "the logarithmic rate effect is");
+  spring_default_only(second, context, 81, 20, "D", second.real(81, 20, "D", dim::none), 1.0,
+                      "the rate effect's scale (with B) is");
+}
+
+// Line 3: fct_ID11, H, fct_ID21, fct_ID31, fct_ID41, delta_min, delta_max. Line 4: F, E, Ascale, Hscale.
+void read_spring_law(CardReader& reader, DeckContext& context, SpringSection& s) {
+  const Line third = reader.next("fct_ID11, H, fct_ID21, fct_ID31, fct_ID41, delta_min, delta_max");
+  for (const auto& [column, name] : {std::pair{1, "fct_ID11"}, {21, "fct_ID21"}, {31, "fct_ID31"}, {41, "fct_ID41"}})
+    if (third.optional_id(column, 10, name, IdKind::Other) != 0)
+      context.unsupported(third.error(column, 10, name, default_only("a spring force given by a function is")));
+  spring_default_only(third, context, 11, 10, "H", static_cast<double>(third.integer(11, 10, "H")), 0.0,
+                      "a hardening spring (H 1 to 8; Crumple's TYPE4 spring is linear elastic) is");
+  const double low = third.real(61, 20, "delta_min", dim::length);
+  const double high = third.real(81, 20, "delta_max", dim::length);
+  if (low > 0.0) third.fail(61, 20, "delta_min", "a negative failure elongation (0 or blank: none)");
+  if (high < 0.0) third.fail(81, 20, "delta_max", "a positive failure elongation (0 or blank: none)");
+  if (low < 0.0) s.delta_min = low;
+  if (high > 0.0) s.delta_max = high;
+  if (!reader.has_data()) return;
+  const Line fourth = reader.next("F, E, Ascale, Hscale");
+  spring_default_only(fourth, context, 1, 20, "F", fourth.real(1, 20, "F", dim::none), 1.0,
+                      "the rate effect's velocity scale (with B or a function) is");
+  spring_default_only(fourth, context, 21, 20, "E", fourth.real(21, 20, "E", dim::none), 1.0,
+                      "the rate effect's factor E (with a function) is");
+  spring_default_only(fourth, context, 41, 20, "Ascale", fourth.real(41, 20, "Ascale", dim::none), 1.0,
+                      "the abscissa scale of fct_ID11 (with a function) is");
+  spring_default_only(fourth, context, 61, 20, "Hscale", fourth.real(61, 20, "Hscale", dim::none), 1.0,
+                      "the ordinate scale of the hardening functions (with H) is");
+}
+
+void read_spring_property(CardReader& reader, DeckContext& context) {
+  refuse_narrow_layout(reader);
+  Property p = begin_property(reader, PropertyKind::Spring);
+  read_spring_mass_and_stiffness(reader, context, p.spring);
+  read_spring_law(reader, context, p.spring);
+  reader.finish();
+  context.model.properties.push_back(std::move(p));
+}
+
 }  // namespace
 
 void register_property_keywords(KeywordTable& table) {
@@ -184,6 +256,8 @@ void register_property_keywords(KeywordTable& table) {
   table.push_back({"/PROP/SHELL", DeckPart::Starter, read_shell_property});
   table.push_back({"/PROP/TYPE14", DeckPart::Starter, read_solid_property});
   table.push_back({"/PROP/SOLID", DeckPart::Starter, read_solid_property});
+  table.push_back({"/PROP/TYPE4", DeckPart::Starter, read_spring_property});
+  table.push_back({"/PROP/SPRING", DeckPart::Starter, read_spring_property});
 }
 
 }  // namespace crumple::deck

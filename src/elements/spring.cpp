@@ -1,0 +1,57 @@
+// Springs of one translational degree of freedom, /PROP/TYPE4 (docs/theory/spring.md, eq. SP-1 to SP-4).
+#include "crumple/elements/spring.hpp"
+
+#include <cmath>
+
+namespace crumple {
+namespace {
+
+Vec3 position(const NodalState& n, std::int32_t k) {
+  const auto u = static_cast<std::size_t>(k);
+  return {n.x[u], n.y[u], n.z[u]};
+}
+
+}  // namespace
+
+GroupStepResult spring_forces(const ElementTable& table, const ElementGroup& group, const SpringGroupParameters& p,
+                              NodalState& nodes, SpringState& state, double dt) {
+  GroupStepResult result;
+  const bool recording = state.records.on(group.begin);
+  const double step = spring_critical_step(p);
+  for (std::int32_t e = group.begin; e < group.end; ++e) {
+    const auto ue = static_cast<std::size_t>(e);
+    if (recording && !(state.deleted[ue] & kElementElsewhere)) state.records.clear(ue);
+    if (state.deleted[ue]) continue;
+    const std::int32_t* n = table.nodes_of(ue);
+    const Vec3 axis = position(nodes, n[1]) - position(nodes, n[0]);
+    const double length = norm(axis);
+    if (!(length > 0.0)) {  // the nodes met: no direction left to act along
+      result.inverted = e;
+      continue;
+    }
+    const Vec3 along = scaled(axis, 1.0 / length);
+    const double elongation = length - state.length0[ue];  // eq. SP-1
+    // The elongation rate over the last step (none before the first: the reference's dashpot starts at rest).
+    const double rate = dt > 0.0 ? (elongation - state.elongation[ue]) / dt : 0.0;
+    const double force = p.stiffness * elongation + p.damping * rate;  // eq. SP-2
+    // The work of the force over the step, trapezoidal in the elongation (eq. SP-3).
+    const double work = 0.5 * (state.force[ue] + force) * (elongation - state.elongation[ue]);
+    state.force[ue] = force, state.elongation[ue] = elongation;
+    state.internal_energy[ue] += work;
+    result.internal_energy += work;
+
+    const Vec3 pull = scaled(along, force);  // internal force: -pull at node 1, +pull at node 2
+    subtract_internal(nodes, static_cast<std::size_t>(n[0]), scaled(pull, -1.0));
+    subtract_internal(nodes, static_cast<std::size_t>(n[1]), pull);
+    if (recording) {
+      record_load(state.records.load_at(ue, 0), scaled(pull, -1.0));
+      record_load(state.records.load_at(ue, 1), pull);
+    }
+    if (!std::isfinite(force)) result.non_finite = e;
+    const bool broken = elongation < p.delta_min || elongation > p.delta_max;  // eq. SP-5
+    close_element(state, result, e, step, broken);
+  }
+  return result;
+}
+
+}  // namespace crumple

@@ -1,0 +1,111 @@
+// Springs (/PROP/TYPE4, docs/theory/spring.md) and Rayleigh damping (/DAMP, docs/theory/damping.md) against the
+// one-degree-of-freedom oscillator: node 1 fixed, node 2 (mass m = M/2 + the added mass) on a spring of stiffness K
+// along y, released with velocity v0. Undamped: y(t) = (v0 / w) sin(w t), w = sqrt(K / m). Under /DAMP alpha:
+// y(t) = (v0 / wd) exp(-alpha t / 2) sin(wd t), wd = sqrt(w^2 - alpha^2 / 4).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "verification_support.hpp"
+
+namespace crumple::verification::test_spring {
+namespace {
+
+constexpr double kStiffness = 1000.0;  // K [N/m]
+constexpr double kSpringMass = 1.0;    // M [kg]: the element step sqrt(M/K) is short against the period
+constexpr double kAddedMass = 99.5;    // at node 2: m = 100 kg, w = sqrt(10) rad/s
+constexpr double kMass = 0.5 * kSpringMass + kAddedMass;
+constexpr double kV0 = 1.0;            // [m/s]
+
+std::string oscillator(double alpha, double damping_c = 0.0) {
+  std::string s = node_cards({{1, 0.0, 0.0, 0.0}, {2, 0.0, 1.0, 0.0}});
+  s += "/SPRING/1\n" + I(1) + I(1) + I(2) + "\n/PART/1\nspring\n" + I(1) + I(0) + "\n";
+  s += "/PROP/SPRING/1\nspring\n" + R(kSpringMass) + "\n" + R(kStiffness) + R(damping_c) + "\n" + I(0) + "\n" +
+       R(0.0) + "\n";
+  s += node_group(1, {1}) + node_group(2, {2}) + node_group(3, {1, 2});
+  s += boundary_condition(1, "111 111", 1) + boundary_condition(2, "101 111", 2);
+  s += added_mass(1, kAddedMass, 2) + initial_velocity(1, 0.0, kV0, 0.0, 2);
+  if (alpha > 0.0) s += "/DAMP/1\ndamping\n" + R(alpha) + R(0.0) + I(3) + "\n";
+  return s;
+}
+
+struct Trace {
+  std::vector<double> t, y, v;  // node 2's displacement y^(n+1) and velocity v^(n+1/2) after cycle n
+};
+
+Trace run(const test::TempDir& dir, double alpha, double end_time, double damping_c = 0.0) {
+  Trace trace;
+  run_deck(dir, oscillator(alpha, damping_c), end_time, 1e-9, [&](const Model& m, const SolverState& s) {
+    trace.t.push_back(s.time);
+    trace.y.push_back(s.nodes.y[node_index(m, 2)] - 1.0);
+    trace.v.push_back(s.nodes.vy[node_index(m, 2)]);
+  });
+  return trace;
+}
+
+// The times of the positive peaks of y, by a parabola through the three samples around each.
+std::vector<std::pair<double, double>> peaks(const Trace& tr) {
+  std::vector<std::pair<double, double>> out;
+  for (std::size_t k = 1; k + 1 < tr.y.size(); ++k) {
+    if (!(tr.y[k] > tr.y[k - 1] && tr.y[k] >= tr.y[k + 1] && tr.y[k] > 0.0)) continue;
+    const double h = tr.t[k] - tr.t[k - 1], a = tr.y[k - 1], b = tr.y[k], c = tr.y[k + 1];
+    const double shift = 0.5 * h * (a - c) / (a - 2.0 * b + c);
+    out.push_back({tr.t[k] + shift, b - 0.25 * (a - c) * shift / h});
+  }
+  return out;
+}
+
+}  // namespace
+
+// The period 2 pi / w within 0.2 % (central differences at w dt = 0.09 shorten it by (w dt)^2 / 24 = 0.03 %), the
+// amplitude v0 / w within 0.5 %, and the energy the central difference scheme keeps exactly for a linear
+// oscillator, m (v^(n+1/2))^2 / 2 + K y^n y^(n+1) / 2, to 1e-9 over five periods (the listing's internal and kinetic
+// energies, half a step apart, oscillate by about w dt / 2 = 4.5 % around it at this step).
+TEST(Spring, OscillatorPeriodAmplitudeAndEnergy) {
+  test::TempDir dir;
+  const double w = std::sqrt(kStiffness / kMass);
+  const Trace tr = run(dir, 0.0, 5.0 * 2.0 * M_PI / w);
+  const auto p = peaks(tr);
+  ASSERT_GE(p.size(), 4u);
+  const double period = (p.back().first - p.front().first) / static_cast<double>(p.size() - 1);
+  EXPECT_NEAR(period, 2.0 * M_PI / w, 0.002 * 2.0 * M_PI / w);
+  for (const auto& [t, y] : p) EXPECT_NEAR(y, kV0 / w, 0.005 * kV0 / w) << "peak at t = " << t;
+  // From the second cycle on (the first is the half step from t = 0), at the constant step (not the last, shortened
+  // to the end time).
+  auto shadow = [&](std::size_t k) { return 0.5 * kMass * tr.v[k] * tr.v[k] + 0.5 * kStiffness * tr.y[k - 1] * tr.y[k]; };
+  const double e1 = shadow(1);
+  EXPECT_NEAR(e1, 0.5 * kMass * kV0 * kV0, 1e-3 * 0.5 * kMass * kV0 * kV0);
+  for (std::size_t k = 2; k + 1 < tr.y.size(); ++k) ASSERT_NEAR(shadow(k), e1, 1e-9 * e1) << "after cycle " << k;
+}
+
+// /DAMP alpha = 0.5: the ratio of successive peaks is exp(-alpha T_d / 2) (0.607 per period) within 1 %, and the
+// damped period 2 pi / wd within 0.2 %.
+TEST(Spring, RayleighMassDampingDecayRate) {
+  test::TempDir dir;
+  constexpr double kAlpha = 0.5;
+  const double w = std::sqrt(kStiffness / kMass), wd = std::sqrt(w * w - 0.25 * kAlpha * kAlpha);
+  const double td = 2.0 * M_PI / wd;
+  const Trace tr = run(dir, kAlpha, 4.0 * td);
+  const auto p = peaks(tr);
+  ASSERT_GE(p.size(), 3u);
+  for (std::size_t k = 1; k < p.size(); ++k) {
+    EXPECT_NEAR(p[k].first - p[k - 1].first, td, 0.002 * td);
+    EXPECT_NEAR(p[k].second / p[k - 1].second, std::exp(-0.5 * kAlpha * td), 0.01 * std::exp(-0.5 * kAlpha * td));
+  }
+}
+
+// The spring's own dashpot C: the same decay with alpha = C / m, since the dashpot acts on node 2 alone.
+TEST(Spring, DashpotDecayRate) {
+  test::TempDir dir;
+  const double c = 0.5 * kMass;  // alpha = 0.5 per second
+  const double w = std::sqrt(kStiffness / kMass), wd = std::sqrt(w * w - 0.25 * (c / kMass) * (c / kMass));
+  const double td = 2.0 * M_PI / wd;
+  const Trace tr = run(dir, 0.0, 4.0 * td, c);
+  const auto p = peaks(tr);
+  ASSERT_GE(p.size(), 3u);
+  for (std::size_t k = 1; k < p.size(); ++k)
+    EXPECT_NEAR(p[k].second / p[k - 1].second, std::exp(-0.5 * (c / kMass) * td),
+                0.01 * std::exp(-0.5 * (c / kMass) * td));
+}
+
+}  // namespace crumple::verification::test_spring
