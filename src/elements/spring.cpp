@@ -21,10 +21,18 @@ GroupStepResult spring_forces(const ElementTable& table, const ElementGroup& gro
   for (std::int32_t e = group.begin; e < group.end; ++e) {
     const auto ue = static_cast<std::size_t>(e);
     if (recording && !(state.deleted[ue] & kElementElsewhere)) state.records.clear(ue);
-    if (state.deleted[ue]) continue;
+    if (state.deleted[ue] & kElementElsewhere) continue;
     const std::int32_t* n = table.nodes_of(ue);
     const Vec3 axis = position(nodes, n[1]) - position(nodes, n[0]);
     const double length = norm(axis);
+    if (state.deleted[ue]) {  // broken last cycle: the work of its last force over the step it acted (eq. SP-5a)
+      if (state.force[ue] != 0.0) {
+        const double work = 0.5 * state.force[ue] * (length - state.length0[ue] - state.elongation[ue]);
+        state.internal_energy[ue] += work, result.internal_energy += work;
+        state.force[ue] = 0.0, state.elongation[ue] = length - state.length0[ue];
+      }
+      continue;
+    }
     if (!(length > 0.0)) {  // the nodes met: no direction left to act along
       result.inverted = e;
       continue;

@@ -259,6 +259,10 @@ void apply_loads(const Model& m, SolverState& s) {
   gather_rigid_body_forces(s);
 }
 
+// Once nothing bounds the step (every element deleted), it grows by a tenth a cycle, as the reference's does
+// (docs/theory/time-step.md, "No stable step").
+constexpr double kStepGrowthWithoutBound = 1.1;
+
 double choose_time_step(const Model& m, SolverState& s, RunEvents& events, StepBound& bound) {
   const RunControl& rc = m.run;
   if (rc.dt_nodal_cst.given) {
@@ -292,7 +296,7 @@ double choose_time_step(const Model& m, SolverState& s, RunEvents& events, StepB
       events.stop.kind = StopReason::Kind::NoStableStep, events.stop.cycle = 0, events.stop.time = s.time;
       return bound.dt;
     }
-    bound.dt = s.dt;
+    bound.dt = kStepGrowthWithoutBound * s.dt;
     bound.control.source = StepControl::Source::LastStep;
   }
   if (rc.dt.minimum > 0.0 && bound.dt < rc.dt.minimum) {
