@@ -46,6 +46,10 @@ double step_scale(const RunControl& run);
 // work on the step's velocities into the external work (eq. D-4).
 double damping_step_factor(const Model& model, const SolverState& state, double dt);
 void apply_damping(const Model& model, SolverState& state, double dt_average);
+// Stiffness damping (a beta > 0): sizes its node arrays (setup, and when an engine deck sets a beta); after the
+// elements' forces, each damped node's -beta times their rate over the last step (eq. D-5).
+void setup_damping(const Model& model, SolverState& state);
+void stiffness_damping_forces(const Model& model, SolverState& state);
 void add_damping_work(const Model& model, const SolverState& state, const VelocityScratch& scratch, double dt_average,
                       ExactSum& work);
 

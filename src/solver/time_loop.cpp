@@ -75,8 +75,11 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunObse
   s.reducer = Reducer(options.exchange);
   if (options.resume == nullptr) switch_rigid_bodies(m, s);  // a resumed state has them switched already
   if (options.resume == nullptr) start_velocity_links(m, s);  // the links act on the velocities the deck starts with
-  for (const DampingChange& change : m.run.damping_changes)  // engine /DAMP: from this deck on
-    s.damping_alpha[static_cast<std::size_t>(change.damping)] = change.alpha;
+  for (const DampingChange& change : m.run.damping_changes) {  // engine /DAMP: from this deck on
+    s.damping.alpha[static_cast<std::size_t>(change.damping)] = change.alpha;
+    s.damping.beta[static_cast<std::size_t>(change.damping)] = change.beta;
+  }
+  setup_damping(m, s);
   const bool selective = selective_mass_on(m);
   if (!selective) s.selective_mass = SelectiveMassState{}, s.contact.selective_mass_added = nullptr;  // after one with it
   update_energies(m, s);  // for the listing's row of cycle 0
@@ -106,6 +109,7 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunObse
     if (body_sensors) switch_rigid_bodies_by_sensors(m, s);
     bool elements_deleted = false;
     StepBound bound = compute_element_forces(m, s, events, elements_deleted, options.exchange);
+    stiffness_damping_forces(m, s);
     if (carried.dt < bound.dt) bound.dt = carried.dt, bound.control = carried.control;  // RB-6
     const double element_step = bound.dt;
     keep(bound);

@@ -119,9 +119,9 @@ TEST(SpringKeywords, DampingStarterAndEngine) {
   EXPECT_DOUBLE_EQ(deck.model.run.damping_changes[0].alpha, 40.0);
 }
 
-TEST(SpringKeywords, DampingRefusesBetaSkewsAndDirections) {
+TEST(SpringKeywords, DampingRefusesSkewsAndDirections) {
   SpringDeck d;
-  d.extra = "/DAMP/3\nrayleigh\n" + R(4.0) + R(0.01) + I(40) + "\n";
+  d.extra = "/DAMP/3\nrayleigh\n" + R(4.0) + R(-0.01) + I(40) + "\n";
   EXPECT_NE(error_of(d).find("beta"), std::string::npos) << error_of(d);
   d.extra = "/DAMP/3\nrayleigh\n" + R(4.0) + R(0.0) + I(40) + I(2) + "\n";
   EXPECT_NE(error_of(d).find("skew_ID"), std::string::npos) << error_of(d);
@@ -131,7 +131,8 @@ TEST(SpringKeywords, DampingRefusesBetaSkewsAndDirections) {
   EXPECT_NE(error_of(d).find("grnod_ID"), std::string::npos) << error_of(d);
   d.extra = "/DAMP/3\nrayleigh\n" + R(4.0) + R(0.0) + I(40) + "\n";
   EXPECT_NE(error_of(d, "/RUN/T/1\n1.0\n/DAMP/4\n40 0\n").find("damp_ID"), std::string::npos);
-  EXPECT_NE(error_of(d, "/RUN/T/1\n1.0\n/DAMP/3\n40 0.1\n").find("beta"), std::string::npos);
+  EXPECT_NE(error_of(d, "/RUN/T/1\n1.0\n/DAMP/3\n40 -0.1\n").find("beta"), std::string::npos);
+  EXPECT_NE(error_of(d, "/RUN/T/1\n1.0\n/DAMP/3\n40 0.1 0.5\n").find("alpha, beta"), std::string::npos);
 }
 
 }  // namespace test_spring_keywords

@@ -18,7 +18,7 @@ constexpr double kAddedMass = 99.5;    // at node 2: m = 100 kg, w = sqrt(10) ra
 constexpr double kMass = 0.5 * kSpringMass + kAddedMass;
 constexpr double kV0 = 1.0;            // [m/s]
 
-std::string oscillator(double alpha, double damping_c = 0.0) {
+std::string oscillator(double alpha, double damping_c = 0.0, double beta = 0.0) {
   std::string s = node_cards({{1, 0.0, 0.0, 0.0}, {2, 0.0, 1.0, 0.0}});
   s += "/SPRING/1\n" + I(1) + I(1) + I(2) + "\n/PART/1\nspring\n" + I(1) + I(0) + "\n";
   s += "/PROP/SPRING/1\nspring\n" + R(kSpringMass) + "\n" + R(kStiffness) + R(damping_c) + "\n" + I(0) + "\n" +
@@ -26,7 +26,7 @@ std::string oscillator(double alpha, double damping_c = 0.0) {
   s += node_group(1, {1}) + node_group(2, {2}) + node_group(3, {1, 2});
   s += boundary_condition(1, "111 111", 1) + boundary_condition(2, "101 111", 2);
   s += added_mass(1, kAddedMass, 2) + initial_velocity(1, 0.0, kV0, 0.0, 2);
-  if (alpha > 0.0) s += "/DAMP/1\ndamping\n" + R(alpha) + R(0.0) + I(3) + "\n";
+  if (alpha > 0.0 || beta > 0.0) s += "/DAMP/1\ndamping\n" + R(alpha) + R(beta) + I(3) + "\n";
   return s;
 }
 
@@ -34,9 +34,9 @@ struct Trace {
   std::vector<double> t, y, v;  // node 2's displacement y^(n+1) and velocity v^(n+1/2) after cycle n
 };
 
-Trace run(const test::TempDir& dir, double alpha, double end_time, double damping_c = 0.0) {
+Trace run(const test::TempDir& dir, double alpha, double end_time, double damping_c = 0.0, double beta = 0.0) {
   Trace trace;
-  run_deck(dir, oscillator(alpha, damping_c), end_time, 1e-9, [&](const Model& m, const SolverState& s) {
+  run_deck(dir, oscillator(alpha, damping_c, beta), end_time, 1e-9, [&](const Model& m, const SolverState& s) {
     trace.t.push_back(s.time);
     trace.y.push_back(s.nodes.y[node_index(m, 2)] - 1.0);
     trace.v.push_back(s.nodes.vy[node_index(m, 2)]);
@@ -113,6 +113,24 @@ TEST(Spring, DashpotDecayRate) {
   for (std::size_t k = 1; k < p.size(); ++k)
     EXPECT_NEAR(p[k].second / p[k - 1].second, std::exp(-0.5 * (c / kMass) * td),
                 0.01 * std::exp(-0.5 * (c / kMass) * td));
+}
+
+// /DAMP beta = 0.05 (stiffness damping, D-5): the fraction of critical damping zeta = beta w / 2 = 0.079, peaks in
+// the ratio exp(-zeta w T_d) per damped period T_d = 2 pi / (w sqrt(1 - zeta^2)), within 1 % (the force follows the
+// elements' force rate over the last step, an O(w dt) lag at w dt = 0.09).
+TEST(Spring, RayleighStiffnessDampingDecayRate) {
+  test::TempDir dir;
+  constexpr double kBeta = 0.05;
+  const double w = std::sqrt(kStiffness / kMass), zeta = 0.5 * kBeta * w;
+  const double td = 2.0 * M_PI / (w * std::sqrt(1.0 - zeta * zeta));
+  const Trace tr = run(dir, 0.0, 4.0 * td, 0.0, kBeta);
+  const auto p = peaks(tr);
+  ASSERT_GE(p.size(), 3u);
+  const double expected = std::exp(-zeta * w * td);
+  for (std::size_t k = 1; k < p.size(); ++k) {
+    std::printf("stiffness damping peak ratio relative %.2e\n", p[k].second / p[k - 1].second / expected - 1.0);
+    EXPECT_NEAR(p[k].second / p[k - 1].second, expected, 0.01 * expected);
+  }
 }
 
 }  // namespace crumple::verification::test_spring

@@ -10,7 +10,7 @@ struct RayleighDamping {
   SourceLocation where;
   std::int64_t user_id = 0;
   double alpha = 0.0;  // mass-proportional coefficient, every degree of freedom [1/T] (eq. D-1)
-  double beta = 0.0;   // stiffness-proportional coefficient [T]; the reader refuses a non-zero one
+  double beta = 0.0;   // stiffness-proportional coefficient [T] (eq. D-5)
   std::int64_t node_group_id = 0;
   std::int32_t node_group = -1;  // dense index (model build)
   double start = 0.0, stop = 1e30;  // it acts for start <= t <= stop [T]

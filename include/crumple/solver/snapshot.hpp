@@ -167,7 +167,8 @@ void visit_state(V& v, SolverState& s, ResumeMarks& marks) {
   visit_shells(v, "shells3/", s.shells3);
   visit_bricks(v, "bricks/", s.bricks);
   visit_springs(v, "springs/", s.springs);
-  v("damping_alpha", s.damping_alpha);
+  v("damping/alpha", s.damping.alpha), v("damping/beta", s.damping.beta);
+  if (s.damping.stiffness()) v("damping/element_force_before", s.damping.element_force_before);
   for (std::size_t k = 0; k < s.bodies.size(); ++k) visit_body(v, "bodies/" + std::to_string(k) + "/", s.bodies[k]);
   for (std::size_t k = 0; k < s.walls.size(); ++k) visit_wall(v, "walls/" + std::to_string(k) + "/", s.walls[k]);
   for (std::size_t k = 0; k < s.contact.interfaces.size(); ++k)

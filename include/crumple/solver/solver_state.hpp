@@ -7,6 +7,7 @@
 
 #include "crumple/core/vec3.hpp"
 #include "crumple/state/contact_state.hpp"
+#include "crumple/state/damping_state.hpp"
 #include "crumple/elements/brick8.hpp"
 #include "crumple/elements/shell4.hpp"
 #include "crumple/elements/spring.hpp"
@@ -40,7 +41,7 @@ struct SolverState {
   ContactState contact;                             // TYPE7 interfaces (empty without /INTER/TYPE7)
   SelectiveMassState selective_mass;                // /DT/AMS (empty without it)
   std::vector<std::int32_t> rigid_owner;           // per node: rigid body index, -1 when none
-  std::vector<double> damping_alpha;  // per /DAMP: the mass coefficient the engine deck runs with [1/T] (D-1)
+  DampingState damping;  // /DAMP (empty without it)
   std::vector<SkewAxes> skew_axes;                  // per skew of the model: its axes at the current positions (SK-3)
   double time = 0.0;
   double dt = 0.0;        // step of the last position update dt^(n-1/2) [T]

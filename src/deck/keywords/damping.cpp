@@ -38,8 +38,7 @@ void read_damping(CardReader& reader, DeckContext& context) {
   d.alpha = line.real(1, 20, "alpha", dim::rate);
   d.beta = line.real(21, 20, "beta", dim::time);
   if (d.alpha < 0.0) line.fail(1, 20, "alpha", "a non-negative mass damping coefficient");
-  if (d.beta != 0.0)
-    context.unsupported(line.error(21, 20, "beta", default_only("stiffness-proportional damping (beta) is")));
+  if (d.beta < 0.0) line.fail(21, 20, "beta", "a non-negative stiffness damping coefficient");
   d.node_group_id = line.id(41, 10, "grnod_ID", IdKind::Other);
   if (d.node_group_id <= 0) line.fail(41, 10, "grnod_ID", "a positive node group id");
   if (line.optional_id(51, 10, "skew_ID") != 0)
@@ -67,10 +66,8 @@ void read_engine_damping(CardReader& reader, DeckContext& context) {
   change.beta = line.token_real(1, "beta", dim::none, 0.0);
   if (change.alpha < 0.0) line.fail_value("alpha (value 1)", "a non-negative mass damping coefficient",
                                           fmt::format("{}", change.alpha));
-  if (change.beta != 0.0)
-    context.unsupported(DeckError(line.where(), reader.card().keyword, "beta (value 2)",
-                                  default_only("stiffness-proportional damping (beta) is"),
-                                  fmt::format("{}", change.beta)));
+  if (change.beta < 0.0) line.fail_value("beta (value 2)", "a non-negative stiffness damping coefficient",
+                                        fmt::format("{}", change.beta));
   reader.finish();
   context.model.run.damping_changes.push_back(change);
 }
