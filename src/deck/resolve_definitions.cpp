@@ -326,6 +326,9 @@ void resolve_definitions(Resolver& r) {
   m.formulations.clear();
   for (const Property& p : m.properties) m.formulations.push_back(formulation_of(r, p));
   check_shell_formulations(r);
+  for (Property& p : m.properties)
+    if (p.kind == PropertyKind::Spring && p.spring.function_id != 0)
+      p.spring.function = r.find(m.index.functions, p.spring.function_id, p.where, keyword_of(p), "fct_ID11", "function");
   for (Material& mat : m.materials) {
     if (mat.law != MaterialLaw::Tabulated) continue;
     const std::string keyword = fmt::format("/MAT/PLAS_TAB/{}", mat.user_id);

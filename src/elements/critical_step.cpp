@@ -50,7 +50,7 @@ double initial_element_time_step(const Model& model, ElementKind kind, std::size
       }
       return geometry::brick_characteristic_length(p) / speed;
     }
-    case ElementKind::Spring: return spring_critical_step(spring_parameters(property.spring));  // eq. SP-4
+    case ElementKind::Spring: return spring_critical_step(spring_parameters(property.spring, model.functions));
   }
   return 0.0;
 }

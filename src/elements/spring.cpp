@@ -1,6 +1,7 @@
 // Springs of one translational degree of freedom, /PROP/TYPE4 (docs/theory/spring.md, eq. SP-1 to SP-4).
 #include "crumple/elements/spring.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace crumple {
@@ -12,6 +13,23 @@ Vec3 position(const NodalState& n, std::int32_t k) {
 }
 
 }  // namespace
+
+SpringGroupParameters spring_parameters(const SpringSection& s, const std::vector<Function>& functions) {
+  SpringGroupParameters p{s.mass, s.stiffness, s.damping, s.delta_min, s.delta_max};
+  p.step_stiffness = s.stiffness;
+  if (s.function < 0) return p;
+  p.function = &functions[static_cast<std::size_t>(s.function)];
+  p.function_scale = s.function_scale, p.abscissa_scale = s.abscissa_scale;
+  // eq. SP-4b: the steepest segment of A f(delta / Ascale), if steeper than K (measured on the reference: a function
+  // of slopes 4000, 2000 and 4020 steps as 4020; K 5000 beside a slope of 2000 as 5000; A 2 doubles it, Ascale 2
+  // halves it).
+  const std::vector<double>& x = p.function->x;
+  const std::vector<double>& y = p.function->y;
+  for (std::size_t k = 1; k < x.size(); ++k)
+    p.step_stiffness = std::max(p.step_stiffness,
+                                std::abs(y[k] - y[k - 1]) / (x[k] - x[k - 1]) * p.function_scale / p.abscissa_scale);
+  return p;
+}
 
 GroupStepResult spring_forces(const ElementTable& table, const ElementGroup& group, const SpringGroupParameters& p,
                               NodalState& nodes, SpringState& state, double dt) {
@@ -41,7 +59,9 @@ GroupStepResult spring_forces(const ElementTable& table, const ElementGroup& gro
     const double elongation = length - state.length0[ue];  // eq. SP-1
     // The elongation rate over the last step (none before the first: the reference's dashpot starts at rest).
     const double rate = dt > 0.0 ? (elongation - state.elongation[ue]) / dt : 0.0;
-    const double force = p.stiffness * elongation + p.damping * rate;  // eq. SP-2
+    const double elastic = p.function != nullptr ? p.function_scale * (*p.function)(elongation / p.abscissa_scale)
+                                                 : p.stiffness * elongation;  // eq. SP-2b, SP-2
+    const double force = elastic + p.damping * rate;
     // The work of the force over the step, trapezoidal in the elongation (eq. SP-3).
     const double work = 0.5 * (state.force[ue] + force) * (elongation - state.elongation[ue]);
     state.force[ue] = force, state.elongation[ue] = elongation;

@@ -17,7 +17,7 @@ void setup_springs(const Model& m, SolverState& s) {
   for (std::size_t g = 0; g < m.element_groups.size(); ++g) {
     const ElementGroup& group = m.element_groups[g];
     if (group.kind != ElementKind::Spring) continue;
-    s.spring_groups[g] = spring_parameters(m.properties[static_cast<std::size_t>(group.property)].spring);
+    s.spring_groups[g] = spring_parameters(m.properties[static_cast<std::size_t>(group.property)].spring, m.functions);
     for (std::int32_t e = group.begin; e < group.end; ++e) {
       const auto ue = static_cast<std::size_t>(e);
       st.length0[ue] = element_measure(m.nodes, ElementKind::Spring, table.nodes_of(ue));

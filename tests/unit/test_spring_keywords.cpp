@@ -64,6 +64,24 @@ TEST(SpringKeywords, ReadsTheSpringItsPropertyAndItsMass) {
   EXPECT_NEAR(initial_element_time_step(m, ElementKind::Spring, 0), 2.0 / (std::sqrt(2400.0) + 20.0), 1e-15);
 }
 
+TEST(SpringKeywords, ForceFunctionWithItsScales) {
+  test::TempDir dir;
+  SpringDeck d;
+  d.line2 = R(10.0) + R(0.0) + R(2.0);  // K 10 bounds the step only; A 2
+  d.line3 = I(8);
+  d.line4 = R(0.0) + R(0.0) + R(0.5);  // Ascale 0.5
+  d.extra = "/FUNCT/8\nforce\n" + R(-1.0) + R(-4000.0) + "\n" + R(0.0) + R(0.0) + "\n" + R(0.01) + R(20.0) + "\n" +
+            R(1.0) + R(4000.0) + "\n";
+  const Model m = read_deck(starter(dir, d)).model;
+  const SpringSection& s = m.properties[0].spring;
+  EXPECT_EQ(s.function, 0);
+  EXPECT_DOUBLE_EQ(s.function_scale, 2.0);
+  EXPECT_DOUBLE_EQ(s.abscissa_scale, 0.5);
+  // eq. SP-4b: the steepest segment, (4000 - 20) / 0.99 = 4020.2, times A / Ascale = 4
+  const double k = 4.0 * 3980.0 / 0.99;
+  EXPECT_NEAR(initial_element_time_step(m, ElementKind::Spring, 0), 2.0 / std::sqrt(2.0 * k), 1e-12);
+}
+
 TEST(SpringKeywords, BlankFailureElongationsNeverBreak) {
   test::TempDir dir;
   const Model m = read_deck(starter(dir, SpringDeck{})).model;
@@ -76,8 +94,11 @@ TEST(SpringKeywords, RefusedOptionsNameTheirField) {
   d.line1 = R(0.0);
   EXPECT_NE(error_of(d).find("Mass"), std::string::npos) << error_of(d);
   d = SpringDeck{};
-  d.line3 = I(5);
+  d.line3 = I(5);  // no /FUNCT/5
   EXPECT_NE(error_of(d).find("fct_ID11"), std::string::npos) << error_of(d);
+  d = SpringDeck{};
+  d.line3 = I(0) + I(0) + I(6);
+  EXPECT_NE(error_of(d).find("fct_ID21"), std::string::npos) << error_of(d);
   d = SpringDeck{};
   d.line3 = I(0) + I(1);
   EXPECT_NE(error_of(d).find("field H"), std::string::npos) << error_of(d);

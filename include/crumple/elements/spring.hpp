@@ -4,6 +4,7 @@
 
 #include "crumple/elements/group_result.hpp"
 #include "crumple/model/elements.hpp"
+#include "crumple/model/functions.hpp"
 #include "crumple/state/nodal_state.hpp"
 #include "crumple/state/spring_state.hpp"
 
@@ -15,17 +16,18 @@ struct SpringGroupParameters {
   double stiffness = 0.0;  // K [F/L]
   double damping = 0.0;    // C [F T/L]
   double delta_min = -1e30, delta_max = 1e30;  // the elongations that break it [L]
+  const Function* function = nullptr;  // fct_ID11: the force A f(delta / Ascale) (eq. SP-2b); none: K delta
+  double function_scale = 1.0, abscissa_scale = 1.0;  // A [F], Ascale [L]
+  double step_stiffness = 0.0;  // the stiffness of the step: K, or the function's steepest slope if larger (SP-4b)
 };
 
-// The group parameters of a /PROP/TYPE4 section.
-inline SpringGroupParameters spring_parameters(const SpringSection& s) {
-  return {s.mass, s.stiffness, s.damping, s.delta_min, s.delta_max};
-}
+// The group parameters of a /PROP/TYPE4 section (`functions`: the model's).
+SpringGroupParameters spring_parameters(const SpringSection& s, const std::vector<Function>& functions);
 
-// The critical step of a spring of mass M, stiffness K and damping C (eq. SP-4): the step of its two half masses
-// joined by the spring and the dashpot, M / (sqrt(K M + C^2) + C).
+// The critical step of a spring of mass M, stiffness k and damping C (eq. SP-4): the step of its two half masses
+// joined by the spring and the dashpot, M / (sqrt(k M + C^2) + C).
 inline double spring_critical_step(const SpringGroupParameters& p) {
-  return p.mass / (std::sqrt(p.stiffness * p.mass + p.damping * p.damping) + p.damping);
+  return p.mass / (std::sqrt(p.step_stiffness * p.mass + p.damping * p.damping) + p.damping);
 }
 
 // Computes the force of the group's springs at the current positions (velocities at mid-step), subtracts it from

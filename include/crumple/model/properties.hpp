@@ -51,11 +51,16 @@ struct SolidSection {  // /PROP/TYPE14 (= /PROP/SOLID), the values as written (0
 };
 
 // /PROP/TYPE4 (= /PROP/SPRING): a one-degree-of-freedom spring along its two nodes (docs/theory/spring.md). The
-// reader refuses the options Crumple lacks (functions, hardening, sensors, rate effects, input per unit length).
+// reader refuses the options Crumple lacks (hardening, sensors, rate effects, input per unit length).
 struct SpringSection {
   double mass = 0.0;       // M, the spring's mass, half at each node [M]; > 0 (the reference refuses 0)
-  double stiffness = 0.0;  // K, the linear loading and unloading stiffness [F/L]
+  double stiffness = 0.0;  // K, the linear loading and unloading stiffness [F/L]; with a function, its step only
   double damping = 0.0;    // C, the viscous damping [F T/L]
+  // fct_ID11: the force A f(delta / Ascale) of a nonlinear elastic spring (H 0), eq. SP-2b; 0: K delta.
+  std::int64_t function_id = 0;
+  std::int32_t function = -1;  // dense index (model build)
+  double function_scale = 1.0;     // A, times the input force unit [F]
+  double abscissa_scale = 1.0;     // Ascale, in the input length unit [L]
   double delta_min = -1e30, delta_max = 1e30;  // the elongations that break it (0 or blank: never) [L]
 };
 

@@ -200,14 +200,9 @@ void read_spring_mass_and_stiffness(CardReader& reader, DeckContext& context, Sp
   s.damping = second.real(21, 20, "C", dim::viscous_damping);
   if (s.stiffness < 0.0) second.fail(1, 20, "K", "a non-negative stiffness");
   if (s.damping < 0.0) second.fail(21, 20, "C", "a non-negative damping");
-  if (!(s.stiffness > 0.0) && !(s.damping > 0.0)) second.fail(1, 40, "K, C", "a stiffness or a damping (or both)");
-  // A scales the force function only: the reference prints A = 1 for a spring without one (measured, /PROP/SPRING
-  // with K 1000 and A 2: the same energies as A 1), so a linear spring ignores it, as the reference does.
+  // A scales the function fct_ID11 (read_spring_law checks it against one); blank or 0: 1.
   const double a = second.real(41, 20, "A", dim::none);
-  if (a != 0.0 && a != 1.0)
-    context.note(second.where(), reader.card().keyword, "A (columns 41-60)",
-                 "the function scale factor acts on fct_ID11 only; a linear spring ignores it, as the reference does",
-                 SkipKind::Unsupported);
+  s.function_scale = (a == 0.0 ? 1.0 : a) * reader.units().factor(dim::force);
   spring_default_only(second, context, 61, 20, "B", second.real(61, 20, "B", dim::none), 0.0,
                       "the logarithmic rate effect is");
   spring_default_only(second, context, 81, 20, "D", second.real(81, 20, "D", dim::none), 1.0,
@@ -217,9 +212,16 @@ void read_spring_mass_and_stiffness(CardReader& reader, DeckContext& context, Sp
 // Line 3: fct_ID11, H, fct_ID21, fct_ID31, fct_ID41, delta_min, delta_max. Line 4: F, E, Ascale, Hscale.
 void read_spring_law(CardReader& reader, DeckContext& context, SpringSection& s) {
   const Line third = reader.next("fct_ID11, H, fct_ID21, fct_ID31, fct_ID41, delta_min, delta_max");
-  for (const auto& [column, name] : {std::pair{1, "fct_ID11"}, {21, "fct_ID21"}, {31, "fct_ID31"}, {41, "fct_ID41"}})
+  s.function_id = third.optional_id(1, 10, "fct_ID11", IdKind::Other);
+  for (const auto& [column, name] : {std::pair{21, "fct_ID21"}, {31, "fct_ID31"}, {41, "fct_ID41"}})
     if (third.optional_id(column, 10, name, IdKind::Other) != 0)
-      context.unsupported(third.error(column, 10, name, default_only("a spring force given by a function is")));
+      context.unsupported(third.error(column, 10, name, default_only("an unloading or rate function (with H or B) is")));
+  // A scales the function only: the reference prints A = 1 for a spring without one (measured, /PROP/SPRING with
+  // K 1000 and A 2: the same energies as A 1), so a linear spring ignores it, as the reference does.
+  if (s.function_id == 0 && s.function_scale != reader.units().factor(dim::force))
+    context.note(third.where(), reader.card().keyword, "A (line 2, columns 41-60)",
+                 "the function scale factor acts on fct_ID11 only; a linear spring ignores it, as the reference does",
+                 SkipKind::Unsupported);
   spring_default_only(third, context, 11, 10, "H", static_cast<double>(third.integer(11, 10, "H")), 0.0,
                       "a hardening spring (H 1 to 8; Crumple's TYPE4 spring is linear elastic) is");
   const double low = third.real(61, 20, "delta_min", dim::length);
@@ -234,8 +236,9 @@ void read_spring_law(CardReader& reader, DeckContext& context, SpringSection& s)
                       "the rate effect's velocity scale (with B or a function) is");
   spring_default_only(fourth, context, 21, 20, "E", fourth.real(21, 20, "E", dim::none), 1.0,
                       "the rate effect's factor E (with a function) is");
-  spring_default_only(fourth, context, 41, 20, "Ascale", fourth.real(41, 20, "Ascale", dim::none), 1.0,
-                      "the abscissa scale of fct_ID11 (with a function) is");
+  const double ascale = fourth.real(41, 20, "Ascale", dim::none);
+  if (ascale < 0.0) fourth.fail(41, 20, "Ascale", "a positive abscissa scale (0 or blank: 1)");
+  s.abscissa_scale = (ascale == 0.0 ? 1.0 : ascale) * reader.units().factor(dim::length);
   spring_default_only(fourth, context, 61, 20, "Hscale", fourth.real(61, 20, "Hscale", dim::none), 1.0,
                       "the ordinate scale of the hardening functions (with H) is");
 }
@@ -245,6 +248,9 @@ void read_spring_property(CardReader& reader, DeckContext& context) {
   Property p = begin_property(reader, PropertyKind::Spring);
   read_spring_mass_and_stiffness(reader, context, p.spring);
   read_spring_law(reader, context, p.spring);
+  if (!(p.spring.stiffness > 0.0) && !(p.spring.damping > 0.0) && p.spring.function_id == 0)
+    throw DeckError(p.where, reader.card().keyword, "K, C, fct_ID11", "a stiffness, a damping or a force function",
+                    "none of them");
   reader.finish();
   context.model.properties.push_back(std::move(p));
 }
