@@ -326,9 +326,22 @@ void resolve_definitions(Resolver& r) {
   m.formulations.clear();
   for (const Property& p : m.properties) m.formulations.push_back(formulation_of(r, p));
   check_shell_formulations(r);
-  for (Property& p : m.properties)
-    if (p.kind == PropertyKind::Spring && p.spring.function_id != 0)
-      p.spring.function = r.find(m.index.functions, p.spring.function_id, p.where, keyword_of(p), "fct_ID11", "function");
+  for (Property& p : m.properties) {
+    if (p.kind != PropertyKind::Spring || p.spring.function_id == 0) continue;
+    p.spring.function = r.find(m.index.functions, p.spring.function_id, p.where, keyword_of(p), "fct_ID11", "function");
+    // H 1: the yield force is the curve's in both directions (SP-6), as the reference runs a curve that is odd about 0;
+    // the reference's answer to another curve is not Crumple's.
+    if (p.spring.hardening != 1 || p.spring.function < 0) continue;
+    const Function& f = m.functions[static_cast<std::size_t>(p.spring.function)];
+    for (double x : f.x)
+      if (std::abs(f(-x) + f(x)) > 1e-9 * (std::abs(f(x)) + 1.0)) {
+        r.context.unsupported(DeckError(p.where, keyword_of(p), "fct_ID11",
+                                        "a yield curve odd about 0, f(-x) = -f(x), for isotropic hardening (H 1; "
+                                        "another curve is not supported by Crumple)",
+                                        fmt::format("f({:g}) = {:g}, f({:g}) = {:g}", x, f(x), -x, f(-x))));
+        break;
+      }
+  }
   for (Material& mat : m.materials) {
     if (mat.law != MaterialLaw::Tabulated) continue;
     const std::string keyword = fmt::format("/MAT/PLAS_TAB/{}", mat.user_id);

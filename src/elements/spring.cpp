@@ -20,6 +20,7 @@ SpringGroupParameters spring_parameters(const SpringSection& s, const std::vecto
   if (s.function < 0) return p;
   p.function = &functions[static_cast<std::size_t>(s.function)];
   p.function_scale = s.function_scale, p.abscissa_scale = s.abscissa_scale;
+  p.hardening = s.hardening;
   // eq. SP-4b: the steepest segment of A f(delta / Ascale), if steeper than K (measured on the reference: a function
   // of slopes 4000, 2000 and 4020 steps as 4020; K 5000 beside a slope of 2000 as 5000; A 2 doubles it, Ascale 2
   // halves it).
@@ -29,6 +30,38 @@ SpringGroupParameters spring_parameters(const SpringSection& s, const std::vecto
     p.step_stiffness = std::max(p.step_stiffness,
                                 std::abs(y[k] - y[k - 1]) / (x[k] - x[k - 1]) * p.function_scale / p.abscissa_scale);
   return p;
+}
+
+double spring_elastic_force(const SpringGroupParameters& p, double delta, double before, double force_before,
+                            double& a, double& b) {
+  if (p.function == nullptr) return p.stiffness * delta;  // SP-2
+  if (p.hardening == 0) return spring_curve(p, delta);    // SP-2b
+  if (p.hardening == 1) {
+    // SP-6: elastic at K inside |F| <= g(x); beyond it the force is on the curve, g(x), and x grows by the
+    // elongation the spring makes past the yield force (x = delta on a first loading: the curve itself).
+    const double trial = force_before + p.stiffness * (delta - before);
+    const double yield = spring_curve(p, a);
+    if (std::abs(trial) <= yield) return trial;
+    const double side = trial > 0.0 ? 1.0 : -1.0;
+    const double elastic_part = (side * yield - force_before) / p.stiffness;  // the step's elongation to the yield
+    a += std::max(0.0, std::abs(delta - before) - std::abs(elastic_part));
+    return side * spring_curve(p, a);
+  }
+  // SP-7, H 2: tension and compression each elastic-plastic on their own side of the curve, from their own plastic
+  // elongation (a >= 0 in tension, b <= 0 in compression); no force between the two.
+  if (delta > a) {
+    const double curve = spring_curve(p, delta), elastic = p.stiffness * (delta - a);
+    if (elastic <= curve) return elastic;
+    a = delta - curve / p.stiffness;
+    return curve;
+  }
+  if (delta < b) {
+    const double curve = spring_curve(p, delta), elastic = p.stiffness * (delta - b);
+    if (elastic >= curve) return elastic;
+    b = delta - curve / p.stiffness;
+    return curve;
+  }
+  return 0.0;
 }
 
 GroupStepResult spring_forces(const ElementTable& table, const ElementGroup& group, const SpringGroupParameters& p,
@@ -59,8 +92,9 @@ GroupStepResult spring_forces(const ElementTable& table, const ElementGroup& gro
     const double elongation = length - state.length0[ue];  // eq. SP-1
     // The elongation rate over the last step (none before the first: the reference's dashpot starts at rest).
     const double rate = dt > 0.0 ? (elongation - state.elongation[ue]) / dt : 0.0;
-    const double elastic = p.function != nullptr ? p.function_scale * (*p.function)(elongation / p.abscissa_scale)
-                                                 : p.stiffness * elongation;  // eq. SP-2b, SP-2
+    const double elastic = spring_elastic_force(p, elongation, state.elongation[ue], state.elastic_force[ue],
+                                                state.plastic_a[ue], state.plastic_b[ue]);
+    state.elastic_force[ue] = elastic;
     const double force = elastic + p.damping * rate;
     // The work of the force over the step, trapezoidal in the elongation (eq. SP-3).
     const double work = 0.5 * (state.force[ue] + force) * (elongation - state.elongation[ue]);

@@ -100,8 +100,15 @@ TEST(SpringKeywords, RefusedOptionsNameTheirField) {
   d.line3 = I(0) + I(0) + I(6);
   EXPECT_NE(error_of(d).find("fct_ID21"), std::string::npos) << error_of(d);
   d = SpringDeck{};
-  d.line3 = I(0) + I(1);
+  d.line3 = I(0) + I(4);
   EXPECT_NE(error_of(d).find("field H"), std::string::npos) << error_of(d);
+  d = SpringDeck{};
+  d.line3 = I(0) + I(1);  // a hardening spring without its curve
+  EXPECT_NE(error_of(d).find("fct_ID11"), std::string::npos) << error_of(d);
+  d = SpringDeck{};
+  d.line3 = I(8) + I(1);  // isotropic hardening on a curve that is not odd about 0
+  d.extra = "/FUNCT/8\nyield\n" + R(-1.0) + R(-30.0) + "\n" + R(0.0) + R(0.0) + "\n" + R(1.0) + R(20.0) + "\n";
+  EXPECT_NE(error_of(d).find("odd about 0"), std::string::npos) << error_of(d);
   d = SpringDeck{};
   d.line2 = R(1000.0) + R(0.0) + R(1.0) + R(0.5);
   EXPECT_NE(error_of(d).find("field B"), std::string::npos) << error_of(d);

@@ -19,7 +19,18 @@ struct SpringGroupParameters {
   const Function* function = nullptr;  // fct_ID11: the force A f(delta / Ascale) (eq. SP-2b); none: K delta
   double function_scale = 1.0, abscissa_scale = 1.0;  // A [F], Ascale [L]
   double step_stiffness = 0.0;  // the stiffness of the step: K, or the function's steepest slope if larger (SP-4b)
+  int hardening = 0;            // H: 0 elastic, 1 isotropic (SP-6), 2 uncoupled (SP-7)
 };
+
+// The curve of the spring, g(delta) = A f(delta / Ascale) [F] (eq. SP-2b).
+inline double spring_curve(const SpringGroupParameters& p, double delta) {
+  return p.function_scale * (*p.function)(delta / p.abscissa_scale);
+}
+
+// The spring's force without its dashpot at elongation `delta` from the last cycle's (`before`, `force_before`),
+// updating the hardening state `a`, `b` (eq. SP-2, SP-2b, SP-6, SP-7).
+double spring_elastic_force(const SpringGroupParameters& p, double delta, double before, double force_before,
+                            double& a, double& b);
 
 // The group parameters of a /PROP/TYPE4 section (`functions`: the model's).
 SpringGroupParameters spring_parameters(const SpringSection& s, const std::vector<Function>& functions);

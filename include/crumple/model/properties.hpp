@@ -61,6 +61,7 @@ struct SpringSection {
   std::int32_t function = -1;  // dense index (model build)
   double function_scale = 1.0;     // A, times the input force unit [F]
   double abscissa_scale = 1.0;     // Ascale, in the input length unit [L]
+  int hardening = 0;  // H: 0 elastic (on the function), 1 isotropic, 2 uncoupled (eq. SP-6, SP-7)
   double delta_min = -1e30, delta_max = 1e30;  // the elongations that break it (0 or blank: never) [L]
 };
 

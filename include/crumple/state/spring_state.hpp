@@ -13,10 +13,14 @@ struct SpringState : ElementKindState {  // no integration points: points and ep
   std::vector<double> length0;     // length at t = 0 [L]
   std::vector<double> elongation;  // delta = l - l0, positive in tension [L] (eq. SP-1)
   std::vector<double> force;       // axial force, positive in tension: K delta + C d(delta)/dt [F] (eq. SP-2)
+  std::vector<double> elastic_force;  // the spring's part of it, without the dashpot [F]
+  // Hardening springs (H 1, 2): H 1, the hardening displacement x (SP-6) and 0; H 2, the plastic elongations of the
+  // tension and of the compression side (SP-7) [L].
+  std::vector<double> plastic_a, plastic_b;
 
   void resize_elements(std::size_t n) {
     resize_common(n);
-    for (auto* v : {&length0, &elongation, &force}) v->assign(n, 0.0);
+    for (auto* v : {&length0, &elongation, &force, &elastic_force, &plastic_a, &plastic_b}) v->assign(n, 0.0);
   }
 };
 

@@ -222,8 +222,12 @@ void read_spring_law(CardReader& reader, DeckContext& context, SpringSection& s)
     context.note(third.where(), reader.card().keyword, "A (line 2, columns 41-60)",
                  "the function scale factor acts on fct_ID11 only; a linear spring ignores it, as the reference does",
                  SkipKind::Unsupported);
-  spring_default_only(third, context, 11, 10, "H", static_cast<double>(third.integer(11, 10, "H")), 0.0,
-                      "a hardening spring (H 1 to 8; Crumple's TYPE4 spring is linear elastic) is");
+  s.hardening = static_cast<int>(third.integer(11, 10, "H"));
+  if (s.hardening != 0 && s.hardening != 1 && s.hardening != 2)
+    context.unsupported(third.error(11, 10, "H", "0 (elastic), 1 (isotropic) or 2 (uncoupled) hardening (4 to 8 are "
+                                                 "not supported by Crumple)"));
+  if (s.hardening != 0 && s.function_id == 0)
+    third.fail(1, 10, "fct_ID11", "the yield curve of a hardening spring (H 1, 2)");
   const double low = third.real(61, 20, "delta_min", dim::length);
   const double high = third.real(81, 20, "delta_max", dim::length);
   if (low > 0.0) third.fail(61, 20, "delta_min", "a negative failure elongation (0 or blank: none)");
