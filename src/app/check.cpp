@@ -92,9 +92,8 @@ void print_check_report(const Deck& deck, std::ostream& out) {
              m.units.input[0], m.units.input[1], m.units.input[2], m.units.work[0], m.units.work[1], m.units.work[2]);
   fmt::print(out, "Counts\n");
   fmt::print(out, "  nodes                 {}\n", m.nodes.size());
-  fmt::print(out, "  4-node shells         {}\n", count(ElementKind::Shell4));
-  fmt::print(out, "  3-node shells         {}\n", count(ElementKind::Shell3));
-  fmt::print(out, "  8-node bricks         {}\n", count(ElementKind::Brick8));
+  for (const ElementKindDescription& kind : kElementKindTable)
+    fmt::print(out, "  {:<22}{}\n", kind.counted, count(kind.kind));
   fmt::print(out, "  element groups        {}\n", m.element_groups.size());
   fmt::print(out, "  parts                 {}\n", m.parts.size());
   fmt::print(out, "  materials             {}\n", m.materials.size());

@@ -186,11 +186,12 @@ void RunRecorder::header(const RunStart& run) {
   if (!run.deck.empty()) listing_.line("DECK " + run.deck.string());
   listing_.line(fmt::format("WORKING UNITS (SI size of one unit): mass {:g} kg  length {:g} m  time {:g} s",
                             m.units.work[0], m.units.work[1], m.units.work[2]));
-  listing_.line(fmt::format("nodes {}  4-node shells {}  3-node shells {}  8-node bricks {}  element groups {}  "
-                            "parts {}  interfaces {}  rigid bodies {}  rigid walls {}",
-                            m.nodes.size(), count(ElementKind::Shell4), count(ElementKind::Shell3),
-                            count(ElementKind::Brick8), m.element_groups.size(), m.parts.size(),
-                            m.type7_interfaces.size(), m.rigid_bodies.size(), m.rigid_walls.size()));
+  std::string kinds;
+  for (const ElementKindDescription& kind : kElementKindTable)
+    kinds += fmt::format("  {} {}", kind.counted, count(kind.kind));
+  listing_.line(fmt::format("nodes {}{}  element groups {}  parts {}  interfaces {}  rigid bodies {}  rigid walls {}",
+                            m.nodes.size(), kinds, m.element_groups.size(), m.parts.size(), m.type7_interfaces.size(),
+                            m.rigid_bodies.size(), m.rigid_walls.size()));
   listing_.line("ACCURACY PRESET " + run.accuracy);
   listing_.line(std::string("PRECISION ") + kPrecision);
   if (!run.approximations.empty()) listing_.line("OPTIONS SKIPPED OR APPROXIMATED:");

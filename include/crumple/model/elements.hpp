@@ -24,6 +24,7 @@ struct ElementKindDescription {
   ElementKind kind;
   std::string_view name;       // the listing's word for one element: "SHELL 12 of part 3"
   std::string_view what;       // the messages' word: "4-node shell"
+  std::string_view counted;    // the counts' word in `crumple check` and the listing: "4-node shells"
   std::string_view card;       // the element card: /SHELL
   std::string_view step_card;  // its /DT/<type> option: /DT/SHELL/DEL
   int nodes;                   // nodes per element
@@ -39,14 +40,14 @@ struct ElementKindDescription {
 };
 
 inline constexpr ElementKindDescription kElementKindTable[kElementKinds] = {
-    {ElementKind::Shell4, "SHELL", "4-node shell", "/SHELL", "SHELL", 4, 6, PropertyKind::Shell, "area",
+    {ElementKind::Shell4, "SHELL", "4-node shell", "4-node shells", "/SHELL", "SHELL", 4, 6, PropertyKind::Shell, "area",
      "a shell of positive area", false, "/GRSHEL", "SHEL", "shell_ID", "shell4", "Quadrilateral", &RunControl::dt_shell},
-    {ElementKind::Shell3, "SH3N", "3-node shell", "/SH3N", "SH_3N", 3, 6, PropertyKind::Shell, "area",
+    {ElementKind::Shell3, "SH3N", "3-node shell", "3-node shells", "/SH3N", "SH_3N", 3, 6, PropertyKind::Shell, "area",
      "a shell of positive area", false, "/GRSH3N", "SH3N", "sh3n_ID", "shell3", "Triangle", &RunControl::dt_sh3n},
-    {ElementKind::Brick8, "BRICK", "brick", "/BRICK", "BRICK", 8, 3, PropertyKind::Solid, "volume",
+    {ElementKind::Brick8, "BRICK", "brick", "8-node bricks", "/BRICK", "BRICK", 8, 3, PropertyKind::Solid, "volume",
      "a brick of positive volume (nodes 1-4 one face, 5-8 the opposite face)", true, "/GRBRIC",
      "BRIC", "brick_ID", "brick8", "Hexahedron", &RunControl::dt_brick},
-    {ElementKind::Spring, "SPRING", "spring", "/SPRING", "SPRING", 2, 3, PropertyKind::Spring, "length",
+    {ElementKind::Spring, "SPRING", "spring", "springs", "/SPRING", "SPRING", 2, 3, PropertyKind::Spring, "length",
      "a spring of positive length", false, "/GRSPRI", "SPRI", "spring_ID", "spring2", "Polyline",
      &RunControl::dt_spring},
 };
