@@ -329,6 +329,9 @@ void resolve_definitions(Resolver& r) {
   for (Property& p : m.properties) {
     if (p.kind != PropertyKind::Spring || p.spring.function_id == 0) continue;
     p.spring.function = r.find(m.index.functions, p.spring.function_id, p.where, keyword_of(p), "fct_ID11", "function");
+    if (p.spring.lower_function_id != 0)
+      p.spring.lower_function =
+          r.find(m.index.functions, p.spring.lower_function_id, p.where, keyword_of(p), "fct_ID31", "function");
     // H 1: the yield force is the curve's in both directions (SP-6), as the reference runs a curve that is odd about 0;
     // the reference's answer to another curve is not Crumple's.
     if (p.spring.hardening != 1 || p.spring.function < 0) continue;

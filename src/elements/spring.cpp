@@ -21,6 +21,7 @@ SpringGroupParameters spring_parameters(const SpringSection& s, const std::vecto
   p.function = &functions[static_cast<std::size_t>(s.function)];
   p.function_scale = s.function_scale, p.abscissa_scale = s.abscissa_scale;
   p.hardening = s.hardening;
+  if (s.lower_function >= 0) p.lower_function = &functions[static_cast<std::size_t>(s.lower_function)];
   // eq. SP-4b: the steepest segment of A f(delta / Ascale), if steeper than K (measured on the reference: a function
   // of slopes 4000, 2000 and 4020 steps as 4020; K 5000 beside a slope of 2000 as 5000; A 2 doubles it, Ascale 2
   // halves it).
@@ -29,6 +30,11 @@ SpringGroupParameters spring_parameters(const SpringSection& s, const std::vecto
   for (std::size_t k = 1; k < x.size(); ++k)
     p.step_stiffness = std::max(p.step_stiffness,
                                 std::abs(y[k] - y[k - 1]) / (x[k] - x[k - 1]) * p.function_scale / p.abscissa_scale);
+  if (p.lower_function != nullptr)
+    for (std::size_t k = 1; k < p.lower_function->x.size(); ++k)
+      p.step_stiffness = std::max(p.step_stiffness, std::abs(p.lower_function->y[k] - p.lower_function->y[k - 1]) /
+                                                        (p.lower_function->x[k] - p.lower_function->x[k - 1]) *
+                                                        p.function_scale / p.abscissa_scale);
   return p;
 }
 
@@ -46,6 +52,10 @@ double spring_elastic_force(const SpringGroupParameters& p, double delta, double
     const double elastic_part = (side * yield - force_before) / p.stiffness;  // the step's elongation to the yield
     a += std::max(0.0, std::abs(delta - before) - std::abs(elastic_part));
     return side * spring_curve(p, a);
+  }
+  if (p.hardening == 4) {  // SP-8: elastic at K between the lower and the upper curve, on them beyond
+    const double trial = force_before + p.stiffness * (delta - before);
+    return std::clamp(trial, spring_lower_curve(p, delta), spring_curve(p, delta));
   }
   // SP-7, H 2: tension and compression each elastic-plastic on their own side of the curve, from their own plastic
   // elongation (a >= 0 in tension, b <= 0 in compression); no force between the two.

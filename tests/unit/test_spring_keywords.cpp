@@ -100,8 +100,12 @@ TEST(SpringKeywords, RefusedOptionsNameTheirField) {
   d.line3 = I(0) + I(0) + I(6);
   EXPECT_NE(error_of(d).find("fct_ID21"), std::string::npos) << error_of(d);
   d = SpringDeck{};
-  d.line3 = I(0) + I(4);
+  d.line3 = I(0) + I(5);
   EXPECT_NE(error_of(d).find("field H"), std::string::npos) << error_of(d);
+  d = SpringDeck{};
+  d.line3 = I(8) + I(4);  // kinematic hardening without its lower curve
+  d.extra = "/FUNCT/8\nyield\n" + R(-1.0) + R(-30.0) + "\n" + R(1.0) + R(30.0) + "\n";
+  EXPECT_NE(error_of(d).find("fct_ID31"), std::string::npos) << error_of(d);
   d = SpringDeck{};
   d.line3 = I(0) + I(1);  // a hardening spring without its curve
   EXPECT_NE(error_of(d).find("fct_ID11"), std::string::npos) << error_of(d);

@@ -19,12 +19,16 @@ struct SpringGroupParameters {
   const Function* function = nullptr;  // fct_ID11: the force A f(delta / Ascale) (eq. SP-2b); none: K delta
   double function_scale = 1.0, abscissa_scale = 1.0;  // A [F], Ascale [L]
   double step_stiffness = 0.0;  // the stiffness of the step: K, or the function's steepest slope if larger (SP-4b)
-  int hardening = 0;            // H: 0 elastic, 1 isotropic (SP-6), 2 uncoupled (SP-7)
+  int hardening = 0;            // H: 0 elastic, 1 isotropic (SP-6), 2 uncoupled (SP-7), 4 kinematic (SP-8)
+  const Function* lower_function = nullptr;  // fct_ID31, H 4's lower yield curve
 };
 
 // The curve of the spring, g(delta) = A f(delta / Ascale) [F] (eq. SP-2b).
 inline double spring_curve(const SpringGroupParameters& p, double delta) {
   return p.function_scale * (*p.function)(delta / p.abscissa_scale);
+}
+inline double spring_lower_curve(const SpringGroupParameters& p, double delta) {
+  return p.function_scale * (*p.lower_function)(delta / p.abscissa_scale);
 }
 
 // The spring's force without its dashpot at elongation `delta` from the last cycle's (`before`, `force_before`),

@@ -61,7 +61,9 @@ struct SpringSection {
   std::int32_t function = -1;  // dense index (model build)
   double function_scale = 1.0;     // A, times the input force unit [F]
   double abscissa_scale = 1.0;     // Ascale, in the input length unit [L]
-  int hardening = 0;  // H: 0 elastic (on the function), 1 isotropic, 2 uncoupled (eq. SP-6, SP-7)
+  int hardening = 0;  // H: 0 elastic (on the function), 1 isotropic, 2 uncoupled, 4 kinematic (SP-6 to SP-8)
+  std::int64_t lower_function_id = 0;  // fct_ID31: the lower yield curve of kinematic hardening (H 4)
+  std::int32_t lower_function = -1;
   double delta_min = -1e30, delta_max = 1e30;  // the elongations that break it (0 or blank: never) [L]
 };
 

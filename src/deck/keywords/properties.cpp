@@ -213,7 +213,8 @@ void read_spring_mass_and_stiffness(CardReader& reader, DeckContext& context, Sp
 void read_spring_law(CardReader& reader, DeckContext& context, SpringSection& s) {
   const Line third = reader.next("fct_ID11, H, fct_ID21, fct_ID31, fct_ID41, delta_min, delta_max");
   s.function_id = third.optional_id(1, 10, "fct_ID11", IdKind::Other);
-  for (const auto& [column, name] : {std::pair{21, "fct_ID21"}, {31, "fct_ID31"}, {41, "fct_ID41"}})
+  s.lower_function_id = third.optional_id(31, 10, "fct_ID31", IdKind::Other);
+  for (const auto& [column, name] : {std::pair{21, "fct_ID21"}, {41, "fct_ID41"}})
     if (third.optional_id(column, 10, name, IdKind::Other) != 0)
       context.unsupported(third.error(column, 10, name, default_only("an unloading or rate function (with H or B) is")));
   // A scales the function only: the reference prints A = 1 for a spring without one (measured, /PROP/SPRING with
@@ -223,11 +224,17 @@ void read_spring_law(CardReader& reader, DeckContext& context, SpringSection& s)
                  "the function scale factor acts on fct_ID11 only; a linear spring ignores it, as the reference does",
                  SkipKind::Unsupported);
   s.hardening = static_cast<int>(third.integer(11, 10, "H"));
-  if (s.hardening != 0 && s.hardening != 1 && s.hardening != 2)
-    context.unsupported(third.error(11, 10, "H", "0 (elastic), 1 (isotropic) or 2 (uncoupled) hardening (4 to 8 are "
-                                                 "not supported by Crumple)"));
+  if (s.hardening != 0 && s.hardening != 1 && s.hardening != 2 && s.hardening != 4)
+    context.unsupported(third.error(11, 10, "H", "0 (elastic), 1 (isotropic), 2 (uncoupled) or 4 (kinematic) "
+                                                 "hardening (5 to 8 are not supported by Crumple)"));
   if (s.hardening != 0 && s.function_id == 0)
-    third.fail(1, 10, "fct_ID11", "the yield curve of a hardening spring (H 1, 2)");
+    third.fail(1, 10, "fct_ID11", "the yield curve of a hardening spring (H 1, 2, 4)");
+  if (s.hardening == 4 && s.lower_function_id == 0)
+    context.unsupported(third.error(31, 10, "fct_ID31", "the lower yield curve of kinematic hardening (H 4; without "
+                                                       "it, not supported by Crumple)"));
+  if (s.hardening != 4 && s.lower_function_id != 0)
+    context.unsupported(third.error(31, 10, "fct_ID31", default_only("a lower yield curve (with H 4) or a rate "
+                                                                     "function (with B) is")));
   const double low = third.real(61, 20, "delta_min", dim::length);
   const double high = third.real(81, 20, "delta_max", dim::length);
   if (low > 0.0) third.fail(61, 20, "delta_min", "a negative failure elongation (0 or blank: none)");

@@ -2,8 +2,9 @@
 # node 1 fixed, node 2 driven by /IMPVEL at 0.1 m/s out to 0.05 m, back to -0.05 m and out again, on the curve
 # f = 20 N at 0.01 m then 500 N/m (odd about 0), K = 2000 N/m for unloading. Run from the folder that is to hold the
 # decks; each folder's ref.extract is the reference solver's last printed row (run-or.sh, then or-extract.py).
-#   spring_hardening_isotropic (H 1) and spring_hardening_uncoupled (H 2): the internal energy at every 100th row
-#   is the reference's to its 4 digits (6.915 and 2.197 J at the end); the force the energy's slope gives, cycle by
+#   spring_hardening_isotropic (H 1), spring_hardening_uncoupled (H 2) and spring_hardening_kinematic (H 4, its
+#   own two curves): the internal energy at every 100th row is the reference's to its 4 digits (6.915, 2.197 and
+#   4.420 J at the end); the force the energy's slope gives, cycle by
 #   cycle, follows the reference's through the reversals (tension, unloading, reverse yield, reloading).
 import os
 I=lambda *v: "".join("%10d"%x for x in v)
@@ -28,3 +29,5 @@ def deck(name, H=1, K=2000.0, pts=((-1,-30),(-0.01,-20),(0,0),(0.01,20),(1,30)),
 CURVE = ((-1, -515), (-0.01, -20), (0, 0), (0.01, 20), (1, 515))
 deck("spring_hardening_isotropic", H=1, pts=CURVE)
 deck("spring_hardening_uncoupled", H=2, pts=CURVE)
+# kinematic (H 4): the force between a lower and an upper curve, 20 N either side of a 500 N/m line
+deck("spring_hardening_kinematic", H=4, pts=((-1, -480), (0, 20), (1, 520)), fct3=3, pts3=((-1, -520), (0, -20), (1, 480)))
