@@ -12,6 +12,13 @@ Vec3 position(const NodalState& n, std::int32_t k) {
   return {n.x[u], n.y[u], n.z[u]};
 }
 
+// The steepest segment of a function, |dy / dx|.
+double steepest_slope(const Function& f) {
+  double slope = 0.0;
+  for (std::size_t k = 1; k < f.x.size(); ++k) slope = std::max(slope, std::abs(f.y[k] - f.y[k - 1]) / (f.x[k] - f.x[k - 1]));
+  return slope;
+}
+
 }  // namespace
 
 SpringGroupParameters spring_parameters(const SpringSection& s, const std::vector<Function>& functions) {
@@ -25,16 +32,9 @@ SpringGroupParameters spring_parameters(const SpringSection& s, const std::vecto
   // eq. SP-4b: the steepest segment of A f(delta / Ascale), if steeper than K (measured on the reference: a function
   // of slopes 4000, 2000 and 4020 steps as 4020; K 5000 beside a slope of 2000 as 5000; A 2 doubles it, Ascale 2
   // halves it).
-  const std::vector<double>& x = p.function->x;
-  const std::vector<double>& y = p.function->y;
-  for (std::size_t k = 1; k < x.size(); ++k)
-    p.step_stiffness = std::max(p.step_stiffness,
-                                std::abs(y[k] - y[k - 1]) / (x[k] - x[k - 1]) * p.function_scale / p.abscissa_scale);
-  if (p.lower_function != nullptr)
-    for (std::size_t k = 1; k < p.lower_function->x.size(); ++k)
-      p.step_stiffness = std::max(p.step_stiffness, std::abs(p.lower_function->y[k] - p.lower_function->y[k - 1]) /
-                                                        (p.lower_function->x[k] - p.lower_function->x[k - 1]) *
-                                                        p.function_scale / p.abscissa_scale);
+  double slope = steepest_slope(*p.function);
+  if (p.lower_function != nullptr) slope = std::max(slope, steepest_slope(*p.lower_function));
+  p.step_stiffness = std::max(p.step_stiffness, slope * p.function_scale / p.abscissa_scale);
   return p;
 }
 
@@ -55,7 +55,7 @@ double spring_elastic_force(const SpringGroupParameters& p, double delta, double
   }
   if (p.hardening == 4) {  // SP-8: elastic at K between the lower and the upper curve, on them beyond
     const double trial = force_before + p.stiffness * (delta - before);
-    return std::clamp(trial, spring_lower_curve(p, delta), spring_curve(p, delta));
+    return std::min(std::max(trial, spring_lower_curve(p, delta)), spring_curve(p, delta));  // upper wins if crossed
   }
   // SP-7, H 2: tension and compression each elastic-plastic on their own side of the curve, from their own plastic
   // elongation (a >= 0 in tension, b <= 0 in compression); no force between the two.

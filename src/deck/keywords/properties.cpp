@@ -229,6 +229,9 @@ void read_spring_law(CardReader& reader, DeckContext& context, SpringSection& s)
                                                  "hardening (5 to 8 are not supported by Crumple)"));
   if (s.hardening != 0 && s.function_id == 0)
     third.fail(1, 10, "fct_ID11", "the yield curve of a hardening spring (H 1, 2, 4)");
+  if (s.hardening != 0 && !(s.stiffness > 0.0))
+    throw DeckError(third.where(), reader.card().keyword, "K (line 2)",
+                    "a positive unloading stiffness for a hardening spring (H 1, 2, 4)", fmt::format("{:g}", s.stiffness));
   if (s.hardening == 4 && s.lower_function_id == 0)
     context.unsupported(third.error(31, 10, "fct_ID31", "the lower yield curve of kinematic hardening (H 4; without "
                                                        "it, not supported by Crumple)"));
