@@ -128,9 +128,9 @@ CASES = [  # name, kind, property cards, node layers (half-widths), end time [ms
 ]
 
 
-def run_case(crumple, folder, case):
-    name, kind, prop, layers, end_time = case
-    starter, engine, count = deck(kind, prop, layers, end_time)
+def element_phase_seconds(crumple, folder, starter, engine, name="COST"):
+    """Runs the deck COST in `folder`: the element phase's CPU seconds (the process's CPU time times the phase's
+    share of the wall time) and the cycles."""
     (folder / "COST_0000.rad").write_text(starter)
     (folder / "COST_0001.rad").write_text(engine)
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
@@ -141,8 +141,14 @@ def run_case(crumple, folder, case):
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     cpu = after.ru_utime - before.ru_utime + after.ru_stime - before.ru_stime
     summary = json.loads((folder / "COST.summary.json").read_text())
-    share = summary["profile"]["elements"] / summary["wall_seconds"]
-    return cpu * share / (count * summary["cycles"]) * 1e9, count, summary["cycles"]
+    return cpu * summary["profile"]["elements"] / summary["wall_seconds"], summary["cycles"]
+
+
+def run_case(crumple, folder, case):
+    name, kind, prop, layers, end_time = case
+    starter, engine, count = deck(kind, prop, layers, end_time)
+    seconds, cycles = element_phase_seconds(crumple, folder, starter, engine, name)
+    return seconds / (count * cycles) * 1e9, count, cycles
 
 
 def main():

@@ -7,10 +7,7 @@ ratio within 1.05 means the shells run as fast with the springs beside them and 
 
     bench/spring_mix.py build/release/src/crumple [REPEATS]
 """
-import json
-import resource
 import statistics
-import subprocess
 import sys
 import tempfile
 from pathlib import Path
@@ -36,20 +33,6 @@ def with_springs(starter, shells):
     return starter.replace("/END\n", cards + "/END\n"), eid - 1
 
 
-def run(crumple, folder, starter, engine):
-    (folder / "COST_0000.rad").write_text(starter)
-    (folder / "COST_0001.rad").write_text(engine)
-    before = resource.getrusage(resource.RUSAGE_CHILDREN)
-    done = subprocess.run([crumple, "run", str(folder / "COST_0000.rad"), "-o", str(folder), "-q"],
-                          capture_output=True, text=True)
-    if done.returncode != 0:
-        raise SystemExit(f"crumple run failed\n{done.stdout}\n{done.stderr}")
-    after = resource.getrusage(resource.RUSAGE_CHILDREN)
-    cpu = after.ru_utime - before.ru_utime + after.ru_stime - before.ru_stime
-    summary = json.loads((folder / "COST.summary.json").read_text())
-    return cpu * summary["profile"]["elements"] / summary["wall_seconds"], summary["cycles"]
-
-
 def main():
     crumple, repeats = sys.argv[1], int(sys.argv[2]) if len(sys.argv) > 2 else 3
     starter, engine, shells = ec.deck("shell4", ec.shell_property(24, 3), ec.SHELL, 0.6)
@@ -58,7 +41,7 @@ def main():
     with tempfile.TemporaryDirectory() as tmp:
         for _ in range(repeats):  # alternated, so that a slow spell of the machine falls on both
             for name, deck in (("shells alone", starter), (f"shells and {springs} springs", mixed)):
-                seconds, cycles = run(crumple, Path(tmp), deck, engine)
+                seconds, cycles = ec.element_phase_seconds(crumple, Path(tmp), deck, engine, name)
                 rows.setdefault(name, []).append(seconds / (shells * cycles) * 1e9)
     base = statistics.median(rows["shells alone"])
     print(f"| model | shells | ns per shell element-cycle (median of {repeats}) | runs | ratio |")
