@@ -75,6 +75,11 @@ void check_selective_mass(Resolver& r, const RunControl& run) {
                                       "no nodal mass scaling together with /DT/AMS on the whole model (Crumple does not "
                                       "combine them)",
                                       keyword));
+  // /DAMP's mass damping solves each node's update with its own mass (D-2), which the selective mass's coupled
+  // solve replaces.
+  for (const RayleighDamping& d : r.model.dampings)
+    r.context.unsupported(DeckError(d.where, fmt::format("/DAMP/{}", d.user_id), "",
+                                    "no /DAMP together with /DT/AMS (Crumple does not combine them)", "/DT/AMS"));
   // A moving wall takes its nodes' impulse into its own motion (RW-2) before it holds them; the solve holds them
   // at the wall's velocity first (SM-4), so the exchange would lag a cycle: refused, not approximated.
   for (const RigidWall& w : r.model.rigid_walls)

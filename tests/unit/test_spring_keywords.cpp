@@ -165,6 +165,9 @@ TEST(SpringKeywords, DampingRefusesSkewsAndDirections) {
   EXPECT_NE(error_of(d, "/RUN/T/1\n1.0\n/DAMP/4\n40 0\n").find("damp_ID"), std::string::npos);
   EXPECT_NE(error_of(d, "/RUN/T/1\n1.0\n/DAMP/3\n40 -0.1\n").find("beta"), std::string::npos);
   EXPECT_NE(error_of(d, "/RUN/T/1\n1.0\n/DAMP/3\n40 0.1 0.5\n").find("alpha, beta"), std::string::npos);
+  d.extra += "/AMS\n" + I(0) + "\n";  // selective mass scaling solves the nodes' updates together: not with /DAMP
+  EXPECT_NE(error_of(d, "/RUN/T/1\n1.0\n/DT/AMS\n0.67 1e-5\n").find("no /DAMP together with /DT/AMS"),
+            std::string::npos);
 }
 
 }  // namespace test_spring_keywords
