@@ -14,13 +14,14 @@ double initial_element_time_step(const Model& model, ElementKind kind, std::size
   const ElementTable& table = model.elements[static_cast<int>(kind)];
   const Part& part = model.parts[static_cast<std::size_t>(table.part[element])];
   const Property& property = model.properties[static_cast<std::size_t>(part.property)];
-  // Springs carry their law in the property (mat_ID 0): their cases read no material.
-  const Material& mat = model.materials[static_cast<std::size_t>(std::max(part.material, 0))];
+  // Springs carry their law in the property (mat_ID 0): only the shells' and the bricks' cases read a material.
+  const auto material = [&]() -> const Material& { return model.materials[static_cast<std::size_t>(part.material)]; };
   const std::int32_t* n = table.nodes_of(element);
   const Nodes& x = model.nodes;
   switch (kind) {
     case ElementKind::Shell4:
     case ElementKind::Shell3: {
+      const Material& mat = material();
       // T-1a's speed (the plate's for QBAT); the length of T-1 (QBAT, triangles), T-1b (Ishell 1 to 4) or T-1d
       // (QEPH); the factor of T-1c for the formulation's damping.
       const auto q = static_cast<std::size_t>(part.property);
@@ -37,6 +38,7 @@ double initial_element_time_step(const Model& model, ElementKind kind, std::size
     }
     case ElementKind::Brick8: {
       // eq. B-12 at rest: the linear bulk viscosity's speed qb c lowers the step, L / (qb c + sqrt((qb c)^2 + c^2))
+      const Material& mat = material();
       const double qb = model.properties[static_cast<std::size_t>(part.property)].solid.qb_or_default();
       const double speed = std::sqrt((mat.bulk_modulus() + 4.0 / 3.0 * mat.shear_modulus()) / mat.density) *
                            (qb + std::sqrt(1.0 + qb * qb));
