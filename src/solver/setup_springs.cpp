@@ -22,6 +22,7 @@ void setup_springs(const Model& m, SolverState& s) {
       const auto ue = static_cast<std::size_t>(e);
       st.length0[ue] = element_measure(m.nodes, ElementKind::Spring, table.nodes_of(ue));
       st.mass[ue] = element_mass(m, ElementKind::Spring, ue);
+      st.step_stiffness[ue] = s.spring_groups[g].step_stiffness;
     }
   }
 }

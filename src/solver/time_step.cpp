@@ -44,8 +44,8 @@ void element_stiffness(const Model& m, ElementKind kind, const State& st, Solver
     k[e] = 0.0;
     if (element_condition(st.deleted[e]) != kElementActive || !(st.critical_dt[e] > 0.0)) continue;
     const Part& part = m.parts[static_cast<std::size_t>(table.part[e])];
-    if constexpr (requires { st.length0; }) {  // a spring gives each node its step's stiffness (eq. SP-4a)
-      k[e] = spring_parameters(m.properties[static_cast<std::size_t>(part.property)].spring, m.functions).step_stiffness;
+    if constexpr (requires { st.step_stiffness; }) {  // a spring gives each node its step's stiffness (eq. SP-4a)
+      k[e] = st.step_stiffness[e];
       continue;
     }
     const Material& mat = m.materials[static_cast<std::size_t>(part.material)];

@@ -17,10 +17,11 @@ struct SpringState : ElementKindState {  // no integration points: points and ep
   // Hardening springs (H 1, 2): H 1, the hardening displacement x (SP-6) and 0; H 2, the plastic elongations of the
   // tension and of the compression side (SP-7) [L].
   std::vector<double> plastic_a, plastic_b;
+  std::vector<double> step_stiffness;  // the stiffness of its step, which it gives each node in the nodal steps [F/L]
 
   void resize_elements(std::size_t n) {
     resize_common(n);
-    for (auto* v : {&length0, &elongation, &force, &elastic_force, &plastic_a, &plastic_b}) v->assign(n, 0.0);
+    for (auto* v : {&length0, &elongation, &force, &elastic_force, &plastic_a, &plastic_b, &step_stiffness}) v->assign(n, 0.0);
   }
 };
 
