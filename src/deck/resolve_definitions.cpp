@@ -20,6 +20,7 @@ bool one_of(int value, std::initializer_list<int> allowed) {
 }
 
 std::string keyword_of(const Property& p) {
+  if (p.kind == PropertyKind::Spring && p.spring.general) return fmt::format("/PROP/SPR_GENE/{}", p.user_id);
   return fmt::format("/PROP/{}/{}", describe(p.kind).name, p.user_id);
 }
 
@@ -290,6 +291,38 @@ void move_functions(Resolver& r) {
   }
 }
 
+// A spring law's functions (docs/theory/spring.md): the force or yield curve and H 4's lower curve, by their ids.
+void resolve_spring_functions(Resolver& r, Property& p, int d) {
+  SpringLaw& law = p.spring.dof[static_cast<std::size_t>(d)];
+  if (law.function_id == 0) return;
+  const std::string i = p.spring.general ? std::to_string(d + 1) : "1";
+  Model& m = r.model;
+  law.function = r.find(m.index.functions, law.function_id, p.where, keyword_of(p), "fct_ID1" + i, "function");
+  if (law.lower_function_id != 0)
+    law.lower_function = r.find(m.index.functions, law.lower_function_id, p.where, keyword_of(p), "fct_ID3" + i, "function");
+  if (law.function < 0) return;  // an unknown id: already an error
+  // SP-4c: a hardening spring unloads at no less than its curve's steepest slope, as the reference runs it.
+  const double slope =
+      m.functions[static_cast<std::size_t>(law.function)].steepest_slope() * law.function_scale / law.abscissa_scale;
+  if (law.hardening != 0 && law.stiffness < slope)
+    r.context.warn(p.where, keyword_of(p),
+                   fmt::format("K{} = {:g} is below the steepest slope of its yield curve fct_ID1{}, {:g}: the spring "
+                               "unloads at that slope, as the reference runs it",
+                               p.spring.general ? i : "", law.stiffness, i, slope));
+  // H 1: the yield force is the curve's in both directions (SP-6), as the reference runs a curve that is odd about 0;
+  // the reference's answer to another curve is not Crumple's.
+  if (law.hardening != 1) return;
+  const Function& f = m.functions[static_cast<std::size_t>(law.function)];
+  for (double x : f.x)
+    if (std::abs(f(-x) + f(x)) > 1e-9 * (std::abs(f(x)) + 1.0)) {
+      r.context.unsupported(DeckError(p.where, keyword_of(p), "fct_ID1" + i,
+                                      "a yield curve odd about 0, f(-x) = -f(x), for isotropic hardening (H 1; "
+                                      "another curve is not supported by Crumple)",
+                                      fmt::format("f({:g}) = {:g}, f({:g}) = {:g}", x, f(x), -x, f(-x))));
+      return;
+    }
+}
+
 }  // namespace
 
 void resolve_definitions(Resolver& r) {
@@ -326,25 +359,9 @@ void resolve_definitions(Resolver& r) {
   m.formulations.clear();
   for (const Property& p : m.properties) m.formulations.push_back(formulation_of(r, p));
   check_shell_formulations(r);
-  for (Property& p : m.properties) {
-    if (p.kind != PropertyKind::Spring || p.spring.function_id == 0) continue;
-    p.spring.function = r.find(m.index.functions, p.spring.function_id, p.where, keyword_of(p), "fct_ID11", "function");
-    if (p.spring.lower_function_id != 0)
-      p.spring.lower_function =
-          r.find(m.index.functions, p.spring.lower_function_id, p.where, keyword_of(p), "fct_ID31", "function");
-    // H 1: the yield force is the curve's in both directions (SP-6), as the reference runs a curve that is odd about 0;
-    // the reference's answer to another curve is not Crumple's.
-    if (p.spring.hardening != 1 || p.spring.function < 0) continue;
-    const Function& f = m.functions[static_cast<std::size_t>(p.spring.function)];
-    for (double x : f.x)
-      if (std::abs(f(-x) + f(x)) > 1e-9 * (std::abs(f(x)) + 1.0)) {
-        r.context.unsupported(DeckError(p.where, keyword_of(p), "fct_ID11",
-                                        "a yield curve odd about 0, f(-x) = -f(x), for isotropic hardening (H 1; "
-                                        "another curve is not supported by Crumple)",
-                                        fmt::format("f({:g}) = {:g}, f({:g}) = {:g}", x, f(x), -x, f(-x))));
-        break;
-      }
-  }
+  for (Property& p : m.properties)
+    if (p.kind == PropertyKind::Spring)
+      for (int d = 0; d < p.spring.dofs(); ++d) resolve_spring_functions(r, p, d);
   for (Material& mat : m.materials) {
     if (mat.law != MaterialLaw::Tabulated) continue;
     const std::string keyword = fmt::format("/MAT/PLAS_TAB/{}", mat.user_id);

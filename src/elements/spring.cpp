@@ -1,4 +1,5 @@
-// Springs of one translational degree of freedom, /PROP/TYPE4 (docs/theory/spring.md, eq. SP-1 to SP-4).
+// Springs (docs/theory/spring.md): /PROP/TYPE4, one translational degree of freedom along the nodes (eq. SP-1 to
+// SP-8, SP-11), and /PROP/TYPE8, six in the global axes (SP-9, SP-10).
 #include "crumple/elements/spring.hpp"
 
 #include <algorithm>
@@ -12,33 +13,84 @@ Vec3 position(const NodalState& n, std::int32_t k) {
   return {n.x[u], n.y[u], n.z[u]};
 }
 
-// The steepest segment of a function, |dy / dx|.
-double steepest_slope(const Function& f) {
-  double slope = 0.0;
-  for (std::size_t k = 1; k < f.x.size(); ++k) slope = std::max(slope, std::abs(f.y[k] - f.y[k - 1]) / (f.x[k] - f.x[k - 1]));
-  return slope;
-}
-
-}  // namespace
-
-SpringGroupParameters spring_parameters(const SpringSection& s, const std::vector<Function>& functions) {
-  SpringGroupParameters p{s.mass, s.stiffness, s.damping, s.delta_min, s.delta_max};
+SpringDofParameters dof_parameters(const SpringLaw& s, const std::vector<Function>& functions) {
+  SpringDofParameters p{s.stiffness, s.damping, s.delta_min, s.delta_max};
   p.step_stiffness = s.stiffness;
   if (s.function < 0) return p;
   p.function = &functions[static_cast<std::size_t>(s.function)];
   p.function_scale = s.function_scale, p.abscissa_scale = s.abscissa_scale;
   p.hardening = s.hardening;
   if (s.lower_function >= 0) p.lower_function = &functions[static_cast<std::size_t>(s.lower_function)];
-  // eq. SP-4b: the steepest segment of A f(delta / Ascale), if steeper than K (measured on the reference: a function
-  // of slopes 4000, 2000 and 4020 steps as 4020; K 5000 beside a slope of 2000 as 5000; A 2 doubles it, Ascale 2
-  // halves it).
-  double slope = steepest_slope(*p.function);
-  if (p.lower_function != nullptr) slope = std::max(slope, steepest_slope(*p.lower_function));
-  p.step_stiffness = std::max(p.step_stiffness, slope * p.function_scale / p.abscissa_scale);
+  // eq. SP-4b: the steepest segment of A f(delta / Ascale), if steeper than K, sets the step (measured on the
+  // reference: a function of slopes 4000, 2000 and 4020 steps as 4020; K 5000 beside a slope of 2000 as 5000; A 2
+  // doubles it, Ascale 2 halves it; H 4's lower curve does not enter).
+  const double slope = p.function->steepest_slope() * p.function_scale / p.abscissa_scale;
+  p.step_stiffness = std::max(p.step_stiffness, slope);
+  // SP-4c: a hardening spring unloads at no less than that slope (the reference raises K to it, with a warning;
+  // measured with K 500 beside a slope of 2000: the runs of K 500 and K 2000 are the same to every digit).
+  if (p.hardening != 0) p.stiffness = std::max(p.stiffness, slope);
   return p;
 }
 
-double spring_elastic_force(const SpringGroupParameters& p, double delta, double before, double force_before,
+}  // namespace
+
+SpringGroupParameters spring_parameters(const SpringSection& s, const std::vector<Function>& functions) {
+  SpringGroupParameters p{s.mass, s.inertia, s.general};
+  for (int d = 0; d < s.dofs(); ++d)
+    p.dof[static_cast<std::size_t>(d)] = dof_parameters(s.dof[static_cast<std::size_t>(d)], functions);
+  return p;
+}
+
+double spring_critical_step(const SpringGroupParameters& p) {
+  if (!p.general) return spring_dof_critical_step(p.dof[0], p.mass);
+  // SP-10: the translations as one degree of freedom of mass M with their largest stiffness and largest damping, the
+  // rotations likewise with I (measured: K 1000 on X beside C 3 on Y steps as K 1000 with C 3).
+  SpringDofParameters translation, rotation;
+  for (std::size_t d = 0; d < kSpringDofs; ++d) {
+    SpringDofParameters& both = d < 3 ? translation : rotation;
+    both.step_stiffness = std::max(both.step_stiffness, p.dof[d].step_stiffness);
+    both.damping = std::max(both.damping, p.dof[d].damping);
+  }
+  return std::min(spring_dof_critical_step(translation, p.mass), spring_dof_critical_step(rotation, p.inertia));
+}
+
+namespace {
+
+// H 5 on one side of the spring (eq. SP-11), written for tension (sign +1) and mirrored for compression (sign -1):
+// the curve f up to the side's largest elongation `peak`; below it, back to 0 at the residual elongation r = g(peak
+// / Ascale), along the unloading curve P, the reloading line S and the line T of slope K through the peak.
+double residual_side(const SpringDofParameters& p, double sign, double delta, double trial, double& peak) {
+  if (sign * delta > sign * peak) {  // loading past the side's largest elongation: on the curve
+    peak = delta;
+    return spring_curve(p, delta);
+  }
+  const double residual = (*p.lower_function)(peak / p.abscissa_scale);  // g, not scaled by A
+  if (peak == 0.0 || sign * delta <= sign * residual) return 0.0;
+  const double peak_force = spring_curve(p, peak);
+  const double x = (delta - residual) / (peak - residual);
+  const double elastic_peak = p.abscissa_scale * peak_force;  // the reference's Fe = Ascale Fmax (measured)
+  const double exponent = p.stiffness * (peak - residual) / elastic_peak;  // P leaves the peak at slope K
+  const double unloading = elastic_peak * std::pow(x, exponent);           // P
+  const double reloading = elastic_peak * x;                               // S
+  const double line = peak_force - p.stiffness * (peak - delta);           // T
+  const double curve = spring_curve(p, delta);
+  // Tension: min(max(trial, max(P, T)), min(max(S, T), f)); compression the mirror (multiply through by -1).
+  const double low = sign * std::max(sign * unloading, sign * line);
+  const double high = sign * std::min(std::max(sign * reloading, sign * line), sign * curve);
+  return sign * std::min(std::max(sign * trial, sign * low), sign * high);
+}
+
+}  // namespace
+
+// SP-11, H 5: tension and compression each on their own side, from their own largest elongation (a >= 0, b <= 0);
+// no force between the two residual elongations.
+double spring_residual_force(const SpringDofParameters& p, double delta, double before, double force_before,
+                             double& a, double& b) {
+  const double trial = force_before + p.stiffness * (delta - before);
+  return delta >= 0.0 ? residual_side(p, 1.0, delta, trial, a) : residual_side(p, -1.0, delta, trial, b);
+}
+
+double spring_elastic_force(const SpringDofParameters& p, double delta, double before, double force_before,
                             double& a, double& b) {
   if (p.function == nullptr) return p.stiffness * delta;  // SP-2
   if (p.hardening == 0) return spring_curve(p, delta);    // SP-2b
@@ -53,6 +105,7 @@ double spring_elastic_force(const SpringGroupParameters& p, double delta, double
     a += std::max(0.0, std::abs(delta - before) - std::abs(elastic_part));
     return side * spring_curve(p, a);
   }
+  if (p.hardening == 5) return spring_residual_force(p, delta, before, force_before, a, b);
   if (p.hardening == 4) {  // SP-8: elastic at K between the lower and the upper curve, on them beyond
     const double trial = force_before + p.stiffness * (delta - before);
     return std::min(std::max(trial, spring_lower_curve(p, delta)), spring_curve(p, delta));  // upper wins if crossed
@@ -74,23 +127,50 @@ double spring_elastic_force(const SpringGroupParameters& p, double delta, double
   return 0.0;
 }
 
-GroupStepResult spring_forces(const ElementTable& table, const ElementGroup& group, const SpringGroupParameters& p,
-                              NodalState& nodes, SpringState& state, double dt) {
+namespace {
+
+// A broken spring's last force still acts over the step after it breaks: its work there, once (eq. SP-5a, SP-9).
+double last_work(SpringState& state, std::size_t slot, double elongation) {
+  const double work = 0.5 * state.force[slot] * (elongation - state.elongation[slot]);
+  state.force[slot] = 0.0, state.elongation[slot] = elongation;
+  return work;
+}
+
+// One degree of freedom's force at elongation `delta` (its elastic part and dashpot, eq. SP-2) and its work over the
+// step, trapezoidal (eq. SP-3); the state's slot keeps the elongation, the force and the hardening.
+double dof_force(const SpringDofParameters& p, SpringState& state, std::size_t slot, double delta, double dt,
+                 double& work) {
+  // The elongation rate over the last step (none before the first: the reference's dashpot starts at rest).
+  const double rate = dt > 0.0 ? (delta - state.elongation[slot]) / dt : 0.0;
+  const double elastic = spring_elastic_force(p, delta, state.elongation[slot], state.elastic_force[slot],
+                                              state.plastic_a[slot], state.plastic_b[slot]);
+  state.elastic_force[slot] = elastic;
+  const double force = elastic + p.damping * rate;
+  work += 0.5 * (state.force[slot] + force) * (delta - state.elongation[slot]);
+  state.force[slot] = force, state.elongation[slot] = delta;
+  return force;
+}
+
+bool outside(const SpringDofParameters& p, double delta) { return delta < p.delta_min || delta > p.delta_max; }  // SP-5
+
+// /PROP/TYPE4: one degree of freedom along the nodes (eq. SP-1 to SP-5).
+GroupStepResult axial_spring_forces(const ElementTable& table, const ElementGroup& group, const SpringGroupParameters& p,
+                                    NodalState& nodes, SpringState& state, double dt) {
   GroupStepResult result;
   const bool recording = state.records.on(group.begin);
   const double step = spring_critical_step(p);
   for (std::int32_t e = group.begin; e < group.end; ++e) {
-    const auto ue = static_cast<std::size_t>(e);
+    const auto ue = static_cast<std::size_t>(e), slot = kSpringDofs * ue;
     if (recording && !(state.deleted[ue] & kElementElsewhere)) state.records.clear(ue);
     if (state.deleted[ue] & kElementElsewhere) continue;
     const std::int32_t* n = table.nodes_of(ue);
     const Vec3 axis = position(nodes, n[1]) - position(nodes, n[0]);
     const double length = norm(axis);
+    const double elongation = length - state.length0[ue];  // eq. SP-1
     if (state.deleted[ue]) {  // broken last cycle: the work of its last force over the step it acted (eq. SP-5a)
-      if (state.force[ue] != 0.0) {
-        const double work = 0.5 * state.force[ue] * (length - state.length0[ue] - state.elongation[ue]);
+      if (state.force[slot] != 0.0) {
+        const double work = last_work(state, slot, elongation);
         state.internal_energy[ue] += work, result.internal_energy += work;
-        state.force[ue] = 0.0, state.elongation[ue] = length - state.length0[ue];
       }
       continue;
     }
@@ -98,21 +178,12 @@ GroupStepResult spring_forces(const ElementTable& table, const ElementGroup& gro
       result.inverted = e;
       continue;
     }
-    const Vec3 along = scaled(axis, 1.0 / length);
-    const double elongation = length - state.length0[ue];  // eq. SP-1
-    // The elongation rate over the last step (none before the first: the reference's dashpot starts at rest).
-    const double rate = dt > 0.0 ? (elongation - state.elongation[ue]) / dt : 0.0;
-    const double elastic = spring_elastic_force(p, elongation, state.elongation[ue], state.elastic_force[ue],
-                                                state.plastic_a[ue], state.plastic_b[ue]);
-    state.elastic_force[ue] = elastic;
-    const double force = elastic + p.damping * rate;
-    // The work of the force over the step, trapezoidal in the elongation (eq. SP-3).
-    const double work = 0.5 * (state.force[ue] + force) * (elongation - state.elongation[ue]);
-    state.force[ue] = force, state.elongation[ue] = elongation;
+    double work = 0.0;
+    const double force = dof_force(p.dof[0], state, slot, elongation, dt, work);
     state.internal_energy[ue] += work;
     result.internal_energy += work;
 
-    const Vec3 pull = scaled(along, force);  // internal force: -pull at node 1, +pull at node 2
+    const Vec3 pull = scaled(scaled(axis, 1.0 / length), force);  // internal force: -pull at node 1, +pull at node 2
     subtract_internal(nodes, static_cast<std::size_t>(n[0]), scaled(pull, -1.0));
     subtract_internal(nodes, static_cast<std::size_t>(n[1]), pull);
     if (recording) {
@@ -120,10 +191,69 @@ GroupStepResult spring_forces(const ElementTable& table, const ElementGroup& gro
       record_load(state.records.load_at(ue, 1), pull);
     }
     if (!std::isfinite(force)) result.non_finite = e;
-    const bool broken = elongation < p.delta_min || elongation > p.delta_max;  // eq. SP-5
+    close_element(state, result, e, step, outside(p.dof[0], elongation));
+  }
+  return result;
+}
+
+// The general spring's six elongations: the relative displacement of node 2 from its rest offset, and the relative
+// rotation, summed over the steps, in the global axes (eq. SP-9).
+std::array<double, kSpringDofs> general_elongations(const NodalState& nodes, const SpringState& state, std::size_t ue,
+                                                    const std::int32_t* n, double dt) {
+  const auto a = static_cast<std::size_t>(n[0]), b = static_cast<std::size_t>(n[1]), slot = kSpringDofs * ue;
+  const Vec3 offset = position(nodes, n[1]) - position(nodes, n[0]);
+  return {offset.x - state.rest_offset[3 * ue], offset.y - state.rest_offset[3 * ue + 1],
+          offset.z - state.rest_offset[3 * ue + 2], state.elongation[slot + 3] + (nodes.wx[b] - nodes.wx[a]) * dt,
+          state.elongation[slot + 4] + (nodes.wy[b] - nodes.wy[a]) * dt,
+          state.elongation[slot + 5] + (nodes.wz[b] - nodes.wz[a]) * dt};
+}
+
+// /PROP/TYPE8: six degrees of freedom in the global axes, each its own law (eq. SP-9, SP-10).
+GroupStepResult general_spring_forces(const ElementTable& table, const ElementGroup& group,
+                                      const SpringGroupParameters& p, NodalState& nodes, SpringState& state, double dt) {
+  GroupStepResult result;
+  const bool recording = state.records.on(group.begin);
+  const double step = spring_critical_step(p);
+  for (std::int32_t e = group.begin; e < group.end; ++e) {
+    const auto ue = static_cast<std::size_t>(e), slot = kSpringDofs * ue;
+    if (recording && !(state.deleted[ue] & kElementElsewhere)) state.records.clear(ue);
+    if (state.deleted[ue] & kElementElsewhere) continue;
+    const std::int32_t* n = table.nodes_of(ue);
+    const std::array<double, kSpringDofs> delta = general_elongations(nodes, state, ue, n, dt);
+    double work = 0.0;
+    if (state.deleted[ue]) {  // broken last cycle: the work of its last forces over the step they acted (SP-5a)
+      for (std::size_t d = 0; d < kSpringDofs; ++d)
+        if (state.force[slot + d] != 0.0) work += last_work(state, slot + d, delta[d]);
+      state.internal_energy[ue] += work, result.internal_energy += work;
+      continue;
+    }
+    std::array<double, kSpringDofs> f{};
+    bool broken = false;
+    for (std::size_t d = 0; d < kSpringDofs; ++d) {  // a law without K, C or function: 0, its elongation kept
+      f[d] = dof_force(p.dof[d], state, slot + d, delta[d], dt, work);
+      broken = broken || outside(p.dof[d], delta[d]);
+      if (!std::isfinite(f[d])) result.non_finite = e;
+    }
+    state.internal_energy[ue] += work;
+    result.internal_energy += work;
+    const Vec3 force{f[0], f[1], f[2]}, moment{f[3], f[4], f[5]};  // on node 2, internal; node 1 the opposite
+    subtract_internal(nodes, static_cast<std::size_t>(n[0]), scaled(force, -1.0), scaled(moment, -1.0));
+    subtract_internal(nodes, static_cast<std::size_t>(n[1]), force, moment);
+    if (recording) {
+      record_load(state.records.load_at(ue, 0), scaled(force, -1.0), scaled(moment, -1.0));
+      record_load(state.records.load_at(ue, 1), force, moment);
+    }
     close_element(state, result, e, step, broken);
   }
   return result;
+}
+
+}  // namespace
+
+GroupStepResult spring_forces(const ElementTable& table, const ElementGroup& group, const SpringGroupParameters& p,
+                              NodalState& nodes, SpringState& state, double dt) {
+  return p.general ? general_spring_forces(table, group, p, nodes, state, dt)
+                   : axial_spring_forces(table, group, p, nodes, state, dt);
 }
 
 }  // namespace crumple

@@ -1,6 +1,7 @@
 #include "crumple/model/functions.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace crumple {
 
@@ -12,6 +13,12 @@ double Function::operator()(double at) const {
   const auto i = static_cast<std::size_t>(upper - x.begin());
   const double t = (at - x[i - 1]) / (x[i] - x[i - 1]);
   return y[i - 1] + t * (y[i] - y[i - 1]);
+}
+
+double Function::steepest_slope() const {
+  double slope = 0.0;
+  for (std::size_t k = 1; k < x.size(); ++k) slope = std::max(slope, std::abs(y[k] - y[k - 1]) / (x[k] - x[k - 1]));
+  return slope;
 }
 
 }  // namespace crumple

@@ -315,16 +315,18 @@ void add_brick_fields(FieldSink& out, const Model& m, const SolverState& state) 
   add_status_fields(out, ElementKind::Brick8, b.deleted);
 }
 
-// Springs (docs/theory/spring.md): the axial force (positive in tension) and the elongation, per spring.
+// Springs (docs/theory/spring.md): per spring, six forces and six elongations, one per degree of freedom: a TYPE4
+// spring's axial force (positive in tension) and elongation first, the rest 0; a general spring's forces, moments,
+// displacements and rotations in the global axes (SP-9).
 void add_spring_fields(FieldSink& out, const Model& m, const SolverState& state) {
   const std::size_t n = m.elements[static_cast<std::size_t>(ElementKind::Spring)].size();
   if (n == 0) return;
   const SpringState& s = state.springs;
-  for (const auto* v : {&s.force, &s.elongation, &s.internal_energy, &s.mass, &s.critical_dt})
-    require_size(*v, n, "spring values");
+  for (const auto* v : {&s.internal_energy, &s.mass, &s.critical_dt}) require_size(*v, n, "spring values");
+  for (const auto* v : {&s.force, &s.elongation}) require_size(*v, kSpringDofs * n, "spring values");
   const int k = static_cast<int>(ElementKind::Spring);
-  out.push_back(field("spring_force", k, 1, s.force));
-  out.push_back(field("elongation", k, 1, s.elongation));
+  out.push_back(field("spring_force", k, kSpringDofs, s.force));
+  out.push_back(field("elongation", k, kSpringDofs, s.elongation));
   add_element_scalars(out, m.run.anim, k, n, s.internal_energy, s.mass, s.hourglass_energy, s.critical_dt);
   add_status_fields(out, ElementKind::Spring, s.deleted);
 }

@@ -91,7 +91,7 @@ constexpr Evaluator<B> kBrick[] = {
     {"SXY", brick_stress<3>},    {"SYZ", brick_stress<4>}, {"SXZ", brick_stress<5>}, {"IE", scalar<B, &B::ie>},
     {"DENS", scalar<B, &B::density>}, {"VOL", scalar<B, &B::volume>}, {"PLAS", scalar<B, &B::plastic_strain>}};
 
-struct SpringValues {  // in the spring's frame: X along its nodes (a TYPE4 spring: FX and LX only)
+struct SpringValues {  // TYPE4: X along its nodes (FX and LX only); TYPE8: the global axes
   Vec3 f, m, l, r;
   double off, ie, length;
 };
@@ -293,15 +293,19 @@ BrickValues brick_values(const Model& m, const SolverState& s, std::size_t group
   return out;
 }
 
-// FX: the axial force, positive in tension; LX: the elongation (docs/theory/spring.md, SP-1, SP-2).
-SpringValues spring_values(const SolverState& s, std::int32_t e) {
+// FX: the axial force, positive in tension; LX: the elongation (docs/theory/spring.md, SP-1, SP-2); a general
+// spring's forces, moments, displacements and rotations in the global axes (SP-9).
+SpringValues spring_values(const SolverState& s, bool general, std::int32_t e) {
   const SpringState& sp = s.springs;
   const auto ue = static_cast<std::size_t>(e);
+  const double* f = &sp.force[kSpringDofs * ue];
+  const double* l = &sp.elongation[kSpringDofs * ue];
   SpringValues out{};
-  out.f = {sp.force[ue], 0.0, 0.0};
-  out.l = {sp.elongation[ue], 0.0, 0.0};
+  out.f = {f[0], f[1], f[2]}, out.m = {f[3], f[4], f[5]};
+  out.l = {l[0], l[1], l[2]}, out.r = {l[3], l[4], l[5]};
   out.ie = sp.internal_energy[ue];
-  out.length = sp.length0[ue] + sp.elongation[ue];
+  const double* rest = &sp.rest_offset[3 * ue];
+  out.length = general ? norm(Vec3{rest[0] + l[0], rest[1] + l[1], rest[2] + l[2]}) : sp.length0[ue] + l[0];
   out.off = element_condition(sp.deleted[ue]) == kElementDeleted ? 0.0 : 1.0;
   return out;
 }
@@ -596,7 +600,11 @@ void HistoryChannels::evaluate(const Request& r, const SolverState& s, const Vel
         append(kBrick, brick_values(m, s, g, object), r.getters, row);
         break;
       }
-      case HistoryObject::Spring: append(kSpring, spring_values(s, object), r.getters, row); break;
+      case HistoryObject::Spring: {
+        const auto g = static_cast<std::size_t>(element_group_[static_cast<std::size_t>(ElementKind::Spring)][o]);
+        append(kSpring, spring_values(s, s.spring_groups[g].general, object), r.getters, row);
+        break;
+      }
       case HistoryObject::Interface: append(kForces, interface_values(s.contact.results[o]), r.getters, row); break;
       case HistoryObject::RigidWall: append(kForces, wall_values(s.walls[o]), r.getters, row); break;
       case HistoryObject::RigidBody: append(kBody, body_values(s, s.bodies[o]), r.getters, row); break;

@@ -21,7 +21,7 @@ using hdf5::Handle;
 using hdf5::H5Types;
 
 // 2: marks/deleted_inverted and marks/step_drop_warned; 3: shells' hardening_term; 4: springs and /DAMP's alpha
-constexpr int kRestartFormat = 4;
+constexpr int kRestartFormat = 5;
 
 // The counts a snapshot's arrays are sized by; a restart file is read only by a model with the same counts.
 std::array<long long, 7> model_counts(const Model& m, const SolverState& s) {

@@ -1,5 +1,7 @@
 // Solver state of the springs (docs/theory/spring.md): per-group parameters from the part's property (/PROP/TYPE4),
 // each spring's length at rest and mass.
+#include <algorithm>
+
 #include "crumple/core/vec3.hpp"
 #include "crumple/elements/spring.hpp"
 #include "crumple/model/mass.hpp"
@@ -17,12 +19,18 @@ void setup_springs(const Model& m, SolverState& s) {
   for (std::size_t g = 0; g < m.element_groups.size(); ++g) {
     const ElementGroup& group = m.element_groups[g];
     if (group.kind != ElementKind::Spring) continue;
-    s.spring_groups[g] = spring_parameters(m.properties[static_cast<std::size_t>(group.property)].spring, m.functions);
+    const SpringGroupParameters& p = s.spring_groups[g] =
+        spring_parameters(m.properties[static_cast<std::size_t>(group.property)].spring, m.functions);
     for (std::int32_t e = group.begin; e < group.end; ++e) {
       const auto ue = static_cast<std::size_t>(e);
-      st.length0[ue] = element_measure(m.nodes, ElementKind::Spring, table.nodes_of(ue));
+      const std::int32_t* n = table.nodes_of(ue);
+      st.length0[ue] = element_measure(m.nodes, ElementKind::Spring, n);
+      const Vec3 offset = m.nodes.position(n[1]) - m.nodes.position(n[0]);
+      st.rest_offset[3 * ue] = offset.x, st.rest_offset[3 * ue + 1] = offset.y, st.rest_offset[3 * ue + 2] = offset.z;
       st.mass[ue] = element_mass(m, ElementKind::Spring, ue);
-      st.step_stiffness[ue] = s.spring_groups[g].step_stiffness;
+      // The stiffness it gives each node in the nodal steps (SP-4a): a general spring's stiffest translation.
+      st.step_stiffness[ue] = std::max({p.dof[0].step_stiffness, p.dof[1].step_stiffness, p.dof[2].step_stiffness});
+      for (int a = 0; a < 2; ++a) s.nodes.inertia[static_cast<std::size_t>(n[a])] += 0.5 * p.inertia;  // half each
     }
   }
 }

@@ -2,7 +2,11 @@
 // defaults, units, and the errors that name the field of an option Crumple lacks.
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cmath>
+
 #include "crumple/elements/critical_step.hpp"
+#include "crumple/elements/spring.hpp"
 #include "deck_files.hpp"
 
 // Its own namespace: the test programs are built in unity batches (cmake/Unity.cmake).
@@ -53,10 +57,10 @@ TEST(SpringKeywords, ReadsTheSpringItsPropertyAndItsMass) {
   const SpringSection& s = m.properties[0].spring;
   EXPECT_EQ(m.properties[0].kind, PropertyKind::Spring);
   EXPECT_DOUBLE_EQ(s.mass, 2.0);
-  EXPECT_DOUBLE_EQ(s.stiffness, 1000.0);
-  EXPECT_DOUBLE_EQ(s.damping, 20.0);
-  EXPECT_DOUBLE_EQ(s.delta_min, -0.1);
-  EXPECT_DOUBLE_EQ(s.delta_max, 0.2);
+  EXPECT_DOUBLE_EQ(s.dof[0].stiffness, 1000.0);
+  EXPECT_DOUBLE_EQ(s.dof[0].damping, 20.0);
+  EXPECT_DOUBLE_EQ(s.dof[0].delta_min, -0.1);
+  EXPECT_DOUBLE_EQ(s.dof[0].delta_max, 0.2);
   EXPECT_EQ(m.parts[0].material, -1);  // mat_ID 0: the property carries the law
   EXPECT_DOUBLE_EQ(m.element_mass, 2.0);
   EXPECT_DOUBLE_EQ(m.nodal_mass[0], 1.0);
@@ -74,9 +78,9 @@ TEST(SpringKeywords, ForceFunctionWithItsScales) {
             R(1.0) + R(4000.0) + "\n";
   const Model m = read_deck(starter(dir, d)).model;
   const SpringSection& s = m.properties[0].spring;
-  EXPECT_EQ(s.function, 0);
-  EXPECT_DOUBLE_EQ(s.function_scale, 2.0);
-  EXPECT_DOUBLE_EQ(s.abscissa_scale, 0.5);
+  EXPECT_EQ(s.dof[0].function, 0);
+  EXPECT_DOUBLE_EQ(s.dof[0].function_scale, 2.0);
+  EXPECT_DOUBLE_EQ(s.dof[0].abscissa_scale, 0.5);
   // eq. SP-4b: the steepest segment, (4000 - 20) / 0.99 = 4020.2, times A / Ascale = 4
   const double k = 4.0 * 3980.0 / 0.99;
   EXPECT_NEAR(initial_element_time_step(m, ElementKind::Spring, 0), 2.0 / std::sqrt(2.0 * k), 1e-12);
@@ -85,8 +89,8 @@ TEST(SpringKeywords, ForceFunctionWithItsScales) {
 TEST(SpringKeywords, BlankFailureElongationsNeverBreak) {
   test::TempDir dir;
   const Model m = read_deck(starter(dir, SpringDeck{})).model;
-  EXPECT_LE(m.properties[0].spring.delta_min, -1e30);
-  EXPECT_GE(m.properties[0].spring.delta_max, 1e30);
+  EXPECT_LE(m.properties[0].spring.dof[0].delta_min, -1e30);
+  EXPECT_GE(m.properties[0].spring.dof[0].delta_max, 1e30);
 }
 
 TEST(SpringKeywords, RefusedOptionsNameTheirField) {
@@ -100,8 +104,12 @@ TEST(SpringKeywords, RefusedOptionsNameTheirField) {
   d.line3 = I(0) + I(0) + I(6);
   EXPECT_NE(error_of(d).find("fct_ID21"), std::string::npos) << error_of(d);
   d = SpringDeck{};
-  d.line3 = I(0) + I(5);
+  d.line3 = I(0) + I(6);
   EXPECT_NE(error_of(d).find("field H"), std::string::npos) << error_of(d);
+  d = SpringDeck{};
+  d.line3 = I(8) + I(5);  // hardening 5 without its residual elongation function (the reference's error 231)
+  d.extra = "/FUNCT/8\nyield\n" + R(-1.0) + R(-30.0) + "\n" + R(1.0) + R(30.0) + "\n";
+  EXPECT_NE(error_of(d).find("fct_ID31"), std::string::npos) << error_of(d);
   d = SpringDeck{};
   d.line3 = I(8) + I(4);  // kinematic hardening without its lower curve
   d.extra = "/FUNCT/8\nyield\n" + R(-1.0) + R(-30.0) + "\n" + R(1.0) + R(30.0) + "\n";
@@ -125,6 +133,30 @@ TEST(SpringKeywords, RefusedOptionsNameTheirField) {
   d = SpringDeck{};
   d.line2 = R(0.0) + R(0.0);
   EXPECT_NE(error_of(d).find("K, C"), std::string::npos) << error_of(d);
+}
+
+// A hardening spring's K below its curve's steepest slope unloads at that slope, as the reference runs it (SP-4c),
+// with a warning; a nonlinear elastic spring (H 0) takes the slope for its step only.
+TEST(SpringKeywords, HardeningStiffnessRaisedToTheCurvesSlope) {
+  test::TempDir dir;
+  SpringDeck d;
+  d.line2 = R(500.0) + R(0.0) + R(2.0);  // K 500, A 2
+  d.line3 = I(8) + I(2);
+  d.line4 = R(0.0) + R(0.0) + R(0.5);  // Ascale 0.5: the slope A 2000 / Ascale = 8000
+  d.extra = "/FUNCT/8\nyield\n" + R(-1.0) + R(-515.0) + "\n" + R(-0.01) + R(-20.0) + "\n" + R(0.0) + R(0.0) + "\n" +
+            R(0.01) + R(20.0) + "\n" + R(1.0) + R(515.0) + "\n";
+  const Deck r = read_deck(starter(dir, d));
+  bool warned = false;
+  for (const auto& w : r.report.warnings) warned = warned || w.message.find("steepest slope") != std::string::npos;
+  EXPECT_TRUE(warned);
+  const SpringGroupParameters p = spring_parameters(r.model.properties[0].spring, r.model.functions);
+  EXPECT_DOUBLE_EQ(p.dof[0].stiffness, 8000.0);
+  EXPECT_DOUBLE_EQ(p.dof[0].step_stiffness, 8000.0);
+  d.line3 = I(8) + I(0);  // H 0: the force is the curve's; K only bounds the step
+  const Deck e = read_deck(starter(dir, d));
+  const SpringGroupParameters elastic = spring_parameters(e.model.properties[0].spring, e.model.functions);
+  EXPECT_DOUBLE_EQ(elastic.dof[0].stiffness, 500.0);
+  EXPECT_DOUBLE_EQ(elastic.dof[0].step_stiffness, 8000.0);
 }
 
 TEST(SpringKeywords, MaterialZeroOnlyWhereThePropertyCarriesTheLaw) {
@@ -168,6 +200,86 @@ TEST(SpringKeywords, DampingRefusesSkewsAndDirections) {
   d.extra += "/AMS\n" + I(0) + "\n";  // selective mass scaling solves the nodes' updates together: not with /DAMP
   EXPECT_NE(error_of(d, "/RUN/T/1\n1.0\n/DT/AMS\n0.67 1e-5\n").find("no /DAMP together with /DT/AMS"),
             std::string::npos);
+}
+
+// A /PROP/TYPE8 card: line 1 (Mass 0.5, Inertia `inertia`, then flags), six laws of three lines, the rate line.
+std::string general_property(const std::array<std::string, 6>& k_c, double inertia = 0.01, const std::string& flags = "",
+                             const std::string& law2_x = I(0)) {
+  std::string s = "/PROP/TYPE8/30\ngeneral\n" + R(0.5) + R(inertia) + flags + "\n";
+  for (std::size_t d = 0; d < 6; ++d)
+    s += (k_c[d].empty() ? R(0.0) : k_c[d]) + "\n" + (d == 0 ? law2_x : I(0)) + "\n" + R(0.0) + "\n";
+  return s + I(0) + R(0.0) + "\n";
+}
+
+std::string general_deck(const std::string& property) {
+  std::string s = "/NODE\n" + I(101) + R(0.0) + R(0.0) + R(0.0) + "\n" + I(102) + R(0.0) + R(1.0) + R(0.0) + "\n";
+  s += "/SPRING/20\n" + I(7) + I(101) + I(102) + "\n/PART/20\nsprings\n" + I(30) + I(0) + "\n" + property;
+  return s + "/FUNCT/8\nyield\n" + R(-1.0) + R(-30.0) + "\n" + R(1.0) + R(30.0) + "\n";
+}
+
+std::string general_error(const std::string& property) {
+  test::TempDir dir;
+  return test::first_error(dir.write("T_0000.rad", test::begin_card("T") + general_deck(property) + "/END\n"));
+}
+
+// SP-9, SP-10: six laws in the global axes; the translations step as one of mass M with their largest K and C, the
+// rotations as one of inertia I (measured on the reference: K 1000 on X beside C 3 on Y steps as K 1000 with C 3).
+TEST(SpringKeywords, GeneralSpringReadsSixLawsAndSteps) {
+  test::TempDir dir;
+  const std::string property =
+      general_property({R(1000.0), R(200.0) + R(3.0), "", R(100.0), R(0.0) + R(0.05), ""});
+  const Model m = read_deck(dir.write("T_0000.rad", test::begin_card("T") + general_deck(property) + "/END\n")).model;
+  const SpringSection& s = m.properties[0].spring;
+  EXPECT_TRUE(s.general);
+  EXPECT_DOUBLE_EQ(s.inertia, 0.01);
+  EXPECT_DOUBLE_EQ(s.dof[1].damping, 3.0);
+  EXPECT_DOUBLE_EQ(s.dof[3].stiffness, 100.0);
+  const double translation = 0.5 / (std::sqrt(1000.0 * 0.5 + 9.0) + 3.0);    // 1.9561e-2, the reference's
+  const double rotation = 0.01 / (std::sqrt(100.0 * 0.01 + 0.0025) + 0.05);  // 9.5125e-3, the reference's
+  EXPECT_NEAR(initial_element_time_step(m, ElementKind::Spring, 0), std::min(translation, rotation), 1e-15);
+  EXPECT_NEAR(rotation, 9.5124921972504e-3, 1e-13);
+}
+
+TEST(SpringKeywords, GeneralSpringRefusalsNameTheirField) {
+  EXPECT_NE(general_error(general_property({R(1000.0), "", "", R(100.0), "", ""}, 0.0)).find("Inertia"),
+            std::string::npos);
+  EXPECT_NE(general_error(general_property({R(1000.0), "", "", "", "", ""}, 0.01, I(5))).find("skew_ID"),
+            std::string::npos);
+  EXPECT_NE(general_error(general_property({R(1000.0), "", "", "", "", ""}, 0.01, I(0) + I(0) + I(0) + I(1)))
+                .find("Ifail"),
+            std::string::npos);
+  // The second degree of freedom's hardening names its own field.
+  const std::string y_hardening = general_property({R(1000.0), R(1000.0), "", "", "", ""}, 0.01, "", I(0));
+  std::string bad = y_hardening;
+  const std::string y_line = "\n" + R(1000.0) + "\n" + I(0) + "\n";
+  bad.replace(bad.find(y_line, bad.find(y_line) + 1), y_line.size(), "\n" + R(1000.0) + "\n" + I(8) + I(7) + "\n");
+  EXPECT_NE(general_error(bad).find("H2"), std::string::npos) << general_error(bad);
+}
+
+// SP-11, H 5: loading on the curve, unloading from the peak along P to the residual elongation g(peak), reloading
+// along S; the compression side its mirror, on its own.
+TEST(SpringKeywords, ResidualHardeningFollowsItsCurves) {
+  Function f, g;
+  f.x = {-1.0, -0.01, 0.0, 0.01, 1.0}, f.y = {-515.0, -20.0, 0.0, 20.0, 515.0};
+  g.x = {-1.0, 0.0, 1.0}, g.y = {-0.5, 0.0, 0.5};
+  SpringDofParameters p;
+  p.stiffness = 2000.0, p.function = &f, p.hardening = 5, p.lower_function = &g;
+  double a = 0.0, b = 0.0, force = 0.0, delta = 0.0;
+  auto go = [&](double to) { force = spring_elastic_force(p, to, delta, force, a, b), delta = to; };
+  go(0.05);
+  EXPECT_DOUBLE_EQ(force, 40.0);  // on the curve
+  EXPECT_DOUBLE_EQ(a, 0.05);
+  go(0.049);  // the unloading curve P leaves the peak at slope K: 40 - 2000 * 0.001, to first order
+  const double n = 2000.0 * 0.025 / 40.0, x = (0.049 - 0.025) / 0.025;
+  EXPECT_NEAR(force, 40.0 * std::pow(x, n), 1e-12);
+  go(0.02);  // below the residual elongation 0.025: no force
+  EXPECT_DOUBLE_EQ(force, 0.0);
+  go(0.045);  // reloading along S, the line from (0.025, 0) to the peak
+  EXPECT_NEAR(force, 40.0 * (0.045 - 0.025) / 0.025, 1e-12);
+  go(-0.05);  // compression: its own virgin curve
+  EXPECT_DOUBLE_EQ(force, -40.0);
+  EXPECT_DOUBLE_EQ(b, -0.05);
+  EXPECT_DOUBLE_EQ(a, 0.05);
 }
 
 }  // namespace test_spring_keywords

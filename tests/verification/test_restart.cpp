@@ -6,8 +6,9 @@
 // The decks cover shells with a rigid body and a rigid wall (the example tube), TYPE7 contact with friction and a
 // rigid body of bricks (contact_idel), a continued run (ball_two_runs, stopped in its first engine deck),
 // accelerometers, whose filters and integrals carry over (accel_strip), cut sections, whose work integrals
-// carry over and whose loads the first cycle after the restart records again (section_strip), and springs under
-// the mass damping of an engine /DAMP (damping_springs).
+// carry over and whose loads the first cycle after the restart records again (section_strip), springs under
+// the mass damping of an engine /DAMP (damping_springs), and general springs beside axial ones
+// (springs_mixed_damped).
 #include <gtest/gtest.h>
 #include <hdf5.h>
 
@@ -132,6 +133,7 @@ TEST_P(Restart, ResumedRunEndsBitwiseWhereTheUninterruptedRunEnds) { expect_bitw
 const std::filesystem::path kQa = CRUMPLE_QA_DIR;
 const std::filesystem::path kDecks = std::filesystem::path(CRUMPLE_SOURCE_DIR) / "decks";
 const std::filesystem::path kTestDecks = std::filesystem::path(CRUMPLE_SOURCE_DIR) / "tests" / "regression" / "decks";
+const std::filesystem::path kPeerDecks = std::filesystem::path(CRUMPLE_SOURCE_DIR) / "tests" / "regression" / "peer_decks";
 
 // Selective mass scaling (/AMS, /DT/AMS; docs/theory/time-step.md, SM-5a): the example tube (a rigid body, a rigid
 // wall) held at 4 times its step, whose mass matrix each cycle changes from the last: what the last cycle left
@@ -156,7 +158,9 @@ INSTANTIATE_TEST_SUITE_P(
                       RestartCase{"accel_strip", kTestDecks / "accel_strip" / "ACCEL_0000.rad", 300},
                       RestartCase{"section_strip", kTestDecks / "section_strip" / "SECT_0000.rad", 600},
                       // springs, /DAMP changed by the engine deck, /TH/SPRING (issue 28)
-                      RestartCase{"damping_springs", kQa / "damping_springs" / "DAMPC_0000.rad", 150}),
+                      RestartCase{"damping_springs", kQa / "damping_springs" / "DAMPC_0000.rad", 150},
+                      // general springs (their rotations and hardening 5) beside axial ones, under /DAMP
+                      RestartCase{"springs_mixed_damped", kPeerDecks / "springs_mixed_damped" / "SPRMIX_0000.rad", 250}),
     [](const auto& p) { return std::string(p.param.name); });
 
 TEST(Restart, FileOfAnotherModelIsRefusedWithItsCounts) {

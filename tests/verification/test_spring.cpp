@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <tuple>
 
 #include "verification_support.hpp"
 
@@ -130,6 +131,41 @@ TEST(Spring, RayleighStiffnessDampingDecayRate) {
   for (std::size_t k = 1; k < p.size(); ++k) {
     std::printf("stiffness damping peak ratio relative %.2e\n", p[k].second / p[k - 1].second / expected - 1.0);
     EXPECT_NEAR(p[k].second / p[k - 1].second, expected, 0.01 * expected);
+  }
+}
+
+// A /PROP/TYPE8 general spring along y (SP-9): node 2 free in x and about x only, released at 1 m/s and 1 rad/s. The
+// X law resists the sideways motion in the global axes, x(t) = (v0 / w) sin(w t), w = sqrt(Kx / m), m = M/2 + 99.5;
+// the XX law the twist, theta(t) = (w0 / wr) sin(wr t), wr = sqrt(Kxx / (I / 2)). Both periods within 0.2 % (at
+// /DT 0.1 the scheme shortens them by (w dt)^2 / 24, under 1e-4).
+TEST(Spring, GeneralSpringSidewaysAndTorsionPeriods) {
+  test::TempDir dir;
+  constexpr double kKx = 1000.0, kKxx = 10.0, kInertia = 0.2;
+  std::string d = node_cards({{1, 0.0, 0.0, 0.0}, {2, 0.0, 1.0, 0.0}});
+  d += "/SPRING/1\n" + I(1) + I(1) + I(2) + "\n/PART/1\nspring\n" + I(1) + I(0) + "\n";
+  d += "/PROP/TYPE8/1\ngeneral\n" + R(kSpringMass) + R(kInertia) + "\n";
+  for (double k : {kKx, 0.0, 0.0, kKxx, 0.0, 0.0}) d += R(k) + "\n" + I(0) + "\n" + R(0.0) + "\n";
+  d += node_group(1, {1}) + node_group(2, {2});
+  d += boundary_condition(1, "111 111", 1) + boundary_condition(2, "011 011", 2);
+  d += added_mass(1, kAddedMass, 2) + initial_velocity(1, kV0, 0.0, 0.0, 2);
+  d += "/INIVEL/ROT/2\nspin\n" + R(1.0) + R(0.0) + R(0.0) + I(2) + "\n";
+  const double w = std::sqrt(kKx / kMass), wr = std::sqrt(kKxx / (0.5 * kInertia));
+  Trace sideways, twist;
+  run_deck(dir, d, 5.0 * 2.0 * M_PI / w, 1e-9,
+           [&](const Model& m, const SolverState& s) {
+             sideways.t.push_back(s.time), twist.t.push_back(s.time);
+             sideways.y.push_back(s.nodes.x[node_index(m, 2)]);
+             twist.y.push_back(s.springs.elongation[3]);  // the XX rotation of spring 1
+           },
+           "/DT\n0.1 0\n");
+  for (const auto& [trace, omega, v0] : {std::tuple{&sideways, w, kV0}, std::tuple{&twist, wr, 1.0}}) {
+    const auto p = peaks(*trace);
+    ASSERT_GE(p.size(), 4u);
+    const double period = (p.back().first - p.front().first) / static_cast<double>(p.size() - 1);
+    std::printf("general spring period relative %.2e, amplitude relative %.2e\n", period / (2.0 * M_PI / omega) - 1.0,
+                p.front().second / (v0 / omega) - 1.0);
+    EXPECT_NEAR(period, 2.0 * M_PI / omega, 0.002 * 2.0 * M_PI / omega);
+    EXPECT_NEAR(p.front().second, v0 / omega, 0.005 * v0 / omega);
   }
 }
 

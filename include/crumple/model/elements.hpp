@@ -47,7 +47,7 @@ inline constexpr ElementKindDescription kElementKindTable[kElementKinds] = {
     {ElementKind::Brick8, "BRICK", "brick", "8-node bricks", "/BRICK", "BRICK", 8, 3, PropertyKind::Solid, "volume",
      "a brick of positive volume (nodes 1-4 one face, 5-8 the opposite face)", true, "/GRBRIC",
      "BRIC", "brick_ID", "brick8", "Hexahedron", &RunControl::dt_brick},
-    {ElementKind::Spring, "SPRING", "spring", "springs", "/SPRING", "SPRING", 2, 3, PropertyKind::Spring, "length",
+    {ElementKind::Spring, "SPRING", "spring", "springs", "/SPRING", "SPRING", 2, 6, PropertyKind::Spring, "length",
      "a spring of positive length", false, "/GRSPRI", "SPRI", "spring_ID", "spring2", "Polyline",
      &RunControl::dt_spring},
 };

@@ -19,6 +19,8 @@ struct Function {
   // reference does for load curves and yield curves alike (docs/deck-format.md, "Functions"); a one-point function
   // is a constant.
   double operator()(double at) const;
+  // The steepest segment, max |dy / dx| (0 for a one-point function).
+  double steepest_slope() const;
 };
 
 }  // namespace crumple

@@ -2,6 +2,7 @@
 // Properties (/PROP) and the global element defaults (/DEF_SHELL, /DEF_SOLID). The flags keep the values the
 // deck gave (0 = default); the model build resolves them into the effective formulation fields.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -50,21 +51,34 @@ struct SolidSection {  // /PROP/TYPE14 (= /PROP/SOLID), the values as written (0
   int ihkt = 0;               // Isolid 24 hourglass modulus: 0, 1 elastic (2, tangent, is refused)
 };
 
-// /PROP/TYPE4 (= /PROP/SPRING): a one-degree-of-freedom spring along its two nodes (docs/theory/spring.md). The
-// reader refuses the options Crumple lacks (hardening, sensors, rate effects, input per unit length).
-struct SpringSection {
-  double mass = 0.0;       // M, the spring's mass, half at each node [M]; > 0 (the reference refuses 0)
-  double stiffness = 0.0;  // K, the linear loading and unloading stiffness [F/L]; with a function, its step only
-  double damping = 0.0;    // C, the viscous damping [F T/L]
-  // fct_ID11: the force A f(delta / Ascale) of a nonlinear elastic spring (H 0), eq. SP-2b; 0: K delta.
+// The law of one degree of freedom of a spring (docs/theory/spring.md): a /PROP/TYPE4 spring has one, along its two
+// nodes; a /PROP/TYPE8 spring six, in the global axes (X, Y, Z, then the rotations XX, YY, ZZ). The reader refuses
+// the options Crumple lacks (sensors, rate effects, input per unit length, some hardening flags).
+struct SpringLaw {
+  double stiffness = 0.0;  // K, the linear loading and unloading stiffness [F/L] or [F L/rad]; with a function, its step only
+  double damping = 0.0;    // C, the viscous damping [F T/L] or [F L T/rad]
+  // fct_ID1: the force A f(delta / Ascale) of a nonlinear elastic spring (H 0), eq. SP-2b; 0: K delta.
   std::int64_t function_id = 0;
   std::int32_t function = -1;  // dense index (model build)
   double function_scale = 1.0;     // A, times the input force unit [F]
   double abscissa_scale = 1.0;     // Ascale, in the input length unit [L]
   int hardening = 0;  // H: 0 elastic (on the function), 1 isotropic, 2 uncoupled, 4 kinematic (SP-6 to SP-8)
-  std::int64_t lower_function_id = 0;  // fct_ID31: the lower yield curve of kinematic hardening (H 4)
+  std::int64_t lower_function_id = 0;  // fct_ID3: the lower yield curve of kinematic hardening (H 4)
   std::int32_t lower_function = -1;
   double delta_min = -1e30, delta_max = 1e30;  // the elongations that break it (0 or blank: never) [L]
+  bool acts() const { return stiffness > 0.0 || damping > 0.0 || function_id != 0; }
+};
+
+inline constexpr int kSpringDofs = 6;  // the most a spring has: three translations, three rotations
+
+// /PROP/TYPE4 (= /PROP/SPRING), a spring along its two nodes, and /PROP/TYPE8 (= /PROP/SPR_GENE), the general
+// spring of six degrees of freedom in the global axes (docs/theory/spring.md).
+struct SpringSection {
+  double mass = 0.0;     // M, the spring's mass, half at each node [M]; > 0 (the reference refuses 0)
+  double inertia = 0.0;  // TYPE8: its rotational inertia, half at each node [M L^2]
+  bool general = false;  // /PROP/TYPE8: six degrees of freedom in the global axes; else TYPE4's one along the nodes
+  std::array<SpringLaw, kSpringDofs> dof;  // TYPE4: dof[0] only
+  int dofs() const { return general ? kSpringDofs : 1; }
 };
 
 enum class PropertyKind : std::uint8_t { Shell, Solid, Spring };

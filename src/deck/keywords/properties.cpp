@@ -184,8 +184,25 @@ void spring_default_only(const Line& line, DeckContext& context, int column, int
     context.unsupported(line.error(column, width, name, default_only(feature)));
 }
 
-// Line 1: Mass, sens_ID, Isflag, Ileng. Line 2: K, C, A, B, D.
-void read_spring_mass_and_stiffness(CardReader& reader, DeckContext& context, SpringSection& s) {
+// The names of a spring law's fields in messages: /PROP/TYPE4's (K, fct_ID11, H, ...) or the i-th degree of
+// freedom's of /PROP/TYPE8 (K1, fct_ID11, H1, ... for X; K4 and fct_ID14 for XX).
+struct SpringLawNames {
+  std::string k, c, a, b, d, curve, h, unloading, lower, rate, delta_min, delta_max, f, e, ascale, hscale;
+  // A rotation's law (XX, YY, ZZ) is a moment against an angle in radians.
+  Dimension stiffness = dim::stiffness, damping = dim::viscous_damping, force = dim::force, displacement = dim::length;
+  explicit SpringLawNames(int dof) {  // dof 0: TYPE4; 1 to 6: TYPE8
+    if (dof > 3)
+      stiffness = dim::moment, damping = Dimension{1, 2, -1}, force = dim::moment, displacement = dim::none;
+    const std::string i = dof == 0 ? "" : std::to_string(dof), j = dof == 0 ? "1" : std::to_string(dof);
+    k = "K" + i, c = "C" + i, a = "A" + i, b = "B" + i, d = "D" + i, h = "H" + i;
+    curve = "fct_ID1" + j, unloading = "fct_ID2" + j, lower = "fct_ID3" + j, rate = "fct_ID4" + j;
+    delta_min = "delta_min" + i, delta_max = "delta_max" + i, f = "F" + i, e = "E" + i;
+    ascale = "Ascale" + i, hscale = "Hscale" + i;
+  }
+};
+
+// Line 1 of /PROP/TYPE4: Mass, sens_ID, Isflag, Ileng.
+void read_spring_mass(CardReader& reader, DeckContext& context, SpringSection& s) {
   const Line first = reader.next("Mass, sens_ID, Isflag, Ileng");
   s.mass = first.real(1, 20, "Mass", dim::mass);
   if (!(s.mass > 0.0)) first.fail(1, 20, "Mass", "a positive spring mass (the reference refuses a spring without mass)");
@@ -195,76 +212,140 @@ void read_spring_mass_and_stiffness(CardReader& reader, DeckContext& context, Sp
                       "the sensor flag (with a sensor) is");
   spring_default_only(first, context, 71, 10, "Ileng", static_cast<double>(first.integer(71, 10, "Ileng")), 0.0,
                       "input per unit length is");
+}
+
+// A law's first line: K, C, A, B, D.
+void read_spring_stiffness(CardReader& reader, DeckContext& context, SpringLaw& s, const SpringLawNames& n) {
   const Line second = reader.next("K, C, A, B, D");
-  s.stiffness = second.real(1, 20, "K", dim::stiffness);
-  s.damping = second.real(21, 20, "C", dim::viscous_damping);
-  if (s.stiffness < 0.0) second.fail(1, 20, "K", "a non-negative stiffness");
-  if (s.damping < 0.0) second.fail(21, 20, "C", "a non-negative damping");
-  // A scales the function fct_ID11 (read_spring_law checks it against one); blank or 0: 1.
-  const double a = second.real(41, 20, "A", dim::none);
-  s.function_scale = (a == 0.0 ? 1.0 : a) * reader.units().factor(dim::force);
-  spring_default_only(second, context, 61, 20, "B", second.real(61, 20, "B", dim::none), 0.0,
+  s.stiffness = second.real(1, 20, n.k, n.stiffness);
+  s.damping = second.real(21, 20, n.c, n.damping);
+  if (s.stiffness < 0.0) second.fail(1, 20, n.k, "a non-negative stiffness");
+  if (s.damping < 0.0) second.fail(21, 20, n.c, "a non-negative damping");
+  // A scales the function fct_ID1 (read_spring_law checks it against one); blank or 0: 1.
+  const double a = second.real(41, 20, n.a, dim::none);
+  s.function_scale = (a == 0.0 ? 1.0 : a) * reader.units().factor(n.force);
+  spring_default_only(second, context, 61, 20, n.b, second.real(61, 20, n.b, dim::none), 0.0,
                       "the logarithmic rate effect is");
-  spring_default_only(second, context, 81, 20, "D", second.real(81, 20, "D", dim::none), 1.0,
+  spring_default_only(second, context, 81, 20, n.d, second.real(81, 20, n.d, dim::none), 1.0,
                       "the rate effect's scale (with B) is");
 }
 
-// Line 3: fct_ID11, H, fct_ID21, fct_ID31, fct_ID41, delta_min, delta_max. Line 4: F, E, Ascale, Hscale.
-void read_spring_law(CardReader& reader, DeckContext& context, SpringSection& s) {
-  const Line third = reader.next("fct_ID11, H, fct_ID21, fct_ID31, fct_ID41, delta_min, delta_max");
-  s.function_id = third.optional_id(1, 10, "fct_ID11", IdKind::Other);
-  s.lower_function_id = third.optional_id(31, 10, "fct_ID31", IdKind::Other);
-  for (const auto& [column, name] : {std::pair{21, "fct_ID21"}, {41, "fct_ID41"}})
-    if (third.optional_id(column, 10, name, IdKind::Other) != 0)
-      context.unsupported(third.error(column, 10, name, default_only("an unloading or rate function (with H or B) is")));
+// The hardening flag and its curves (line 2 of a law): H 1, 2, 4 and 5 need a yield curve and an unloading K; H 4
+// its lower curve fct_ID3, H 5 its residual elongation in fct_ID3, which no other flag takes.
+void check_spring_hardening(const Line& third, CardReader& reader, DeckContext& context, const SpringLaw& s,
+                            const SpringLawNames& n) {
+  if (s.hardening < 0 || s.hardening == 3 || s.hardening > 5)
+    context.unsupported(third.error(11, 10, n.h, "0 (elastic), 1 (isotropic), 2 (uncoupled), 4 (kinematic) or 5 "
+                                                 "(residual) hardening (3 and 6 to 8 are not supported by Crumple)"));
+  if (s.hardening != 0 && s.function_id == 0)
+    third.fail(1, 10, n.curve, "the yield curve of a hardening spring (H 1, 2, 4, 5)");
+  if (s.hardening != 0 && !(s.stiffness > 0.0))
+    throw DeckError(third.where(), reader.card().keyword, n.k,
+                    "a positive unloading stiffness for a hardening spring (H 1, 2, 4, 5)", fmt::format("{:g}", s.stiffness));
+  if (s.hardening == 4 && s.lower_function_id == 0)
+    context.unsupported(third.error(31, 10, n.lower, "the lower yield curve of kinematic hardening (H 4; without "
+                                                     "it, not supported by Crumple)"));
+  if (s.hardening == 5 && s.lower_function_id == 0)  // the reference refuses it too (its error 231)
+    third.fail(31, 10, n.lower, "the residual elongation function of hardening 5");
+  if (s.hardening != 4 && s.hardening != 5 && s.lower_function_id != 0)
+    context.unsupported(third.error(31, 10, n.lower, default_only("a lower yield curve (with H 4), a residual "
+                                                                  "elongation (H 5) or a rate function (with B) is")));
+}
+
+// A law's second and third lines: fct_ID1, H, fct_ID2, fct_ID3, fct_ID4, delta_min, delta_max; F, E, Ascale, Hscale.
+void read_spring_law(CardReader& reader, DeckContext& context, SpringLaw& s, const SpringLawNames& n) {
+  const Line third = reader.next("fct_ID1, H, fct_ID2, fct_ID3, fct_ID4, delta_min, delta_max");
+  s.function_id = third.optional_id(1, 10, n.curve, IdKind::Other);
+  s.lower_function_id = third.optional_id(31, 10, n.lower, IdKind::Other);
+  for (const auto& [column, name] : {std::pair{21, &n.unloading}, {41, &n.rate}})
+    if (third.optional_id(column, 10, *name, IdKind::Other) != 0)
+      context.unsupported(third.error(column, 10, *name, default_only("an unloading or rate function (with H or B) is")));
   // A scales the function only: the reference prints A = 1 for a spring without one (measured, /PROP/SPRING with
   // K 1000 and A 2: the same energies as A 1), so a linear spring ignores it, as the reference does.
-  if (s.function_id == 0 && s.function_scale != reader.units().factor(dim::force))
-    context.note(third.where(), reader.card().keyword, "A (line 2, columns 41-60)",
-                 "the function scale factor acts on fct_ID11 only; a linear spring ignores it, as the reference does",
+  if (s.function_id == 0 && s.function_scale != reader.units().factor(n.force))
+    context.note(third.where(), reader.card().keyword, n.a,
+                 "the function scale factor acts on the force function only; a linear spring ignores it, as the "
+                 "reference does",
                  SkipKind::Unsupported);
-  s.hardening = static_cast<int>(third.integer(11, 10, "H"));
-  if (s.hardening != 0 && s.hardening != 1 && s.hardening != 2 && s.hardening != 4)
-    context.unsupported(third.error(11, 10, "H", "0 (elastic), 1 (isotropic), 2 (uncoupled) or 4 (kinematic) "
-                                                 "hardening (5 to 8 are not supported by Crumple)"));
-  if (s.hardening != 0 && s.function_id == 0)
-    third.fail(1, 10, "fct_ID11", "the yield curve of a hardening spring (H 1, 2, 4)");
-  if (s.hardening != 0 && !(s.stiffness > 0.0))
-    throw DeckError(third.where(), reader.card().keyword, "K (line 2)",
-                    "a positive unloading stiffness for a hardening spring (H 1, 2, 4)", fmt::format("{:g}", s.stiffness));
-  if (s.hardening == 4 && s.lower_function_id == 0)
-    context.unsupported(third.error(31, 10, "fct_ID31", "the lower yield curve of kinematic hardening (H 4; without "
-                                                       "it, not supported by Crumple)"));
-  if (s.hardening != 4 && s.lower_function_id != 0)
-    context.unsupported(third.error(31, 10, "fct_ID31", default_only("a lower yield curve (with H 4) or a rate "
-                                                                     "function (with B) is")));
-  const double low = third.real(61, 20, "delta_min", dim::length);
-  const double high = third.real(81, 20, "delta_max", dim::length);
-  if (low > 0.0) third.fail(61, 20, "delta_min", "a negative failure elongation (0 or blank: none)");
-  if (high < 0.0) third.fail(81, 20, "delta_max", "a positive failure elongation (0 or blank: none)");
+  s.hardening = static_cast<int>(third.integer(11, 10, n.h));
+  check_spring_hardening(third, reader, context, s, n);
+  const double low = third.real(61, 20, n.delta_min, n.displacement);
+  const double high = third.real(81, 20, n.delta_max, n.displacement);
+  if (low > 0.0) third.fail(61, 20, n.delta_min, "a negative failure elongation (0 or blank: none)");
+  if (high < 0.0) third.fail(81, 20, n.delta_max, "a positive failure elongation (0 or blank: none)");
   if (low < 0.0) s.delta_min = low;
   if (high > 0.0) s.delta_max = high;
   if (!reader.has_data()) return;
   const Line fourth = reader.next("F, E, Ascale, Hscale");
-  spring_default_only(fourth, context, 1, 20, "F", fourth.real(1, 20, "F", dim::none), 1.0,
+  spring_default_only(fourth, context, 1, 20, n.f, fourth.real(1, 20, n.f, dim::none), 1.0,
                       "the rate effect's velocity scale (with B or a function) is");
-  spring_default_only(fourth, context, 21, 20, "E", fourth.real(21, 20, "E", dim::none), 1.0,
+  spring_default_only(fourth, context, 21, 20, n.e, fourth.real(21, 20, n.e, dim::none), 1.0,
                       "the rate effect's factor E (with a function) is");
-  const double ascale = fourth.real(41, 20, "Ascale", dim::none);
-  if (ascale < 0.0) fourth.fail(41, 20, "Ascale", "a positive abscissa scale (0 or blank: 1)");
-  s.abscissa_scale = (ascale == 0.0 ? 1.0 : ascale) * reader.units().factor(dim::length);
-  spring_default_only(fourth, context, 61, 20, "Hscale", fourth.real(61, 20, "Hscale", dim::none), 1.0,
+  const double ascale = fourth.real(41, 20, n.ascale, dim::none);
+  if (ascale < 0.0) fourth.fail(41, 20, n.ascale, "a positive abscissa scale (0 or blank: 1)");
+  s.abscissa_scale = (ascale == 0.0 ? 1.0 : ascale) * reader.units().factor(n.displacement);
+  spring_default_only(fourth, context, 61, 20, n.hscale, fourth.real(61, 20, n.hscale, dim::none), 1.0,
                       "the ordinate scale of the hardening functions (with H) is");
 }
 
 void read_spring_property(CardReader& reader, DeckContext& context) {
   refuse_narrow_layout(reader);
   Property p = begin_property(reader, PropertyKind::Spring);
-  read_spring_mass_and_stiffness(reader, context, p.spring);
-  read_spring_law(reader, context, p.spring);
-  if (!(p.spring.stiffness > 0.0) && !(p.spring.damping > 0.0) && p.spring.function_id == 0)
+  read_spring_mass(reader, context, p.spring);
+  const SpringLawNames names(0);
+  read_spring_stiffness(reader, context, p.spring.dof[0], names);
+  read_spring_law(reader, context, p.spring.dof[0], names);
+  if (!p.spring.dof[0].acts())
     throw DeckError(p.where, reader.card().keyword, "K, C, fct_ID11", "a stiffness, a damping or a force function",
                     "none of them");
+  reader.finish();
+  context.model.properties.push_back(std::move(p));
+}
+
+// Line 1 of /PROP/TYPE8: Mass, Inertia, skew_ID, sens_ID, Isflag, Ifail, Ifail2, Iequil.
+void read_general_spring_mass(CardReader& reader, DeckContext& context, SpringSection& s) {
+  const Line first = reader.next("Mass, Inertia, skew_ID, sens_ID, Isflag, Ifail, Ifail2, Iequil");
+  s.mass = first.real(1, 20, "Mass", dim::mass);
+  if (!(s.mass > 0.0)) first.fail(1, 20, "Mass", "a positive spring mass (the reference refuses a spring without mass)");
+  s.inertia = first.real(21, 20, "Inertia", dim::inertia);
+  if (s.inertia < 0.0) first.fail(21, 20, "Inertia", "a non-negative rotational inertia");
+  if (first.optional_id(41, 10, "skew_ID", IdKind::Other) != 0)
+    context.unsupported(first.error(41, 10, "skew_ID", default_only("a general spring in a skew's axes is")));
+  if (first.optional_id(51, 10, "sens_ID", IdKind::Other) != 0)
+    context.unsupported(first.error(51, 10, "sens_ID", default_only("a spring switched by a sensor is")));
+  spring_default_only(first, context, 61, 10, "Isflag", static_cast<double>(first.integer(61, 10, "Isflag")), 0.0,
+                      "the sensor flag (with a sensor) is");
+  spring_default_only(first, context, 71, 10, "Ifail", static_cast<double>(first.integer(71, 10, "Ifail")), 0.0,
+                      "the multi-directional failure criterion is");
+  spring_default_only(first, context, 81, 10, "Ifail2", static_cast<double>(first.integer(81, 10, "Ifail2")), 0.0,
+                      "a failure criterion other than the displacement's is");
+  spring_default_only(first, context, 91, 10, "Iequil", static_cast<double>(first.integer(91, 10, "Iequil")), 0.0,
+                      "the moment equilibrium option is");
+}
+
+// /PROP/TYPE8 (/PROP/SPR_GENE): the general spring, one law per degree of freedom in the global axes (X, Y, Z, XX,
+// YY, ZZ), then the rate filter line (docs/theory/spring.md, "General springs").
+void read_general_spring_property(CardReader& reader, DeckContext& context) {
+  refuse_narrow_layout(reader);
+  Property p = begin_property(reader, PropertyKind::Spring);
+  p.spring.general = true;
+  read_general_spring_mass(reader, context, p.spring);
+  for (int d = 0; d < kSpringDofs; ++d) {
+    const SpringLawNames names(d + 1);
+    read_spring_stiffness(reader, context, p.spring.dof[static_cast<std::size_t>(d)], names);
+    read_spring_law(reader, context, p.spring.dof[static_cast<std::size_t>(d)], names);
+  }
+  if (reader.has_data()) {
+    const Line last = reader.next("Fsmooth, Fcut");
+    spring_default_only(last, context, 1, 10, "Fsmooth", static_cast<double>(last.integer(1, 10, "Fsmooth")), 0.0,
+                        "the rate filter is");
+    spring_default_only(last, context, 11, 20, "Fcut", last.real(11, 20, "Fcut", dim::none), 0.0,
+                        "the rate filter's cut-off frequency is");
+  }
+  if (p.spring.dof[3].acts() || p.spring.dof[4].acts() || p.spring.dof[5].acts())
+    if (!(p.spring.inertia > 0.0))
+      throw DeckError(p.where, reader.card().keyword, "Inertia",
+                      "a positive rotational inertia for a spring with rotational stiffness or damping", "0");
   reader.finish();
   context.model.properties.push_back(std::move(p));
 }
@@ -278,6 +359,8 @@ void register_property_keywords(KeywordTable& table) {
   table.push_back({"/PROP/SOLID", DeckPart::Starter, read_solid_property});
   table.push_back({"/PROP/TYPE4", DeckPart::Starter, read_spring_property});
   table.push_back({"/PROP/SPRING", DeckPart::Starter, read_spring_property});
+  table.push_back({"/PROP/TYPE8", DeckPart::Starter, read_general_spring_property});
+  table.push_back({"/PROP/SPR_GENE", DeckPart::Starter, read_general_spring_property});
 }
 
 }  // namespace crumple::deck

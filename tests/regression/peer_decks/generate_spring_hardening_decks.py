@@ -6,6 +6,8 @@
 #   own two curves): the internal energy at every 100th row is the reference's to its 4 digits (6.915, 2.197 and
 #   4.420 J at the end); the force the energy's slope gives, cycle by
 #   cycle, follows the reference's through the reversals (tension, unloading, reverse yield, reloading).
+#   spring_hardening_residual (H 5, the residual elongation half the largest): Crumple's row n + 1 carries the
+#   reference's row n internal energy to its 4 digits (the listing's lag, docs/theory/spring.md).
 import os
 I=lambda *v: "".join("%10d"%x for x in v)
 R=lambda *v: "".join("%20.10g"%x for x in v)
@@ -30,4 +32,6 @@ CURVE = ((-1, -515), (-0.01, -20), (0, 0), (0.01, 20), (1, 515))
 deck("spring_hardening_isotropic", H=1, pts=CURVE)
 deck("spring_hardening_uncoupled", H=2, pts=CURVE)
 # kinematic (H 4): the force between a lower and an upper curve, 20 N either side of a 500 N/m line
+# residual (H 5): unloading to the residual elongation fct_ID31(delta_max) = delta_max / 2 on each side (SP-11)
+deck("spring_hardening_residual", H=5, pts=CURVE, fct3=3, pts3=((-1, -0.5), (0, 0), (1, 0.5)))
 deck("spring_hardening_kinematic", H=4, pts=((-1, -480), (0, 20), (1, 520)), fct3=3, pts3=((-1, -520), (0, -20), (1, 480)))
