@@ -90,28 +90,23 @@ double spring_residual_force(const SpringDofParameters& p, double delta, double 
   return delta >= 0.0 ? residual_side(p, 1.0, delta, trial, a) : residual_side(p, -1.0, delta, trial, b);
 }
 
-double spring_elastic_force(const SpringDofParameters& p, double delta, double before, double force_before,
-                            double& a, double& b) {
-  if (p.function == nullptr) return p.stiffness * delta;  // SP-2
-  if (p.hardening == 0) return spring_curve(p, delta);    // SP-2b
-  if (p.hardening == 1) {
-    // SP-6: elastic at K inside |F| <= g(x); beyond it the force is on the curve, g(x), and x grows by the
-    // elongation the spring makes past the yield force (x = delta on a first loading: the curve itself).
-    const double trial = force_before + p.stiffness * (delta - before);
-    const double yield = spring_curve(p, a);
-    if (std::abs(trial) <= yield) return trial;
-    const double side = trial > 0.0 ? 1.0 : -1.0;
-    const double elastic_part = (side * yield - force_before) / p.stiffness;  // the step's elongation to the yield
-    a += std::max(0.0, std::abs(delta - before) - std::abs(elastic_part));
-    return side * spring_curve(p, a);
-  }
-  if (p.hardening == 5) return spring_residual_force(p, delta, before, force_before, a, b);
-  if (p.hardening == 4) {  // SP-8: elastic at K between the lower and the upper curve, on them beyond
-    const double trial = force_before + p.stiffness * (delta - before);
-    return std::min(std::max(trial, spring_lower_curve(p, delta)), spring_curve(p, delta));  // upper wins if crossed
-  }
-  // SP-7, H 2: tension and compression each elastic-plastic on their own side of the curve, from their own plastic
-  // elongation (a >= 0 in tension, b <= 0 in compression); no force between the two.
+namespace {
+
+// SP-6, H 1: elastic at K inside |F| <= g(x); beyond it the force is on the curve, g(x), and x grows by the
+// elongation the spring makes past the yield force (x = delta on a first loading: the curve itself).
+double isotropic_force(const SpringDofParameters& p, double delta, double before, double force_before, double& x) {
+  const double trial = force_before + p.stiffness * (delta - before);
+  const double yield = spring_curve(p, x);
+  if (std::abs(trial) <= yield) return trial;
+  const double side = trial > 0.0 ? 1.0 : -1.0;
+  const double elastic_part = (side * yield - force_before) / p.stiffness;  // the step's elongation to the yield
+  x += std::max(0.0, std::abs(delta - before) - std::abs(elastic_part));
+  return side * spring_curve(p, x);
+}
+
+// SP-7, H 2: tension and compression each elastic-plastic on their own side of the curve, from their own plastic
+// elongation (a >= 0 in tension, b <= 0 in compression); no force between the two.
+double uncoupled_force(const SpringDofParameters& p, double delta, double& a, double& b) {
   if (delta > a) {
     const double curve = spring_curve(p, delta), elastic = p.stiffness * (delta - a);
     if (elastic <= curve) return elastic;
@@ -127,6 +122,56 @@ double spring_elastic_force(const SpringDofParameters& p, double delta, double b
   return 0.0;
 }
 
+// The slope of the segment of an increasing function that holds the ordinate y (the end segments beyond).
+double slope_at_ordinate(const Function& g, double y) {
+  std::size_t k = 1;
+  while (k + 1 < g.x.size() && y > g.y[k]) ++k;
+  return (g.y[k] - g.y[k - 1]) / (g.x[k] - g.x[k - 1]);
+}
+
+// SP-12, H 6: isotropic hardening on the curve f (x, one for both sides), elastic along the unloading curve u
+// (fct_ID31) inside the yield band, at u's slope where the last force sits on it.
+double unloading_curve_force(const SpringDofParameters& p, double delta, double before, double force_before,
+                             double& x) {
+  const double slope = p.function_scale * slope_at_ordinate(*p.lower_function, force_before / p.function_scale);
+  const double trial = force_before + slope * (delta - before);
+  const double upper = spring_curve(p, x), lower = spring_curve(p, -x);
+  if (trial >= lower && trial <= upper) return trial;
+  x += std::abs(delta - before);
+  return trial > 0.0 ? spring_curve(p, x) : spring_curve(p, -x);
+}
+
+// SP-13, H 7: elastic hysteresis, loading at K capped by the loading curve f, unloading at K held above the
+// unloading curve u (fct_ID31), in tension; compression the mirror. No permanent elongation.
+double hysteresis_force(const SpringDofParameters& p, double delta, double before, double force_before) {
+  const double trial = force_before + p.stiffness * (delta - before);
+  const double loading = spring_curve(p, delta), unloading = spring_lower_curve(p, delta);
+  const bool away = delta >= 0.0 ? delta >= before : delta <= before;  // moving away from 0: loading
+  if (delta >= 0.0) return away ? std::min(trial, loading) : std::max(trial, unloading);
+  return away ? std::max(trial, loading) : std::min(trial, unloading);
+}
+
+}  // namespace
+
+double spring_elastic_force(const SpringDofParameters& p, double delta, double before, double force_before,
+                            double& a, double& b, double length0) {
+  if (p.function == nullptr) return p.stiffness * delta;  // SP-2
+  switch (p.hardening) {
+    case 0: return spring_curve(p, delta);  // SP-2b
+    case 1: return isotropic_force(p, delta, before, force_before, a);
+    case 2: return uncoupled_force(p, delta, a, b);
+    case 4: {  // SP-8: elastic at K between the lower and the upper curve, on them beyond (the upper wins if crossed)
+      const double trial = force_before + p.stiffness * (delta - before);
+      return std::min(std::max(trial, spring_lower_curve(p, delta)), spring_curve(p, delta));
+    }
+    case 5: return spring_residual_force(p, delta, before, force_before, a, b);
+    case 6: return unloading_curve_force(p, delta, before, force_before, a);
+    case 7: return hysteresis_force(p, delta, before, force_before);
+    case 8: return spring_curve(p, length0 + delta);  // SP-14: the curve of the total length
+    default: return 0.0;  // refused by the reader
+  }
+}
+
 namespace {
 
 // A broken spring's last force still acts over the step after it breaks: its work there, once (eq. SP-5a, SP-9).
@@ -139,11 +184,11 @@ double last_work(SpringState& state, std::size_t slot, double elongation) {
 // One degree of freedom's force at elongation `delta` (its elastic part and dashpot, eq. SP-2) and its work over the
 // step, trapezoidal (eq. SP-3); the state's slot keeps the elongation, the force and the hardening.
 double dof_force(const SpringDofParameters& p, SpringState& state, std::size_t slot, double delta, double dt,
-                 double& work) {
+                 double& work, double length0 = 0.0) {
   // The elongation rate over the last step (none before the first: the reference's dashpot starts at rest).
   const double rate = dt > 0.0 ? (delta - state.elongation[slot]) / dt : 0.0;
   const double elastic = spring_elastic_force(p, delta, state.elongation[slot], state.elastic_force[slot],
-                                              state.plastic_a[slot], state.plastic_b[slot]);
+                                              state.plastic_a[slot], state.plastic_b[slot], length0);
   state.elastic_force[slot] = elastic;
   const double force = elastic + p.damping * rate;
   work += 0.5 * (state.force[slot] + force) * (delta - state.elongation[slot]);
@@ -179,7 +224,7 @@ GroupStepResult axial_spring_forces(const ElementTable& table, const ElementGrou
       continue;
     }
     double work = 0.0;
-    const double force = dof_force(p.dof[0], state, slot, elongation, dt, work);
+    const double force = dof_force(p.dof[0], state, slot, elongation, dt, work, state.length0[ue]);
     state.internal_energy[ue] += work;
     result.internal_energy += work;
 

@@ -104,7 +104,7 @@ TEST(SpringKeywords, RefusedOptionsNameTheirField) {
   d.line3 = I(0) + I(0) + I(6);
   EXPECT_NE(error_of(d).find("fct_ID21"), std::string::npos) << error_of(d);
   d = SpringDeck{};
-  d.line3 = I(0) + I(6);
+  d.line3 = I(0) + I(3);
   EXPECT_NE(error_of(d).find("field H"), std::string::npos) << error_of(d);
   d = SpringDeck{};
   d.line3 = I(8) + I(5);  // hardening 5 without its residual elongation function (the reference's error 231)
@@ -252,7 +252,7 @@ TEST(SpringKeywords, GeneralSpringRefusalsNameTheirField) {
   const std::string y_hardening = general_property({R(1000.0), R(1000.0), "", "", "", ""}, 0.01, "", I(0));
   std::string bad = y_hardening;
   const std::string y_line = "\n" + R(1000.0) + "\n" + I(0) + "\n";
-  bad.replace(bad.find(y_line, bad.find(y_line) + 1), y_line.size(), "\n" + R(1000.0) + "\n" + I(8) + I(7) + "\n");
+  bad.replace(bad.find(y_line, bad.find(y_line) + 1), y_line.size(), "\n" + R(1000.0) + "\n" + I(8) + I(3) + "\n");
   EXPECT_NE(general_error(bad).find("H2"), std::string::npos) << general_error(bad);
 }
 
@@ -280,6 +280,50 @@ TEST(SpringKeywords, ResidualHardeningFollowsItsCurves) {
   EXPECT_DOUBLE_EQ(force, -40.0);
   EXPECT_DOUBLE_EQ(b, -0.05);
   EXPECT_DOUBLE_EQ(a, 0.05);
+}
+
+// SP-12 to SP-14: H 6 unloads along fct_ID31 inside its isotropic yield band, H 7 loads on f and unloads held above
+// fct_ID31 with no permanent elongation, H 8 reads f at the total length.
+TEST(SpringKeywords, UnloadingCurveHysteresisAndTotalLength) {
+  Function f, g;
+  f.x = {-1.0, -0.01, 0.0, 0.01, 1.0}, f.y = {-515.0, -20.0, 0.0, 20.0, 515.0};
+  g.x = {-1.0, -0.01, 0.0, 0.01, 1.0}, g.y = {-200.0, -5.0, 0.0, 5.0, 200.0};
+  SpringDofParameters p;
+  p.stiffness = 2000.0, p.function = &f, p.lower_function = &g;
+  double a = 0.0, b = 0.0, force = 0.0, delta = 0.0;
+  auto go = [&](double to) { force = spring_elastic_force(p, to, delta, force, a, b, 1.0), delta = to; };
+  p.hardening = 6;
+  go(0.05);
+  EXPECT_DOUBLE_EQ(force, 40.0);  // the first loading: on f, x = 0.05
+  go(0.04);  // unloading at the slope of g's segment holding 40 N, 195/0.99 N/m
+  EXPECT_NEAR(force, 40.0 - 0.01 * 195.0 / 0.99, 1e-12);
+  p.hardening = 7, a = 0.0, force = 0.0, delta = 0.0;
+  go(0.05);
+  EXPECT_DOUBLE_EQ(force, 40.0);  // loading at K 2000, capped by f
+  go(0.049);
+  EXPECT_DOUBLE_EQ(force, 38.0);  // unloading at K, above g (9.7 N)
+  go(0.02);
+  EXPECT_NEAR(force, 5.0 + 195.0 * 0.01 / 0.99, 1e-12);  // held on g
+  p.hardening = 8;
+  go(0.0);  // the curve at the length at rest, 1 m: 515 N
+  EXPECT_DOUBLE_EQ(force, 515.0);
+}
+
+TEST(SpringKeywords, HysteresisWithoutItsUnloadingCurveRunsAsUncoupled) {
+  test::TempDir dir;
+  SpringDeck d;
+  d.line3 = I(8) + I(7);
+  d.extra = "/FUNCT/8\nyield\n" + R(-1.0) + R(-30.0) + "\n" + R(1.0) + R(30.0) + "\n";
+  const Deck r = read_deck(starter(dir, d));
+  EXPECT_EQ(r.model.properties[0].spring.dof[0].hardening, 2);
+  bool warned = false;
+  for (const auto& w : r.report.warnings) warned = warned || w.message.find("H 7") != std::string::npos;
+  EXPECT_TRUE(warned);
+  // A general spring's law takes no total length (H 8).
+  const std::string y_line = "\n" + R(1000.0) + "\n" + I(0) + "\n";
+  std::string bad = general_property({R(1000.0), R(1000.0), "", "", "", ""});
+  bad.replace(bad.find(y_line, bad.find(y_line) + 1), y_line.size(), "\n" + R(1000.0) + "\n" + I(8) + I(8) + "\n");
+  EXPECT_NE(general_error(bad).find("H2"), std::string::npos) << general_error(bad);
 }
 
 }  // namespace test_spring_keywords

@@ -20,8 +20,10 @@ struct SpringDofParameters {
   const Function* function = nullptr;  // fct_ID1: the force A f(delta / Ascale) (eq. SP-2b); none: K delta
   double function_scale = 1.0, abscissa_scale = 1.0;  // A [F], Ascale [L]
   double step_stiffness = 0.0;  // the stiffness of the step: K, or the function's steepest slope if larger (SP-4b)
-  int hardening = 0;  // H: 0 elastic, 1 isotropic (SP-6), 2 uncoupled (SP-7), 4 kinematic (SP-8), 5 residual (SP-11)
-  const Function* lower_function = nullptr;  // fct_ID3: H 4's lower yield curve, H 5's residual elongation
+  int hardening = 0;  // H: 0 elastic, 1 isotropic (SP-6), 2 uncoupled (SP-7), 4 kinematic (SP-8), 5 residual
+                      // (SP-11), 6 unloading curve (SP-12), 7 hysteresis (SP-13), 8 total length (SP-14)
+  const Function* lower_function = nullptr;  // fct_ID3: H 4's lower yield curve, H 5's residual elongation,
+                                             // H 6 and 7's unloading curve
   bool acts() const { return step_stiffness > 0.0 || damping > 0.0; }
 };
 
@@ -42,9 +44,10 @@ inline double spring_lower_curve(const SpringDofParameters& p, double delta) {
 }
 
 // The spring's force without its dashpot at elongation `delta` from the last cycle's (`before`, `force_before`),
-// updating the hardening state `a`, `b` (eq. SP-2, SP-2b, SP-6, SP-7).
+// updating the hardening state `a`, `b` (eq. SP-2, SP-2b, SP-6 to SP-8, SP-11 to SP-14; `length0`: the spring's
+// length at rest, for H 8).
 double spring_elastic_force(const SpringDofParameters& p, double delta, double before, double force_before,
-                            double& a, double& b);
+                            double& a, double& b, double length0 = 0.0);
 
 // H 5, elastic-plastic with nonlinear unloading to a residual elongation, each side on its own (eq. SP-11).
 double spring_residual_force(const SpringDofParameters& p, double delta, double before, double force_before,

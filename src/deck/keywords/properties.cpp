@@ -190,7 +190,8 @@ struct SpringLawNames {
   std::string k, c, a, b, d, curve, h, unloading, lower, rate, delta_min, delta_max, f, e, ascale, hscale;
   // A rotation's law (XX, YY, ZZ) is a moment against an angle in radians.
   Dimension stiffness = dim::stiffness, damping = dim::viscous_damping, force = dim::force, displacement = dim::length;
-  explicit SpringLawNames(int dof) {  // dof 0: TYPE4; 1 to 6: TYPE8
+  int dof = 0;  // 0: TYPE4's law; 1 to 6: a TYPE8 law's degree of freedom
+  explicit SpringLawNames(int index) : dof(index) {
     if (dof > 3)
       stiffness = dim::moment, damping = Dimension{1, 2, -1}, force = dim::moment, displacement = dim::none;
     const std::string i = dof == 0 ? "" : std::to_string(dof), j = dof == 0 ? "1" : std::to_string(dof);
@@ -230,26 +231,34 @@ void read_spring_stiffness(CardReader& reader, DeckContext& context, SpringLaw& 
                       "the rate effect's scale (with B) is");
 }
 
-// The hardening flag and its curves (line 2 of a law): H 1, 2, 4 and 5 need a yield curve and an unloading K; H 4
-// its lower curve fct_ID3, H 5 its residual elongation in fct_ID3, which no other flag takes.
-void check_spring_hardening(const Line& third, CardReader& reader, DeckContext& context, const SpringLaw& s,
+// The hardening flag and its curves (line 2 of a law): every flag needs fct_ID1, most an unloading K; H 4 to 7 take
+// a second curve fct_ID3 (lower yield curve, residual elongation, unloading curve), which no other flag takes.
+void check_spring_hardening(const Line& third, CardReader& reader, DeckContext& context, SpringLaw& s,
                             const SpringLawNames& n) {
-  if (s.hardening < 0 || s.hardening == 3 || s.hardening > 5)
-    context.unsupported(third.error(11, 10, n.h, "0 (elastic), 1 (isotropic), 2 (uncoupled), 4 (kinematic) or 5 "
-                                                 "(residual) hardening (3 and 6 to 8 are not supported by Crumple)"));
+  if (s.hardening < 0 || s.hardening == 3 || s.hardening > 8)
+    context.unsupported(third.error(11, 10, n.h, "0 (elastic), 1 (isotropic), 2 (uncoupled), 4 (kinematic), 5 "
+                                                 "(residual), 6 (unloading curve), 7 (hysteresis) or 8 (total length) "
+                                                 "hardening (3 is not supported by Crumple)"));
   if (s.hardening != 0 && s.function_id == 0)
-    third.fail(1, 10, n.curve, "the yield curve of a hardening spring (H 1, 2, 4, 5)");
-  if (s.hardening != 0 && !(s.stiffness > 0.0))
+    third.fail(1, 10, n.curve, "the force or yield curve of a spring with hardening H");
+  if (s.hardening != 0 && s.hardening != 6 && s.hardening != 8 && !(s.stiffness > 0.0))
     throw DeckError(third.where(), reader.card().keyword, n.k,
-                    "a positive unloading stiffness for a hardening spring (H 1, 2, 4, 5)", fmt::format("{:g}", s.stiffness));
+                    "a positive unloading stiffness for a hardening spring (H 1, 2, 4, 5, 7)", fmt::format("{:g}", s.stiffness));
   if (s.hardening == 4 && s.lower_function_id == 0)
     context.unsupported(third.error(31, 10, n.lower, "the lower yield curve of kinematic hardening (H 4; without "
                                                      "it, not supported by Crumple)"));
-  if (s.hardening == 5 && s.lower_function_id == 0)  // the reference refuses it too (its error 231)
-    third.fail(31, 10, n.lower, "the residual elongation function of hardening 5");
-  if (s.hardening != 4 && s.hardening != 5 && s.lower_function_id != 0)
+  if ((s.hardening == 5 || s.hardening == 6) && s.lower_function_id == 0)  // the reference's errors 231 and 1057
+    third.fail(31, 10, n.lower, "the residual elongation (H 5) or unloading curve (H 6) function");
+  if (s.hardening == 7 && s.lower_function_id == 0) {  // the reference's warning 1059: it runs as H 2
+    context.warn(third.where(), reader.card().keyword,
+                 fmt::format("{}: hysteresis (H 7) without its unloading curve runs as uncoupled hardening (H 2), as "
+                             "the reference runs it", n.lower));
+    s.hardening = 2;
+  }
+  if ((s.hardening < 4 || s.hardening > 7) && s.lower_function_id != 0)
     context.unsupported(third.error(31, 10, n.lower, default_only("a lower yield curve (with H 4), a residual "
-                                                                  "elongation (H 5) or a rate function (with B) is")));
+                                                                  "elongation (H 5), an unloading curve (H 6, 7) or a "
+                                                                  "rate function (with B) is")));
 }
 
 // A law's second and third lines: fct_ID1, H, fct_ID2, fct_ID3, fct_ID4, delta_min, delta_max; F, E, Ascale, Hscale.
@@ -269,6 +278,9 @@ void read_spring_law(CardReader& reader, DeckContext& context, SpringLaw& s, con
                  SkipKind::Unsupported);
   s.hardening = static_cast<int>(third.integer(11, 10, n.h));
   check_spring_hardening(third, reader, context, s, n);
+  if (s.hardening == 8 && n.dof > 0)  // a general spring's law: its total length is not measured
+    context.unsupported(third.error(11, 10, n.h, "0 to 7 for a general spring (H 8, the total length's curve, is "
+                                                 "not supported by Crumple on /PROP/TYPE8)"));
   const double low = third.real(61, 20, n.delta_min, n.displacement);
   const double high = third.real(81, 20, n.delta_max, n.displacement);
   if (low > 0.0) third.fail(61, 20, n.delta_min, "a negative failure elongation (0 or blank: none)");

@@ -6,8 +6,9 @@
 #   own two curves): the internal energy at every 100th row is the reference's to its 4 digits (6.915, 2.197 and
 #   4.420 J at the end); the force the energy's slope gives, cycle by
 #   cycle, follows the reference's through the reversals (tension, unloading, reverse yield, reloading).
-#   spring_hardening_residual (H 5, the residual elongation half the largest): Crumple's row n + 1 carries the
-#   reference's row n internal energy to its 4 digits (the listing's lag, docs/theory/spring.md).
+#   spring_hardening_residual (H 5, the residual elongation half the largest), spring_hardening_unloading_curve (H 6),
+#   spring_hardening_hysteresis (H 7) and spring_total_length (H 8): Crumple's row n + 1 carries the reference's row
+#   n internal energy to its 4 digits (the listing's lag, docs/theory/spring.md).
 import os
 I=lambda *v: "".join("%10d"%x for x in v)
 R=lambda *v: "".join("%20.10g"%x for x in v)
@@ -34,4 +35,10 @@ deck("spring_hardening_uncoupled", H=2, pts=CURVE)
 # kinematic (H 4): the force between a lower and an upper curve, 20 N either side of a 500 N/m line
 # residual (H 5): unloading to the residual elongation fct_ID31(delta_max) = delta_max / 2 on each side (SP-11)
 deck("spring_hardening_residual", H=5, pts=CURVE, fct3=3, pts3=((-1, -0.5), (0, 0), (1, 0.5)))
+# unloading curve (H 6) and hysteresis (H 7): unloading along the curve fct_ID31, 5 N at 0.01 m then 197 N/m (SP-12,
+# SP-13); total length (H 8): the force f(l0 + delta) of the length itself, 1 m at rest (SP-14)
+UNLOADING = ((-1, -200), (-0.01, -5), (0, 0), (0.01, 5), (1, 200))
+deck("spring_hardening_unloading_curve", H=6, pts=CURVE, fct3=3, pts3=UNLOADING)
+deck("spring_hardening_hysteresis", H=7, pts=CURVE, fct3=3, pts3=UNLOADING)
+deck("spring_total_length", H=8, pts=((0, 0), (0.9, 100), (1.1, 300), (2, 400)))
 deck("spring_hardening_kinematic", H=4, pts=((-1, -480), (0, 20), (1, 520)), fct3=3, pts3=((-1, -520), (0, -20), (1, 480)))
