@@ -231,17 +231,39 @@ std::int64_t Line::parsed_integer(int column, int width, std::string_view name, 
   fail(column, width, name, "an integer");
 }
 
+namespace {
+std::vector<std::string> split_words(const std::string& text) {
+  std::vector<std::string> out;
+  std::size_t i = 0;
+  while (i < text.size()) {
+    while (i < text.size() && (text[i] == ' ' || text[i] == '\t')) ++i;
+    const std::size_t start = i;
+    while (i < text.size() && text[i] != ' ' && text[i] != '\t') ++i;
+    if (i > start) out.push_back(text.substr(start, i - start));
+  }
+  return out;
+}
+}  // namespace
+
+// A value read in the input units, converted to the working ones.
+double Line::real_value(int column, int width, std::string_view name, Dimension d, double v) const {
+  const double converted = v * reader_->units().factor(d);
+  // A value that the /BEGIN unit conversion turns into infinity (or a non-zero value into 0) would pass the
+  // range checks of the card with a meaning the user never wrote.
+  if (!std::isfinite(converted) || (converted == 0.0) != (v == 0.0))
+    fail(column, width, name, "a value that stays finite and non-zero after conversion to the working units");
+  return converted;
+}
+
 double Line::real(int column, int width, std::string_view name, Dimension d, double fallback) const {
   const std::string field = raw(column, width);
   if (trim(field).empty()) return fallback * reader_->units().factor(d);
-  if (auto v = parse_fortran_real(field)) {
-    const double converted = *v * reader_->units().factor(d);
-    // A value that the /BEGIN unit conversion turns into infinity (or a non-zero value into 0) would pass the
-    // range checks of the card with a meaning the user never wrote.
-    if (!std::isfinite(converted) || (converted == 0.0) != (*v == 0.0))
-      fail(column, width, name, "a value that stays finite and non-zero after conversion to the working units");
-    return converted;
-  }
+  if (auto v = parse_fortran_real(field)) return real_value(column, width, name, d, *v);
+  // A field that holds several numbers apart (a misaligned deck): the reference reads the first and so does Crumple
+  // (measured: delta_max written "0.03      .000000000" breaks the spring at 0.03). Anything else is an error.
+  const auto words = split_words(field);
+  if (words.size() > 1 && std::all_of(words.begin(), words.end(), [](const std::string& w) { return parse_fortran_real(w).has_value(); }))
+    return real_value(column, width, name, d, *parse_fortran_real(words.front()));
   fail(column, width, name, "a real number");
 }
 

@@ -20,7 +20,7 @@ bool one_of(int value, std::initializer_list<int> allowed) {
 }
 
 std::string keyword_of(const Property& p) {
-  if (p.kind == PropertyKind::Spring && p.spring.general) return fmt::format("/PROP/SPR_GENE/{}", p.user_id);
+  if (p.kind == PropertyKind::Spring) return fmt::format("/PROP/{}/{}", p.spring.card(), p.user_id);
   return fmt::format("/PROP/{}/{}", describe(p.kind).name, p.user_id);
 }
 
@@ -295,7 +295,8 @@ void move_functions(Resolver& r) {
 void resolve_spring_functions(Resolver& r, Property& p, int d) {
   SpringLaw& law = p.spring.dof[static_cast<std::size_t>(d)];
   if (law.function_id == 0) return;
-  const std::string i = p.spring.general ? std::to_string(d + 1) : "1";
+  const bool six = p.spring.dofs() > 1;
+  const std::string i = six ? std::to_string(d + 1) : "1";
   Model& m = r.model;
   law.function = r.find(m.index.functions, law.function_id, p.where, keyword_of(p), "fct_ID1" + i, "function");
   if (law.lower_function_id != 0)
@@ -308,7 +309,7 @@ void resolve_spring_functions(Resolver& r, Property& p, int d) {
     r.context.warn(p.where, keyword_of(p),
                    fmt::format("K{} = {:g} is below the steepest slope of its yield curve fct_ID1{}, {:g}: the spring "
                                "unloads at that slope, as the reference runs it",
-                               p.spring.general ? i : "", law.stiffness, i, slope));
+                               six ? i : "", law.stiffness, i, slope));
   // H 1: the yield force is the curve's in both directions (SP-6), as the reference runs a curve that is odd about 0;
   // the reference's answer to another curve is not Crumple's.
   if (law.hardening != 1) return;

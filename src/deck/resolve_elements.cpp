@@ -106,9 +106,14 @@ void resolve_kind(Resolver& r, ElementKind kind) {
                   fmt::format("part {} with property {}", p.user_id, p.property_id));
       }
     }
+    // A general spring (/PROP/TYPE8) acts in the global axes: its nodes may coincide (SP-9).
+    const bool may_coincide = kind == ElementKind::Spring && part[e] >= 0 &&
+                              m.parts[static_cast<std::size_t>(part[e])].property >= 0 &&
+                              m.properties[static_cast<std::size_t>(m.parts[static_cast<std::size_t>(part[e])].property)]
+                                      .spring.frame == SpringFrame::Global;
     if (nodes_ok) {
       const double size = element_measure(m.nodes, kind, &connectivity[e * static_cast<std::size_t>(n)]);
-      if (!(size > 0.0))
+      if (!(size > 0.0) && !(may_coincide && size == 0.0))
         r.error(where, keyword, "node_ID1..",
                 std::string(description.valid_shape),
                 fmt::format("{} {} with {} {:.6g}", name, raw.user_id[e], description.measure, size));

@@ -52,7 +52,8 @@ double initial_element_time_step(const Model& model, ElementKind kind, std::size
       }
       return geometry::brick_characteristic_length(p) / speed;
     }
-    case ElementKind::Spring: return spring_critical_step(spring_parameters(property.spring, model.functions));
+    case ElementKind::Spring:
+      return spring_critical_step(spring_parameters(property.spring, model.functions), norm(x.position(n[1]) - x.position(n[0])));
   }
   return 0.0;
 }

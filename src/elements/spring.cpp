@@ -35,14 +35,14 @@ SpringDofParameters dof_parameters(const SpringLaw& s, const std::vector<Functio
 }  // namespace
 
 SpringGroupParameters spring_parameters(const SpringSection& s, const std::vector<Function>& functions) {
-  SpringGroupParameters p{s.mass, s.inertia, s.general};
+  SpringGroupParameters p{s.mass, s.inertia, s.frame};
   for (int d = 0; d < s.dofs(); ++d)
     p.dof[static_cast<std::size_t>(d)] = dof_parameters(s.dof[static_cast<std::size_t>(d)], functions);
   return p;
 }
 
-double spring_critical_step(const SpringGroupParameters& p) {
-  if (!p.general) return spring_dof_critical_step(p.dof[0], p.mass);
+double spring_critical_step(const SpringGroupParameters& p, double length) {
+  if (p.frame == SpringFrame::Axial) return spring_dof_critical_step(p.dof[0], p.mass);
   // SP-10: the translations as one degree of freedom of mass M with their largest stiffness and largest damping, the
   // rotations likewise with I (measured: K 1000 on X beside C 3 on Y steps as K 1000 with C 3).
   SpringDofParameters translation, rotation;
@@ -50,6 +50,11 @@ double spring_critical_step(const SpringGroupParameters& p) {
     SpringDofParameters& both = d < 3 ? translation : rotation;
     both.step_stiffness = std::max(both.step_stiffness, p.dof[d].step_stiffness);
     both.damping = std::max(both.damping, p.dof[d].damping);
+  }
+  if (p.frame == SpringFrame::Beam) {  // SP-18: the shear turns the ends as well, its stiffness times l^2
+    const double arm = length * length;
+    rotation.step_stiffness += std::max(p.dof[1].step_stiffness, p.dof[2].step_stiffness) * arm;
+    rotation.damping += std::max(p.dof[1].damping, p.dof[2].damping) * arm;
   }
   return std::min(spring_dof_critical_step(translation, p.mass), spring_dof_critical_step(rotation, p.inertia));
 }
@@ -293,12 +298,90 @@ GroupStepResult general_spring_forces(const ElementTable& table, const ElementGr
   return result;
 }
 
+Vec3 velocity(const NodalState& n, std::size_t k) { return {n.vx[k], n.vy[k], n.vz[k]}; }
+Vec3 spin(const NodalState& n, std::size_t k) { return {n.wx[k], n.wy[k], n.wz[k]}; }
+
+// The beam-type spring's frame at the current positions: X along the nodes; Y the last one turned by the nodes'
+// mean rotation over the step and made normal to X; Z = X x Y (eq. SP-15).
+std::array<Vec3, 3> beam_frame(const Vec3& x_axis, Vec3 y, const Vec3& mean_spin, double dt) {
+  y = y + scaled(cross(mean_spin, y), dt);
+  y = y - scaled(x_axis, dot(y, x_axis));
+  y = scaled(y, 1.0 / norm(y));
+  return {x_axis, y, cross(x_axis, y)};
+}
+
+// /PROP/TYPE13: six laws in the spring's own frame, tension, shear, torsion and bending, the shear coupled to the
+// ends' rotations as a beam's (eq. SP-15 to SP-18).
+GroupStepResult beam_spring_forces(const ElementTable& table, const ElementGroup& group,
+                                   const SpringGroupParameters& p, NodalState& nodes, SpringState& state, double dt) {
+  GroupStepResult result;
+  const bool recording = state.records.on(group.begin);
+  for (std::int32_t e = group.begin; e < group.end; ++e) {
+    const auto ue = static_cast<std::size_t>(e), slot = kSpringDofs * ue;
+    if (recording && !(state.deleted[ue] & kElementElsewhere)) state.records.clear(ue);
+    if (state.deleted[ue] & kElementElsewhere) continue;
+    const std::int32_t* n = table.nodes_of(ue);
+    const auto n1 = static_cast<std::size_t>(n[0]), n2 = static_cast<std::size_t>(n[1]);
+    const Vec3 axis = position(nodes, n[1]) - position(nodes, n[0]);
+    const double length = norm(axis);
+    if (!(length > 0.0)) {  // the nodes met: no frame left
+      result.inverted = e;
+      continue;
+    }
+    const Vec3 w1 = spin(nodes, n1), w2 = spin(nodes, n2);
+    double* y = &state.frame_y[3 * ue];
+    const auto [ex, ey, ez] = beam_frame(scaled(axis, 1.0 / length), {y[0], y[1], y[2]}, scaled(w1 + w2, 0.5), dt);
+    y[0] = ey.x, y[1] = ey.y, y[2] = ey.z;
+    // SP-16: the elongations, the shear's rate less the ends' mean turn times the length.
+    const Vec3 dv = velocity(nodes, n2) - velocity(nodes, n1), dw = w2 - w1;
+    const double* last = &state.elongation[slot];
+    const std::array<double, kSpringDofs> delta = {
+        length - state.length0[ue],
+        last[1] + (dot(dv, ey) - 0.5 * length * (dot(w1, ez) + dot(w2, ez))) * dt,
+        last[2] + (dot(dv, ez) + 0.5 * length * (dot(w1, ey) + dot(w2, ey))) * dt,
+        last[3] + dot(dw, ex) * dt, last[4] + dot(dw, ey) * dt, last[5] + dot(dw, ez) * dt};
+    double work = 0.0;
+    if (state.deleted[ue]) {  // broken last cycle: the work of its last forces over the step they acted (SP-5a)
+      for (std::size_t d = 0; d < kSpringDofs; ++d)
+        if (state.force[slot + d] != 0.0) work += last_work(state, slot + d, delta[d]);
+      state.internal_energy[ue] += work, result.internal_energy += work;
+      continue;
+    }
+    std::array<double, kSpringDofs> f{};
+    bool broken = false;
+    for (std::size_t d = 0; d < kSpringDofs; ++d) {
+      f[d] = dof_force(p.dof[d], state, slot + d, delta[d], dt, work);
+      broken = broken || outside(p.dof[d], delta[d]);
+      if (!std::isfinite(f[d])) result.non_finite = e;
+    }
+    state.internal_energy[ue] += work;
+    result.internal_energy += work;
+    // SP-17: what the spring exerts on node 1 (node 2 the opposite force), the shear's couple shared by the ends.
+    const Vec3 force = scaled(ex, f[0]) + scaled(ey, f[1]) + scaled(ez, f[2]);
+    const Vec3 couple = scaled(ey, -0.5 * length * f[2]) + scaled(ez, 0.5 * length * f[1]);
+    const Vec3 moment = scaled(ex, f[3]) + scaled(ey, f[4]) + scaled(ez, f[5]);
+    const Vec3 on1 = couple + moment, on2 = couple - moment;  // internal: the opposite of what acts on the node
+    subtract_internal(nodes, n1, scaled(force, -1.0), scaled(on1, -1.0));
+    subtract_internal(nodes, n2, force, scaled(on2, -1.0));
+    if (recording) {
+      record_load(state.records.load_at(ue, 0), scaled(force, -1.0), scaled(on1, -1.0));
+      record_load(state.records.load_at(ue, 1), force, scaled(on2, -1.0));
+    }
+    close_element(state, result, e, spring_critical_step(p, length), broken);
+  }
+  return result;
+}
+
 }  // namespace
 
 GroupStepResult spring_forces(const ElementTable& table, const ElementGroup& group, const SpringGroupParameters& p,
                               NodalState& nodes, SpringState& state, double dt) {
-  return p.general ? general_spring_forces(table, group, p, nodes, state, dt)
-                   : axial_spring_forces(table, group, p, nodes, state, dt);
+  switch (p.frame) {
+    case SpringFrame::Axial: return axial_spring_forces(table, group, p, nodes, state, dt);
+    case SpringFrame::Global: return general_spring_forces(table, group, p, nodes, state, dt);
+    case SpringFrame::Beam: return beam_spring_forces(table, group, p, nodes, state, dt);
+  }
+  return {};
 }
 
 }  // namespace crumple

@@ -602,7 +602,7 @@ void HistoryChannels::evaluate(const Request& r, const SolverState& s, const Vel
       }
       case HistoryObject::Spring: {
         const auto g = static_cast<std::size_t>(element_group_[static_cast<std::size_t>(ElementKind::Spring)][o]);
-        append(kSpring, spring_values(s, s.spring_groups[g].general, object), r.getters, row);
+        append(kSpring, spring_values(s, s.spring_groups[g].frame == SpringFrame::Global, object), r.getters, row);
         break;
       }
       case HistoryObject::Interface: append(kForces, interface_values(s.contact.results[o]), r.getters, row); break;

@@ -115,8 +115,15 @@ TEST(SpringKeywords, RefusedOptionsNameTheirField) {
   d.extra = "/FUNCT/8\nyield\n" + R(-1.0) + R(-30.0) + "\n" + R(1.0) + R(30.0) + "\n";
   EXPECT_NE(error_of(d).find("fct_ID31"), std::string::npos) << error_of(d);
   d = SpringDeck{};
-  d.line3 = I(0) + I(1);  // a hardening spring without its curve
-  EXPECT_NE(error_of(d).find("fct_ID11"), std::string::npos) << error_of(d);
+  d.line3 = I(0) + I(1);  // a hardening flag without its curve: linear, as the reference (measured), with a warning
+  {
+    test::TempDir dir;
+    const Deck r = read_deck(starter(dir, d));
+    EXPECT_EQ(r.model.properties[0].spring.dof[0].hardening, 0);
+    bool warned = false;
+    for (const auto& w : r.report.warnings) warned = warned || w.message.find("without a curve") != std::string::npos;
+    EXPECT_TRUE(warned);
+  }
   d = SpringDeck{};
   d.line3 = I(8) + I(1);  // isotropic hardening on a curve that is not odd about 0
   d.extra = "/FUNCT/8\nyield\n" + R(-1.0) + R(-30.0) + "\n" + R(0.0) + R(0.0) + "\n" + R(1.0) + R(20.0) + "\n";
@@ -230,7 +237,7 @@ TEST(SpringKeywords, GeneralSpringReadsSixLawsAndSteps) {
       general_property({R(1000.0), R(200.0) + R(3.0), "", R(100.0), R(0.0) + R(0.05), ""});
   const Model m = read_deck(dir.write("T_0000.rad", test::begin_card("T") + general_deck(property) + "/END\n")).model;
   const SpringSection& s = m.properties[0].spring;
-  EXPECT_TRUE(s.general);
+  EXPECT_EQ(s.frame, SpringFrame::Global);
   EXPECT_DOUBLE_EQ(s.inertia, 0.01);
   EXPECT_DOUBLE_EQ(s.dof[1].damping, 3.0);
   EXPECT_DOUBLE_EQ(s.dof[3].stiffness, 100.0);
@@ -324,6 +331,34 @@ TEST(SpringKeywords, HysteresisWithoutItsUnloadingCurveRunsAsUncoupled) {
   std::string bad = general_property({R(1000.0), R(1000.0), "", "", "", ""});
   bad.replace(bad.find(y_line, bad.find(y_line) + 1), y_line.size(), "\n" + R(1000.0) + "\n" + I(8) + I(8) + "\n");
   EXPECT_NE(general_error(bad).find("H2"), std::string::npos) << general_error(bad);
+}
+
+// SP-18: a beam-type spring's rotations step with their largest stiffness plus the shear's times l^2, and likewise
+// the damping (measured on the reference's starter: shear 100 beside bending 10 at l = 1, I = 1, steps as sqrt(1/110)).
+TEST(SpringKeywords, BeamTypeSpringReadsItsLawsAndSteps) {
+  test::TempDir dir;
+  std::string property = "/PROP/TYPE13/30\nbeam\n" + R(2.0) + R(1.0) + "\n";
+  for (double k : {0.0, 100.0, 0.0, 0.0, 10.0, 0.0}) property += R(k) + "\n" + I(0) + "\n" + R(0.0) + "\n";
+  property += R(1.0) + R(1.0) + "\n";
+  for (int d = 0; d < 6; ++d) property += "\n" + R(0.0) + R(0.0) + R(1.0) + R(2.0) + "\n";  // blank lines between
+  const Model m = read_deck(dir.write("T_0000.rad", test::begin_card("T") + general_deck(property) + "/END\n")).model;
+  EXPECT_EQ(m.properties[0].spring.frame, SpringFrame::Beam);
+  EXPECT_NEAR(initial_element_time_step(m, ElementKind::Spring, 0), std::min(2.0 / std::sqrt(200.0), 1.0 / std::sqrt(110.0)),
+              1e-15);
+  EXPECT_NEAR(1.0 / std::sqrt(110.0), 0.095346, 1e-6);  // the reference's starter step
+  std::string skewed = property;
+  skewed.replace(skewed.find(R(1.0) + "\n"), R(1.0).size(), R(1.0) + I(5));
+  EXPECT_NE(general_error(skewed).find("skew_ID"), std::string::npos) << general_error(skewed);
+}
+
+// A field holding two numbers (a misaligned deck) reads the first, as the reference does; anything else is an error.
+TEST(SpringKeywords, FieldOfTwoNumbersReadsTheFirst) {
+  test::TempDir dir;
+  SpringDeck d;
+  d.line3 = I(0) + I(0) + I(0) + I(0) + I(0) + std::string(10, ' ') + R(0.0) + "0.03      .000000000";
+  EXPECT_DOUBLE_EQ(read_deck(starter(dir, d)).model.properties[0].spring.dof[0].delta_max, 0.03);
+  d.line3 = I(0) + I(0) + I(0) + I(0) + I(0) + std::string(10, ' ') + R(0.0) + "0.03      x";
+  EXPECT_NE(error_of(d).find("delta_max"), std::string::npos) << error_of(d);
 }
 
 }  // namespace test_spring_keywords

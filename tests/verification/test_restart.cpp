@@ -7,8 +7,8 @@
 // rigid body of bricks (contact_idel), a continued run (ball_two_runs, stopped in its first engine deck),
 // accelerometers, whose filters and integrals carry over (accel_strip), cut sections, whose work integrals
 // carry over and whose loads the first cycle after the restart records again (section_strip), springs under
-// the mass damping of an engine /DAMP (damping_springs), and general springs beside axial ones
-// (springs_mixed_damped).
+// the mass damping of an engine /DAMP (damping_springs), general springs beside axial ones (springs_mixed_damped)
+// and beam-type springs (beam_spring_cantilever).
 #include <gtest/gtest.h>
 #include <hdf5.h>
 
@@ -160,7 +160,9 @@ INSTANTIATE_TEST_SUITE_P(
                       // springs, /DAMP changed by the engine deck, /TH/SPRING (issue 28)
                       RestartCase{"damping_springs", kQa / "damping_springs" / "DAMPC_0000.rad", 150},
                       // general springs (their rotations and hardening 5) beside axial ones, under /DAMP
-                      RestartCase{"springs_mixed_damped", kPeerDecks / "springs_mixed_damped" / "SPRMIX_0000.rad", 250}),
+                      RestartCase{"springs_mixed_damped", kPeerDecks / "springs_mixed_damped" / "SPRMIX_0000.rad", 250},
+                      // beam-type springs: their frames carry over
+                      RestartCase{"beam_spring_cantilever", kPeerDecks / "beam_spring_cantilever" / "BSPR_0000.rad", 120}),
     [](const auto& p) { return std::string(p.param.name); });
 
 TEST(Restart, FileOfAnotherModelIsRefusedWithItsCounts) {

@@ -169,4 +169,32 @@ TEST(Spring, GeneralSpringSidewaysAndTorsionPeriods) {
   }
 }
 
+// A /PROP/TYPE13 beam-type spring as a cantilever (SP-16, SP-17): node 1 clamped, a constant force P across the
+// spring at node 2, which is free. At rest the shear force is P and node 2's moment balances its half of the shear
+// couple: K_Y (v - l theta / 2) = P and K_ZZ theta = P l / 2, so v = P / K_Y + P l^2 / (4 K_ZZ) and
+// theta = P l / (2 K_ZZ). Damped to rest by /DAMP; within 0.5 % after it settles (a test of the coupling and of the
+// signs: the moment the shear puts on node 2 turns it the way the beam bends).
+TEST(Spring, BeamTypeSpringCantileverTip) {
+  test::TempDir dir;
+  constexpr double kShear = 1000.0, kBending = 100.0, kForce = 10.0;
+  std::string d = node_cards({{1, 0.0, 0.0, 0.0}, {2, 1.0, 0.0, 0.0}});
+  d += "/SPRING/1\n" + I(1) + I(1) + I(2) + "\n/PART/1\nspring\n" + I(1) + I(0) + "\n";
+  d += "/PROP/TYPE13/1\nbeam\n" + R(1.0) + R(0.1) + "\n";
+  for (double k : {5000.0, kShear, kShear, 100.0, kBending, kBending}) d += R(k) + "\n" + I(0) + "\n" + R(0.0) + "\n";
+  d += node_group(1, {1}) + node_group(2, {2}) + node_group(3, {1, 2});
+  d += boundary_condition(1, "111 111", 1) + unit_function(9);
+  d += "/CLOAD/1\nacross\n" + I(9) + "         Y" + I(0) + I(0) + I(2) + std::string(10, ' ') + R(0.0) + R(kForce) + "\n";
+  d += "/DAMP/1\ndamping\n" + R(20.0) + R(0.0) + I(3) + "\n";
+  double v = 0.0, theta = 0.0;
+  run_deck(dir, d, 5.0, 0.5, [&](const Model& m, const SolverState& s) {
+    v = s.nodes.y[node_index(m, 2)];
+    theta = s.springs.elongation[5];  // the bending Z rotation, node 2's turn about z
+  });
+  const double v_expected = kForce / kShear + kForce / (4.0 * kBending), theta_expected = kForce / (2.0 * kBending);
+  std::printf("beam-type spring tip: v relative %.2e, theta relative %.2e\n", v / v_expected - 1.0,
+              theta / theta_expected - 1.0);
+  EXPECT_NEAR(v, v_expected, 0.005 * v_expected);
+  EXPECT_NEAR(theta, theta_expected, 0.005 * theta_expected);
+}
+
 }  // namespace crumple::verification::test_spring

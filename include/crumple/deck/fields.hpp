@@ -95,6 +95,7 @@ class Line {
   // The columns a field given in the 2017 layout is read at: the same, or 4/5 of them in the narrow layout.
   std::pair<int, int> placed(int column, int width) const;
   std::int64_t parsed_integer(int column, int width, std::string_view name, std::int64_t fallback) const;
+  double real_value(int column, int width, std::string_view name, Dimension d, double v) const;
   const CardReader* reader_;
   const SourceLine* source_;
   std::size_t index_;  // data line of the card (for the columns read)

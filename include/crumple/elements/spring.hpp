@@ -31,7 +31,7 @@ struct SpringDofParameters {
 struct SpringGroupParameters {
   double mass = 0.0;     // M, the spring's mass [M]
   double inertia = 0.0;  // I, a general spring's rotational inertia [M L^2]
-  bool general = false;  // /PROP/TYPE8: six degrees of freedom in the global axes (SP-9); else one along the nodes
+  SpringFrame frame = SpringFrame::Axial;  // TYPE4 along the nodes; TYPE8 the global axes (SP-9); TYPE13 (SP-15)
   std::array<SpringDofParameters, kSpringDofs> dof{};  // /PROP/TYPE4: dof[0]
 };
 
@@ -62,8 +62,9 @@ inline double spring_dof_critical_step(const SpringDofParameters& d, double mass
   if (!d.acts()) return 1e30;
   return mass / (std::sqrt(d.step_stiffness * mass + d.damping * d.damping) + d.damping);
 }
-// A spring's critical step: its one degree of freedom's, or a general spring's smallest (eq. SP-4, SP-10).
-double spring_critical_step(const SpringGroupParameters& p);
+// A spring's critical step: its one degree of freedom's, or a general or beam-type spring's smallest (eq. SP-4,
+// SP-10, SP-18; `length`: the current length, which couples a beam-type spring's shear to its rotations).
+double spring_critical_step(const SpringGroupParameters& p, double length = 0.0);
 
 // Computes the force of the group's springs at the current positions (velocities at mid-step), subtracts it from
 // the nodal force accumulators and adds its work to the springs' internal energy (eq. SP-1 to SP-3).

@@ -71,14 +71,20 @@ struct SpringLaw {
 
 inline constexpr int kSpringDofs = 6;  // the most a spring has: three translations, three rotations
 
-// /PROP/TYPE4 (= /PROP/SPRING), a spring along its two nodes, and /PROP/TYPE8 (= /PROP/SPR_GENE), the general
-// spring of six degrees of freedom in the global axes (docs/theory/spring.md).
+// Where a spring's laws act (docs/theory/spring.md): /PROP/TYPE4 (= /PROP/SPRING), one law along its two nodes;
+// /PROP/TYPE8 (= /PROP/SPR_GENE), six in the global axes; /PROP/TYPE13 (= /PROP/SPR_BEAM), six in a frame that
+// turns with the spring, shear and bending coupled as a beam's.
+enum class SpringFrame : std::uint8_t { Axial, Global, Beam };
+
 struct SpringSection {
   double mass = 0.0;     // M, the spring's mass, half at each node [M]; > 0 (the reference refuses 0)
-  double inertia = 0.0;  // TYPE8: its rotational inertia, half at each node [M L^2]
-  bool general = false;  // /PROP/TYPE8: six degrees of freedom in the global axes; else TYPE4's one along the nodes
+  double inertia = 0.0;  // TYPE8 and TYPE13: its rotational inertia, half at each node [M L^2]
+  SpringFrame frame = SpringFrame::Axial;
   std::array<SpringLaw, kSpringDofs> dof;  // TYPE4: dof[0] only
-  int dofs() const { return general ? kSpringDofs : 1; }
+  int dofs() const { return frame == SpringFrame::Axial ? 1 : kSpringDofs; }
+  std::string_view card() const {  // /PROP/<card>
+    return frame == SpringFrame::Axial ? "SPRING" : frame == SpringFrame::Global ? "SPR_GENE" : "SPR_BEAM";
+  }
 };
 
 enum class PropertyKind : std::uint8_t { Shell, Solid, Spring };

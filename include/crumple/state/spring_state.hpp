@@ -13,6 +13,7 @@ struct SpringState : ElementKindState {  // no integration points: points and ep
   // Per element (index in the Spring ElementTable).
   std::vector<double> length0;         // length at t = 0 [L]
   std::vector<double> rest_offset;     // 3 per spring: x2 - x1 at t = 0, the general spring's rest (SP-9) [L]
+  std::vector<double> frame_y;         // 3 per spring: a beam-type spring's Y axis, turning with it (SP-15)
   std::vector<double> step_stiffness;  // the stiffness of its step, which it gives each node in the nodal steps [F/L]
   // kSpringDofs per spring, one per degree of freedom (a /PROP/TYPE4 spring: the first only; /PROP/TYPE8: X, Y, Z,
   // XX, YY, ZZ in the global axes):
@@ -27,7 +28,7 @@ struct SpringState : ElementKindState {  // no integration points: points and ep
   void resize_elements(std::size_t n) {
     resize_common(n);
     for (auto* v : {&length0, &step_stiffness}) v->assign(n, 0.0);
-    rest_offset.assign(3 * n, 0.0);
+    rest_offset.assign(3 * n, 0.0), frame_y.assign(3 * n, 0.0);
     for (auto* v : {&elongation, &force, &elastic_force, &plastic_a, &plastic_b}) v->assign(kSpringDofs * n, 0.0);
   }
 };

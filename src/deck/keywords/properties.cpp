@@ -239,8 +239,12 @@ void check_spring_hardening(const Line& third, CardReader& reader, DeckContext& 
     context.unsupported(third.error(11, 10, n.h, "0 (elastic), 1 (isotropic), 2 (uncoupled), 4 (kinematic), 5 "
                                                  "(residual), 6 (unloading curve), 7 (hysteresis) or 8 (total length) "
                                                  "hardening (3 is not supported by Crumple)"));
-  if (s.hardening != 0 && s.function_id == 0)
-    third.fail(1, 10, n.curve, "the force or yield curve of a spring with hardening H");
+  if (s.hardening != 0 && s.function_id == 0) {  // measured: H 1 without a curve runs as the linear spring
+    context.warn(third.where(), reader.card().keyword,
+                 fmt::format("{} {} without a curve ({}): the spring is linear at {}, as the reference runs it", n.h,
+                             s.hardening, n.curve, n.k));
+    s.hardening = 0;
+  }
   if (s.hardening != 0 && s.hardening != 6 && s.hardening != 8 && !(s.stiffness > 0.0))
     throw DeckError(third.where(), reader.card().keyword, n.k,
                     "a positive unloading stiffness for a hardening spring (H 1, 2, 4, 5, 7)", fmt::format("{:g}", s.stiffness));
@@ -255,10 +259,12 @@ void check_spring_hardening(const Line& third, CardReader& reader, DeckContext& 
                              "the reference runs it", n.lower));
     s.hardening = 2;
   }
-  if ((s.hardening < 4 || s.hardening > 7) && s.lower_function_id != 0)
-    context.unsupported(third.error(31, 10, n.lower, default_only("a lower yield curve (with H 4), a residual "
-                                                                  "elongation (H 5), an unloading curve (H 6, 7) or a "
-                                                                  "rate function (with B) is")));
+  if ((s.hardening < 4 || s.hardening > 7) && s.lower_function_id != 0) {  // measured with H 0: no effect
+    context.warn(third.where(), reader.card().keyword,
+                 fmt::format("{} acts only with H 4 to 7: ignored with H {}, as the reference ignores it", n.lower,
+                             s.hardening));
+    s.lower_function_id = 0;
+  }
 }
 
 // A law's second and third lines: fct_ID1, H, fct_ID2, fct_ID3, fct_ID4, delta_min, delta_max; F, E, Ascale, Hscale.
@@ -340,7 +346,7 @@ void read_general_spring_mass(CardReader& reader, DeckContext& context, SpringSe
 void read_general_spring_property(CardReader& reader, DeckContext& context) {
   refuse_narrow_layout(reader);
   Property p = begin_property(reader, PropertyKind::Spring);
-  p.spring.general = true;
+  p.spring.frame = SpringFrame::Global;
   read_general_spring_mass(reader, context, p.spring);
   for (int d = 0; d < kSpringDofs; ++d) {
     const SpringLawNames names(d + 1);
@@ -362,6 +368,59 @@ void read_general_spring_property(CardReader& reader, DeckContext& context) {
   context.model.properties.push_back(std::move(p));
 }
 
+// Line 1 of /PROP/TYPE13: Mass, Inertia, skew_ID, sens_ID, Isflag, Ifail, Ileng, Ifail2.
+void read_beam_spring_mass(CardReader& reader, DeckContext& context, SpringSection& s) {
+  const Line first = reader.next("Mass, Inertia, skew_ID, sens_ID, Isflag, Ifail, Ileng, Ifail2");
+  s.mass = first.real(1, 20, "Mass", dim::mass);
+  if (!(s.mass > 0.0)) first.fail(1, 20, "Mass", "a positive spring mass (the reference refuses a spring without mass)");
+  s.inertia = first.real(21, 20, "Inertia", dim::inertia);
+  if (!(s.inertia > 0.0)) first.fail(21, 20, "Inertia", "a positive rotational inertia for a beam-type spring");
+  if (first.optional_id(41, 10, "skew_ID", IdKind::Other) != 0)
+    context.unsupported(first.error(41, 10, "skew_ID", default_only("a beam-type spring oriented by a skew is")));
+  if (first.optional_id(51, 10, "sens_ID", IdKind::Other) != 0)
+    context.unsupported(first.error(51, 10, "sens_ID", default_only("a spring switched by a sensor is")));
+  spring_default_only(first, context, 61, 10, "Isflag", static_cast<double>(first.integer(61, 10, "Isflag")), 0.0,
+                      "the sensor flag (with a sensor) is");
+  spring_default_only(first, context, 71, 10, "Ifail", static_cast<double>(first.integer(71, 10, "Ifail")), 0.0,
+                      "the multi-directional failure criterion is");
+  spring_default_only(first, context, 81, 10, "Ileng", static_cast<double>(first.integer(81, 10, "Ileng")), 0.0,
+                      "input per unit length is");
+  spring_default_only(first, context, 91, 10, "Ifail2", static_cast<double>(first.integer(91, 10, "Ifail2")), 0.0,
+                      "a failure criterion other than the displacement's is");
+}
+
+// /PROP/TYPE13 (/PROP/SPR_BEAM): the beam-type spring, one law per degree of freedom of its own turning frame
+// (tension, shear XY, shear XZ, torsion, bending Y, bending Z), the rate line (Vo, Wo: the rate effects' reference
+// velocities, which act on nothing without them; Fcut, Fsmooth), then the six lines of the rate-dependent failure
+// (c, n, alpha, beta: used by Ifail2 only) (docs/theory/spring.md, "Beam-type springs").
+void read_beam_spring_property(CardReader& reader, DeckContext& context) {
+  refuse_narrow_layout(reader);
+  Property p = begin_property(reader, PropertyKind::Spring);
+  p.spring.frame = SpringFrame::Beam;
+  read_beam_spring_mass(reader, context, p.spring);
+  for (int d = 0; d < kSpringDofs; ++d) {
+    const SpringLawNames names(d + 1);
+    read_spring_stiffness(reader, context, p.spring.dof[static_cast<std::size_t>(d)], names);
+    read_spring_law(reader, context, p.spring.dof[static_cast<std::size_t>(d)], names);
+    if (p.spring.dof[static_cast<std::size_t>(d)].hardening == 8)
+      context.unsupported(DeckError(p.where, reader.card().keyword, names.h,
+                                    "0 to 7 for a beam-type spring (H 8 is not supported by Crumple on /PROP/TYPE13)",
+                                    "8"));
+  }
+  if (reader.has_data()) {
+    const Line rate = reader.next("Vo, Wo, Fcut, Fsmooth");
+    const double cut = rate.real(41, 20, "Fcut", dim::rate);
+    if (cut != 0.0 && cut < 1e29)
+      context.unsupported(rate.error(41, 20, "Fcut", default_only("the rate filter is")));
+    spring_default_only(rate, context, 61, 10, "Fsmooth", static_cast<double>(rate.integer(61, 10, "Fsmooth")), 0.0,
+                        "the rate filter is");
+  }
+  // Blank lines between them are skipped (measured: a deck with one before each is the reference's deck as written).
+  for (int d = 0; d < kSpringDofs && reader.has_data(); ++d) reader.next_nonblank();
+  reader.finish();
+  context.model.properties.push_back(std::move(p));
+}
+
 }  // namespace
 
 void register_property_keywords(KeywordTable& table) {
@@ -373,6 +432,8 @@ void register_property_keywords(KeywordTable& table) {
   table.push_back({"/PROP/SPRING", DeckPart::Starter, read_spring_property});
   table.push_back({"/PROP/TYPE8", DeckPart::Starter, read_general_spring_property});
   table.push_back({"/PROP/SPR_GENE", DeckPart::Starter, read_general_spring_property});
+  table.push_back({"/PROP/TYPE13", DeckPart::Starter, read_beam_spring_property});
+  table.push_back({"/PROP/SPR_BEAM", DeckPart::Starter, read_beam_spring_property});
 }
 
 }  // namespace crumple::deck
