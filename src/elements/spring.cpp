@@ -41,22 +41,45 @@ SpringGroupParameters spring_parameters(const SpringSection& s, const std::vecto
   return p;
 }
 
-double spring_critical_step(const SpringGroupParameters& p, double length) {
-  if (p.frame == SpringFrame::Axial) return spring_dof_critical_step(p.dof[0], p.mass);
-  // SP-10: the translations as one degree of freedom of mass M with their largest stiffness and largest damping, the
-  // rotations likewise with I (measured: K 1000 on X beside C 3 on Y steps as K 1000 with C 3).
-  SpringDofParameters translation, rotation;
-  for (std::size_t d = 0; d < kSpringDofs; ++d) {
-    SpringDofParameters& both = d < 3 ? translation : rotation;
-    both.step_stiffness = std::max(both.step_stiffness, p.dof[d].step_stiffness);
-    both.damping = std::max(both.damping, p.dof[d].damping);
+SpringStepStiffness spring_step_stiffness(const SpringGroupParameters& p, double length) {
+  if (p.frame == SpringFrame::Axial) return {p.dof[0].step_stiffness, p.dof[0].damping};
+  // SP-10: the translations as one degree of freedom with their largest stiffness and largest damping, the rotations
+  // likewise (measured: K 1000 on X beside C 3 on Y steps as K 1000 with C 3).
+  SpringStepStiffness k;
+  for (std::size_t d = 0; d < 3; ++d) {
+    k.translation = std::max(k.translation, p.dof[d].step_stiffness);
+    k.translation_damping = std::max(k.translation_damping, p.dof[d].damping);
+    k.rotation = std::max(k.rotation, p.dof[d + 3].step_stiffness);
+    k.rotation_damping = std::max(k.rotation_damping, p.dof[d + 3].damping);
   }
   if (p.frame == SpringFrame::Beam) {  // SP-18: the shear turns the ends as well, its stiffness times l^2
     const double arm = length * length;
-    rotation.step_stiffness += std::max(p.dof[1].step_stiffness, p.dof[2].step_stiffness) * arm;
-    rotation.damping += std::max(p.dof[1].damping, p.dof[2].damping) * arm;
+    k.rotation += std::max(p.dof[1].step_stiffness, p.dof[2].step_stiffness) * arm;
+    k.rotation_damping += std::max(p.dof[1].damping, p.dof[2].damping) * arm;
   }
-  return std::min(spring_dof_critical_step(translation, p.mass), spring_dof_critical_step(rotation, p.inertia));
+  return k;
+}
+
+double spring_nodal_step(const SpringState& st, const NodalState& nodes, const std::int32_t* n, std::size_t e,
+                         const SpringStepStiffness* now) {
+  const double change[4] = {now ? now->translation - st.own_held[4 * e] : 0.0,
+                            now ? now->translation_damping - st.own_held[4 * e + 1] : 0.0,
+                            now ? now->rotation - st.own_held[4 * e + 2] : 0.0,
+                            now ? now->rotation_damping - st.own_held[4 * e + 3] : 0.0};
+  double step = 1e30;
+  for (int a = 0; a < 2; ++a) {
+    const auto k = static_cast<std::size_t>(n[a]);
+    const double* h = &st.node_held[4 * k];
+    step = std::min({step, held_mass_step(nodes.mass[k], h[0] + change[0], h[1] + change[1]),
+                     held_mass_step(nodes.inertia[k], h[2] + change[2], h[3] + change[3])});
+  }
+  return step;
+}
+
+double spring_critical_step(const SpringGroupParameters& p, double length) {
+  const SpringStepStiffness k = spring_step_stiffness(p, length);
+  return std::min(held_mass_step(0.5 * p.mass, k.translation, k.translation_damping),
+                  held_mass_step(0.5 * p.inertia, k.rotation, k.rotation_damping));
 }
 
 namespace {
@@ -208,7 +231,6 @@ GroupStepResult axial_spring_forces(const ElementTable& table, const ElementGrou
                                     NodalState& nodes, SpringState& state, double dt) {
   GroupStepResult result;
   const bool recording = state.records.on(group.begin);
-  const double step = spring_critical_step(p);
   for (std::int32_t e = group.begin; e < group.end; ++e) {
     const auto ue = static_cast<std::size_t>(e), slot = kSpringDofs * ue;
     if (recording && !(state.deleted[ue] & kElementElsewhere)) state.records.clear(ue);
@@ -241,7 +263,7 @@ GroupStepResult axial_spring_forces(const ElementTable& table, const ElementGrou
       record_load(state.records.load_at(ue, 1), pull);
     }
     if (!std::isfinite(force)) result.non_finite = e;
-    close_element(state, result, e, step, outside(p.dof[0], elongation));
+    close_element(state, result, e, state.nodal_step[ue], outside(p.dof[0], elongation));
   }
   return result;
 }
@@ -263,7 +285,6 @@ GroupStepResult general_spring_forces(const ElementTable& table, const ElementGr
                                       const SpringGroupParameters& p, NodalState& nodes, SpringState& state, double dt) {
   GroupStepResult result;
   const bool recording = state.records.on(group.begin);
-  const double step = spring_critical_step(p);
   for (std::int32_t e = group.begin; e < group.end; ++e) {
     const auto ue = static_cast<std::size_t>(e), slot = kSpringDofs * ue;
     if (recording && !(state.deleted[ue] & kElementElsewhere)) state.records.clear(ue);
@@ -293,7 +314,7 @@ GroupStepResult general_spring_forces(const ElementTable& table, const ElementGr
       record_load(state.records.load_at(ue, 0), scaled(force, -1.0), scaled(moment, -1.0));
       record_load(state.records.load_at(ue, 1), force, moment);
     }
-    close_element(state, result, e, step, broken);
+    close_element(state, result, e, state.nodal_step[ue], broken);
   }
   return result;
 }
@@ -367,7 +388,8 @@ GroupStepResult beam_spring_forces(const ElementTable& table, const ElementGroup
       record_load(state.records.load_at(ue, 0), scaled(force, -1.0), scaled(on1, -1.0));
       record_load(state.records.load_at(ue, 1), force, scaled(on2, -1.0));
     }
-    close_element(state, result, e, spring_critical_step(p, length), broken);
+    const SpringStepStiffness now = spring_step_stiffness(p, length);  // SP-18 at the current length
+    close_element(state, result, e, spring_nodal_step(state, nodes, n, ue, &now), broken);
   }
   return result;
 }

@@ -56,14 +56,28 @@ double spring_residual_force(const SpringDofParameters& p, double delta, double 
 // The group parameters of a /PROP/TYPE4 section (`functions`: the model's).
 SpringGroupParameters spring_parameters(const SpringSection& s, const std::vector<Function>& functions);
 
-// The critical step of one degree of freedom of mass (or inertia) M, stiffness k and damping C (eq. SP-4): the step
-// of its two half masses joined by the spring and the dashpot, M / (sqrt(k M + C^2) + C); none without either.
-inline double spring_dof_critical_step(const SpringDofParameters& d, double mass) {
-  if (!d.acts()) return 1e30;
-  return mass / (std::sqrt(d.step_stiffness * mass + d.damping * d.damping) + d.damping);
+// The stable step of a mass (or inertia) m held by a stiffness k and a damping c, 2 m / (sqrt(2 m k + c^2) + c)
+// (eq. SP-4, SP-19); none without either.
+inline double held_mass_step(double mass, double stiffness, double damping) {
+  if (!(stiffness > 0.0) && !(damping > 0.0)) return 1e30;
+  return 2.0 * mass / (std::sqrt(2.0 * mass * stiffness + damping * damping) + damping);
 }
-// A spring's critical step: its one degree of freedom's, or a general or beam-type spring's smallest (eq. SP-4,
-// SP-10, SP-18; `length`: the current length, which couples a beam-type spring's shear to its rotations).
+
+// What a spring hands each of its nodes for the step: the stiffness and damping of its translations and of its
+// rotations (eq. SP-4b, SP-10, SP-18; `length`: the current length, which couples a beam-type spring's shear to
+// its rotations).
+struct SpringStepStiffness {
+  double translation = 0.0, translation_damping = 0.0, rotation = 0.0, rotation_damping = 0.0;
+};
+SpringStepStiffness spring_step_stiffness(const SpringGroupParameters& p, double length);
+
+// SP-19: spring `e`'s step, the smaller of its nodes' (each node's whole mass and inertia held by the sums
+// SpringState::node_held of every spring on it); `now`, when given, replaces the spring's own share at rest.
+double spring_nodal_step(const SpringState& st, const NodalState& nodes, const std::int32_t* n, std::size_t e,
+                         const SpringStepStiffness* now = nullptr);
+
+// A spring's own critical step, its two half masses and inertias held by it (eq. SP-4, SP-10, SP-18): the starter's
+// element step, which `crumple check` prints.
 double spring_critical_step(const SpringGroupParameters& p, double length = 0.0);
 
 // Computes the force of the group's springs at the current positions (velocities at mid-step), subtracts it from

@@ -15,6 +15,11 @@ struct SpringState : ElementKindState {  // no integration points: points and ep
   std::vector<double> rest_offset;     // 3 per spring: x2 - x1 at t = 0, the general spring's rest (SP-9) [L]
   std::vector<double> frame_y;         // 3 per spring: a beam-type spring's Y axis, turning with it (SP-15)
   std::vector<double> step_stiffness;  // the stiffness of its step, which it gives each node in the nodal steps [F/L]
+  std::vector<double> nodal_step;      // its step: its nodes' masses held by every spring on them (SP-19) [T]
+  // Set up once, not per element (neither exchanged nor in the restart): per node, the stiffness and damping of
+  // translation and rotation that every spring on it hands it (SpringStepStiffness, 4 values); per spring, its own
+  // share of them at rest (4 values). A beam-type spring's share changes with its length (SP-18).
+  std::vector<double> node_held, own_held;
   // kSpringDofs per spring, one per degree of freedom (a /PROP/TYPE4 spring: the first only; /PROP/TYPE8: X, Y, Z,
   // XX, YY, ZZ in the global axes):
   std::vector<double> elongation;  // delta = l - l0 (TYPE4), or the relative displacement or rotation, positive in
@@ -27,7 +32,7 @@ struct SpringState : ElementKindState {  // no integration points: points and ep
 
   void resize_elements(std::size_t n) {
     resize_common(n);
-    for (auto* v : {&length0, &step_stiffness}) v->assign(n, 0.0);
+    for (auto* v : {&length0, &step_stiffness, &nodal_step}) v->assign(n, 0.0);
     rest_offset.assign(3 * n, 0.0), frame_y.assign(3 * n, 0.0);
     for (auto* v : {&elongation, &force, &elastic_force, &plastic_a, &plastic_b}) v->assign(kSpringDofs * n, 0.0);
   }

@@ -8,8 +8,9 @@
 #     in y, and turned about x and z.
 #   general_spring_breaks: the same chain pulled in y until a spring's Y elongation passes delta_max = 0.03 m: the
 #     whole spring goes (uni-directional failure, Ifail 0).
-#   springs_mixed_damped: the chain of general springs beside a chain of /PROP/TYPE4 springs that shares its nodes,
-#     under /DAMP (alpha and beta): the MPI deck of every spring kind (tests/mpi).
+#   springs_mixed_damped: the chain of general springs beside a chain of /PROP/TYPE4 springs and one of /PROP/TYPE13
+#     beam-type springs that share its nodes, under /DAMP (alpha and beta): the MPI deck of every spring kind
+#     (tests/mpi). Its step is its nodes' (SP-19), 19 % longer than its shortest spring's.
 import os
 I = lambda *v: "".join("%10d" % x for x in v)
 R = lambda *v: "".join("%20.10g" % x for x in v)
@@ -46,6 +47,11 @@ def chain(name, run, end=2.5, pull_y=0.05, dmax_y=0.0, mixed=False, every=50):
         s += "/SPRING/2\n" + "".join(I(10 + i, i + 1, i + 3) + "\n" for i in range(3))
         s += ("/PART/2\naxial springs\n" + I(2, 0) + "\n/PROP/SPRING/2\naxial\n" + R(0.2) + " " * 30 + I(0, 0, 0)
               + "\n" + R(500, 1.0, 1, 0, 0) + "\n" + I(0, 0, 0, 0, 0) + " " * 10 + R(0, 0) + "\n" + R(0, 0, 0, 0) + "\n")
+        # and beam-type springs (TYPE13) along the chain, on the same nodes
+        s += "/SPRING/3\n" + "".join(I(20 + i, i + 1, i + 2) + "\n" for i in range(4))
+        s += ("/PART/3\nbeam springs\n" + I(3, 0) + "\n/PROP/TYPE13/3\nbeam\n" + R(0.3, 0.005) + I(0, 0, 0, 0, 0, 0)
+              + "\n" + law(800, 0.5) + law(300, 0.2) + law(300, 0.2) + law(5, 0.01) + law(10, 0.01) + law(10, 0.01)
+              + R(1, 1, 0) + I(0) + "\n" + "".join(R(0, 0, 1, 2) + "\n" for _ in range(6)))
     s += funct(1, CURVE) + funct(3, ((-1, -0.5), (0, 0), (1, 0.5))) + funct(4, MOMENT) + funct(5, STIFFENING)
     s += funct(6, ((0, 0.1), (0.5, 0.1), (0.5001, -0.1), (1.5, -0.1), (1.5001, 0.1), (100, 0.1)))  # out, back, out
     s += funct(7, ((0, 1), (100, 1)))
