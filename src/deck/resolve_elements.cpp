@@ -106,11 +106,12 @@ void resolve_kind(Resolver& r, ElementKind kind) {
                   fmt::format("part {} with property {}", p.user_id, p.property_id));
       }
     }
-    // A general spring (/PROP/TYPE8) acts in the global axes: its nodes may coincide (SP-9).
+    // A general spring (/PROP/TYPE8) acts in the global axes and a beam-type one (TYPE13) has a rule for it: their
+    // nodes may coincide (SP-9, SP-15a).
     const bool may_coincide = kind == ElementKind::Spring && part[e] >= 0 &&
                               m.parts[static_cast<std::size_t>(part[e])].property >= 0 &&
                               m.properties[static_cast<std::size_t>(m.parts[static_cast<std::size_t>(part[e])].property)]
-                                      .spring.frame == SpringFrame::Global;
+                                      .spring.frame != SpringFrame::Axial;
     if (nodes_ok) {
       const double size = element_measure(m.nodes, kind, &connectivity[e * static_cast<std::size_t>(n)]);
       if (!(size > 0.0) && !(may_coincide && size == 0.0))

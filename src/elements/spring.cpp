@@ -331,6 +331,58 @@ std::array<Vec3, 3> beam_frame(const Vec3& x_axis, Vec3 y, const Vec3& mean_spin
   return {x_axis, y, cross(x_axis, y)};
 }
 
+// SP-15: the frame's Y at rest, global Y made normal to the spring (global X for a spring along Y).
+Vec3 rest_frame_y(const Vec3& along) {
+  Vec3 y = Vec3{0.0, 1.0, 0.0} - scaled(along, along.y);
+  if (norm(y) < 1e-6) y = Vec3{1.0, 0.0, 0.0} - scaled(along, along.x);
+  return scaled(y, 1.0 / norm(y));
+}
+
+// A beam-type spring's elongations this cycle and the axes its forces (`axis`) and moments (`turn`) act along;
+// `arm`, the length its shear's couple acts over.
+struct BeamKinematics {
+  std::array<double, kSpringDofs> delta{};
+  std::array<Vec3, 3> axis{}, turn{};
+  double arm = 0.0;
+};
+
+// SP-15, SP-16: the spring's turning frame and the elongations in it.
+BeamKinematics beam_kinematics(const NodalState& nodes, SpringState& state, std::size_t ue, const std::int32_t* n,
+                               double dt, const Vec3& axis, double length) {
+  const auto n1 = static_cast<std::size_t>(n[0]), n2 = static_cast<std::size_t>(n[1]);
+  const Vec3 w1 = spin(nodes, n1), w2 = spin(nodes, n2);
+  double* y = &state.frame_y[3 * ue];
+  const auto [ex, ey, ez] = beam_frame(scaled(axis, 1.0 / length), {y[0], y[1], y[2]}, scaled(w1 + w2, 0.5), dt);
+  y[0] = ey.x, y[1] = ey.y, y[2] = ey.z;
+  // SP-16: the elongations, the shear's rate less the ends' mean turn times the length.
+  const Vec3 dv = velocity(nodes, n2) - velocity(nodes, n1), dw = w2 - w1;
+  const double* last = &state.elongation[kSpringDofs * ue];
+  BeamKinematics k;
+  k.delta = {length - state.length0[ue],
+             last[1] + (dot(dv, ey) - 0.5 * length * (dot(w1, ez) + dot(w2, ez))) * dt,
+             last[2] + (dot(dv, ez) + 0.5 * length * (dot(w1, ey) + dot(w2, ey))) * dt,
+             last[3] + dot(dw, ex) * dt, last[4] + dot(dw, ey) * dt, last[5] + dot(dw, ez) * dt};
+  k.axis = k.turn = {ex, ey, ez};
+  k.arm = length;
+  return k;
+}
+
+// SP-15a: nodes that coincide give no frame: the rotations act in the global axes, nothing else (measured on the
+// reference, which warns at rest that it cannot define the frame). Once they part, the frame is made along them
+// (beam_spring_forces) and the spring is a beam-type spring of length 0 at rest.
+BeamKinematics coincident_beam_kinematics(const NodalState& nodes, const SpringState& state, std::size_t ue,
+                                          const std::int32_t* n, double dt) {
+  const auto n1 = static_cast<std::size_t>(n[0]), n2 = static_cast<std::size_t>(n[1]);
+  const Vec3 chord = position(nodes, n[1]) - position(nodes, n[0]), dw = spin(nodes, n2) - spin(nodes, n1);
+  const double distance = norm(chord);
+  const double* last = &state.elongation[kSpringDofs * ue];
+  BeamKinematics k;
+  k.delta = {distance, 0.0, 0.0, last[3] + dw.x * dt, last[4] + dw.y * dt, last[5] + dw.z * dt};
+  k.turn = {Vec3{1.0, 0.0, 0.0}, Vec3{0.0, 1.0, 0.0}, Vec3{0.0, 0.0, 1.0}};
+  k.axis = {distance > 0.0 ? scaled(chord, 1.0 / distance) : Vec3{}, Vec3{}, Vec3{}};
+  return k;
+}
+
 // /PROP/TYPE13: six laws in the spring's own frame, tension, shear, torsion and bending, the shear coupled to the
 // ends' rotations as a beam's (eq. SP-15 to SP-18).
 GroupStepResult beam_spring_forces(const ElementTable& table, const ElementGroup& group,
@@ -345,22 +397,19 @@ GroupStepResult beam_spring_forces(const ElementTable& table, const ElementGroup
     const auto n1 = static_cast<std::size_t>(n[0]), n2 = static_cast<std::size_t>(n[1]);
     const Vec3 axis = position(nodes, n[1]) - position(nodes, n[0]);
     const double length = norm(axis);
-    if (!(length > 0.0)) {  // the nodes met: no frame left
+    const bool at_rest_coincident = state.length0[ue] == 0.0;
+    if (!(length > 0.0) && !at_rest_coincident) {  // the nodes met: no frame left
       result.inverted = e;
       continue;
     }
-    const Vec3 w1 = spin(nodes, n1), w2 = spin(nodes, n2);
-    double* y = &state.frame_y[3 * ue];
-    const auto [ex, ey, ez] = beam_frame(scaled(axis, 1.0 / length), {y[0], y[1], y[2]}, scaled(w1 + w2, 0.5), dt);
-    y[0] = ey.x, y[1] = ey.y, y[2] = ey.z;
-    // SP-16: the elongations, the shear's rate less the ends' mean turn times the length.
-    const Vec3 dv = velocity(nodes, n2) - velocity(nodes, n1), dw = w2 - w1;
-    const double* last = &state.elongation[slot];
-    const std::array<double, kSpringDofs> delta = {
-        length - state.length0[ue],
-        last[1] + (dot(dv, ey) - 0.5 * length * (dot(w1, ez) + dot(w2, ez))) * dt,
-        last[2] + (dot(dv, ez) + 0.5 * length * (dot(w1, ey) + dot(w2, ey))) * dt,
-        last[3] + dot(dw, ex) * dt, last[4] + dot(dw, ey) * dt, last[5] + dot(dw, ez) * dt};
+    double* y0 = &state.frame_y[3 * ue];
+    if (at_rest_coincident && length > 0.0 && y0[0] == 0.0 && y0[1] == 0.0 && y0[2] == 0.0) {
+      const Vec3 y = rest_frame_y(scaled(axis, 1.0 / length));
+      y0[0] = y.x, y0[1] = y.y, y0[2] = y.z;
+    }
+    const BeamKinematics k = !(length > 0.0) ? coincident_beam_kinematics(nodes, state, ue, n, dt)
+                                             : beam_kinematics(nodes, state, ue, n, dt, axis, length);
+    const std::array<double, kSpringDofs>& delta = k.delta;
     double work = 0.0;
     if (state.deleted[ue]) {  // broken last cycle: the work of its last forces over the step they acted (SP-5a)
       for (std::size_t d = 0; d < kSpringDofs; ++d)
@@ -378,9 +427,9 @@ GroupStepResult beam_spring_forces(const ElementTable& table, const ElementGroup
     state.internal_energy[ue] += work;
     result.internal_energy += work;
     // SP-17: what the spring exerts on node 1 (node 2 the opposite force), the shear's couple shared by the ends.
-    const Vec3 force = scaled(ex, f[0]) + scaled(ey, f[1]) + scaled(ez, f[2]);
-    const Vec3 couple = scaled(ey, -0.5 * length * f[2]) + scaled(ez, 0.5 * length * f[1]);
-    const Vec3 moment = scaled(ex, f[3]) + scaled(ey, f[4]) + scaled(ez, f[5]);
+    const Vec3 force = scaled(k.axis[0], f[0]) + scaled(k.axis[1], f[1]) + scaled(k.axis[2], f[2]);
+    const Vec3 couple = scaled(k.axis[1], -0.5 * k.arm * f[2]) + scaled(k.axis[2], 0.5 * k.arm * f[1]);
+    const Vec3 moment = scaled(k.turn[0], f[3]) + scaled(k.turn[1], f[4]) + scaled(k.turn[2], f[5]);
     const Vec3 on1 = couple + moment, on2 = couple - moment;  // internal: the opposite of what acts on the node
     subtract_internal(nodes, n1, scaled(force, -1.0), scaled(on1, -1.0));
     subtract_internal(nodes, n2, force, scaled(on2, -1.0));
@@ -388,7 +437,7 @@ GroupStepResult beam_spring_forces(const ElementTable& table, const ElementGroup
       record_load(state.records.load_at(ue, 0), scaled(force, -1.0), scaled(on1, -1.0));
       record_load(state.records.load_at(ue, 1), force, scaled(on2, -1.0));
     }
-    const SpringStepStiffness now = spring_step_stiffness(p, length);  // SP-18 at the current length
+    const SpringStepStiffness now = spring_step_stiffness(p, k.arm);  // SP-18 at the current length
     close_element(state, result, e, spring_nodal_step(state, nodes, n, ue, &now), broken);
   }
   return result;

@@ -53,7 +53,7 @@ void setup_springs(const Model& m, SolverState& s) {
       st.length0[ue] = element_measure(m.nodes, ElementKind::Spring, n);
       const Vec3 offset = m.nodes.position(n[1]) - m.nodes.position(n[0]);
       st.rest_offset[3 * ue] = offset.x, st.rest_offset[3 * ue + 1] = offset.y, st.rest_offset[3 * ue + 2] = offset.z;
-      if (p.frame == SpringFrame::Beam) {  // SP-15: Y at rest, global Y normal to the spring (global X along it)
+      if (p.frame == SpringFrame::Beam && st.length0[ue] > 0.0) {  // SP-15: Y at rest, global Y normal to the spring
         const Vec3 along = scaled(offset, 1.0 / st.length0[ue]);
         Vec3 y = Vec3{0.0, 1.0, 0.0} - scaled(along, along.y);
         if (norm(y) < 1e-6) y = Vec3{1.0, 0.0, 0.0} - scaled(along, along.x);

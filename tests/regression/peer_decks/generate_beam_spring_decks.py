@@ -6,6 +6,8 @@
 #     shear, torsion and bending linear with dashpots; the middle nodes released at 1 m/s in z and spun about x.
 #   beam_spring_oblique: the same cantilever along (1, 2, 2) / 3, its frame from global Y, the tip driven in x
 #     and z; shear hardening 1 in the spring's Y, bending hardening 2.
+#   beam_spring_coincident: one spring between two nodes at the same place (a spot weld's usual model, SP-15a),
+#     node 2 driven out and back in x, across in y, turned about x and z.
 import os
 I = lambda *v: "".join("%10d" % x for x in v)
 R = lambda *v: "".join("%20.10g" % x for x in v)
@@ -52,5 +54,23 @@ def cantilever(name, run, oblique=False, end=2.0, every=50):
         "/RUN/%s/1\n%g\n/TFILE\n0.01\n/PRINT/-%d\n/DT\n0.5 0\n" % (run, end, every))
 
 
+def coincident(name, run, end=2.0, every=50):
+    s = "/BEGIN\n%s\n      2019         0\n%20s%20s%20s\n%20s%20s%20s\n" % (run, 'kg', 'm', 's', 'kg', 'm', 's')
+    s += "/NODE\n" + I(1) + R(0, 0, 0) + "\n" + I(2) + R(0, 0, 0) + "\n"
+    s += "/SPRING/1\n" + I(1, 1, 2) + "\n/PART/1\nspot weld\n" + I(1, 0) + "\n" + beam_prop(False)
+    s += funct(1, CURVE) + funct(3, UNLOADING) + funct(6, ((0, 0.1), (0.5, 0.1), (0.5001, -0.1), (1.5, -0.1),
+                                                          (1.5001, 0.1), (100, 0.1)))
+    s += funct(7, ((0, 1), (100, 1)))
+    s += "/GRNOD/NODE/1\nfixed\n" + I(1) + "\n/GRNOD/NODE/3\nmoving\n" + I(2) + "\n/BCS/1\nfixed\n   111 111" + I(0, 1) + "\n"
+    for k, (d, f, scale) in enumerate((("X", 6, 1.0), ("Y", 7, 0.03), ("XX", 7, 0.5), ("ZZ", 6, 2.0))):
+        s += "/IMPVEL/%d\ndrive %s\n" % (k + 1, d) + I(f) + "%10s" % d + I(0, 0, 3) + "\n" + R(1, scale, 0, 0) + "\n"
+    s += "/TH/SPRING/1\nweld\nDEF       \n" + I(1) + "\n/END\n"
+    os.makedirs(name, exist_ok=True)
+    open(os.path.join(name, run + "_0000.rad"), "w").write(s)
+    open(os.path.join(name, run + "_0001.rad"), "w").write(
+        "/RUN/%s/1\n%g\n/TFILE\n0.01\n/PRINT/-%d\n/DT\n0.5 0\n" % (run, end, every))
+
+
 cantilever("beam_spring_cantilever", "BSPR")
+coincident("beam_spring_coincident", "BSPRCOIN")
 cantilever("beam_spring_oblique", "BSPROBL", oblique=True)
