@@ -114,7 +114,14 @@ void resolve_kind(Resolver& r, ElementKind kind) {
                                       .spring.frame != SpringFrame::Axial;
     if (nodes_ok) {
       const double size = element_measure(m.nodes, kind, &connectivity[e * static_cast<std::size_t>(n)]);
-      if (!(size > 0.0) && !(may_coincide && size == 0.0))
+      const bool skewed_beam = may_coincide && m.properties[static_cast<std::size_t>(
+                                                   m.parts[static_cast<std::size_t>(part[e])].property)].spring.skew_id != 0;
+      if (size == 0.0 && skewed_beam)
+        r.error(where, keyword, "node_ID1..",
+                "nodes apart for a beam-type spring oriented by a skew (coincident nodes with a skew are not supported "
+                "by Crumple)",
+                fmt::format("{} {} with its nodes at one place", name, raw.user_id[e]));
+      else if (!(size > 0.0) && !(may_coincide && size == 0.0))
         r.error(where, keyword, "node_ID1..",
                 std::string(description.valid_shape),
                 fmt::format("{} {} with {} {:.6g}", name, raw.user_id[e], description.measure, size));

@@ -362,6 +362,10 @@ std::string rigid_wall_keyword(const RigidWall& w) {
 void resolve_load_references(Resolver& r) {
   Model& m = r.model;
   resolve_skews(r);
+  for (Property& p : r.model.properties)  // a beam-type spring's frame at rest (docs/theory/spring.md, SP-15)
+    if (p.kind == PropertyKind::Spring && p.spring.skew_id != 0)
+      p.spring.skew = r.find(r.model.index.skews, p.spring.skew_id, p.where,
+                             fmt::format("/PROP/{}/{}", p.spring.card(), p.user_id), "skew_ID", "skew");
   r.index(m.sensors, m.index.sensors, "/SENSOR");
   r.index(m.rigid_walls, m.index.rigid_walls, "/RWALL");
   r.index(m.rigid_bodies, m.index.rigid_bodies, "/RBODY");

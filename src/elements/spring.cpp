@@ -60,6 +60,12 @@ SpringStepStiffness spring_step_stiffness(const SpringGroupParameters& p, double
   return k;
 }
 
+Vec3 beam_rest_frame_y(const Vec3& along, const Vec3& reference) {
+  Vec3 y = reference - scaled(along, dot(along, reference));
+  if (norm(y) < 1e-6) y = Vec3{1.0, 0.0, 0.0} - scaled(along, along.x);
+  return scaled(y, 1.0 / norm(y));
+}
+
 double spring_nodal_step(const SpringState& st, const NodalState& nodes, const std::int32_t* n, std::size_t e,
                          const SpringStepStiffness* now) {
   const double change[4] = {now ? now->translation - st.own_held[4 * e] : 0.0,
@@ -331,13 +337,6 @@ std::array<Vec3, 3> beam_frame(const Vec3& x_axis, Vec3 y, const Vec3& mean_spin
   return {x_axis, y, cross(x_axis, y)};
 }
 
-// SP-15: the frame's Y at rest, global Y made normal to the spring (global X for a spring along Y).
-Vec3 rest_frame_y(const Vec3& along) {
-  Vec3 y = Vec3{0.0, 1.0, 0.0} - scaled(along, along.y);
-  if (norm(y) < 1e-6) y = Vec3{1.0, 0.0, 0.0} - scaled(along, along.x);
-  return scaled(y, 1.0 / norm(y));
-}
-
 // A beam-type spring's elongations this cycle and the axes its forces (`axis`) and moments (`turn`) act along;
 // `arm`, the length its shear's couple acts over.
 struct BeamKinematics {
@@ -404,7 +403,7 @@ GroupStepResult beam_spring_forces(const ElementTable& table, const ElementGroup
     }
     double* y0 = &state.frame_y[3 * ue];
     if (at_rest_coincident && length > 0.0 && y0[0] == 0.0 && y0[1] == 0.0 && y0[2] == 0.0) {
-      const Vec3 y = rest_frame_y(scaled(axis, 1.0 / length));
+      const Vec3 y = beam_rest_frame_y(scaled(axis, 1.0 / length), {0.0, 1.0, 0.0});
       y0[0] = y.x, y0[1] = y.y, y0[2] = y.z;
     }
     const BeamKinematics k = !(length > 0.0) ? coincident_beam_kinematics(nodes, state, ue, n, dt)

@@ -6,11 +6,19 @@
 #include "crumple/core/vec3.hpp"
 #include "crumple/elements/spring.hpp"
 #include "crumple/model/mass.hpp"
+#include "crumple/model/skews.hpp"
 #include "solver/internal.hpp"
 
 namespace crumple::solver {
 
 namespace {
+
+// The direction a beam-type spring's Y is taken from at rest: its property's skew's Y, else global Y (SP-15).
+Vec3 reference_y(const Model& m, const ElementGroup& group) {
+  const SpringSection& section = m.properties[static_cast<std::size_t>(group.property)].spring;
+  if (section.skew < 0) return {0.0, 1.0, 0.0};
+  return skew_axes(m.skews[static_cast<std::size_t>(section.skew)], m.nodes.x, m.nodes.y, m.nodes.z).axis[1];
+}
 
 // SP-19: a spring's step is its nodes', each node's whole mass and inertia held by every spring on it, their
 // stiffnesses and dampings added (measured: a spring between nodes of 10 kg added mass steps as those nodes, 3.3 times
@@ -53,11 +61,8 @@ void setup_springs(const Model& m, SolverState& s) {
       st.length0[ue] = element_measure(m.nodes, ElementKind::Spring, n);
       const Vec3 offset = m.nodes.position(n[1]) - m.nodes.position(n[0]);
       st.rest_offset[3 * ue] = offset.x, st.rest_offset[3 * ue + 1] = offset.y, st.rest_offset[3 * ue + 2] = offset.z;
-      if (p.frame == SpringFrame::Beam && st.length0[ue] > 0.0) {  // SP-15: Y at rest, global Y normal to the spring
-        const Vec3 along = scaled(offset, 1.0 / st.length0[ue]);
-        Vec3 y = Vec3{0.0, 1.0, 0.0} - scaled(along, along.y);
-        if (norm(y) < 1e-6) y = Vec3{1.0, 0.0, 0.0} - scaled(along, along.x);
-        y = scaled(y, 1.0 / norm(y));
+      if (p.frame == SpringFrame::Beam && st.length0[ue] > 0.0) {  // SP-15: its Y at rest
+        const Vec3 y = beam_rest_frame_y(scaled(offset, 1.0 / st.length0[ue]), reference_y(m, group));
         st.frame_y[3 * ue] = y.x, st.frame_y[3 * ue + 1] = y.y, st.frame_y[3 * ue + 2] = y.z;
       }
       st.mass[ue] = element_mass(m, ElementKind::Spring, ue);

@@ -81,6 +81,8 @@ struct SpringSection {
   double inertia = 0.0;  // TYPE8 and TYPE13: its rotational inertia, half at each node [M L^2]
   SpringFrame frame = SpringFrame::Axial;
   std::array<SpringLaw, kSpringDofs> dof;  // TYPE4: dof[0] only
+  std::int64_t skew_id = 0;  // TYPE13: the skew whose Y orients the frame at rest (SP-15); 0: global Y
+  std::int32_t skew = -1;
   int dofs() const { return frame == SpringFrame::Axial ? 1 : kSpringDofs; }
   std::string_view card() const {  // /PROP/<card>
     return frame == SpringFrame::Axial ? "SPRING" : frame == SpringFrame::Global ? "SPR_GENE" : "SPR_BEAM";

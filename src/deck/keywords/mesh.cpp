@@ -33,7 +33,7 @@ void read_spring_extras(const Line& line, int after, RawElements&, DeckContext& 
   for (int k = 0; k < 4; ++k)
     if (line.optional_id(after + 10 * k, 10, fmt::format("node_ID{}", k + 3), IdKind::Node) != 0)
       context.unsupported(line.error(after + 10 * k, 10, fmt::format("node_ID{}", k + 3),
-                                     default_only("a third node (springs of /PROP/TYPE4 take two) is")));
+                                     default_only("a third node (the orientation node of a /PROP/TYPE13 spring) is")));
   if (line.optional_id(91, 10, "Skew_ID") != 0)
     context.unsupported(line.error(91, 10, "Skew_ID", default_only("a spring skew (/PROP/TYPE4 acts along its nodes) is")));
 }

@@ -375,8 +375,7 @@ void read_beam_spring_mass(CardReader& reader, DeckContext& context, SpringSecti
   if (!(s.mass > 0.0)) first.fail(1, 20, "Mass", "a positive spring mass (the reference refuses a spring without mass)");
   s.inertia = first.real(21, 20, "Inertia", dim::inertia);
   if (!(s.inertia > 0.0)) first.fail(21, 20, "Inertia", "a positive rotational inertia for a beam-type spring");
-  if (first.optional_id(41, 10, "skew_ID", IdKind::Other) != 0)
-    context.unsupported(first.error(41, 10, "skew_ID", default_only("a beam-type spring oriented by a skew is")));
+  s.skew_id = first.optional_id(41, 10, "skew_ID", IdKind::Other);
   if (first.optional_id(51, 10, "sens_ID", IdKind::Other) != 0)
     context.unsupported(first.error(51, 10, "sens_ID", default_only("a spring switched by a sensor is")));
   spring_default_only(first, context, 61, 10, "Isflag", static_cast<double>(first.integer(61, 10, "Isflag")), 0.0,
