@@ -21,6 +21,8 @@ struct RawElements {
   std::vector<std::int64_t> node_ids;  // nodes_per_element per element
   std::vector<SourceLocation> where;
   std::vector<double> thickness;       // shells: the card's own thickness [L], 0 = the part's or property's
+  std::vector<std::int64_t> orientation_node_id;  // springs: node_ID3, a beam-type spring's orientation (0: none)
+  std::vector<SourceLocation> orientation_where;
 };
 
 // A //SUBMODEL block being read, and what it held once closed (docs/deck-format.md, "Submodels").

@@ -13,6 +13,24 @@
 namespace crumple::deck {
 namespace {
 
+// A spring's node_ID3: a beam-type spring's orientation node (docs/theory/spring.md, SP-15); the other spring types
+// take none.
+std::int32_t orientation_node(Resolver& r, const RawElements& raw, std::size_t e, std::int32_t part) {
+  const std::int64_t id = raw.orientation_node_id[e];
+  if (id == 0) return -1;
+  const Model& m = r.model;
+  const std::string keyword = fmt::format("/SPRING/{}", raw.part_id[e]);
+  const std::int32_t property = m.parts[static_cast<std::size_t>(part)].property;
+  if (m.properties[static_cast<std::size_t>(property)].spring.frame != SpringFrame::Beam) {
+    r.context.unsupported(DeckError(raw.orientation_where[e], keyword, "node_ID3",
+                                    "blank (a third node orients /PROP/TYPE13 springs only; on another type it is not "
+                                    "supported by Crumple)",
+                                    std::to_string(id)));
+    return -1;
+  }
+  return r.find(m.index.nodes, id, raw.orientation_where[e], keyword, "node_ID3", "node");
+}
+
 // A brick may repeat nodes to write a prism, pyramid or tetrahedron, as the reference accepts: the equal node ids
 // must sit at connectivity positions joined by edges of the hexahedron (nodes merged along edges, e.g. the prism
 // 1 2 3 3 5 6 7 7 or the tetrahedron 1 2 3 3 4 4 4 4), and at least 4 nodes must stay distinct
@@ -142,6 +160,9 @@ void resolve_kind(Resolver& r, ElementKind kind) {
   table.connectivity.resize(connectivity.size());
   const bool own_thickness = std::any_of(raw.thickness.begin(), raw.thickness.end(), [](double t) { return t > 0.0; });
   table.thickness.assign(own_thickness ? count : 0, 0.0);
+  const bool oriented = std::any_of(raw.orientation_node_id.begin(), raw.orientation_node_id.end(),
+                                    [](std::int64_t id) { return id != 0; });
+  table.orientation_node.assign(oriented ? count : 0, -1);
   IdMap& index = m.index.elements[static_cast<int>(kind)];
   index.reserve(count);
   for (std::size_t i = 0; i < count; ++i) {
@@ -149,6 +170,7 @@ void resolve_kind(Resolver& r, ElementKind kind) {
     table.user_id[i] = raw.user_id[e];
     table.part[i] = part[e];
     if (own_thickness) table.thickness[i] = raw.thickness[e];
+    if (oriented) table.orientation_node[i] = orientation_node(r, raw, e, part[e]);
     std::copy_n(&connectivity[e * static_cast<std::size_t>(n)], n, &table.connectivity[i * static_cast<std::size_t>(n)]);
     index.emplace(raw.user_id[e], static_cast<std::int32_t>(i));
   }

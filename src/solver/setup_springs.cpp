@@ -13,8 +13,12 @@ namespace crumple::solver {
 
 namespace {
 
-// The direction a beam-type spring's Y is taken from at rest: its property's skew's Y, else global Y (SP-15).
-Vec3 reference_y(const Model& m, const ElementGroup& group) {
+// The direction a beam-type spring's Y is taken from at rest: towards its orientation node, else its property's
+// skew's Y, else global Y (SP-15; measured: the node wins over the skew).
+Vec3 reference_y(const Model& m, const ElementGroup& group, std::size_t e) {
+  const ElementTable& table = m.elements[static_cast<int>(ElementKind::Spring)];
+  if (!table.orientation_node.empty() && table.orientation_node[e] >= 0)
+    return m.nodes.position(table.orientation_node[e]) - m.nodes.position(table.nodes_of(e)[0]);
   const SpringSection& section = m.properties[static_cast<std::size_t>(group.property)].spring;
   if (section.skew < 0) return {0.0, 1.0, 0.0};
   return skew_axes(m.skews[static_cast<std::size_t>(section.skew)], m.nodes.x, m.nodes.y, m.nodes.z).axis[1];
@@ -62,7 +66,7 @@ void setup_springs(const Model& m, SolverState& s) {
       const Vec3 offset = m.nodes.position(n[1]) - m.nodes.position(n[0]);
       st.rest_offset[3 * ue] = offset.x, st.rest_offset[3 * ue + 1] = offset.y, st.rest_offset[3 * ue + 2] = offset.z;
       if (p.frame == SpringFrame::Beam && st.length0[ue] > 0.0) {  // SP-15: its Y at rest
-        const Vec3 y = beam_rest_frame_y(scaled(offset, 1.0 / st.length0[ue]), reference_y(m, group));
+        const Vec3 y = beam_rest_frame_y(scaled(offset, 1.0 / st.length0[ue]), reference_y(m, group, ue));
         st.frame_y[3 * ue] = y.x, st.frame_y[3 * ue + 1] = y.y, st.frame_y[3 * ue + 2] = y.z;
       }
       st.mass[ue] = element_mass(m, ElementKind::Spring, ue);

@@ -361,4 +361,21 @@ TEST(SpringKeywords, FieldOfTwoNumbersReadsTheFirst) {
   EXPECT_NE(error_of(d).find("delta_max"), std::string::npos) << error_of(d);
 }
 
+// node_ID3 orients a beam-type spring (SP-15) and is refused on the other types, naming the field.
+TEST(SpringKeywords, OrientationNodeOnlyForBeamTypeSprings) {
+  SpringDeck d;
+  d.spring_line = I(7) + I(101) + I(102) + I(101);
+  EXPECT_NE(error_of(d).find("node_ID3"), std::string::npos) << error_of(d);
+  test::TempDir dir;
+  std::string property = "/PROP/TYPE13/30\nbeam\n" + R(2.0) + R(1.0) + "\n";
+  for (int k = 0; k < 6; ++k) property += R(100.0) + "\n" + I(0) + "\n" + R(0.0) + "\n";
+  std::string deck = general_deck(property);
+  deck.replace(deck.find(I(7) + I(101) + I(102)), 30, I(7) + I(101) + I(102) + I(103));
+  deck += "/NODE\n" + I(103) + R(0.0) + R(0.0) + R(1.0) + "\n";
+  const Model m = read_deck(dir.write("T_0000.rad", test::begin_card("T") + deck + "/END\n")).model;
+  const ElementTable& springs = m.elements[static_cast<int>(ElementKind::Spring)];
+  ASSERT_EQ(springs.orientation_node.size(), 1u);
+  EXPECT_EQ(springs.orientation_node[0], m.index.nodes.at(103));
+}
+
 }  // namespace test_spring_keywords

@@ -64,6 +64,8 @@ struct ElementTable {
   std::vector<std::int32_t> part;          // dense part index
   std::vector<std::int32_t> connectivity;  // nodes_per_element(kind) dense node indices per element, deck order
   std::vector<double> thickness;           // shells: the element's own thickness [L] (0 = not given), else empty
+  // Springs: a beam-type spring's orientation node, its Y at rest towards it (dense index, -1: none); else empty.
+  std::vector<std::int32_t> orientation_node;
   std::size_t size() const { return user_id.size(); }
   const std::int32_t* nodes_of(std::size_t element) const {
     return connectivity.data() + element * static_cast<std::size_t>(nodes_per_element(kind));
