@@ -274,6 +274,29 @@ GroupStepResult axial_spring_forces(const ElementTable& table, const ElementGrou
   return result;
 }
 
+// The six laws of a general or beam-type spring at their elongations: their forces `f` and work, and whether one
+// breaks it (SP-5, any law: Ifail 0). False for a spring broken last cycle: its last forces do their work over the
+// step they acted (SP-5a), and nothing more.
+bool six_law_step(const SpringGroupParameters& p, SpringState& state, std::int32_t e,
+                  const std::array<double, kSpringDofs>& delta, double dt, GroupStepResult& result,
+                  std::array<double, kSpringDofs>& f, bool& broken) {
+  const auto ue = static_cast<std::size_t>(e), slot = kSpringDofs * ue;
+  double work = 0.0;
+  const bool active = !state.deleted[ue];
+  for (std::size_t d = 0; d < kSpringDofs; ++d) {
+    if (!active) {
+      if (state.force[slot + d] != 0.0) work += last_work(state, slot + d, delta[d]);
+      continue;
+    }
+    f[d] = dof_force(p.dof[d], state, slot + d, delta[d], dt, work);  // a law without K, C or function: 0
+    broken = broken || outside(p.dof[d], delta[d]);
+    if (!std::isfinite(f[d])) result.non_finite = e;
+  }
+  state.internal_energy[ue] += work;
+  result.internal_energy += work;
+  return active;
+}
+
 // The general spring's six elongations: the relative displacement of node 2 from its rest offset, and the relative
 // rotation, summed over the steps, in the global axes (eq. SP-9).
 std::array<double, kSpringDofs> general_elongations(const NodalState& nodes, const SpringState& state, std::size_t ue,
@@ -292,27 +315,14 @@ GroupStepResult general_spring_forces(const ElementTable& table, const ElementGr
   GroupStepResult result;
   const bool recording = state.records.on(group.begin);
   for (std::int32_t e = group.begin; e < group.end; ++e) {
-    const auto ue = static_cast<std::size_t>(e), slot = kSpringDofs * ue;
+    const auto ue = static_cast<std::size_t>(e);
     if (recording && !(state.deleted[ue] & kElementElsewhere)) state.records.clear(ue);
     if (state.deleted[ue] & kElementElsewhere) continue;
     const std::int32_t* n = table.nodes_of(ue);
     const std::array<double, kSpringDofs> delta = general_elongations(nodes, state, ue, n, dt);
-    double work = 0.0;
-    if (state.deleted[ue]) {  // broken last cycle: the work of its last forces over the step they acted (SP-5a)
-      for (std::size_t d = 0; d < kSpringDofs; ++d)
-        if (state.force[slot + d] != 0.0) work += last_work(state, slot + d, delta[d]);
-      state.internal_energy[ue] += work, result.internal_energy += work;
-      continue;
-    }
     std::array<double, kSpringDofs> f{};
     bool broken = false;
-    for (std::size_t d = 0; d < kSpringDofs; ++d) {  // a law without K, C or function: 0, its elongation kept
-      f[d] = dof_force(p.dof[d], state, slot + d, delta[d], dt, work);
-      broken = broken || outside(p.dof[d], delta[d]);
-      if (!std::isfinite(f[d])) result.non_finite = e;
-    }
-    state.internal_energy[ue] += work;
-    result.internal_energy += work;
+    if (!six_law_step(p, state, e, delta, dt, result, f, broken)) continue;
     const Vec3 force{f[0], f[1], f[2]}, moment{f[3], f[4], f[5]};  // on node 2, internal; node 1 the opposite
     subtract_internal(nodes, static_cast<std::size_t>(n[0]), scaled(force, -1.0), scaled(moment, -1.0));
     subtract_internal(nodes, static_cast<std::size_t>(n[1]), force, moment);
@@ -389,7 +399,7 @@ GroupStepResult beam_spring_forces(const ElementTable& table, const ElementGroup
   GroupStepResult result;
   const bool recording = state.records.on(group.begin);
   for (std::int32_t e = group.begin; e < group.end; ++e) {
-    const auto ue = static_cast<std::size_t>(e), slot = kSpringDofs * ue;
+    const auto ue = static_cast<std::size_t>(e);
     if (recording && !(state.deleted[ue] & kElementElsewhere)) state.records.clear(ue);
     if (state.deleted[ue] & kElementElsewhere) continue;
     const std::int32_t* n = table.nodes_of(ue);
@@ -409,22 +419,9 @@ GroupStepResult beam_spring_forces(const ElementTable& table, const ElementGroup
     const BeamKinematics k = !(length > 0.0) ? coincident_beam_kinematics(nodes, state, ue, n, dt)
                                              : beam_kinematics(nodes, state, ue, n, dt, axis, length);
     const std::array<double, kSpringDofs>& delta = k.delta;
-    double work = 0.0;
-    if (state.deleted[ue]) {  // broken last cycle: the work of its last forces over the step they acted (SP-5a)
-      for (std::size_t d = 0; d < kSpringDofs; ++d)
-        if (state.force[slot + d] != 0.0) work += last_work(state, slot + d, delta[d]);
-      state.internal_energy[ue] += work, result.internal_energy += work;
-      continue;
-    }
     std::array<double, kSpringDofs> f{};
     bool broken = false;
-    for (std::size_t d = 0; d < kSpringDofs; ++d) {
-      f[d] = dof_force(p.dof[d], state, slot + d, delta[d], dt, work);
-      broken = broken || outside(p.dof[d], delta[d]);
-      if (!std::isfinite(f[d])) result.non_finite = e;
-    }
-    state.internal_energy[ue] += work;
-    result.internal_energy += work;
+    if (!six_law_step(p, state, e, delta, dt, result, f, broken)) continue;
     // SP-17: what the spring exerts on node 1 (node 2 the opposite force), the shear's couple shared by the ends.
     const Vec3 force = scaled(k.axis[0], f[0]) + scaled(k.axis[1], f[1]) + scaled(k.axis[2], f[2]);
     const Vec3 couple = scaled(k.axis[1], -0.5 * k.arm * f[2]) + scaled(k.axis[2], 0.5 * k.arm * f[1]);

@@ -284,9 +284,9 @@ void read_spring_law(CardReader& reader, DeckContext& context, SpringLaw& s, con
                  SkipKind::Unsupported);
   s.hardening = static_cast<int>(third.integer(11, 10, n.h));
   check_spring_hardening(third, reader, context, s, n);
-  if (s.hardening == 8 && n.dof > 0)  // a general spring's law: its total length is not measured
-    context.unsupported(third.error(11, 10, n.h, "0 to 7 for a general spring (H 8, the total length's curve, is "
-                                                 "not supported by Crumple on /PROP/TYPE8)"));
+  if (s.hardening == 8 && n.dof > 0)  // a six-law spring's law: its total length is not measured
+    context.unsupported(third.error(11, 10, n.h, "0 to 7 for a spring of six laws (H 8, the total length's curve, is "
+                                                 "not supported by Crumple on /PROP/TYPE8 and TYPE13)"));
   const double low = third.real(61, 20, n.delta_min, n.displacement);
   const double high = third.real(81, 20, n.delta_max, n.displacement);
   if (low > 0.0) third.fail(61, 20, n.delta_min, "a negative failure elongation (0 or blank: none)");
@@ -320,21 +320,37 @@ void read_spring_property(CardReader& reader, DeckContext& context) {
   context.model.properties.push_back(std::move(p));
 }
 
-// Line 1 of /PROP/TYPE8: Mass, Inertia, skew_ID, sens_ID, Isflag, Ifail, Ifail2, Iequil.
-void read_general_spring_mass(CardReader& reader, DeckContext& context, SpringSection& s) {
-  const Line first = reader.next("Mass, Inertia, skew_ID, sens_ID, Isflag, Ifail, Ifail2, Iequil");
+// Line 1's fields that /PROP/TYPE8 and /PROP/TYPE13 share: Mass, Inertia (> 0 where `inertia_required`), sens_ID,
+// Isflag, Ifail (the skew at 41-50 and the last fields are each card's own).
+void read_six_law_spring_line(const Line& first, DeckContext& context, SpringSection& s, bool inertia_required) {
   s.mass = first.real(1, 20, "Mass", dim::mass);
   if (!(s.mass > 0.0)) first.fail(1, 20, "Mass", "a positive spring mass (the reference refuses a spring without mass)");
   s.inertia = first.real(21, 20, "Inertia", dim::inertia);
-  if (s.inertia < 0.0) first.fail(21, 20, "Inertia", "a non-negative rotational inertia");
-  if (first.optional_id(41, 10, "skew_ID", IdKind::Other) != 0)
-    context.unsupported(first.error(41, 10, "skew_ID", default_only("a general spring in a skew's axes is")));
+  if (inertia_required ? !(s.inertia > 0.0) : s.inertia < 0.0)
+    first.fail(21, 20, "Inertia", inertia_required ? "a positive rotational inertia" : "a non-negative rotational inertia");
   if (first.optional_id(51, 10, "sens_ID", IdKind::Other) != 0)
     context.unsupported(first.error(51, 10, "sens_ID", default_only("a spring switched by a sensor is")));
   spring_default_only(first, context, 61, 10, "Isflag", static_cast<double>(first.integer(61, 10, "Isflag")), 0.0,
                       "the sensor flag (with a sensor) is");
   spring_default_only(first, context, 71, 10, "Ifail", static_cast<double>(first.integer(71, 10, "Ifail")), 0.0,
                       "the multi-directional failure criterion is");
+}
+
+// The six laws of a /PROP/TYPE8 or /PROP/TYPE13 spring, three lines each, X to ZZ.
+void read_six_laws(CardReader& reader, DeckContext& context, SpringSection& s) {
+  for (int d = 0; d < kSpringDofs; ++d) {
+    const SpringLawNames names(d + 1);
+    read_spring_stiffness(reader, context, s.dof[static_cast<std::size_t>(d)], names);
+    read_spring_law(reader, context, s.dof[static_cast<std::size_t>(d)], names);
+  }
+}
+
+// Line 1 of /PROP/TYPE8: Mass, Inertia, skew_ID, sens_ID, Isflag, Ifail, Ifail2, Iequil.
+void read_general_spring_mass(CardReader& reader, DeckContext& context, SpringSection& s) {
+  const Line first = reader.next("Mass, Inertia, skew_ID, sens_ID, Isflag, Ifail, Ifail2, Iequil");
+  read_six_law_spring_line(first, context, s, false);
+  if (first.optional_id(41, 10, "skew_ID", IdKind::Other) != 0)
+    context.unsupported(first.error(41, 10, "skew_ID", default_only("a general spring in a skew's axes is")));
   spring_default_only(first, context, 81, 10, "Ifail2", static_cast<double>(first.integer(81, 10, "Ifail2")), 0.0,
                       "a failure criterion other than the displacement's is");
   spring_default_only(first, context, 91, 10, "Iequil", static_cast<double>(first.integer(91, 10, "Iequil")), 0.0,
@@ -348,11 +364,7 @@ void read_general_spring_property(CardReader& reader, DeckContext& context) {
   Property p = begin_property(reader, PropertyKind::Spring);
   p.spring.frame = SpringFrame::Global;
   read_general_spring_mass(reader, context, p.spring);
-  for (int d = 0; d < kSpringDofs; ++d) {
-    const SpringLawNames names(d + 1);
-    read_spring_stiffness(reader, context, p.spring.dof[static_cast<std::size_t>(d)], names);
-    read_spring_law(reader, context, p.spring.dof[static_cast<std::size_t>(d)], names);
-  }
+  read_six_laws(reader, context, p.spring);
   if (reader.has_data()) {
     const Line last = reader.next("Fsmooth, Fcut");
     spring_default_only(last, context, 1, 10, "Fsmooth", static_cast<double>(last.integer(1, 10, "Fsmooth")), 0.0,
@@ -371,17 +383,8 @@ void read_general_spring_property(CardReader& reader, DeckContext& context) {
 // Line 1 of /PROP/TYPE13: Mass, Inertia, skew_ID, sens_ID, Isflag, Ifail, Ileng, Ifail2.
 void read_beam_spring_mass(CardReader& reader, DeckContext& context, SpringSection& s) {
   const Line first = reader.next("Mass, Inertia, skew_ID, sens_ID, Isflag, Ifail, Ileng, Ifail2");
-  s.mass = first.real(1, 20, "Mass", dim::mass);
-  if (!(s.mass > 0.0)) first.fail(1, 20, "Mass", "a positive spring mass (the reference refuses a spring without mass)");
-  s.inertia = first.real(21, 20, "Inertia", dim::inertia);
-  if (!(s.inertia > 0.0)) first.fail(21, 20, "Inertia", "a positive rotational inertia for a beam-type spring");
+  read_six_law_spring_line(first, context, s, true);
   s.skew_id = first.optional_id(41, 10, "skew_ID", IdKind::Other);
-  if (first.optional_id(51, 10, "sens_ID", IdKind::Other) != 0)
-    context.unsupported(first.error(51, 10, "sens_ID", default_only("a spring switched by a sensor is")));
-  spring_default_only(first, context, 61, 10, "Isflag", static_cast<double>(first.integer(61, 10, "Isflag")), 0.0,
-                      "the sensor flag (with a sensor) is");
-  spring_default_only(first, context, 71, 10, "Ifail", static_cast<double>(first.integer(71, 10, "Ifail")), 0.0,
-                      "the multi-directional failure criterion is");
   spring_default_only(first, context, 81, 10, "Ileng", static_cast<double>(first.integer(81, 10, "Ileng")), 0.0,
                       "input per unit length is");
   spring_default_only(first, context, 91, 10, "Ifail2", static_cast<double>(first.integer(91, 10, "Ifail2")), 0.0,
@@ -397,15 +400,7 @@ void read_beam_spring_property(CardReader& reader, DeckContext& context) {
   Property p = begin_property(reader, PropertyKind::Spring);
   p.spring.frame = SpringFrame::Beam;
   read_beam_spring_mass(reader, context, p.spring);
-  for (int d = 0; d < kSpringDofs; ++d) {
-    const SpringLawNames names(d + 1);
-    read_spring_stiffness(reader, context, p.spring.dof[static_cast<std::size_t>(d)], names);
-    read_spring_law(reader, context, p.spring.dof[static_cast<std::size_t>(d)], names);
-    if (p.spring.dof[static_cast<std::size_t>(d)].hardening == 8)
-      context.unsupported(DeckError(p.where, reader.card().keyword, names.h,
-                                    "0 to 7 for a beam-type spring (H 8 is not supported by Crumple on /PROP/TYPE13)",
-                                    "8"));
-  }
+  read_six_laws(reader, context, p.spring);
   if (reader.has_data()) {
     const Line rate = reader.next("Vo, Wo, Fcut, Fsmooth");
     const double cut = rate.real(41, 20, "Fcut", dim::rate);
