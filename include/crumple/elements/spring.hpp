@@ -1,6 +1,6 @@
 #pragma once
-// Springs: /PROP/TYPE4, one translational degree of freedom along their two nodes, and /PROP/TYPE8, six in the
-// global axes (docs/theory/spring.md).
+// Springs (docs/theory/spring.md): /PROP/TYPE4, one translational degree of freedom along their two nodes;
+// /PROP/TYPE8, six in the global axes; /PROP/TYPE13, six in a frame that turns with the spring.
 #include <array>
 #include <cmath>
 
@@ -30,7 +30,7 @@ struct SpringDofParameters {
 // Everything a spring kernel needs about a group that is the same for all its springs.
 struct SpringGroupParameters {
   double mass = 0.0;     // M, the spring's mass [M]
-  double inertia = 0.0;  // I, a general spring's rotational inertia [M L^2]
+  double inertia = 0.0;  // I, a general or beam-type spring's rotational inertia [M L^2]
   SpringFrame frame = SpringFrame::Axial;  // TYPE4 along the nodes; TYPE8 the global axes (SP-9); TYPE13 (SP-15)
   std::array<SpringDofParameters, kSpringDofs> dof{};  // /PROP/TYPE4: dof[0]
 };
@@ -53,7 +53,7 @@ double spring_elastic_force(const SpringDofParameters& p, double delta, double b
 double spring_residual_force(const SpringDofParameters& p, double delta, double before, double force_before,
                              double& a, double& b);
 
-// The group parameters of a /PROP/TYPE4 section (`functions`: the model's).
+// The group parameters of a spring section (`functions`: the model's).
 SpringGroupParameters spring_parameters(const SpringSection& s, const std::vector<Function>& functions);
 
 // The stable step of a mass (or inertia) m held by a stiffness k and a damping c, 2 m / (sqrt(2 m k + c^2) + c)

@@ -1,6 +1,6 @@
 #pragma once
-// State owned by the spring kernels (docs/theory/spring.md): per spring, its length at rest, its elongation and
-// the force it carries.
+// State owned by the spring kernels (docs/theory/spring.md): per spring, its rest, its frame, its step, and per
+// degree of freedom its elongation, its force and its hardening.
 #include <cstddef>
 #include <vector>
 
@@ -21,13 +21,13 @@ struct SpringState : ElementKindState {  // no integration points: points and ep
   // share of them at rest (4 values). A beam-type spring's share changes with its length (SP-18).
   std::vector<double> node_held, own_held;
   // kSpringDofs per spring, one per degree of freedom (a /PROP/TYPE4 spring: the first only; /PROP/TYPE8: X, Y, Z,
-  // XX, YY, ZZ in the global axes):
+  // XX, YY, ZZ in the global axes; /PROP/TYPE13: tension, shear Y and Z, torsion, bending Y and Z in its frame):
   std::vector<double> elongation;  // delta = l - l0 (TYPE4), or the relative displacement or rotation, positive in
-                                   // tension [L] or [rad] (eq. SP-1, SP-9)
+                                   // tension [L] or [rad] (eq. SP-1, SP-9, SP-16)
   std::vector<double> force;       // force, positive in tension: K delta + C d(delta)/dt [F] or [F L] (eq. SP-2)
   std::vector<double> elastic_force;  // the spring's part of it, without the dashpot [F]
-  // Hardening springs (H 1, 2): H 1, the hardening displacement x (SP-6) and 0; H 2, the plastic elongations of the
-  // tension and of the compression side (SP-7) [L].
+  // Hardening: H 1 and 6, the hardening displacement x (SP-6, SP-12) and 0; H 2, the plastic elongations of the
+  // tension and of the compression side (SP-7); H 5, each side's largest elongation (SP-11) [L].
   std::vector<double> plastic_a, plastic_b;
 
   void resize_elements(std::size_t n) {
