@@ -114,17 +114,13 @@ double residual_side(const SpringDofParameters& p, double sign, double delta, do
   return sign * std::min(std::max(sign * trial, sign * low), sign * high);
 }
 
-}  // namespace
-
 // SP-11, H 5: tension and compression each on their own side, from their own largest elongation (a >= 0, b <= 0);
 // no force between the two residual elongations.
-double spring_residual_force(const SpringDofParameters& p, double delta, double before, double force_before,
-                             double& a, double& b) {
+double residual_force(const SpringDofParameters& p, double delta, double before, double force_before, double& a,
+                      double& b) {
   const double trial = force_before + p.stiffness * (delta - before);
   return delta >= 0.0 ? residual_side(p, 1.0, delta, trial, a) : residual_side(p, -1.0, delta, trial, b);
 }
-
-namespace {
 
 // SP-6, H 1: elastic at K inside |F| <= g(x); beyond it the force is on the curve, g(x), and x grows by the
 // elongation the spring makes past the yield force (x = delta on a first loading: the curve itself).
@@ -198,7 +194,7 @@ double spring_elastic_force(const SpringDofParameters& p, double delta, double b
       const double trial = force_before + p.stiffness * (delta - before);
       return std::min(std::max(trial, spring_lower_curve(p, delta)), spring_curve(p, delta));
     }
-    case 5: return spring_residual_force(p, delta, before, force_before, a, b);
+    case 5: return residual_force(p, delta, before, force_before, a, b);
     case 6: return unloading_curve_force(p, delta, before, force_before, a);
     case 7: return hysteresis_force(p, delta, before, force_before);
     case 8: return spring_curve(p, length0 + delta);  // SP-14: the curve of the total length

@@ -346,6 +346,9 @@ TEST(SpringKeywords, BeamTypeSpringReadsItsLawsAndSteps) {
   EXPECT_NEAR(initial_element_time_step(m, ElementKind::Spring, 0), std::min(2.0 / std::sqrt(200.0), 1.0 / std::sqrt(110.0)),
               1e-15);
   EXPECT_NEAR(1.0 / std::sqrt(110.0), 0.095346, 1e-6);  // the reference's starter step
+  std::string garbled = property;  // the failure lines are read as numbers although Ifail2 0 ignores them
+  garbled.replace(garbled.rfind(R(0.0) + R(0.0) + R(1.0)), 20, std::string(19, ' ') + "x");
+  EXPECT_NE(general_error(garbled).find("field c"), std::string::npos) << general_error(garbled);
   std::string skewed = property;  // a skew that does not exist: an error naming skew_ID
   skewed.replace(skewed.find(R(1.0) + "\n"), R(1.0).size(), R(1.0) + I(5));
   EXPECT_NE(general_error(skewed).find("skew_ID"), std::string::npos) << general_error(skewed);

@@ -24,7 +24,6 @@ struct SpringDofParameters {
                       // (SP-11), 6 unloading curve (SP-12), 7 hysteresis (SP-13), 8 total length (SP-14)
   const Function* lower_function = nullptr;  // fct_ID3: H 4's lower yield curve, H 5's residual elongation,
                                              // H 6 and 7's unloading curve
-  bool acts() const { return step_stiffness > 0.0 || damping > 0.0; }
 };
 
 // Everything a spring kernel needs about a group that is the same for all its springs.
@@ -48,10 +47,6 @@ inline double spring_lower_curve(const SpringDofParameters& p, double delta) {
 // length at rest, for H 8).
 double spring_elastic_force(const SpringDofParameters& p, double delta, double before, double force_before,
                             double& a, double& b, double length0 = 0.0);
-
-// H 5, elastic-plastic with nonlinear unloading to a residual elongation, each side on its own (eq. SP-11).
-double spring_residual_force(const SpringDofParameters& p, double delta, double before, double force_before,
-                             double& a, double& b);
 
 // The group parameters of a spring section (`functions`: the model's).
 SpringGroupParameters spring_parameters(const SpringSection& s, const std::vector<Function>& functions);

@@ -320,6 +320,16 @@ void read_spring_property(CardReader& reader, DeckContext& context) {
   context.model.properties.push_back(std::move(p));
 }
 
+// The rate filter of /PROP/TYPE8 and TYPE13 (Fsmooth, an integer at `smooth`; Fcut, a real at `cut`): blank, 0 or
+// the reference's default 1e30 only.
+void refuse_rate_filter(const Line& line, DeckContext& context, int smooth, int cut) {
+  spring_default_only(line, context, smooth, 10, "Fsmooth", static_cast<double>(line.integer(smooth, 10, "Fsmooth")),
+                      0.0, "the rate filter is");
+  const double frequency = line.real(cut, 20, "Fcut", dim::rate);
+  if (frequency != 0.0 && frequency < 1e29)
+    context.unsupported(line.error(cut, 20, "Fcut", default_only("the rate filter's cut-off frequency is")));
+}
+
 // Line 1's fields that /PROP/TYPE8 and /PROP/TYPE13 share: Mass, Inertia (> 0 where `inertia_required`), sens_ID,
 // Isflag, Ifail (the skew at 41-50 and the last fields are each card's own).
 void read_six_law_spring_line(const Line& first, DeckContext& context, SpringSection& s, bool inertia_required) {
@@ -367,10 +377,7 @@ void read_general_spring_property(CardReader& reader, DeckContext& context) {
   read_six_laws(reader, context, p.spring);
   if (reader.has_data()) {
     const Line last = reader.next("Fsmooth, Fcut");
-    spring_default_only(last, context, 1, 10, "Fsmooth", static_cast<double>(last.integer(1, 10, "Fsmooth")), 0.0,
-                        "the rate filter is");
-    spring_default_only(last, context, 11, 20, "Fcut", last.real(11, 20, "Fcut", dim::none), 0.0,
-                        "the rate filter's cut-off frequency is");
+    refuse_rate_filter(last, context, 1, 11);
   }
   if (p.spring.dof[3].acts() || p.spring.dof[4].acts() || p.spring.dof[5].acts())
     if (!(p.spring.inertia > 0.0))
@@ -403,14 +410,15 @@ void read_beam_spring_property(CardReader& reader, DeckContext& context) {
   read_six_laws(reader, context, p.spring);
   if (reader.has_data()) {
     const Line rate = reader.next("Vo, Wo, Fcut, Fsmooth");
-    const double cut = rate.real(41, 20, "Fcut", dim::rate);
-    if (cut != 0.0 && cut < 1e29)
-      context.unsupported(rate.error(41, 20, "Fcut", default_only("the rate filter is")));
-    spring_default_only(rate, context, 61, 10, "Fsmooth", static_cast<double>(rate.integer(61, 10, "Fsmooth")), 0.0,
-                        "the rate filter is");
+    rate.real(1, 20, "Vo", dim::velocity), rate.real(21, 20, "Wo", dim::angular_velocity);  // rate effects only
+    refuse_rate_filter(rate, context, 61, 41);
   }
   // Blank lines between them are skipped (measured: a deck with one before each is the reference's deck as written).
-  for (int d = 0; d < kSpringDofs && reader.has_data(); ++d) reader.next_nonblank();
+  for (int d = 0; d < kSpringDofs && reader.has_data(); ++d) {
+    const Line failure = *reader.next_nonblank();
+    for (const auto& [column, name] : {std::pair{1, "c"}, {21, "n"}, {41, "alpha"}, {61, "beta"}})
+      failure.real(column, 20, name, dim::none);  // read to check them; they act with Ifail2 only (refused)
+  }
   reader.finish();
   context.model.properties.push_back(std::move(p));
 }
