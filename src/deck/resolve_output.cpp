@@ -174,11 +174,93 @@ void check_written_section(Resolver& r, Section& s) {
             fmt::format("node {} on the line of nodes {} and {}", s.node_ids[2], s.node_ids[0], s.node_ids[1]));
 }
 
+// /INTER ids are one numbering over both types: a /TH/INTER object is a TYPE7 interface below
+// type7_interfaces.size(), a TYPE2 one from there (docs/output-format.md, "INTER").
+void index_tied_interfaces(Resolver& r) {
+  Model& m = r.model;
+  const auto first = static_cast<std::int32_t>(m.type7_interfaces.size());
+  for (std::size_t k = 0; k < m.type2_interfaces.size(); ++k) {
+    const Type2Interface& i = m.type2_interfaces[k];
+    const auto [it, inserted] = m.index.interfaces.emplace(i.user_id, first + static_cast<std::int32_t>(k));
+    if (inserted) continue;
+    const auto other = static_cast<std::size_t>(it->second);
+    const SourceLocation& there = other < m.type7_interfaces.size() ? m.type7_interfaces[other].where
+                                                                    : m.type2_interfaces[other - m.type7_interfaces.size()].where;
+    r.error(i.where, fmt::format("/INTER/TYPE2/{}", i.user_id), "id", "an id not used by another /INTER",
+            fmt::format("duplicate of the one at {}:{}", there.file, there.line));
+  }
+}
+
+// A tied node moved by another condition too, or a tie whose segment moves with another tie: refused, as the
+// reference refuses the second (a main node tied elsewhere); the reference runs the others with a warning and an
+// answer Crumple does not reproduce.
+void check_tie_conflicts(Resolver& r, const std::vector<std::int64_t>& tied_by) {
+  const Model& m = r.model;
+  auto user = [&m](std::int32_t node) { return m.nodes.user_id[static_cast<std::size_t>(node)]; };
+  auto conflict = [&](std::int32_t node, const SourceLocation& where, const std::string& keyword, std::string_view field,
+                      const std::string& why) {
+    const std::int64_t by = tied_by[static_cast<std::size_t>(node)];
+    if (by != 0)
+      r.error(where, keyword, std::string(field), "no node of a /INTER/TYPE2's grnd_IDs (a tied node moves with its segment)",
+              fmt::format("node {} is tied by /INTER/TYPE2/{}{}", user(node), by, why));
+  };
+  for (const Type2Interface& i : m.type2_interfaces)
+    for (const Tie& tie : i.ties)
+      for (std::int32_t node : tie.main)
+        conflict(node, i.where, fmt::format("/INTER/TYPE2/{}", i.user_id), "surf_IDm",
+                 ": ties of ties (hierarchy levels) are not supported by Crumple");
+  for (const RigidBody& b : m.rigid_bodies) {
+    const std::string kw = fmt::format("/RBODY/{}", b.user_id);
+    if (b.main_node >= 0) conflict(b.main_node, b.where, kw, "node_ID", "");
+    if (b.node_group >= 0)
+      for (std::int32_t node : m.node_groups[static_cast<std::size_t>(b.node_group)].nodes) conflict(node, b.where, kw, "grnd_ID", "");
+  }
+  for (const BoundaryCondition& bc : m.boundary_conditions)
+    if (bc.node_group >= 0)
+      for (std::int32_t node : m.node_groups[static_cast<std::size_t>(bc.node_group)].nodes)
+        conflict(node, bc.where, fmt::format("/BCS/{}", bc.user_id), "grnod_ID", "");
+}
+
+// Each tied interface's nodes on their segments (TI-1, TI-2). A node with no segment within the search distance is
+// an error unless Ignore lets it out of the tie; a node tied twice would be moved by two conditions.
+void tie_nodes(Resolver& r) {
+  Model& m = r.model;
+  std::vector<std::int64_t> tied_by(m.nodes.size(), 0);
+  for (Type2Interface& i : m.type2_interfaces) {
+    if (i.secondary_group < 0 || i.main_surface < 0) continue;
+    const std::string kw = fmt::format("/INTER/TYPE2/{}", i.user_id);
+    const TieSearch search = find_ties(m, i);
+    i.ties = search.ties;
+    if (!search.unmatched.empty()) {
+      std::string nodes;
+      for (std::size_t k = 0; k < std::min<std::size_t>(search.unmatched.size(), 5); ++k)
+        nodes += fmt::format("{}{}", k ? ", " : "", m.nodes.user_id[static_cast<std::size_t>(search.unmatched[k])]);
+      if (search.unmatched.size() > 5) nodes += ", ...";
+      const std::string what = fmt::format("{} node(s) with no main segment within {:g} ({})", search.unmatched.size(),
+                                           search.search_distance, nodes);
+      if (i.ignore == 0)
+        r.error(i.where, kw, "Ignore", "every node of grnd_IDs near a segment of surf_IDm (or Ignore 1 to 3, which "
+                                       "leaves such nodes out)", what);
+      else
+        r.context.warn(i.where, kw, what + ": left out of the tie (Ignore " + std::to_string(i.ignore) + ")");
+    }
+    for (const Tie& tie : i.ties) {
+      std::int64_t& by = tied_by[static_cast<std::size_t>(tie.node)];
+      if (by != 0)
+        r.error(i.where, kw, "grnd_IDs", "nodes tied by one interface only",
+                fmt::format("node {} is tied by /INTER/TYPE2/{} too", m.nodes.user_id[static_cast<std::size_t>(tie.node)], by));
+      by = i.user_id;
+    }
+  }
+  check_tie_conflicts(r, tied_by);
+}
+
 }  // namespace
 
 void resolve_output_references(Resolver& r, std::vector<RunControl>& continued_runs) {
   Model& m = r.model;
   r.index(m.type7_interfaces, m.index.interfaces, "/INTER");
+  index_tied_interfaces(r);
   r.index(m.sections, m.index.sections, "/SECT");
   r.index(m.accelerometers, m.index.accelerometers, "/ACCEL");
   const auto& ix = m.index;
@@ -193,6 +275,12 @@ void resolve_output_references(Resolver& r, std::vector<RunControl>& continued_r
       r.error(i.where, kw, "Slav_id", "a node group with nodes (the interface's secondary nodes)",
               fmt::format("node group {} is empty", i.secondary_group_id));
   }
+  for (Type2Interface& i : m.type2_interfaces) {
+    const std::string kw = fmt::format("/INTER/TYPE2/{}", i.user_id);
+    i.secondary_group = r.find(ix.node_groups, i.secondary_group_id, i.where, kw, "grnd_IDs", "node group");
+    i.main_surface = r.find(ix.surfaces, i.main_surface_id, i.where, kw, "surf_IDm", "surface");
+  }
+  tie_nodes(r);
   for (Section& s : m.sections) {
     const std::string kw = fmt::format("/SECT/{}", s.user_id);
     for (int k = 0; k < 3; ++k)

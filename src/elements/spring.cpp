@@ -66,8 +66,7 @@ Vec3 beam_rest_frame_y(const Vec3& along, const Vec3& reference) {
   return scaled(y, 1.0 / norm(y));
 }
 
-double spring_nodal_step(const SpringState& st, const NodalState& nodes, const std::int32_t* n, std::size_t e,
-                         const SpringStepStiffness* now) {
+double spring_nodal_step(const SpringState& st, const std::int32_t* n, std::size_t e, const SpringStepStiffness* now) {
   const double change[4] = {now ? now->translation - st.own_held[4 * e] : 0.0,
                             now ? now->translation_damping - st.own_held[4 * e + 1] : 0.0,
                             now ? now->rotation - st.own_held[4 * e + 2] : 0.0,
@@ -75,9 +74,9 @@ double spring_nodal_step(const SpringState& st, const NodalState& nodes, const s
   double step = 1e30;
   for (int a = 0; a < 2; ++a) {
     const auto k = static_cast<std::size_t>(n[a]);
-    const double* h = &st.node_held[4 * k];
-    step = std::min({step, held_mass_step(nodes.mass[k], h[0] + change[0], h[1] + change[1]),
-                     held_mass_step(nodes.inertia[k], h[2] + change[2], h[3] + change[3])});
+    const double* h = &st.node_held[SpringState::kNodeHeldValues * k];
+    step = std::min({step, held_mass_step(h[4], h[0] + change[0], h[1] + change[1]),
+                     held_mass_step(h[5], h[2] + change[2], h[3] + change[3])});
   }
   return step;
 }
@@ -430,7 +429,7 @@ GroupStepResult beam_spring_forces(const ElementTable& table, const ElementGroup
       record_load(state.records.load_at(ue, 1), force, scaled(on2, -1.0));
     }
     const SpringStepStiffness now = spring_step_stiffness(p, k.arm);  // SP-18 at the current length
-    close_element(state, result, e, spring_nodal_step(state, nodes, n, ue, &now), broken);
+    close_element(state, result, e, spring_nodal_step(state, n, ue, &now), broken);
   }
   return result;
 }

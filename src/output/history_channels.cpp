@@ -193,7 +193,9 @@ std::string object_title(const Model& m, const TimeHistoryRequest& th, std::size
     case HistoryObject::Subset: return m.subsets[at].title;
     case HistoryObject::RigidWall: return m.rigid_walls[at].title;
     case HistoryObject::RigidBody: return m.rigid_bodies[at].title;
-    case HistoryObject::Interface: return m.type7_interfaces[at].title;
+    case HistoryObject::Interface:  // TYPE7 ones first, then TYPE2 (resolve_output.cpp)
+      return at < m.type7_interfaces.size() ? m.type7_interfaces[at].title
+                                            : m.type2_interfaces[at - m.type7_interfaces.size()].title;
     case HistoryObject::Section: return m.sections[at].title;
     case HistoryObject::Accelerometer: return m.accelerometers[at].title;
     case HistoryObject::Node: {
@@ -321,6 +323,13 @@ ForceValues wall_values(const RigidWallState& w) {
 ForceValues interface_values(const InterfaceResult& r) {
   return {r.normal_force,    r.tangential_force, r.elastic_energy,   r.friction_work,  r.damping_work,
           r.pair_normal_abs, r.pair_force_abs,   r.pair_normal_norm, r.pair_force_norm};
+}
+
+// A tied interface passes forces only: the TYPE7 energies and the pair sums are 0 (TI-6).
+ForceValues tied_interface_values(const TiedInterfaceState& t) {
+  ForceValues out;
+  out.fn = t.normal_force, out.ft = t.tangential_force;
+  return out;
 }
 
 // The rotation vector (axis times angle) of a rotation matrix, row-major.
@@ -605,7 +614,13 @@ void HistoryChannels::evaluate(const Request& r, const SolverState& s, const Vel
         append(kSpring, spring_values(s, s.spring_groups[g].frame == SpringFrame::Global, object), r.getters, row);
         break;
       }
-      case HistoryObject::Interface: append(kForces, interface_values(s.contact.results[o]), r.getters, row); break;
+      case HistoryObject::Interface: {
+        const std::size_t contacts = m.type7_interfaces.size();
+        const ForceValues values = o < contacts ? interface_values(s.contact.results[o])
+                                                : tied_interface_values(s.ties.interfaces[o - contacts]);
+        append(kForces, values, r.getters, row);
+        break;
+      }
       case HistoryObject::RigidWall: append(kForces, wall_values(s.walls[o]), r.getters, row); break;
       case HistoryObject::RigidBody: append(kBody, body_values(s, s.bodies[o]), r.getters, row); break;
       case HistoryObject::Accelerometer:

@@ -256,6 +256,7 @@ void compute_contact_forces(const Model& m, SolverState& s, RunEvents& events, b
 void apply_loads(const Model& m, SolverState& s) {
   add_external_forces(m, s, s.time);
   if (!s.recorded.external_force.empty()) record_external_forces(m, s, s.time);
+  transfer_tied_forces(s);  // before the bodies gather: a segment's node may be a body's
   gather_rigid_body_forces(s);
 }
 
@@ -377,6 +378,7 @@ void apply_constraints(const Model& m, SolverState& s, VelocityScratch& scratch,
     }
   impose_kinematics(m, s, s.time, dt_next);
   apply_rigid_walls(m, s, dt_average, dt_next);
+  tie_velocities(s);  // on the segments' final velocities; a tied node has no mass, so no work
   // The works of the step as exact sums over the owned nodes, combined over the domains (docs/parallel.md): the
   // loads' and conditions' work, then each interface's contact work.
   std::vector<ExactSum>& work = s.reducer.sums;

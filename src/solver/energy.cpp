@@ -77,6 +77,7 @@ std::pair<double, double> kinetic_energy(SolverState& s, bool whole_model) {
     s.reducer.sum(sums);
   }
   double translational = sums[0].value(), rotational = sums[1].value();
+  translational += tied_kinetic_correction(s);  // TI-10: Spotflag 2 and 4 count the tied nodes' own masses
   // Rigid bodies, as the reference's listing splits them: translational 1/2 M v_c^2 of the centre of mass,
   // rotational the rest of the nodes' kinetic energy, sum 1/2 m_i |v_i - v_c|^2, which for a rigid motion is
   // 1/2 w . I w of the nodal masses about the centre (docs/theory/rigid-bodies.md, RB-7). The total is unchanged.

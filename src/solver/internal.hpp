@@ -40,6 +40,8 @@ void update_skew_axes(const Model& model, SolverState& state);
 void setup_bricks(const Model& model, SolverState& state);
 // Spring groups' parameters and state (setup_springs.cpp, docs/theory/spring.md).
 void setup_springs(const Model& model, SolverState& state);
+// The springs' steps again from the masses SpringState::node_held holds (after a tie changed a node's, TI-12).
+void refresh_spring_steps(const Model& model, SolverState& state);
 void setup_rigid_walls(const Model& model, SolverState& state);
 
 // Nodal time step of the cycle with mass scaling (/DT/NODA/CST): adds mass where the nodal step (on the stiffness
@@ -99,6 +101,16 @@ void record_external_forces(const Model& model, SolverState& state, double time)
 // (`before`: x y z rx ry rz) and after the update, times dt_average (energy.md).
 void add_load_work(const Model& model, const SolverState& state, const std::array<std::vector<double>, 6>& before,
                    double time, double dt_average, ExactSum& work);
+
+// Tied interfaces (/INTER/TYPE2, docs/theory/tied-interfaces.md): at the start, the ties and their nodes' mass
+// lumped on the segments (TI-3, TI-7); each cycle after the loads, the tied nodes' forces passed to the segments (TI-4);
+// after the velocity update and the other conditions, the tied nodes' velocities from the segments' (TI-5).
+void setup_ties(const Model& model, SolverState& state);
+void bind_ties_to_domain(SolverState& state);  // after a new partition: the owners of the tie nodes
+void transfer_tied_forces(SolverState& state);
+void tie_velocities(SolverState& state);
+// TI-10: what Spotflag 2 and 4 take off and add to the translational kinetic energy, the same in every domain.
+double tied_kinetic_correction(const SolverState& state);
 
 // A rigid body's inertia tensor about its centre in global axes, R J R^T (row by row).
 std::array<double, 9> body_inertia_global(const RigidBodyState& body);

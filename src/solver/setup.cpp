@@ -221,6 +221,7 @@ void rebind_domain(const Model& m, SolverState& s, Domain domain) {
     in.touched_list.clear();
   }
   bind_sections(m, s, true);
+  bind_ties_to_domain(s);
 }
 
 SolverState make_state(const Model& m, std::vector<std::string>& notes, Domain domain) {
@@ -241,6 +242,7 @@ SolverState make_state(const Model& m, std::vector<std::string>& notes, Domain d
   setup_damping(m, s);
   s.group_results.assign(m.element_groups.size(), GroupStepResult{});
   take_domain(m, s, std::move(domain));
+  setup_ties(m, s);  // after every mass is lumped and the springs' steps have their nodes' own (SP-19)
   setup_sections(m, s);  // /TH/SECTIO: after the domain, whose records it may restrict or read
   update_skew_axes(m, s);  // every domain holds every node here
   setup_rigid_bodies(m, s);

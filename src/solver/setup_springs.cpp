@@ -30,7 +30,9 @@ Vec3 reference_y(const Model& m, const ElementGroup& group, std::size_t e) {
 void setup_spring_steps(const Model& m, SolverState& s) {
   const ElementTable& table = m.elements[static_cast<int>(ElementKind::Spring)];
   SpringState& st = s.springs;
-  st.node_held.assign(4 * m.nodes.size(), 0.0), st.own_held.assign(4 * table.size(), 0.0);
+  st.node_held.assign(SpringState::kNodeHeldValues * m.nodes.size(), 0.0), st.own_held.assign(4 * table.size(), 0.0);
+  for (std::size_t k = 0; k < m.nodes.size(); ++k)  // the nodes' own mass and inertia, before a tie takes them (TI-3)
+    st.node_held[SpringState::kNodeHeldValues * k + 4] = s.nodes.mass[k], st.node_held[SpringState::kNodeHeldValues * k + 5] = s.nodes.inertia[k];
   for (std::size_t g = 0; g < m.element_groups.size(); ++g) {
     if (m.element_groups[g].kind != ElementKind::Spring) continue;
     for (std::int32_t e = m.element_groups[g].begin; e < m.element_groups[g].end; ++e) {
@@ -39,13 +41,19 @@ void setup_spring_steps(const Model& m, SolverState& s) {
       const double own[4] = {k.translation, k.translation_damping, k.rotation, k.rotation_damping};
       for (std::size_t i = 0; i < 4; ++i) st.own_held[4 * ue + i] = own[i];
       for (int a = 0; a < 2; ++a)
-        for (std::size_t i = 0; i < 4; ++i) st.node_held[4 * static_cast<std::size_t>(table.nodes_of(ue)[a]) + i] += own[i];
+        for (std::size_t i = 0; i < 4; ++i)
+          st.node_held[SpringState::kNodeHeldValues * static_cast<std::size_t>(table.nodes_of(ue)[a]) + i] += own[i];
     }
   }
-  for (std::size_t e = 0; e < table.size(); ++e) st.nodal_step[e] = spring_nodal_step(st, s.nodes, table.nodes_of(e), e);
+  refresh_spring_steps(m, s);
 }
 
 }  // namespace
+
+void refresh_spring_steps(const Model& m, SolverState& s) {
+  const ElementTable& table = m.elements[static_cast<int>(ElementKind::Spring)];
+  for (std::size_t e = 0; e < table.size(); ++e) s.springs.nodal_step[e] = spring_nodal_step(s.springs, table.nodes_of(e), e);
+}
 
 void setup_springs(const Model& m, SolverState& s) {
   const ElementTable& table = m.elements[static_cast<int>(ElementKind::Spring)];

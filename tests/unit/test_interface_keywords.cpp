@@ -1,5 +1,7 @@
 // /INTER/TYPE7: every line of the card (docs/cards/loads-output-engine.md §5), defaults, units, the conditional
 // friction lines, and the errors for malformed cards and for options the contact module does not implement.
+// /INTER/TYPE2 (§5b): its line in each input version, the ties found (docs/theory/tied-interfaces.md, TI-1, TI-2),
+// and the errors for formulations Crumple lacks and for tied nodes that another condition moves.
 #include <gtest/gtest.h>
 
 #include "deck_files.hpp"
@@ -343,6 +345,100 @@ TEST(InterfaceKeywords, UnusedValuesAreWarnings) {
   EXPECT_TRUE(contains(w, "Fscale_gap")) << w;
   EXPECT_TRUE(contains(w, "Gap_max")) << w;
   EXPECT_TRUE(contains(w, "Stmin and Stmax")) << w;
+}
+
+// ---- /INTER/TYPE2: node 7 above the first shell of the plate (0..0.01 x 0..0.01), tied to the plate's surface 20.
+namespace {
+
+std::string tied_node(double x = 0.0025, double y = 0.005, double z = 0.0002) {
+  return "/NODE\n" + I(7) + R(x) + R(y) + R(z) + "\n/GRNOD/NODE/11\ntied\n" + I(7) + "\n";
+}
+
+// grnd_IDs surf_IDm Ignore Spotflag Level Isearch Idel2 (blank) dsearch
+std::string type2(long long ignore = 0, long long spotflag = 1, long long level = 0, long long idel2 = 0,
+                  double dsearch = 0.0, const std::string& after = "", long long id = 2) {
+  return "/INTER/TYPE2/" + std::to_string(id) + "\nweld\n" + I(11) + I(20) + I(ignore) + I(spotflag) + I(level) +
+         I(0) + I(idel2) + blank(10) + R(dsearch) + "\n" + after;
+}
+
+std::string type2_error(const std::string& cards, int input_version = 2019) {
+  test::TempDir dir;
+  return test::first_error(starter(dir, tied_node() + cards, test::begin_card("T", input_version)));
+}
+
+}  // namespace
+
+TEST(TiedInterfaceKeywords, NodeIsTiedToItsNearestSegmentWithBilinearWeights) {
+  test::TempDir dir;
+  const Deck d = read_deck(starter(dir, tied_node() + type2()));
+  ASSERT_EQ(d.model.type2_interfaces.size(), 1u);
+  const Type2Interface& i = d.model.type2_interfaces[0];
+  EXPECT_EQ(i.spotflag, 1);
+  ASSERT_EQ(i.ties.size(), 1u);
+  const Tie& tie = i.ties[0];
+  EXPECT_EQ(tie.segment, 0);
+  // (0.0025, 0.005) in the shell 0..0.01 x 0..0.01: s = -0.5, t = 0; the node is not moved onto the plate.
+  EXPECT_NEAR(tie.s, -0.5, 1e-12);
+  EXPECT_NEAR(tie.t, 0.0, 1e-12);
+  const double expected[4] = {0.375, 0.125, 0.125, 0.375};
+  for (int a = 0; a < 4; ++a) EXPECT_NEAR(tie.weight[static_cast<std::size_t>(a)], expected[a], 1e-12);
+  EXPECT_NEAR(tie.distance, 0.0002, 1e-12);
+}
+
+// dsearch 0: the root mean square of the main segments' edges, here 0.01 (measured on the reference, TI-2).
+TEST(TiedInterfaceKeywords, NodeBeyondTheSearchDistanceIsAnErrorUnlessIgnored) {
+  {
+    test::TempDir dir;
+    EXPECT_EQ(read_deck(starter(dir, tied_node(0.0025, 0.005, 0.0099) + type2())).model.type2_interfaces[0].ties.size(), 1u);
+  }
+  test::TempDir dir;
+  const std::string e = test::first_error(starter(dir, tied_node(0.0025, 0.005, 0.0101) + type2()));
+  EXPECT_TRUE(contains(e, "Ignore")) << e;
+  EXPECT_TRUE(contains(e, "no main segment within 0.01")) << e;
+  test::TempDir ignored;
+  const Deck d = read_deck(starter(ignored, tied_node(0.0025, 0.005, 0.0101) + type2(1)));
+  EXPECT_TRUE(d.model.type2_interfaces[0].ties.empty());
+  EXPECT_TRUE(contains(warnings(d), "left out of the tie")) << warnings(d);
+  // An explicit dsearch replaces the default.
+  EXPECT_TRUE(contains(type2_error(type2(0, 1, 0, 0, 0.0001)), "no main segment within 0.0001"));
+}
+
+// Input versions before 110 have no Ignore: its columns are not read (measured: the reference's version 100 reads
+// a 1 there as the default, and refuses the far node).
+TEST(TiedInterfaceKeywords, OldVersionsDoNotReadIgnore) {
+  test::TempDir dir;
+  const std::string e =
+      test::first_error(starter(dir, tied_node(0.0025, 0.005, 0.0101) + type2(1), test::begin_card("T", 100)));
+  EXPECT_TRUE(contains(e, "no main segment")) << e;
+}
+
+TEST(TiedInterfaceKeywords, FormulationsCrumpleLacksAreNamed) {
+  for (long long spotflag : {3, 20, 21, 22, 25, 27, 28, 30}) {
+    const std::string e = type2_error(type2(0, spotflag));
+    EXPECT_TRUE(contains(e, "Spotflag")) << spotflag << ": " << e;
+  }
+  EXPECT_TRUE(contains(type2_error(type2(0, 1, 1)), "Level"));
+  EXPECT_TRUE(contains(type2_error(type2(0, 1, 0, 2)), "Idel2"));
+  EXPECT_TRUE(contains(type2_error(type2(0, 1, 0, 0, 0.0, I(1) + R(1.0) + "\n")), "Ithe"));
+  test::TempDir dir;
+  const Deck d = read_deck(starter(dir, tied_node() + type2(1000, 0, 0, 1000)));  // the manual's explicit defaults
+  EXPECT_EQ(d.model.type2_interfaces[0].ignore, 0);
+  EXPECT_EQ(d.model.type2_interfaces[0].idel2, 0);
+}
+
+TEST(TiedInterfaceKeywords, TiedNodesMovedByAnotherConditionAreRefused) {
+  EXPECT_TRUE(contains(type2_error(type2() + type2(0, 1, 0, 0, 0.0, "", 3)), "tied by /INTER/TYPE2/2"));
+  EXPECT_TRUE(contains(type2_error(type2() + "/BCS/1\nheld\n   111 000" + I(0) + I(11) + "\n"), "/BCS/1"));
+  // A tie's segment node that is tied elsewhere (a tie of ties).
+  const std::string chained = "/GRNOD/NODE/12\nplate node\n" + I(1) + "\n/SURF/SEG/21\nnode 7 and others\n" + I(1) +
+                              I(7) + I(2) + I(5) + I(4) + "\n/INTER/TYPE2/3\nchain\n" + I(12) + I(21) + I(0) + I(1) + "\n";
+  EXPECT_TRUE(contains(type2_error(type2() + chained), "hierarchy")) << type2_error(type2() + chained);
+}
+
+TEST(TiedInterfaceKeywords, IdsAreSharedWithContactInterfaces) {
+  Type7 t;
+  t.keyword = "/INTER/TYPE7/2";
+  EXPECT_TRUE(contains(type2_error(t.card() + type2()), "duplicate"));
 }
 
 }  // namespace test_interface_keywords

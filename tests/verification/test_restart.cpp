@@ -8,7 +8,7 @@
 // accelerometers, whose filters and integrals carry over (accel_strip), cut sections, whose work integrals
 // carry over and whose loads the first cycle after the restart records again (section_strip), springs under
 // the mass damping of an engine /DAMP (damping_springs), general springs beside axial ones (springs_mixed_damped)
-// and beam-type springs (beam_spring_cantilever).
+// beam-type springs (beam_spring_cantilever) and a spot weld tied to two plates (tied_spot_weld).
 #include <gtest/gtest.h>
 #include <hdf5.h>
 
@@ -162,7 +162,9 @@ INSTANTIATE_TEST_SUITE_P(
                       // general springs (their rotations and hardening 5) beside axial ones, under /DAMP
                       RestartCase{"springs_mixed_damped", kPeerDecks / "springs_mixed_damped" / "SPRMIX_0000.rad", 250},
                       // beam-type springs: their frames carry over
-                      RestartCase{"beam_spring_cantilever", kPeerDecks / "beam_spring_cantilever" / "BSPR_0000.rad", 120}),
+                      RestartCase{"beam_spring_cantilever", kPeerDecks / "beam_spring_cantilever" / "BSPR_0000.rad", 120},
+                      // tied interfaces: the rigid-segment ties' added mass and the tied nodes' velocities
+                      RestartCase{"tied_spot_weld", kPeerDecks / "tied_spot_weld_spotflag1" / "TIEDSW1_0000.rad", 700}),
     [](const auto& p) { return std::string(p.param.name); });
 
 TEST(Restart, FileOfAnotherModelIsRefusedWithItsCounts) {

@@ -72,7 +72,7 @@ Vec3 beam_rest_frame_y(const Vec3& along, const Vec3& reference);
 
 // SP-19: spring `e`'s step, the smaller of its nodes' (each node's whole mass and inertia held by the sums
 // SpringState::node_held of every spring on it); `now`, when given, replaces the spring's own share at rest.
-double spring_nodal_step(const SpringState& st, const NodalState& nodes, const std::int32_t* n, std::size_t e,
+double spring_nodal_step(const SpringState& st, const std::int32_t* n, std::size_t e,
                          const SpringStepStiffness* now = nullptr);
 
 // A spring's own critical step, its two half masses and inertias held by it (eq. SP-4, SP-10, SP-18): the starter's

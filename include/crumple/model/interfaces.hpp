@@ -6,9 +6,11 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "crumple/core/source_location.hpp"
 #include "crumple/model/sensors.hpp"
+#include "crumple/model/ties.hpp"
 
 namespace crumple {
 
@@ -63,6 +65,24 @@ struct Type7Interface {
   // optional line (Iadm = 2); kept for messages, the reader rejects Iadm != 0
   int nradm = 0;
   double padm = 0.0, angladm = 0.0;
+};
+
+// /INTER/TYPE2: secondary nodes tied to a main surface by a kinematic condition (docs/theory/tied-interfaces.md;
+// columns in docs/cards/loads-output-engine.md §5b). Values in working units; 0 means default.
+struct Type2Interface {
+  SourceLocation where;
+  std::int64_t user_id = 0;
+  std::string title;
+  std::int64_t secondary_group_id = 0;  // grnd_IDs: node group of the tied (secondary) nodes
+  std::int64_t main_surface_id = 0;     // surf_IDm: the surface they are tied to
+  std::int32_t secondary_group = -1;
+  std::int32_t main_surface = -1;
+  int ignore = 0;    // 0 (= 1000): a node that finds no segment is an error; 1, 2, 3: it is left out of the tie
+  int spotflag = 0;  // formulation: 0 resolved to 5 (standard), 1 (spot welds), 2, 4 (rotations not carried)
+  int isearch = 0;   // 0 (= 2) or 1: how the nearest segment is searched
+  int idel2 = 0;     // 0 (= 1000) none; 1, 2: the condition is released when the main element(s) are deleted
+  double dsearch = 0.0;  // [L] search distance; 0: the mean size of the main segments
+  std::vector<Tie> ties;  // model build: each tied node with its segment and weights (model/ties.hpp)
 };
 
 }  // namespace crumple

@@ -67,6 +67,7 @@ struct Model {
   std::vector<RigidBody> rigid_bodies;
   std::vector<RayleighDamping> dampings;  // /DAMP
   std::vector<Type7Interface> type7_interfaces;
+  std::vector<Type2Interface> type2_interfaces;  // /INTER/TYPE2; /TH/INTER numbers them after the TYPE7 ones
   std::vector<TimeHistoryRequest> histories;
   std::vector<Section> sections;
   std::vector<Accelerometer> accelerometers;

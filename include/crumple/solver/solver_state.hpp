@@ -7,6 +7,7 @@
 
 #include "crumple/core/vec3.hpp"
 #include "crumple/state/contact_state.hpp"
+#include "crumple/state/tied_state.hpp"
 #include "crumple/state/damping_state.hpp"
 #include "crumple/elements/brick8.hpp"
 #include "crumple/elements/shell4.hpp"
@@ -37,6 +38,7 @@ struct SolverState {
   SpringState springs;                              // 2-node springs
   std::vector<SpringGroupParameters> spring_groups;  // per element group (meaningful for spring groups only)
   std::vector<RigidBodyState> bodies;
+  TiedState ties;                                   // /INTER/TYPE2 (empty without it)
   std::vector<RigidWallState> walls;
   ContactState contact;                             // TYPE7 interfaces (empty without /INTER/TYPE7)
   SelectiveMassState selective_mass;                // /DT/AMS (empty without it)

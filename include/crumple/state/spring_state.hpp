@@ -16,9 +16,11 @@ struct SpringState : ElementKindState {  // no integration points: points and ep
   std::vector<double> frame_y;         // 3 per spring: a beam-type spring's Y axis, turning with it (SP-15)
   std::vector<double> step_stiffness;  // the stiffness of its step, which it gives each node in the nodal steps [F/L]
   std::vector<double> nodal_step;      // its step: its nodes' masses held by every spring on them (SP-19) [T]
-  // Set up once, not per element (neither exchanged nor in the restart): per node, the stiffness and damping of
-  // translation and rotation that every spring on it hands it (SpringStepStiffness, 4 values); per spring, its own
-  // share of them at rest (4 values). A beam-type spring's share changes with its length (SP-18).
+  // Set up once, not per element (neither exchanged nor in the restart): per node (kNodeHeldValues), the stiffness
+  // and damping of translation and rotation that every spring on it hands it (SpringStepStiffness, 4 values), then
+  // the mass and inertia they hold, the node's own (a tied node's stays its own, TI-3); per spring, its own share of
+  // the stiffnesses at rest (4 values). A beam-type spring's share changes with its length (SP-18).
+  static constexpr std::size_t kNodeHeldValues = 6;
   std::vector<double> node_held, own_held;
   // kSpringDofs per spring, one per degree of freedom (a /PROP/TYPE4 spring: the first only; /PROP/TYPE8: X, Y, Z,
   // XX, YY, ZZ in the global axes; /PROP/TYPE13: tension, shear Y and Z, torsion, bending Y and Z in its frame):

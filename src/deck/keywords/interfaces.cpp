@@ -282,10 +282,58 @@ void read_type7(CardReader& reader, DeckContext& context) {
   context.model.type7_interfaces.push_back(std::move(i));
 }
 
+// /INTER/TYPE2 line 1 (docs/cards/loads-output-engine.md §5b). Input versions before 110 have no Ignore field:
+// its columns are blank in their layout and are not read.
+void read_type2_line(const Line& line, Type2Interface& i, int input_version, DeckContext& context) {
+  i.secondary_group_id = line.id(1, 10, "grnd_IDs", IdKind::Other);
+  if (i.secondary_group_id <= 0) line.fail(1, 10, "grnd_IDs", "a positive node group id (the tied nodes)");
+  i.main_surface_id = line.id(11, 10, "surf_IDm", IdKind::Other);
+  if (i.main_surface_id <= 0) line.fail(11, 10, "surf_IDm", "a positive surface id (the main surface)");
+  if (input_version >= 110 || input_version == 0)
+    i.ignore = flag(line, 21, "Ignore", {0, 1, 2, 3, kDefaultCode}, "0, 1, 2, 3 or 1000");
+  else
+    line.raw(21, 10);  // blank in these layouts; the reference does not read it
+  const std::int64_t spotflag = line.integer(31, 10, "Spotflag");
+  if (spotflag != 0 && spotflag != 1 && spotflag != 2 && spotflag != 4 && spotflag != 5)
+    context.unsupported(line.error(31, 10, "Spotflag",
+                                   "0, 1, 2, 4 or 5 (the formulations with failure, 20 to 22, and the penalty ones, "
+                                   "25 to 28 and 30, are not supported by Crumple)"));
+  else
+    i.spotflag = static_cast<int>(spotflag);
+  const std::int64_t level = line.integer(41, 10, "Level");
+  require_zero(context, line, level != 0, 41, 10, "Level", "hierarchy levels of tied interfaces are");
+  i.isearch = flag(line, 51, "Isearch", {0, 1, 2}, "0, 1 or 2");
+  require_zero(context, line, i.isearch == 1, 51, 10, "Isearch", "the old search (Isearch 1) is");
+  i.idel2 = flag(line, 61, "Idel2", {0, 1, 2, kDefaultCode}, "0, 1, 2 or 1000");
+  require_zero(context, line, i.idel2 != 0, 61, 10, "Idel2", "releasing tied nodes when their main elements are deleted is");
+  i.dsearch = non_negative(line, 81, "dsearch", dim::length);
+}
+
+// `/INTER/TYPE2/id[/unit_ID]`: a tie of nodes to a surface (docs/theory/tied-interfaces.md).
+void read_type2(CardReader& reader, DeckContext& context) {
+  Type2Interface i;
+  i.where = reader.card().where;
+  i.user_id = interface_id(reader);
+  i.title = read_title(reader);
+  read_type2_line(reader.next("grnd_IDs, surf_IDm, Ignore, Spotflag, Level, Isearch, Idel2, dsearch"), i,
+                  context.model.input_version, context);
+  // The optional heat-transfer line (Ithe, Kthe, Iproj): thermal ties are not supported.
+  if (reader.has_data()) {
+    const Line heat = reader.next("Ithe, Kthe, Iproj");
+    require_zero(context, heat, heat.integer(1, 10, "Ithe") != 0, 1, 10, "Ithe", "heat transfer through ties is");
+    require_zero(context, heat, heat.real(11, 20, "Kthe", dim::none) != 0.0, 11, 20, "Kthe",
+                 "heat transfer through ties is");
+    heat.integer(91, 10, "Iproj");  // where a thermal tie projects its nodes: nothing without heat transfer
+  }
+  reader.finish();
+  context.model.type2_interfaces.push_back(std::move(i));
+}
+
 }  // namespace
 
 void register_interface_keywords(KeywordTable& table) {
   table.push_back({"/INTER/TYPE7", DeckPart::Starter, read_type7});
+  table.push_back({"/INTER/TYPE2", DeckPart::Starter, read_type2});
 }
 
 }  // namespace crumple::deck
