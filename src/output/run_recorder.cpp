@@ -322,7 +322,7 @@ RunSummary RunRecorder::finish(const SolverState& s, const RunEvents& events, co
     listing_.line(fmt::format("HOURGLASS ENERGY AT THE END {:.6g}: {:.1f} % OF THE INTERNAL ENERGY {:.6g}{}", s.energy.hourglass,
                               s.energy.internal != 0.0 ? 100.0 * s.energy.hourglass / std::abs(s.energy.internal) : 0.0,
                               s.energy.internal, s.energy.hourglass > 0.1 * std::abs(s.energy.internal) ? " (WARNING: above 10 %)" : ""));
-  if (s.mass_added > 0.0) listing_.line(fmt::format("MASS ADDED BY /DT/NODA/CST OR /DT/INTER/CST: {:.6g}", s.mass_added));
+  if (s.mass_added > 0.0) listing_.line(fmt::format("MASS ADDED BY /DT/NODA/CST, /DT/INTER/CST OR SPOT-WELD TIES (/INTER/TYPE2 SPOTFLAG 1): {:.6g}", s.mass_added));
   if (const SelectiveMassState& sm = s.selective_mass; sm.solves > 0)
     listing_.line(fmt::format("SELECTIVE MASS SCALING (/DT/AMS): {} SOLVES, {:.1f} ITERATIONS EACH ON AVERAGE, AT MOST {}",
                               sm.solves, static_cast<double>(sm.iterations) / static_cast<double>(sm.solves),
