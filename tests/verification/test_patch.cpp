@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <tuple>
 
 #include "crumple/elements/shell4.hpp"
 #include "crumple/solver/solver.hpp"  // initial_state (the start state of a run)
@@ -315,6 +316,84 @@ TEST_P(PatchTest, MembranePatchThroughTheSolver) {
   EXPECT_LT(std::abs(run.summary.energy.error_percent), 0.1);
   std::printf("[solver membrane patch] cycles %lld  velocity %.2e  position %.2e  stress %.2e (relative)  "
               "energy error %.3f %%\n",
+              run.summary.cycles, worst_velocity, worst_position, worst_stress, run.summary.energy.error_percent);
+}
+
+// Two meshes tied by /INTER/TYPE2 (docs/theory/tied-interfaces.md): a coarse 2 x 2 mesh (main) and a fine 2 x 4 mesh
+// (tied nodes along x = 0.12) of a 0.24 x 0.12 plate, both distorted, under the patch's linear velocity field
+// imposed on the outer boundary. The fine edge's nodes nest the coarse ones (a 2:1 transition, the usual use), so
+// the coarse edge's shape functions are sums of the fine edge's: the tie's transpose (TI-4) hands the coarse nodes
+// exactly the forces of a constant stress, and the linear field is a constant state of the tied patch. (Where the
+// fine nodes do not nest the coarse ones, a node-to-segment tie is not exact across a loaded edge, as any one-pass
+// tie.) Every element must hold the constant stress and every free and tied node the linear field.
+TEST(TiedPatch, TwoToOneMeshTransitionKeepsTheConstantState) {
+  test::TempDir dir;
+  const double end_time = 0.08, rate = 1.0e-7 / end_time;
+  const double G[2][2] = {{rate, 0.5 * rate}, {-0.3 * rate, 0.6 * rate}};
+  std::vector<NodeRow> nodes = {{1, 0.0, 0.0, 0.0},  {2, 0.06, 0.0, 0.0},   {3, 0.12, 0.0, 0.0},
+                                {4, 0.0, 0.06, 0.0}, {5, 0.05, 0.07, 0.0},  {6, 0.12, 0.06, 0.0},
+                                {7, 0.0, 0.12, 0.0}, {8, 0.06, 0.12, 0.0},  {9, 0.12, 0.12, 0.0}};
+  const double fine_x[3] = {0.12, 0.18, 0.24};
+  for (int j = 0; j < 5; ++j)
+    for (int i = 0; i < 3; ++i) {
+      const bool interior = i == 1 && j > 0 && j < 4;
+      nodes.push_back({101 + 3 * j + i, fine_x[i] + (interior ? 0.004 * (j - 2) : 0.0), 0.03 * j + (interior ? 0.003 : 0.0), 0.0});
+    }
+  std::vector<ShellRow> coarse = {{1, 1, 2, 5, 4}, {2, 2, 3, 6, 5}, {3, 4, 5, 8, 7}, {4, 5, 6, 9, 8}}, fine;
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 2; ++i) {
+      const long long n1 = 101 + 3 * j + i;
+      fine.push_back({101 + 2 * j + i, n1, n1 + 1, n1 + 4, n1 + 3});
+    }
+  std::string starter = node_cards(nodes) + shell_cards(1, coarse) + shell_cards(2, fine) + part_card() +
+                        "/PART/2\nfine\n" + I(1) + I(1) + "\n" + shell_property(kThickness, 1) +
+                        elastic_material(kRho, kYoung, kNu) + unit_function(1) +
+                        function_card(2, {{0.0, 0.0}, {1e3, 0.0}});
+  const std::vector<long long> tied = {101, 104, 107, 110, 113};
+  const std::vector<long long> boundary = {1, 2, 3, 4, 7, 8, 9, 102, 103, 106, 109, 112, 114, 115};
+  starter += node_group(50, tied) + "/SURF/PART/51\ncoarse\n" + I(1) + "\n/INTER/TYPE2/1\ntransition\n" + I(50) +
+             I(51) + I(0) + I(0) + "\n";
+  for (const NodeRow& n : nodes) {
+    const double vx = G[0][0] * n.x + G[0][1] * n.y, vy = G[1][0] * n.x + G[1][1] * n.y;
+    starter += node_group(1000 + n.id, {n.id}) + initial_velocity(n.id, vx, vy, 0.0, 1000 + n.id);
+    if (std::find(boundary.begin(), boundary.end(), n.id) == boundary.end()) continue;
+    for (const auto& [axis, v, id] : {std::tuple{"X", vx, 10 * n.id}, std::tuple{"Y", vy, 10 * n.id + 1}})
+      starter += v == 0.0 ? imposed_velocity(id, 2, axis, 1000 + n.id, 1.0) : imposed_velocity(id, 1, axis, 1000 + n.id, v);
+  }
+  SolverState last;
+  const RunResult run = run_deck(dir, starter, end_time, end_time, [&](const Model&, const SolverState& s) { last = s; });
+  ASSERT_EQ(run.summary.status, RunStatus::Normal) << run.summary.message;
+  const Model& m = run.model;
+  ASSERT_EQ(m.type2_interfaces.at(0).ties.size(), tied.size());
+  const double T = last.time;
+  double worst_velocity = 0.0, worst_position = 0.0;
+  for (const NodeRow& n : nodes) {
+    const std::size_t k = node_index(m, n.id);
+    const double vx = G[0][0] * n.x + G[0][1] * n.y, vy = G[1][0] * n.x + G[1][1] * n.y;
+    worst_velocity = std::max(worst_velocity, std::hypot(last.nodes.vx[k] - vx, last.nodes.vy[k] - vy) / (rate * 0.24));
+    worst_position = std::max(worst_position, std::hypot(last.nodes.x[k] - n.x - vx * T, last.nodes.y[k] - n.y - vy * T) /
+                                                  (rate * T * 0.24));
+  }
+  const double t_stress = T - last.dt;
+  const std::array<double, 3> sigma =
+      plane_stress({G[0][0] * t_stress, G[1][1] * t_stress, (G[0][1] + G[1][0]) * t_stress});
+  const double scale = std::max({std::abs(sigma[0]), std::abs(sigma[1]), std::abs(sigma[2])});
+  double worst_stress = 0.0;
+  for (const auto& rows : {coarse, fine})
+    for (const ShellRow& row : rows) {
+      const std::size_t el = shell_index(m, row.id);
+      const auto [c, sn] = element_axis(last.nodes, m.elements[0].nodes_of(el));
+      const std::size_t ip = first_point(m, last, el);
+      const auto global = to_global({last.shells.sxx[ip], last.shells.syy[ip], last.shells.sxy[ip]}, c, sn);
+      for (int i = 0; i < 3; ++i) worst_stress = std::max(worst_stress, std::abs(global[i] - sigma[i]) / scale);
+    }
+  // The same bounds as the one-mesh patch (MembranePatchThroughTheSolver), the mixed build's round-off included.
+  const double u = 0x1p-24, cycles = static_cast<double>(run.summary.cycles);
+  EXPECT_LT(worst_velocity, kMixedPrecision ? 1e-3 : 1e-7) << "the tied patch is not in equilibrium";
+  EXPECT_LT(worst_position, 1e-5);
+  EXPECT_LT(worst_stress, kMixedPrecision ? 4.0 * u * std::sqrt(cycles) : 1e-6);
+  EXPECT_LT(std::abs(run.summary.energy.error_percent), 0.1);
+  std::printf("[tied patch] cycles %lld  velocity %.2e  position %.2e  stress %.2e (relative)  energy error %.3f %%\n",
               run.summary.cycles, worst_velocity, worst_position, worst_stress, run.summary.energy.error_percent);
 }
 
