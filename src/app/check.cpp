@@ -109,6 +109,11 @@ void print_check_report(const Deck& deck, std::ostream& out) {
   }
   fmt::print(out, "  subsets               {}\n", m.subsets.size());
   fmt::print(out, "  interfaces            {}\n", m.type7_interfaces.size());
+  if (!m.type2_interfaces.empty()) {
+    std::size_t ties = 0;
+    for (const Type2Interface& i : m.type2_interfaces) ties += i.ties.size();
+    fmt::print(out, "  tied interfaces       {} ({} tied nodes)\n", m.type2_interfaces.size(), ties);
+  }
   fmt::print(out, "  rigid walls           {}\n", m.rigid_walls.size());
   fmt::print(out, "  rigid bodies          {}\n", m.rigid_bodies.size());
   fmt::print(out, "  boundary conditions   {}\n", m.boundary_conditions.size());
