@@ -153,9 +153,14 @@ void screen_pairs(ContactInterface& in, const PassSettings& ps) {
   }
 }
 
+// The mass a node's contact springs and dashpots push: its own, or a tied node's segment's (TI-13).
+double contact_mass(const ContactState& c, const NodalState& nodes, std::size_t n) {
+  return !c.tied_mass.empty() && c.tied_mass[n] > 0.0 ? c.tied_mass[n] : nodes.mass[n];
+}
+
 // The mass a node's contact springs push for the step: its own, with selective mass scaling's diagonal (SM-7).
 double scaled_mass(const ContactState& c, const NodalState& nodes, std::size_t n) {
-  return nodes.mass[n] + (c.selective_mass_added != nullptr ? (*c.selective_mass_added)[n] : 0.0);
+  return contact_mass(c, nodes, n) + (c.selective_mass_added != nullptr ? (*c.selective_mass_added)[n] : 0.0);
 }
 
 // The pairs of `in` this domain computes (eqs. C-1 to C-9, C-11): their forces into records (applied below, in pair
@@ -249,7 +254,7 @@ void compute_pairs(ContactState& c, ContactInterface& in, const NodalState& node
       }
       const double k0 = in.pair_stiffness(i, s);
       const double kt = tangent_stiffness(k0, g, p);
-      const double mass = nodes.mass[n];
+      const double mass = contact_mass(c, nodes, n);
       const double body_mass = c.rigid_body_mass.empty() ? 0.0 : c.rigid_body_mass[n];
       const double step_mass = body_mass > 0.0 ? body_mass : scaled_mass(c, nodes, n);  // what the springs push [M]
       // The viscous friction's dashpot (eq. C-9, Iform 1, on the node's own mass), which the step must hold too

@@ -6,6 +6,17 @@
 #include "crumple/contact/contact.hpp"
 
 namespace crumple::contact {
+namespace {
+
+// Whether a segment shares a node with a tie's segment (C-1b).
+bool connected(const std::array<std::int32_t, 4>& segment, const std::array<std::int32_t, 4>& tie) {
+  for (std::int32_t a : segment)
+    for (std::int32_t b : tie)
+      if (a == b) return true;
+  return false;
+}
+
+}  // namespace
 
 void sort_candidates(ContactInterface& in, const NodalState& nodes) {
   const std::size_t segments = in.segments.size(), secondary = in.secondary_nodes.size();
@@ -108,6 +119,8 @@ void sort_candidates(ContactInterface& in, const NodalState& nodes) {
       // Self contact: never against a segment the node belongs to.
       const auto& seg = in.segments[s];
       if (std::find(seg.begin(), seg.end(), static_cast<std::int32_t>(n)) != seg.end()) continue;
+      // A tied node: never against the segments its tie connects it to (C-1b).
+      if (!in.tied_to.empty() && in.tied_to[i][0] >= 0 && connected(seg, in.tied_to[i])) continue;
       in.candidate_node.push_back(static_cast<std::int32_t>(i));
       in.candidate_segment.push_back(static_cast<std::int32_t>(s));
     }

@@ -63,6 +63,25 @@ ElementFacts facts_of(const Model& m, ElementRef ref, double area) {
 
 }  // namespace
 
+namespace {
+
+// C-1b: each secondary node tied by an /INTER/TYPE2, with its tie's segment nodes.
+void mark_tied_nodes(const Model& m, ContactInterface& in) {
+  in.tied_to.clear();
+  if (m.type2_interfaces.empty()) return;
+  std::vector<std::int32_t> tie_of(m.nodes.size(), -1);
+  std::vector<const Tie*> ties;
+  for (const Type2Interface& t : m.type2_interfaces)
+    for (const Tie& tie : t.ties) tie_of[static_cast<std::size_t>(tie.node)] = static_cast<std::int32_t>(ties.size()), ties.push_back(&tie);
+  in.tied_to.assign(in.secondary_nodes.size(), {-1, -1, -1, -1});
+  for (std::size_t i = 0; i < in.secondary_nodes.size(); ++i) {
+    const std::int32_t t = tie_of[static_cast<std::size_t>(in.secondary_nodes[i])];
+    if (t >= 0) in.tied_to[i] = ties[static_cast<std::size_t>(t)]->main;
+  }
+}
+
+}  // namespace
+
 ContactState setup_contact(const Model& m, NodalState& nodes, std::vector<std::string>& notes) {
   ContactState state;
   state.fx.assign(nodes.size(), 0.0), state.fy.assign(nodes.size(), 0.0), state.fz.assign(nodes.size(), 0.0);
@@ -114,6 +133,7 @@ ContactState setup_contact(const Model& m, NodalState& nodes, std::vector<std::s
     in.bucket_scale = card.bumult > 0.0 ? card.bumult : 0.2;
     in.stiffness_mode = card.istf;
     in.secondary_nodes = m.node_groups[static_cast<std::size_t>(card.secondary_group)].nodes;
+    mark_tied_nodes(m, in);
     const Surface& surface = m.surfaces[static_cast<std::size_t>(card.main_surface)];
     double thickness_sum = 0.0, shortest_side_all = std::numeric_limits<double>::infinity();
     int shell_segments = 0;

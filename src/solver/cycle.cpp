@@ -300,7 +300,9 @@ double choose_time_step(const Model& m, SolverState& s, RunEvents& events, StepB
     bound.dt = kStepGrowthWithoutBound * s.dt;
     bound.control.source = StepControl::Source::LastStep;
   }
-  if (rc.dt.minimum > 0.0 && bound.dt < rc.dt.minimum) {
+  // A step of zero (a contact node through its gap, contact.md C-11): the run cannot advance; it stops with an
+  // error rather than end short of its end time as if it had reached it.
+  if (rc.dt.minimum > 0.0 ? bound.dt < rc.dt.minimum : !(bound.dt > 0.0)) {
     events.stop.kind = StopReason::Kind::StepBelowMinimum, events.stop.cycle = s.cycle, events.stop.time = s.time;
     events.stop.dt = bound.dt, events.stop.minimum = rc.dt.minimum, events.stop.control = bound.control;
     return bound.dt;

@@ -14,7 +14,7 @@
 namespace crumple::solver {
 namespace {
 
-constexpr int kForceValues = 9;     // per tie node: force, moment, position
+constexpr int kForceValues = 10;    // per tie node: force, moment, position, stiffness of the nodal steps
 constexpr int kVelocityValues = 6;  // per tie node: velocity, angular velocity
 
 int distinct_nodes(const std::array<std::int32_t, 4>& main) { return main[3] == main[2] ? 3 : 4; }
@@ -179,6 +179,20 @@ void hold_spot_weld_springs(const Model& m, SolverState& s) {
   if (changed) refresh_spring_steps(m, s);
 }
 
+// TI-13: a tied node's contact springs push its segment's mass at its place (its own is on the segment now).
+void hold_tied_contacts(SolverState& s) {
+  if (s.contact.interfaces.empty()) return;
+  s.contact.tied_mass.assign(s.nodes.size(), 0.0);
+  for (const TiedInterfaceState& in : s.ties.interfaces)
+    for (std::size_t j = 0; j < in.secondary.size(); ++j) {
+      const int count = distinct_nodes(in.main[j]);
+      double mass = 0.0;
+      for (std::size_t a = 0; a < static_cast<std::size_t>(count); ++a)
+        mass += (rigid_segment(in.spotflag) ? 1.0 / count : in.weight[j][a]) * s.nodes.mass[static_cast<std::size_t>(in.main[j][a])];
+      s.contact.tied_mass[static_cast<std::size_t>(in.secondary[j])] = mass;
+    }
+}
+
 }  // namespace
 
 void bind_ties_to_domain(SolverState& s) {
@@ -200,6 +214,7 @@ void setup_ties(const Model& m, SolverState& s) {
     s.ties.interfaces.push_back(std::move(in));
   }
   hold_spot_weld_springs(m, s);
+  hold_tied_contacts(s);
   assign_slots(s);
   bind_ties_to_domain(s);
 }
@@ -210,8 +225,13 @@ void transfer_tied_forces(SolverState& s) {
   TiedState& t = s.ties;
   if (t.nodes.empty()) return;
   NodalState& n = s.nodes;
-  share_tie_values(s, kForceValues, [&n](std::size_t k, double* out) {
-    const double v[kForceValues] = {n.fx[k], n.fy[k], n.fz[k], n.mx[k], n.my[k], n.mz[k], n.x[k], n.y[k], n.z[k]};
+  std::vector<double>& element_k = s.nodal_stiffness;
+  std::vector<double>& contact_k = s.contact.nodal_contact_stiffness;
+  auto stiffness = [&](std::size_t k) {
+    return (element_k.empty() ? 0.0 : element_k[k]) + (contact_k.empty() ? 0.0 : contact_k[k]);
+  };
+  share_tie_values(s, kForceValues, [&](std::size_t k, double* out) {
+    const double v[kForceValues] = {n.fx[k], n.fy[k], n.fz[k], n.mx[k], n.my[k], n.mz[k], n.x[k], n.y[k], n.z[k], stiffness(k)};
     std::copy(v, v + kForceValues, out);
   });
   t.positions.resize(3 * t.nodes.size());
@@ -234,6 +254,9 @@ void transfer_tied_forces(SolverState& s) {
         const Vec3 f = rigid_segment(in.spotflag) ? rigid_share(g, a, force, cross(p - g.centre, force) + moment)
                                                   : scaled(force, w);
         n.fx[i] += f.x, n.fy[i] += f.y, n.fz[i] += f.z;
+        // TI-13: the node's stiffness in the nodal steps (its elements' and contacts') is held by the segment's
+        // nodes, which carry its mass.
+        if (!element_k.empty()) element_k[i] += w * own[9];
         if (carries_rotations(in.spotflag) && !rigid_segment(in.spotflag)) {
           const Vec3 mi = scaled(moment + cross(d, force), w);
           n.mx[i] += mi.x, n.my[i] += mi.y, n.mz[i] += mi.z;
@@ -241,6 +264,8 @@ void transfer_tied_forces(SolverState& s) {
       }
       const auto k = static_cast<std::size_t>(in.secondary[j]);
       n.fx[k] = n.fy[k] = n.fz[k] = 0.0;
+      if (!element_k.empty()) element_k[k] = 0.0;
+      if (!contact_k.empty()) contact_k[k] = 0.0;
       if (carries_rotations(in.spotflag)) n.mx[k] = n.my[k] = n.mz[k] = 0.0;
       // TI-6: the force the tie passes, split along the segment's normal.
       const Vec3 along = scaled(g.e3, dot(force, g.e3));

@@ -83,6 +83,9 @@ struct ContactInterface {
   bool sum_pair_forces = false;  // a /TH/INTER asks |FNX| .. ||F||: the pass sums them (InterfaceResult)
 
   std::vector<std::int32_t> secondary_nodes;          // dense node indices
+  // Per secondary node: the segment nodes of its /INTER/TYPE2 tie (all -1 when it is not tied). A tied node is
+  // connected to those nodes' segments and never contacts them (C-1b).
+  std::vector<std::array<std::int32_t, 4>> tied_to;
   std::vector<double> node_gap;                       // secondary gap per secondary node (variable gap) [L]
   std::vector<double> gap_reduction;                  // Inacti 5, 6: gap taken off per secondary node [L]
   std::vector<double> gap_clearance;                  // Inacti 6: the extra 5 % kept while the reduction shrinks [L]
@@ -196,6 +199,9 @@ struct ContactState {
   // so its step is the body's, and its own elements (carried by the body) add no stiffness (eq. C-11). The solver
   // keeps it as bodies switch on and off.
   std::vector<double> rigid_body_mass;
+  // Per node: for a node tied by an /INTER/TYPE2 (which keeps no mass, TI-3), the mass of its segment at its place,
+  // which its contact springs and dashpots push (C-11, TI-13); 0 for the others. Empty without ties.
+  std::vector<double> tied_mass;
   // Under selective mass scaling (/DT/AMS): per node, the mass the scaling adds to its diagonal this cycle, set by
   // the solver before the pass (not owned; null without it). The pairs' and nodes' stiffness steps take it with the
   // node's mass, and leave out its elements, which the scaling holds at its step (docs/theory/time-step.md, SM-7).
