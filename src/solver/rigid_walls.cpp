@@ -172,9 +172,16 @@ Vec3 exchanged_velocity(const RigidWall& w, RigidWallState& st, SolverState& s, 
 
 void setup_rigid_walls(const Model& m, SolverState& s) {
   NodalState& n = s.nodes;
+  // A node tied by an /INTER/TYPE2 moves with its segment and has no mass to hold: walls leave it out, as the
+  // reference does (its starter: "secondary nodes of interfaces type 2 suppressed from rigid walls"); its segment's
+  // nodes are held instead (TI-14).
+  std::vector<std::uint8_t> tied(n.size(), 0);
+  for (const TiedInterfaceState& in : s.ties.interfaces)
+    for (std::int32_t node : in.secondary) tied[static_cast<std::size_t>(node)] = 1;
   for (const RigidWall& w : m.rigid_walls) {
     RigidWallState state;
-    state.nodes = w.secondary_nodes;
+    for (std::int32_t node : w.secondary_nodes)
+      if (!tied[static_cast<std::size_t>(node)]) state.nodes.push_back(node);
     state.tied.assign(state.nodes.size(), 0);
     state.active.assign(state.nodes.size(), 0);
     state.held_normal.assign(3 * state.nodes.size(), 0.0);
