@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <sstream>
 #include <tuple>
 
 #include "verification_support.hpp"
@@ -195,6 +196,38 @@ TEST(Spring, BeamTypeSpringCantileverTip) {
               theta / theta_expected - 1.0);
   EXPECT_NEAR(v, v_expected, 0.005 * v_expected);
   EXPECT_NEAR(theta, theta_expected, 0.005 * theta_expected);
+}
+
+
+// A spot weld tied to its plates (docs/theory/tied-interfaces.md, TI-6): the force each tie passes to its plate is
+// the weld's force on the tied node, so the interface's FN + FT has the magnitude of the spring's force (its frame
+// turns it, it does not change its length) at every history row, to round-off.
+TEST(Spring, TiedInterfaceForceIsTheWeldsForce) {
+  const auto deck = std::filesystem::path(CRUMPLE_SOURCE_DIR) / "tests" / "regression" / "peer_decks" /
+                    "tied_spot_weld_spotflag5" / "TIEDSW5_0000.rad";
+  Deck d = read_deck(deck);
+  test::TempDir dir;
+  SimulationOptions options;
+  options.name = "TIEDSW5";
+  options.output_directory = dir.path();
+  options.write_results = false;
+  double worst = 0.0, largest = 0.0;
+  int rows = 0;
+  options.on_history_row = [&](const SolverState& s) {
+    const TiedInterfaceState& tie = s.ties.interfaces.at(0);
+    const Vec3 passed = tie.normal_force + tie.tangential_force;
+    const double* f = &s.springs.force[0];
+    const double weld = std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
+    worst = std::max(worst, std::abs(norm(passed) - weld));
+    largest = std::max(largest, weld);
+    ++rows;
+  };
+  std::ostringstream console;
+  const RunSummary summary = run_simulation(d.model, options, console);
+  ASSERT_EQ(summary.status, RunStatus::Normal) << summary.message;
+  ASSERT_GT(rows, 100);
+  ASSERT_GT(largest, 0.01);  // kN: the weld carries the pull
+  EXPECT_LT(worst, 1e-9 * largest) << "largest weld force " << largest;
 }
 
 }  // namespace crumple::verification::test_spring
