@@ -65,6 +65,14 @@ ElementFacts facts_of(const Model& m, ElementRef ref, double area) {
 
 namespace {
 
+// Irem_i2 1: the nodes an /INTER/TYPE2 ties leave the interface's secondary nodes (C-1b).
+void drop_tied_nodes(const Model& m, ContactInterface& in) {
+  std::vector<std::uint8_t> tied(m.nodes.size(), 0);
+  for (const Type2Interface& t : m.type2_interfaces)
+    for (const Tie& tie : t.ties) tied[static_cast<std::size_t>(tie.node)] = 1;
+  std::erase_if(in.secondary_nodes, [&tied](std::int32_t node) { return tied[static_cast<std::size_t>(node)] != 0; });
+}
+
 // C-1b: each secondary node tied by an /INTER/TYPE2, with its tie's segment nodes.
 void mark_tied_nodes(const Model& m, ContactInterface& in) {
   in.tied_to.clear();
@@ -133,6 +141,7 @@ ContactState setup_contact(const Model& m, NodalState& nodes, std::vector<std::s
     in.bucket_scale = card.bumult > 0.0 ? card.bumult : 0.2;
     in.stiffness_mode = card.istf;
     in.secondary_nodes = m.node_groups[static_cast<std::size_t>(card.secondary_group)].nodes;
+    if (card.irem_i2 == 1) drop_tied_nodes(m, in);
     mark_tied_nodes(m, in);
     const Surface& surface = m.surfaces[static_cast<std::size_t>(card.main_surface)];
     double thickness_sum = 0.0, shortest_side_all = std::numeric_limits<double>::infinity();

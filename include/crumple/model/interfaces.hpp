@@ -38,7 +38,7 @@ struct Type7Interface {
   double mesh_size_percent = 0.0;
   double dtmin = 0.0;               // [T]
   int irem_gap = 0;                 // 0 or 1 (2 is rejected)
-  int irem_i2 = 0;                  // 0 or 3 (no change; 1 refers to /INTER/TYPE2, which Crumple has not)
+  int irem_i2 = 0;                  // 1: the nodes tied by /INTER/TYPE2 leave this contact; 0 (= 3): they stay (C-1b)
   // optional line (Icurv = 1 or 2): curvature centre or axis nodes
   std::array<std::int64_t, 2> curvature_node_ids{};
   // line 4

@@ -208,8 +208,8 @@ void reject_unsupported(const Type7Lines& l, Type7Interface& i, DeckContext& con
       i.irem_gap = 0;
     }
   }
-  // Irem_i2 (1 or 3) says whether /INTER/TYPE2 secondary nodes leave this contact; Crumple has no TYPE2, so both
-  // values leave the same nodes in: the flag acts trivially.
+  // Irem_i2 1 takes the /INTER/TYPE2 tied nodes out of this contact's secondary nodes (contact/setup.cpp); 0 and 3
+  // keep them (measured: the reference's starter resolves 0 to 3 in an explicit run).
   if (!l.friction) return;  // input version 41 has no friction line
   reject(*l.friction, i.friction_function_id, 61, 10, "fct_IDf", "friction-temperature functions are");
   // AscaleF only scales fct_IDf; 1 is its default and changes nothing.
