@@ -208,7 +208,7 @@ void check_tie_conflicts(Resolver& r, const std::vector<std::int64_t>& tied_by) 
     for (const Tie& tie : i.ties)
       for (std::int32_t node : tie.main)
         conflict(node, i.where, fmt::format("/INTER/TYPE2/{}", i.user_id), "surf_IDm",
-                 ": ties of ties (hierarchy levels) are not supported by Crumple");
+                 ": ties of ties (hierarchy levels) are refused, as the reference refuses them");
   for (const RigidBody& b : m.rigid_bodies) {
     const std::string kw = fmt::format("/RBODY/{}", b.user_id);
     if (b.main_node >= 0) conflict(b.main_node, b.where, kw, "node_ID", "");

@@ -417,7 +417,11 @@ TEST(TiedInterfaceKeywords, FormulationsCrumpleLacksAreNamed) {
     const std::string e = type2_error(type2(0, spotflag));
     EXPECT_TRUE(contains(e, "Spotflag")) << spotflag << ": " << e;
   }
-  EXPECT_TRUE(contains(type2_error(type2(0, 1, 1)), "Level"));
+  {
+    test::TempDir dir;
+    const Deck d = read_deck(starter(dir, tied_node() + type2(0, 1, 1)));  // Level acts on chains only
+    EXPECT_TRUE(contains(warnings(d), "Level: no effect")) << warnings(d);
+  }
   EXPECT_TRUE(contains(type2_error(type2(0, 1, 0, 2)), "Idel2"));
   EXPECT_TRUE(contains(type2_error(type2(0, 1, 0, 0, 0.0, I(1) + R(1.0) + "\n")), "Ithe"));
   test::TempDir dir;

@@ -300,11 +300,19 @@ void read_type2_line(const Line& line, Type2Interface& i, int input_version, Dec
                                    "25 to 28 and 30, are not supported by Crumple)"));
   else
     i.spotflag = static_cast<int>(spotflag);
-  const std::int64_t level = line.integer(41, 10, "Level");
-  require_zero(context, line, level != 0, 41, 10, "Level", "hierarchy levels of tied interfaces are");
+  // Level orders the solution of chained ties; the reference refuses chained kinematic ties whatever their levels
+  // and gives the others the same answer at every Level (measured): a named warning.
+  if (line.integer(41, 10, "Level") != 0)
+    context.warn(line.where(), "/INTER/TYPE2", "Level: no effect (ties of ties are refused; every other tie is solved "
+                                               "alike at any hierarchy level, as in the reference)");
   i.isearch = flag(line, 51, "Isearch", {0, 1, 2}, "0, 1 or 2");
   require_zero(context, line, i.isearch == 1, 51, 10, "Isearch", "the old search (Isearch 1) is");
   i.idel2 = flag(line, 61, "Idel2", {0, 1, 2, kDefaultCode}, "0, 1, 2 or 1000");
+  if (i.idel2 != 0 && i.spotflag == 2) {  // measured: the reference sets it to 1000 with Spotflag 2, and says nothing
+    context.warn(line.where(), "/INTER/TYPE2", "Idel2: no effect with Spotflag 2 (the reference keeps such ties when "
+                                               "their main elements are deleted)");
+    i.idel2 = 0;
+  }
   require_zero(context, line, i.idel2 != 0, 61, 10, "Idel2", "releasing tied nodes when their main elements are deleted is");
   i.dsearch = non_negative(line, 81, "dsearch", dim::length);
 }
