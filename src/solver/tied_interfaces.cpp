@@ -105,7 +105,7 @@ void lump_tied_mass(TiedInterfaceState& in, std::size_t j, NodalState& n, double
   const std::array<Vec3, 4> x = corners(n, in.main[j]);
   const int count = distinct_nodes(in.main[j]);
   const Vec3 p{n.x[k], n.y[k], n.z[k]};
-  in.secondary_mass.push_back(n.mass[k]);
+  in.secondary_mass.push_back(n.mass[k]), in.secondary_inertia.push_back(n.inertia[k]);
   if (rigid_segment(in.spotflag)) {
     const double added = rigid_added_mass(x, p - rigid_segment_of(x, count).centre, n.mass[k], n.inertia[k]);
     for (int a = 0; a < count; ++a) n.mass[static_cast<std::size_t>(in.main[j][static_cast<std::size_t>(a)])] += (n.mass[k] + added) / count;
@@ -179,6 +179,60 @@ void hold_spot_weld_springs(const Model& m, SolverState& s) {
   if (changed) refresh_spring_steps(m, s);
 }
 
+// TI-15: the shells and bricks that use every node of each tie's segment (measured on the reference: an element on
+// the segment's nodes counts whatever its part or surface).
+void find_segment_elements(const Model& m, TiedInterfaceState& in) {
+  std::vector<std::vector<ElementRef>> of_node(m.nodes.size());
+  for (ElementKind kind : {ElementKind::Shell4, ElementKind::Shell3, ElementKind::Brick8}) {
+    const ElementTable& table = m.elements[static_cast<std::size_t>(kind)];
+    for (std::size_t e = 0; e < table.size(); ++e)
+      for (int a = 0; a < nodes_per_element(kind); ++a) {
+        std::vector<ElementRef>& list = of_node[static_cast<std::size_t>(table.nodes_of(e)[a])];
+        if (list.empty() || list.back().kind != kind || list.back().index != static_cast<std::int32_t>(e))
+          list.push_back({kind, static_cast<std::int32_t>(e)});
+      }
+  }
+  in.segment_elements_first.assign(1, 0);
+  for (const auto& main : in.main) {
+    for (const ElementRef& ref : of_node[static_cast<std::size_t>(main[0])]) {
+      const ElementTable& table = m.elements[static_cast<std::size_t>(ref.kind)];
+      const std::int32_t* nodes = table.nodes_of(static_cast<std::size_t>(ref.index));
+      const auto uses = [&](std::int32_t node) {
+        return std::find(nodes, nodes + nodes_per_element(ref.kind), node) != nodes + nodes_per_element(ref.kind);
+      };
+      if (std::all_of(main.begin(), main.end(), uses)) in.segment_elements.push_back(ref);
+    }
+    in.segment_elements_first.push_back(static_cast<std::uint32_t>(in.segment_elements.size()));
+  }
+}
+
+// TI-15: a tie whose main elements are deleted (all of them, Idel2 1; one, Idel2 2) lets its node go: the node takes
+// its own mass and inertia back (the segment's nodes keep theirs: the model gains the node's mass, counted as added,
+// as in the reference) and moves on its own from this cycle. Every domain decides alike from the elements'
+// conditions, which the domains share; a resumed run finds the same ties released, its masses already restored.
+void release_ties(SolverState& s) {
+  NodalState& n = s.nodes;
+  for (TiedInterfaceState& in : s.ties.interfaces) {
+    if (in.idel2 == 0) continue;
+    for (std::size_t j = 0; j < in.secondary.size(); ++j) {
+      if (in.released[j]) continue;
+      std::size_t deleted = 0;
+      const std::uint32_t first = in.segment_elements_first[j], last = in.segment_elements_first[j + 1];
+      for (std::uint32_t q = first; q < last; ++q) {
+        const ElementRef& ref = in.segment_elements[q];
+        if (element_condition(element_state(s, ref.kind).deleted[static_cast<std::size_t>(ref.index)]) == kElementDeleted) ++deleted;
+      }
+      const bool release = in.idel2 == 1 ? last > first && deleted == last - first : deleted > 0;
+      if (!release) continue;
+      in.released[j] = 1;
+      const auto k = static_cast<std::size_t>(in.secondary[j]);
+      s.mass_added += in.secondary_mass[j] - n.mass[k];
+      n.mass[k] = in.secondary_mass[j], n.inertia[k] = in.secondary_inertia[j];
+      if (!s.contact.tied_mass.empty()) s.contact.tied_mass[k] = 0.0;
+    }
+  }
+}
+
 // TI-13: a tied node's contact springs push its segment's mass at its place (its own is on the segment now).
 void hold_tied_contacts(SolverState& s) {
   if (s.contact.interfaces.empty()) return;
@@ -207,10 +261,13 @@ void setup_ties(const Model& m, SolverState& s) {
   for (const Type2Interface& card : m.type2_interfaces) {
     TiedInterfaceState in;
     in.spotflag = card.spotflag == 0 ? 5 : card.spotflag;
+    in.idel2 = card.idel2;
     for (const Tie& tie : card.ties) {
       in.secondary.push_back(tie.node), in.main.push_back(tie.main), in.weight.push_back(tie.weight);
       lump_tied_mass(in, in.secondary.size() - 1, n, s.mass_added);
     }
+    in.released.assign(in.secondary.size(), 0);
+    if (in.idel2 != 0) find_segment_elements(m, in);
     s.ties.interfaces.push_back(std::move(in));
   }
   hold_spot_weld_springs(m, s);
@@ -224,6 +281,7 @@ void setup_ties(const Model& m, SolverState& s) {
 void transfer_tied_forces(SolverState& s) {
   TiedState& t = s.ties;
   if (t.nodes.empty()) return;
+  release_ties(s);
   NodalState& n = s.nodes;
   std::vector<double>& element_k = s.nodal_stiffness;
   std::vector<double>& contact_k = s.contact.nodal_contact_stiffness;
@@ -240,6 +298,7 @@ void transfer_tied_forces(SolverState& s) {
   for (TiedInterfaceState& in : t.interfaces) {
     in.normal_force = in.tangential_force = Vec3{0.0, 0.0, 0.0};
     for (std::size_t j = 0; j < in.secondary.size(); ++j) {
+      if (in.released[j]) continue;
       const double* own = &t.values[kForceValues * static_cast<std::size_t>(in.slot[j][0])];
       const Vec3 force = vec(own), moment = vec(own + 3), p = vec(own + 6);
       std::array<Vec3, 4> x;
@@ -287,6 +346,7 @@ void tie_velocities(SolverState& s) {
   for (TiedInterfaceState& in : t.interfaces) {
     in.kinetic_correction = 0.0;
     for (std::size_t j = 0; j < in.secondary.size(); ++j) {
+      if (in.released[j]) continue;
       const auto k = static_cast<std::size_t>(in.secondary[j]);
       std::array<Vec3, 4> v, w;
       for (std::size_t a = 0; a < 4; ++a) {

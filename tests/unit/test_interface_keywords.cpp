@@ -422,7 +422,14 @@ TEST(TiedInterfaceKeywords, FormulationsCrumpleLacksAreNamed) {
     const Deck d = read_deck(starter(dir, tied_node() + type2(0, 1, 1)));  // Level acts on chains only
     EXPECT_TRUE(contains(warnings(d), "Level: no effect")) << warnings(d);
   }
-  EXPECT_TRUE(contains(type2_error(type2(0, 1, 0, 2)), "Idel2"));
+  {
+    test::TempDir dir;  // Idel2 releases ties (TI-15); with Spotflag 2 the reference ignores it, said by a warning
+    EXPECT_EQ(read_deck(starter(dir, tied_node() + type2(0, 1, 0, 2))).model.type2_interfaces[0].idel2, 2);
+    test::TempDir again;
+    const Deck d = read_deck(starter(again, tied_node() + type2(0, 2, 0, 1)));
+    EXPECT_EQ(d.model.type2_interfaces[0].idel2, 0);
+    EXPECT_TRUE(contains(warnings(d), "Idel2: no effect with Spotflag 2")) << warnings(d);
+  }
   EXPECT_TRUE(contains(type2_error(type2(0, 1, 0, 0, 0.0, I(1) + R(1.0) + "\n")), "Ithe"));
   test::TempDir dir;
   const Deck d = read_deck(starter(dir, tied_node() + type2(1000, 0, 0, 1000)));  // the manual's explicit defaults

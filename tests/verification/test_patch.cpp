@@ -397,6 +397,43 @@ TEST(TiedPatch, TwoToOneMeshTransitionKeepsTheConstantState) {
               run.summary.cycles, worst_velocity, worst_position, worst_stress, run.summary.energy.error_percent);
 }
 
+// Idel2 (docs/theory/tied-interfaces.md, TI-15): a node of 1e-3 kg pushed by 1e-3 kN out of the plane of a shell
+// that is stretched until it fails (its edge x = 10 pulled at 1 mm/ms; failure plastic strain 0.02). With Idel2 2
+// the node is let go when the shell is deleted and accelerates at F / m = 1 mm/ms^2 (measured on the reference:
+// 0.99987); by default it stays with the deleted shell's nodes, which are held out of plane. A second, held shell keeps
+// the step once the first is gone (without it the step would grow by a tenth a cycle).
+TEST(TiedRelease, NodeIsLetGoWhenItsMainShellIsDeletedWithIdel2) {
+  auto run_with = [](int idel2, double& vz_end, double& vz_before, double& dt_rows) {
+    test::TempDir dir;
+    std::string starter = node_cards({{1, 0.0, 0.0, 0.0}, {2, 10.0, 0.0, 0.0}, {3, 10.0, 10.0, 0.0}, {4, 0.0, 10.0, 0.0},
+                                      {5, 2.5, 3.0, 0.0}, {6, 100.0, 0.0, 0.0}, {7, 110.0, 0.0, 0.0},
+                                      {8, 110.0, 10.0, 0.0}, {9, 100.0, 10.0, 0.0}}) +
+                          shell_cards(1, {{1, 1, 2, 3, 4}, {2, 6, 7, 8, 9}}) + part_card() + shell_property(1.0, 1) +
+                          "/MAT/PLAS_JOHNS/1\njc\n" + R(7.8e-6) + "\n" + R(210.0) + R(0.3) + I(0) + "\n" + R(0.2) +
+                          R(0.4) + R(0.4) + R(0.02) + "\n" + unit_function(1) + node_group(10, {1, 4, 6, 7, 8, 9}) +
+                          node_group(11, {2, 3}) + node_group(12, {5}) + boundary_condition(1, "111 111", 10) +
+                          boundary_condition(2, "011 111", 11) + imposed_velocity(1, 1, "X", 11, 1.0) +
+                          added_mass(1, 1e-3, 12) + "/CLOAD/1\npush\n" + I(1) + "         Z" + I(0) + I(0) + I(12) +
+                          std::string(10, ' ') + R(1.0) + R(1e-3) + "\n/SURF/PART/20\nshell\n" + I(1) +
+                          "\n/INTER/TYPE2/1\nweld\n" + I(12) + I(20) + I(0) + I(5) + I(0) + I(0) + I(idel2) + "\n";
+    std::vector<std::pair<double, double>> vz;
+    const RunResult run = run_deck(dir, starter, 0.6, 0.01, [&](const Model& m, const SolverState& s) {
+      vz.push_back({s.time, s.nodes.vz[node_index(m, 5)]});
+    });
+    ASSERT_EQ(run.summary.status, RunStatus::Normal) << run.summary.message;
+    ASSERT_GT(vz.size(), 10u);
+    // Rows before the last, whose step is cut to land on the end time (the velocities belong to the half steps).
+    const std::size_t a = vz.size() - 7, b = vz.size() - 2;
+    vz_end = vz[b].second, vz_before = vz[a].second, dt_rows = vz[b].first - vz[a].first;
+  };
+  double released_end = 0.0, released_before = 0.0, span = 0.0, kept_end = 1.0, kept_before = 0.0, unused = 0.0;
+  run_with(2, released_end, released_before, span);
+  run_with(0, kept_end, kept_before, unused);
+  EXPECT_EQ(kept_end, 0.0) << "the default keeps the node tied to the deleted shell's held nodes";
+  EXPECT_GT(released_end, 0.1);
+  EXPECT_NEAR((released_end - released_before) / span, 1.0, 1e-3) << "the released node moves under F / m";
+}
+
 // With Ismstr 1 the reference's Ishell 1 does not orthogonalise its hourglass vector (docs/theory/shell4.md, S-15):
 // on the distorted patch a constant strain rate then loads the membrane hourglass modes exactly as Ishell 2's plain
 // vector does (the patch test is failed by design, as for Ishell 2), while with Ismstr 2 they stay at rest.

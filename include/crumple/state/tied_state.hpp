@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "crumple/core/vec3.hpp"
+#include "crumple/model/elements.hpp"
 
 namespace crumple {
 
@@ -16,6 +17,12 @@ struct TiedInterfaceState {
   std::vector<std::array<std::int32_t, 4>> main;     // its segment's nodes (a triangle repeats its third node)
   std::vector<std::array<double, 4>> weight;         // shape functions at the node's projection, summing to 1 (TI-1)
   std::vector<double> secondary_mass;                // the node's own mass, lumped on the segment at the start [M]
+  std::vector<double> secondary_inertia;             // and its own rotational inertia [M L^2]
+  // Idel2 (TI-15): 1 releases a tie once every element on its segment's nodes is deleted, 2 once one is; 0 never.
+  int idel2 = 0;
+  std::vector<std::uint8_t> released;                // per tie: 1 once released (the node moves on its own)
+  std::vector<std::uint32_t> segment_elements_first; // per tie (+1): its range in segment_elements (Idel2 only)
+  std::vector<ElementRef> segment_elements;          // the shells and bricks that use every node of its segment
   // Slots of the tie's nodes in TiedState::nodes: the tied node, then the segment's four.
   std::vector<std::array<std::int32_t, 5>> slot;
   // /TH/INTER: the sum of the forces the ties passed from their nodes to the segments in the last cycle, normal

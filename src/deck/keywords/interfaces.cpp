@@ -313,7 +313,6 @@ void read_type2_line(const Line& line, Type2Interface& i, int input_version, Dec
                                                "their main elements are deleted)");
     i.idel2 = 0;
   }
-  require_zero(context, line, i.idel2 != 0, 61, 10, "Idel2", "releasing tied nodes when their main elements are deleted is");
   i.dsearch = non_negative(line, 81, "dsearch", dim::length);
 }
 
