@@ -66,26 +66,17 @@ ElementFacts facts_of(const Model& m, ElementRef ref, double area) {
 namespace {
 
 // Irem_i2 1: the nodes an /INTER/TYPE2 ties leave the interface's secondary nodes (C-1b).
-void drop_tied_nodes(const Model& m, ContactInterface& in) {
-  std::vector<std::uint8_t> tied(m.nodes.size(), 0);
-  for (const Type2Interface& t : m.type2_interfaces)
-    for (const Tie& tie : t.ties) tied[static_cast<std::size_t>(tie.node)] = 1;
-  std::erase_if(in.secondary_nodes, [&tied](std::int32_t node) { return tied[static_cast<std::size_t>(node)] != 0; });
+void drop_tied_nodes(const std::vector<const Tie*>& tie_of, ContactInterface& in) {
+  std::erase_if(in.secondary_nodes, [&tie_of](std::int32_t node) { return tie_of[static_cast<std::size_t>(node)] != nullptr; });
 }
 
 // C-1b: each secondary node tied by an /INTER/TYPE2, with its tie's segment nodes.
-void mark_tied_nodes(const Model& m, ContactInterface& in) {
+void mark_tied_nodes(const std::vector<const Tie*>& tie_of, ContactInterface& in) {
   in.tied_to.clear();
-  if (m.type2_interfaces.empty()) return;
-  std::vector<std::int32_t> tie_of(m.nodes.size(), -1);
-  std::vector<const Tie*> ties;
-  for (const Type2Interface& t : m.type2_interfaces)
-    for (const Tie& tie : t.ties) tie_of[static_cast<std::size_t>(tie.node)] = static_cast<std::int32_t>(ties.size()), ties.push_back(&tie);
+  if (tie_of.empty()) return;
   in.tied_to.assign(in.secondary_nodes.size(), {-1, -1, -1, -1});
-  for (std::size_t i = 0; i < in.secondary_nodes.size(); ++i) {
-    const std::int32_t t = tie_of[static_cast<std::size_t>(in.secondary_nodes[i])];
-    if (t >= 0) in.tied_to[i] = ties[static_cast<std::size_t>(t)]->main;
-  }
+  for (std::size_t i = 0; i < in.secondary_nodes.size(); ++i)
+    if (const Tie* tie = tie_of[static_cast<std::size_t>(in.secondary_nodes[i])]) in.tied_to[i] = tie->main;
 }
 
 }  // namespace
@@ -109,6 +100,8 @@ ContactState setup_contact(const Model& m, NodalState& nodes, std::vector<std::s
   }
   std::vector<double> surface_area;  // per node, computed once when some interface has a friction law
   const std::vector<std::int32_t> summed = objects_with_history(m, HistoryObject::Interface, kInterfacePairSums);
+  // The tied nodes (C-1b); empty without /INTER/TYPE2.
+  const std::vector<const Tie*> tie_of = m.type2_interfaces.empty() ? std::vector<const Tie*>{} : ties_by_node(m);
   for (const Type7Interface& card : m.type7_interfaces) {
     ContactInterface in;
     InterfaceResult result;
@@ -141,8 +134,8 @@ ContactState setup_contact(const Model& m, NodalState& nodes, std::vector<std::s
     in.bucket_scale = card.bumult > 0.0 ? card.bumult : 0.2;
     in.stiffness_mode = card.istf;
     in.secondary_nodes = m.node_groups[static_cast<std::size_t>(card.secondary_group)].nodes;
-    if (card.irem_i2 == 1) drop_tied_nodes(m, in);
-    mark_tied_nodes(m, in);
+    if (card.irem_i2 == 1 && !tie_of.empty()) drop_tied_nodes(tie_of, in);
+    mark_tied_nodes(tie_of, in);
     const Surface& surface = m.surfaces[static_cast<std::size_t>(card.main_surface)];
     double thickness_sum = 0.0, shortest_side_all = std::numeric_limits<double>::infinity();
     int shell_segments = 0;

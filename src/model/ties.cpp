@@ -108,4 +108,11 @@ TieSearch find_ties(const Model& m, const Type2Interface& in) {
   return out;
 }
 
+std::vector<const Tie*> ties_by_node(const Model& m) {
+  std::vector<const Tie*> by_node(m.nodes.size(), nullptr);
+  for (const Type2Interface& in : m.type2_interfaces)
+    for (const Tie& tie : in.ties) by_node[static_cast<std::size_t>(tie.node)] = &tie;
+  return by_node;
+}
+
 }  // namespace crumple

@@ -175,13 +175,11 @@ void setup_rigid_walls(const Model& m, SolverState& s) {
   // A node tied by an /INTER/TYPE2 moves with its segment and has no mass to hold: walls leave it out, as the
   // reference does (its starter: "secondary nodes of interfaces type 2 suppressed from rigid walls"); its segment's
   // nodes are held instead (TI-14).
-  std::vector<std::uint8_t> tied(n.size(), 0);
-  for (const TiedInterfaceState& in : s.ties.interfaces)
-    for (std::int32_t node : in.secondary) tied[static_cast<std::size_t>(node)] = 1;
+  const std::vector<const Tie*> tie_of = ties_by_node(m);
   for (const RigidWall& w : m.rigid_walls) {
     RigidWallState state;
     for (std::int32_t node : w.secondary_nodes)
-      if (!tied[static_cast<std::size_t>(node)]) state.nodes.push_back(node);
+      if (tie_of[static_cast<std::size_t>(node)] == nullptr) state.nodes.push_back(node);
     state.tied.assign(state.nodes.size(), 0);
     state.active.assign(state.nodes.size(), 0);
     state.held_normal.assign(3 * state.nodes.size(), 0.0);

@@ -28,4 +28,7 @@ struct TieSearch {
 // Ties the interface's nodes to the nearest segments of its surface, at the model's current positions.
 TieSearch find_ties(const Model& model, const Type2Interface& interface);
 
+// Per node of the model: the tie of every /INTER/TYPE2 that holds it, or null (the resolved model ties a node once).
+std::vector<const Tie*> ties_by_node(const Model& model);
+
 }  // namespace crumple
