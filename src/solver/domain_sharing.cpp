@@ -219,6 +219,8 @@ void share_node_state(const Model& m, SolverState& s, Exchange& exchange, bool r
       if (c.fx[k] != 0.0 || c.fy[k] != 0.0 || c.fz[k] != 0.0) c.touched.push_back(static_cast<std::int32_t>(k));
     if (restart) share_contact_state(s, exchange);
   }
+  // /DAMP beta: each node's element force of the last cycle, whose rate the next cycle takes (damping.md, D-5).
+  if (s.damping.stiffness()) exchange.share(s.damping.element_force_before, 6, owner);
   RecordedNodalResults& r = s.recorded;
   for (auto* v : {&r.acceleration, &r.internal_force, &r.external_force})
     if (!v->empty()) exchange.share(*v, 3, owner);
