@@ -280,6 +280,37 @@ void check_shell_formulations(Resolver& r) {
   }
 }
 
+// A truss part's material (docs/theory/truss.md): LAW1 or LAW2, as the reference, which refuses the others on a
+// truss (its starter error 3046 for LAW36, measured); LAW2's strain-rate terms do nothing on a truss there
+// (measured: c 0.05 gives the runs of c 0), and Crumple's truss hardens isotropically only.
+void check_truss_materials(Resolver& r) {
+  const Model& m = r.model;
+  for (const Part& part : m.parts) {
+    if (part.property < 0 || part.material < 0) continue;
+    if (m.properties[static_cast<std::size_t>(part.property)].kind != PropertyKind::Truss) continue;
+    const Material& mat = m.materials[static_cast<std::size_t>(part.material)];
+    const std::string keyword = fmt::format("/PART/{}", part.user_id);
+    if (mat.law != MaterialLaw::Elastic && mat.law != MaterialLaw::JohnsonCook) {
+      r.error(part.where, keyword, "mat_ID",
+              fmt::format("a LAW1 or LAW2 material for a truss (the reference refuses LAW{} on trusses)",
+                          static_cast<int>(mat.law)),
+              std::to_string(mat.user_id));
+      continue;
+    }
+    if (mat.law != MaterialLaw::JohnsonCook) continue;
+    const JohnsonCookParameters& jc = mat.johnson_cook;
+    if (jc.chard != 0.0)
+      r.error(mat.where, fmt::format("/MAT/LAW2/{}", mat.user_id), "Chard",
+              fmt::format("0 for the trusses of part {}: kinematic hardening of a truss is not supported by Crumple",
+                          part.user_id),
+              fmt::format("'{}'", jc.chard));
+    if (jc.c != 0.0)
+      r.context.warn(mat.where, fmt::format("/MAT/LAW2/{}", mat.user_id),
+                     fmt::format("c (strain rate) does nothing on the trusses of part {}, as in the reference",
+                                 part.user_id));
+  }
+}
+
 // /MOVE_FUNCT, in deck order, before anything reads a function (docs/deck-format.md, "Functions").
 void move_functions(Resolver& r) {
   for (const FunctionMove& move : r.context.function_moves) {
@@ -360,6 +391,7 @@ void resolve_definitions(Resolver& r) {
   m.formulations.clear();
   for (const Property& p : m.properties) m.formulations.push_back(formulation_of(r, p));
   check_shell_formulations(r);
+  check_truss_materials(r);
   for (Property& p : m.properties)
     if (p.kind == PropertyKind::Spring)
       for (int d = 0; d < p.spring.dofs(); ++d) resolve_spring_functions(r, p, d);

@@ -35,6 +35,7 @@ const IdMap* history_map(const Model::Index& ix, HistoryObject object, std::stri
     case HistoryObject::Sh3n: what = "3-node shell"; return &ix.elements[static_cast<int>(ElementKind::Shell3)];
     case HistoryObject::Brick: what = "brick"; return &ix.elements[static_cast<int>(ElementKind::Brick8)];
     case HistoryObject::Spring: what = "spring"; return &ix.elements[static_cast<int>(ElementKind::Spring)];
+    case HistoryObject::Truss: what = "truss"; return &ix.elements[static_cast<int>(ElementKind::Truss)];
     case HistoryObject::Subset: what = "subset"; return &ix.subsets;
     case HistoryObject::Section: what = "section"; return &ix.sections;
     case HistoryObject::RigidBody: what = "rigid body"; return &ix.rigid_bodies;

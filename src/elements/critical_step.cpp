@@ -7,6 +7,7 @@
 
 #include "crumple/core/geometry.hpp"
 #include "crumple/elements/spring.hpp"
+#include "crumple/elements/truss.hpp"
 
 namespace crumple {
 
@@ -54,6 +55,9 @@ double initial_element_time_step(const Model& model, ElementKind kind, std::size
     }
     case ElementKind::Spring:
       return spring_critical_step(spring_parameters(property.spring, model.functions), norm(x.position(n[1]) - x.position(n[0])));
+    case ElementKind::Truss:
+      return truss_critical_step(truss_parameters(material(), property.truss, model.functions),
+                                 norm(x.position(n[1]) - x.position(n[0])));
   }
   return 0.0;
 }
@@ -63,6 +67,7 @@ NodalStiffnessFactor nodal_stiffness_factor(ElementKind kind, int ishell, double
   switch (kind) {
     case ElementKind::Brick8: return {0.25, 0.25};             // 2 (m_e / 8) / dt_e^2
     case ElementKind::Spring: return {1.0, 1.0};               // K at each node: M / dt_e^2 (eq. SP-4a)
+    case ElementKind::Truss: return {1.0, 1.0};                // E A / L at each node (eq. TR-6)
     case ElementKind::Shell3: return {0.6561 * plate, plate};  // 0.6561 V A11 / L^2; V A11 / L^2
     case ElementKind::Shell4:
       if (ishell == 24) return {0.5 * plate, 0.5 * plate};               // (1/2) V A11 / L^2, QEPH

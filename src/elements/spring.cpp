@@ -8,10 +8,6 @@
 namespace crumple {
 namespace {
 
-Vec3 position(const NodalState& n, std::int32_t k) {
-  const auto u = static_cast<std::size_t>(k);
-  return {n.x[u], n.y[u], n.z[u]};
-}
 
 SpringDofParameters dof_parameters(const SpringLaw& s, const std::vector<Function>& functions) {
   SpringDofParameters p{s.stiffness, s.damping, s.delta_min, s.delta_max};
@@ -237,7 +233,7 @@ GroupStepResult axial_spring_forces(const ElementTable& table, const ElementGrou
     if (recording && !(state.deleted[ue] & kElementElsewhere)) state.records.clear(ue);
     if (state.deleted[ue] & kElementElsewhere) continue;
     const std::int32_t* n = table.nodes_of(ue);
-    const Vec3 axis = position(nodes, n[1]) - position(nodes, n[0]);
+    const Vec3 axis = node_position(nodes, n[1]) - node_position(nodes, n[0]);
     const double length = norm(axis);
     const double elongation = length - state.length0[ue];  // eq. SP-1
     if (state.deleted[ue]) {  // broken last cycle: the work of its last force over the step it acted (eq. SP-5a)
@@ -297,7 +293,7 @@ bool six_law_step(const SpringGroupParameters& p, SpringState& state, std::int32
 std::array<double, kSpringDofs> general_elongations(const NodalState& nodes, const SpringState& state, std::size_t ue,
                                                     const std::int32_t* n, double dt) {
   const auto a = static_cast<std::size_t>(n[0]), b = static_cast<std::size_t>(n[1]), slot = kSpringDofs * ue;
-  const Vec3 offset = position(nodes, n[1]) - position(nodes, n[0]);
+  const Vec3 offset = node_position(nodes, n[1]) - node_position(nodes, n[0]);
   return {offset.x - state.rest_offset[3 * ue], offset.y - state.rest_offset[3 * ue + 1],
           offset.z - state.rest_offset[3 * ue + 2], state.elongation[slot + 3] + (nodes.wx[b] - nodes.wx[a]) * dt,
           state.elongation[slot + 4] + (nodes.wy[b] - nodes.wy[a]) * dt,
@@ -377,7 +373,7 @@ BeamKinematics beam_kinematics(const NodalState& nodes, SpringState& state, std:
 BeamKinematics coincident_beam_kinematics(const NodalState& nodes, const SpringState& state, std::size_t ue,
                                           const std::int32_t* n, double dt) {
   const auto n1 = static_cast<std::size_t>(n[0]), n2 = static_cast<std::size_t>(n[1]);
-  const Vec3 chord = position(nodes, n[1]) - position(nodes, n[0]), dw = spin(nodes, n2) - spin(nodes, n1);
+  const Vec3 chord = node_position(nodes, n[1]) - node_position(nodes, n[0]), dw = spin(nodes, n2) - spin(nodes, n1);
   const double distance = norm(chord);
   const double* last = &state.elongation[kSpringDofs * ue];
   BeamKinematics k;
@@ -399,7 +395,7 @@ GroupStepResult beam_spring_forces(const ElementTable& table, const ElementGroup
     if (state.deleted[ue] & kElementElsewhere) continue;
     const std::int32_t* n = table.nodes_of(ue);
     const auto n1 = static_cast<std::size_t>(n[0]), n2 = static_cast<std::size_t>(n[1]);
-    const Vec3 axis = position(nodes, n[1]) - position(nodes, n[0]);
+    const Vec3 axis = node_position(nodes, n[1]) - node_position(nodes, n[0]);
     const double length = norm(axis);
     const bool at_rest_coincident = state.length0[ue] == 0.0;
     if (!(length > 0.0) && !at_rest_coincident) {  // the nodes met: no frame left

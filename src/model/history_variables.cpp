@@ -20,7 +20,7 @@ using S = std::string_view;
 constexpr Dimension kNone{0, 0, 0}, kLength{0, 1, 0}, kVelocity{0, 1, -1}, kAcceleration{0, 1, -2},
     kRate{0, 0, -1}, kAngularAcceleration{0, 0, -2}, kForce{1, 1, -2}, kMoment{1, 2, -2}, kMass{1, 0, 0},
     kMomentum{1, 1, -1}, kAngularMomentum{1, 2, -1}, kInertia{1, 2, 0}, kForcePerLength{1, 0, -2},
-    kStress{1, -1, -2}, kDensity{1, -3, 0}, kVolume{0, 3, 0}, kCurvature{0, -1, 0};
+    kStress{1, -1, -2}, kDensity{1, -3, 0}, kArea{0, 2, 0}, kVolume{0, 3, 0}, kCurvature{0, -1, 0};
 
 // ---- /TH/NODE
 constexpr std::array<V, 27> kNode{{
@@ -172,12 +172,20 @@ constexpr std::array<S, 15> kSpringDef{"OFF", "FX", "FY", "FZ", "MX", "MY", "MZ"
                                        "LY",  "LZ", "RX", "RY", "RZ", "IE", "LENGTH"};
 constexpr std::array<G, 1> kSpringGroups{{{"DEF", kSpringDef}}};
 
+// ---- /TH/TRUSS: the axial force F (positive in tension), IE, the current area A, the initial length L (as the
+// manual lists it) and the plastic strain PLAS (docs/theory/truss.md).
+constexpr std::array<V, 6> kTruss{{{"OFF", "-", kNone, true},  {"F", "F", kForce, true},  {"IE", "E", kMoment, true},
+                                   {"A", "L^2", kArea, true},  {"L", "L", kLength, true}, {"PLAS", "-", kNone, true}}};
+constexpr std::array<S, 4> kTrussDef{"OFF", "F", "IE", "PLAS"};
+constexpr std::array<G, 1> kTrussGroups{{{"DEF", kTrussDef}}};
+
 constexpr HistoryKind kNodeKind{"NODE", kNode, kNodeGroups}, kPartKind{"PART", kPart, kPartGroups},
     kSubsetKind{"SUBS", kPart, kPartGroups}, kShellKind{"SHEL", kShell, kShellGroups},
     kSh3nKind{"SH3N", kShell, kShellGroups}, kBrickKind{"BRIC", kBrick, kBrickGroups},
     kInterfaceKind{"INTER", kInterface, kInterfaceGroups}, kWallKind{"RWALL", kWall, kWallGroups},
     kBodyKind{"RBODY", kBody, kBodyGroups}, kSectionKind{"SECTIO", kSection, kSectionGroups},
-    kAccelerometerKind{"ACCEL", kAccelerometer, kAccelerometerGroups}, kSpringKind{"SPRING", kSpring, kSpringGroups};
+    kAccelerometerKind{"ACCEL", kAccelerometer, kAccelerometerGroups}, kSpringKind{"SPRING", kSpring, kSpringGroups},
+    kTrussKind{"TRUSS", kTruss, kTrussGroups};
 
 const HistoryVariable* find_variable(const HistoryKind& kind, std::string_view name) {
   for (const HistoryVariable& v : kind.variables)
@@ -201,6 +209,7 @@ const HistoryKind& history_kind(HistoryObject object) {
     case HistoryObject::Section: return kSectionKind;
     case HistoryObject::Accelerometer: return kAccelerometerKind;
     case HistoryObject::Spring: return kSpringKind;
+    case HistoryObject::Truss: return kTrussKind;
   }
   return kNodeKind;
 }

@@ -331,6 +331,20 @@ void add_spring_fields(FieldSink& out, const Model& m, const SolverState& state)
   add_status_fields(out, ElementKind::Spring, s.deleted);
 }
 
+// Trusses (docs/theory/truss.md): per truss, its axial force (positive in tension), stress and plastic strain.
+void add_truss_fields(FieldSink& out, const Model& m, const SolverState& state) {
+  const std::size_t n = m.elements[static_cast<std::size_t>(ElementKind::Truss)].size();
+  if (n == 0) return;
+  const TrussState& t = state.trusses;
+  for (const auto* v : {&t.internal_energy, &t.mass, &t.critical_dt, &t.force, &t.stress}) require_size(*v, n, "truss values");
+  const int k = static_cast<int>(ElementKind::Truss);
+  out.push_back(field("axial_force", k, 1, t.force));
+  out.push_back(field("axial_stress", k, 1, t.stress));
+  out.push_back(field("plastic_strain", k, 1, std::vector<double>(t.eps_p.begin(), t.eps_p.end())));
+  add_element_scalars(out, m.run.anim, k, n, t.internal_energy, t.mass, t.hourglass_energy, t.critical_dt);
+  add_status_fields(out, ElementKind::Truss, t.deleted);
+}
+
 }  // namespace
 
 void frame_fields(const Model& model, const SolverState& state, FieldSink& out) {
@@ -339,6 +353,7 @@ void frame_fields(const Model& model, const SolverState& state, FieldSink& out) 
   add_shell_fields(out, model, state, ElementKind::Shell3);
   add_brick_fields(out, model, state);
   add_spring_fields(out, model, state);
+  add_truss_fields(out, model, state);
 }
 
 std::vector<FrameField> frame_fields(const Model& model, const SolverState& state) {

@@ -103,6 +103,14 @@ constexpr Evaluator<SP> kSpring[] = {
     {"LZ", component<SP, &SP::l, 2>},     {"RX", component<SP, &SP::r, 0>}, {"RY", component<SP, &SP::r, 1>},
     {"RZ", component<SP, &SP::r, 2>},     {"IE", scalar<SP, &SP::ie>},      {"LENGTH", scalar<SP, &SP::length>}};
 
+struct TrussValues {
+  double off, force, ie, area, length0, plastic_strain;
+};
+using TR = TrussValues;
+constexpr Evaluator<TR> kTruss[] = {{"OFF", scalar<TR, &TR::off>}, {"F", scalar<TR, &TR::force>},
+                                    {"IE", scalar<TR, &TR::ie>},   {"A", scalar<TR, &TR::area>},
+                                    {"L", scalar<TR, &TR::length0>}, {"PLAS", scalar<TR, &TR::plastic_strain>}};
+
 struct ForceValues {  // interfaces and rigid walls: normal and tangential force, interface energies
   Vec3 fn, ft;
   double elastic = 0.0, friction = 0.0, damping = 0.0;
@@ -170,6 +178,7 @@ int evaluator_of(HistoryObject object, std::string_view name) {
     case HistoryObject::Sh3n: return find(kShell, name);
     case HistoryObject::Brick: return find(kBrick, name);
     case HistoryObject::Spring: return find(kSpring, name);
+    case HistoryObject::Truss: return find(kTruss, name);
     case HistoryObject::Interface:
     case HistoryObject::RigidWall: return find(kForces, name);
     case HistoryObject::RigidBody: return find(kBody, name);
@@ -310,6 +319,16 @@ SpringValues spring_values(const SolverState& s, bool general, std::int32_t e) {
   out.length = general ? norm(Vec3{rest[0] + l[0], rest[1] + l[1], rest[2] + l[2]}) : sp.length0[ue] + l[0];
   out.off = element_condition(sp.deleted[ue]) == kElementDeleted ? 0.0 : 1.0;
   return out;
+}
+
+// F: the axial force off A sigma, positive in tension (docs/theory/truss.md, TR-4); OFF the failed truss's factor
+// (TR-7), 0 once deleted and while a gap is open (TR-5, measured).
+TrussValues truss_values(const SolverState& s, std::size_t g, std::int32_t e) {
+  const TrussState& t = s.trusses;
+  const auto ue = static_cast<std::size_t>(e);
+  const bool on = element_condition(t.deleted[ue]) != kElementDeleted &&
+                  truss_acts(s.truss_groups[g], t.length0[ue], t.length[ue]);
+  return {on ? t.off[ue] : 0.0, t.force[ue], t.internal_energy[ue], t.area[ue], t.length0[ue], static_cast<double>(t.eps_p[ue])};
 }
 
 // ---- Walls, interfaces, bodies.
@@ -612,6 +631,11 @@ void HistoryChannels::evaluate(const Request& r, const SolverState& s, const Vel
       case HistoryObject::Spring: {
         const auto g = static_cast<std::size_t>(element_group_[static_cast<std::size_t>(ElementKind::Spring)][o]);
         append(kSpring, spring_values(s, s.spring_groups[g].frame == SpringFrame::Global, object), r.getters, row);
+        break;
+      }
+      case HistoryObject::Truss: {
+        const auto g = static_cast<std::size_t>(element_group_[static_cast<std::size_t>(ElementKind::Truss)][o]);
+        append(kTruss, truss_values(s, g, object), r.getters, row);
         break;
       }
       case HistoryObject::Interface: {

@@ -40,6 +40,8 @@ constexpr int kBrickAssumedShear = 481;   // Isolid 14, 18
 // Springs (/PROP/TYPE4): about 50 floating-point operations and two nodes, so of the order of 20 ns; estimated from
 // the arithmetic, not yet measured by bench/element_costs.py.
 constexpr int kSpring = 2;
+// Trusses (/PROP/TYPE2): a spring's arithmetic and a one-dimensional return, estimated as a spring's.
+constexpr int kTruss = 2;
 // An element a rigid body carries is not computed (docs/theory/rigid-bodies.md); it stays in the contact surfaces
 // and its nodes are moved by the body, a small cost.
 constexpr int kRigidElement = 1;
@@ -63,6 +65,7 @@ int computed_element_weight(const Model& model, ElementKind kind, std::size_t el
              : f.isolid == 14 || f.isolid == 18 ? kBrickAssumedShear
                                                 : kBrickEightPoints;
     case ElementKind::Spring: return kSpring;
+    case ElementKind::Truss: return kTruss;
   }
   return kBrickAssumedShear;
 }

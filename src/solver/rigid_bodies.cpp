@@ -49,10 +49,6 @@ Mat3 rotation_of(const Vec3& phi) {
           t * k[0] * k[2] - s * k[1], t * k[1] * k[2] + s * k[0], t * k[2] * k[2] + c};
 }
 
-Vec3 position(const NodalState& n, std::int32_t i) {
-  const auto k = static_cast<std::size_t>(i);
-  return {n.x[k], n.y[k], n.z[k]};
-}
 
 
 // Largest eigenvalue of a symmetric 3x3 matrix (trigonometric form of the characteristic cubic).
@@ -104,7 +100,7 @@ void form_body(const RigidBody& rb, const Model& m, SolverState& s, std::int32_t
   Vec3 secondary_moment{}, momentum{n.mass[main] * n.vx[main], n.mass[main] * n.vy[main], n.mass[main] * n.vz[main]};
   for (std::int32_t node : b.secondary) {
     const auto k = static_cast<std::size_t>(node);
-    secondary_moment = secondary_moment + scaled(position(n, node), n.mass[k]);
+    secondary_moment = secondary_moment + scaled(node_position(n, node), n.mass[k]);
     momentum = momentum + scaled({n.vx[k], n.vy[k], n.vz[k]}, n.mass[k]);
     secondary_mass += n.mass[k];
     s.rigid_owner[k] = index;
@@ -114,7 +110,7 @@ void form_body(const RigidBody& rb, const Model& m, SolverState& s, std::int32_t
   s.rigid_owner[main] = index;
   // A body without mass (inertia from the card only) keeps the velocity its main node has.
   if (!(mass > 0.0)) momentum = {n.vx[main], n.vy[main], n.vz[main]};
-  const Vec3 main_at = position(n, rb.main_node);
+  const Vec3 main_at = node_position(n, rb.main_node);
   const Vec3 cog = body_centre(rb.icog, main_at, n.mass[main], secondary_moment, secondary_mass);
   n.x[main] = cog[0], n.y[main] = cog[1], n.z[main] = cog[2];
   // Inertia about the centre: the card's added inertia (written in its skew, if any, SK-6), the main node's mass
@@ -134,7 +130,7 @@ void form_body(const RigidBody& rb, const Model& m, SolverState& s, std::int32_t
   b.first_moment = {};
   for (std::int32_t node : b.secondary) {
     const auto k = static_cast<std::size_t>(node);
-    const Vec3 p = position(n, node);
+    const Vec3 p = node_position(n, node);
     const Vec3 r{p[0] - cog[0], p[1] - cog[1], p[2] - cog[2]};
     b.rx.push_back(r[0]), b.ry.push_back(r[1]), b.rz.push_back(r[2]);
     const double mk = n.mass[k];
@@ -363,7 +359,7 @@ void gather_rigid_body_forces(SolverState& s) {
       const double own[6] = {n.fx[main], n.fy[main], n.fz[main], n.mx[main], n.my[main], n.mz[main]};
       for (int c = 0; c < 6; ++c) resultant[c].add(own[c]);
     }
-    const Vec3 cog = position(n, b.main_node);
+    const Vec3 cog = node_position(n, b.main_node);
     for (std::int32_t node : b.secondary) {
       const auto k = static_cast<std::size_t>(node);
       if (s.domain.owns(k)) {

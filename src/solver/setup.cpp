@@ -238,6 +238,7 @@ SolverState make_state(const Model& m, std::vector<std::string>& notes, Domain d
   setup_shells(m, s, ElementKind::Shell3);
   setup_bricks(m, s);
   setup_springs(m, s);
+  setup_trusses(m, s);
   for (const RayleighDamping& d : m.dampings) s.damping.alpha.push_back(d.alpha), s.damping.beta.push_back(d.beta);
   setup_damping(m, s);
   s.group_results.assign(m.element_groups.size(), GroupStepResult{});

@@ -12,20 +12,18 @@
 namespace crumple::solver {
 namespace {
 
-Vec3 current_position(const NodalState& x, std::int32_t k) {
-  const auto i = static_cast<std::size_t>(k);
-  return {x.x[i], x.y[i], x.z[i]};
-}
-
-// The element's current volume: a shell's current area times its current thickness, a brick's exact volume.
+// The element's current volume: a shell's current area times its current thickness, a truss's its cross-section
+// times its length, a brick's exact volume.
 template <class State>
 double current_volume(ElementKind kind, const State& st, std::size_t e, const std::int32_t* c, const NodalState& x) {
-  if constexpr (requires { st.thickness; }) {
+  if constexpr (requires { st.area; }) {
+    return st.area[e] * st.length[e];
+  } else if constexpr (requires { st.thickness; }) {
     const double area = kind == ElementKind::Shell3
-                            ? geometry::triangle_area(current_position(x, c[0]), current_position(x, c[1]),
-                                                      current_position(x, c[2]))
-                            : geometry::quad_area(current_position(x, c[0]), current_position(x, c[1]),
-                                                  current_position(x, c[2]), current_position(x, c[3]));
+                            ? geometry::triangle_area(node_position(x, c[0]), node_position(x, c[1]),
+                                                      node_position(x, c[2]))
+                            : geometry::quad_area(node_position(x, c[0]), node_position(x, c[1]),
+                                                  node_position(x, c[2]), node_position(x, c[3]));
     return area * st.thickness[e];
   } else {
     return geometry::brick_volume(x.x, x.y, x.z, c);
@@ -56,8 +54,8 @@ void element_stiffness(const Model& m, ElementKind kind, const State& st, Solver
     if (mass_scaling && beta.mass_scaling_length != NodalLength::CriticalStep) {  // eqs. T-2a, T-2b, current geometry
       const double length = mass_scaling_nodal_length(
           beta.mass_scaling_length, m.properties[static_cast<std::size_t>(part.property)].shell,
-          current_position(s.nodes, c[0]), current_position(s.nodes, c[1]), current_position(s.nodes, c[2]),
-          current_position(s.nodes, c[3]));
+          node_position(s.nodes, c[0]), node_position(s.nodes, c[1]), node_position(s.nodes, c[2]),
+          node_position(s.nodes, c[3]));
       k[e] = 0.5 * volume * mat.young / (1.0 - mat.poisson * mat.poisson) / (length * length);
       continue;
     }
@@ -81,6 +79,7 @@ void element_interface_stiffness(const Model& m, SolverState& s) {
   element_stiffness(m, ElementKind::Shell3, s.shells3, s);
   element_stiffness(m, ElementKind::Brick8, s.bricks, s);
   element_stiffness(m, ElementKind::Spring, s.springs, s);
+  element_stiffness(m, ElementKind::Truss, s.trusses, s);
 }
 
 void nodal_interface_stiffness(const Model& m, SolverState& s) {

@@ -7,8 +7,9 @@
 // rigid body of bricks (contact_idel), a continued run (ball_two_runs, stopped in its first engine deck),
 // accelerometers, whose filters and integrals carry over (accel_strip), cut sections, whose work integrals
 // carry over and whose loads the first cycle after the restart records again (section_strip), springs under
-// the mass damping of an engine /DAMP (damping_springs), general springs beside axial ones (springs_mixed_damped)
-// beam-type springs (beam_spring_cantilever) and a spot weld tied to two plates (tied_spot_weld).
+// the mass damping of an engine /DAMP (damping_springs), general springs beside axial ones and trusses
+// (springs_mixed_damped), beam-type springs (beam_spring_cantilever), a spot weld tied to two plates
+// (tied_spot_weld), and trusses letting go over their last cycles (truss_tower_fails).
 #include <gtest/gtest.h>
 #include <hdf5.h>
 
@@ -159,12 +160,14 @@ INSTANTIATE_TEST_SUITE_P(
                       RestartCase{"section_strip", kTestDecks / "section_strip" / "SECT_0000.rad", 600},
                       // springs, /DAMP changed by the engine deck, /TH/SPRING (issue 28)
                       RestartCase{"damping_springs", kQa / "damping_springs" / "DAMPC_0000.rad", 150},
-                      // general springs (their rotations and hardening 5) beside axial ones, under /DAMP
+                      // general springs (their rotations and hardening 5) beside axial ones and trusses, under /DAMP
                       RestartCase{"springs_mixed_damped", kPeerDecks / "springs_mixed_damped" / "SPRMIX_0000.rad", 250},
                       // beam-type springs: their frames carry over
                       RestartCase{"beam_spring_cantilever", kPeerDecks / "beam_spring_cantilever" / "BSPR_0000.rad", 120},
                       // tied interfaces: the rigid-segment ties' added mass and the tied nodes' velocities
-                      RestartCase{"tied_spot_weld", kPeerDecks / "tied_spot_weld_spotflag1" / "TIEDSW1_0000.rad", 700}),
+                      RestartCase{"tied_spot_weld", kPeerDecks / "tied_spot_weld_spotflag1" / "TIEDSW1_0000.rad", 700},
+                      // trusses: plastic strain, area, and the members that are letting go (TR-7)
+                      RestartCase{"truss_tower_fails", kPeerDecks / "truss_tower_fails" / "TOWERF_0000.rad", 105}),
     [](const auto& p) { return std::string(p.param.name); });
 
 TEST(Restart, FileOfAnotherModelIsRefusedWithItsCounts) {

@@ -12,10 +12,11 @@
 
 namespace crumple {
 
-enum class ElementKind : std::uint8_t { Shell4, Shell3, Brick8, Spring };
-inline constexpr int kElementKinds = 4;
+enum class ElementKind : std::uint8_t { Shell4, Shell3, Brick8, Spring, Truss };
+inline constexpr int kElementKinds = 5;
 inline constexpr ElementKind kAllElementKinds[kElementKinds] = {ElementKind::Shell4, ElementKind::Shell3,
-                                                                ElementKind::Brick8, ElementKind::Spring};
+                                                                ElementKind::Brick8, ElementKind::Spring,
+                                                                ElementKind::Truss};
 inline constexpr int kElementGroupSize = 128;
 
 // What an element kind is, as data: one row per kind in kElementKindTable, which the reader, the model, the
@@ -50,6 +51,9 @@ inline constexpr ElementKindDescription kElementKindTable[kElementKinds] = {
     {ElementKind::Spring, "SPRING", "spring", "springs", "/SPRING", "SPRING", 2, 6, PropertyKind::Spring, "length",
      "a spring of positive length", false, "/GRSPRI", "SPRI", "spring_ID", "spring2", "Polyline",
      &RunControl::dt_spring},
+    {ElementKind::Truss, "TRUSS", "truss", "trusses", "/TRUSS", "TRUSS", 2, 3, PropertyKind::Truss, "length",
+     "a truss of positive length", false, "/GRTRUS", "TRUS", "truss_ID", "truss2", "Polyline",
+     &RunControl::dt_truss},
 };
 
 constexpr const ElementKindDescription& describe(ElementKind kind) {

@@ -89,8 +89,14 @@ struct SpringSection {
   }
 };
 
-enum class PropertyKind : std::uint8_t { Shell, Solid, Spring };
-inline constexpr int kPropertyKinds = 3;
+// /PROP/TYPE2 (= /PROP/TRUSS): a truss's cross-section (docs/theory/truss.md).
+struct TrussSection {
+  double area = 0.0;  // Area, the initial cross-section [L^2]; > 0
+  double gap = 0.0;   // Gap_ini: the truss acts only once shortened by more than this (TR-5); 0: always [L]
+};
+
+enum class PropertyKind : std::uint8_t { Shell, Solid, Spring, Truss };
+inline constexpr int kPropertyKinds = 4;
 
 // What a property kind is, as data: its keyword's two names and whether it carries the law (a part of it needs
 // no material: mat_ID 0).
@@ -105,6 +111,7 @@ inline constexpr PropertyKindDescription kPropertyKindTable[kPropertyKinds] = {
     {PropertyKind::Shell, "SHELL", "/PROP/TYPE1", "shell", false},
     {PropertyKind::Solid, "SOLID", "/PROP/TYPE14", "solid", false},
     {PropertyKind::Spring, "SPRING", "/PROP/TYPE4", "spring", true},
+    {PropertyKind::Truss, "TRUSS", "/PROP/TYPE2", "truss", false},
 };
 constexpr const PropertyKindDescription& describe(PropertyKind kind) {
   return kPropertyKindTable[static_cast<int>(kind)];
@@ -118,6 +125,7 @@ struct Property {
   ShellSection shell;
   SolidSection solid;
   SpringSection spring;
+  TrussSection truss;
 };
 
 struct ShellDefaults {  // /DEF_SHELL

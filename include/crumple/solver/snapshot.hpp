@@ -89,6 +89,18 @@ void visit_springs(V& v, const std::string& at, SpringState& sp) {
 }
 
 template <class V>
+void visit_trusses(V& v, const std::string& at, TrussState& t) {
+  for (auto [name, field] :
+       {std::pair{"length0", &t.length0}, {"length", &t.length}, {"area", &t.area}, {"stress", &t.stress},
+        {"force", &t.force}, {"off", &t.off}, {"internal_energy", &t.internal_energy}, {"hourglass_energy", &t.hourglass_energy},
+        {"critical_dt", &t.critical_dt}, {"mass", &t.mass}})
+    v(at + name, *field);
+  v(at + "eps_p", t.eps_p);  // point_real, one point per truss
+  if (!t.section_work.empty()) v(at + "section_work", t.section_work);
+  v(at + "deleted", t.deleted);
+}
+
+template <class V>
 void visit_body(V& v, const std::string& at, RigidBodyState& b) {
   v(at + "rx", b.rx), v(at + "ry", b.ry), v(at + "rz", b.rz);
   v(at + "mass", b.mass);
@@ -168,6 +180,7 @@ void visit_state(V& v, SolverState& s, ResumeMarks& marks) {
   visit_shells(v, "shells3/", s.shells3);
   visit_bricks(v, "bricks/", s.bricks);
   visit_springs(v, "springs/", s.springs);
+  visit_trusses(v, "trusses/", s.trusses);
   v("damping/alpha", s.damping.alpha), v("damping/beta", s.damping.beta);
   if (s.damping.stiffness()) v("damping/element_force_before", s.damping.element_force_before);
   for (std::size_t k = 0; k < s.bodies.size(); ++k) visit_body(v, "bodies/" + std::to_string(k) + "/", s.bodies[k]);

@@ -12,6 +12,7 @@
 #include "crumple/elements/brick8.hpp"
 #include "crumple/elements/shell4.hpp"
 #include "crumple/elements/spring.hpp"
+#include "crumple/elements/truss.hpp"
 #include "crumple/model/model.hpp"
 #include "crumple/parallel/domain.hpp"
 #include "crumple/parallel/reducer.hpp"
@@ -37,6 +38,8 @@ struct SolverState {
   std::vector<BrickGroupParameters> brick_groups;  // per element group (meaningful for brick groups only)
   SpringState springs;                              // 2-node springs
   std::vector<SpringGroupParameters> spring_groups;  // per element group (meaningful for spring groups only)
+  TrussState trusses;                               // 2-node trusses
+  std::vector<TrussGroupParameters> truss_groups;  // per element group (meaningful for truss groups only)
   std::vector<RigidBodyState> bodies;
   TiedState ties;                                   // /INTER/TYPE2 (empty without it)
   std::vector<RigidWallState> walls;
@@ -72,6 +75,7 @@ inline ElementKindState& element_state(SolverState& s, ElementKind kind) {
     case ElementKind::Shell3: return s.shells3;
     case ElementKind::Brick8: return s.bricks;
     case ElementKind::Spring: return s.springs;
+    case ElementKind::Truss: return s.trusses;
   }
   return s.shells;
 }

@@ -27,6 +27,12 @@ struct NodalState {
   }
 };
 
+// Node k's current position.
+inline Vec3 node_position(const NodalState& n, std::int32_t k) {
+  const auto u = static_cast<std::size_t>(k);
+  return {n.x[u], n.y[u], n.z[u]};
+}
+
 // The one place element kernels hand node k its share of the element's internal force f (and moment m): the nodal
 // sums take it with a minus sign (external minus internal).
 inline void subtract_internal(NodalState& n, std::size_t k, const Vec3& f) {

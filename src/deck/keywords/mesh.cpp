@@ -1,4 +1,4 @@
-// /NODE, the element cards (/SHELL, /SH3N, /BRICK, /SPRING) and /PART (docs/deck-format.md).
+// /NODE, the element cards (/SHELL, /SH3N, /BRICK, /SPRING, /TRUSS) and /PART (docs/deck-format.md).
 #include <fmt/format.h>
 
 #include "../context.hpp"
@@ -49,7 +49,8 @@ struct ElementCard {
 constexpr ElementCard kElementCards[] = {{ElementKind::Shell4, read_shell_extras},
                                          {ElementKind::Shell3, read_shell_extras},
                                          {ElementKind::Brick8, read_no_extras},
-                                         {ElementKind::Spring, read_spring_extras}};
+                                         {ElementKind::Spring, read_spring_extras},
+                                         {ElementKind::Truss, read_no_extras}};
 
 // Elements: "id n1 .. nk" in 10-column fields, then the kind's extras.
 void read_elements(CardReader& reader, DeckContext& context, const ElementCard& card) {

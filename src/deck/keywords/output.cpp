@@ -126,7 +126,8 @@ IdKind object_id_kind(HistoryObject object) {
     case HistoryObject::Shell:
     case HistoryObject::Sh3n:
     case HistoryObject::Brick:
-    case HistoryObject::Spring: return IdKind::Element;
+    case HistoryObject::Spring:
+    case HistoryObject::Truss: return IdKind::Element;
     default: return IdKind::Other;
   }
 }
@@ -308,6 +309,7 @@ void register_output_keywords(KeywordTable& table) {
   table.push_back({"/TH/SH3N", DeckPart::Starter, history(H::Sh3n, L::IdSkewName)});
   table.push_back({"/TH/BRIC", DeckPart::Starter, history(H::Brick, L::IdBlankName)});
   table.push_back({"/TH/SPRING", DeckPart::Starter, history(H::Spring, L::IdBlankName)});
+  table.push_back({"/TH/TRUSS", DeckPart::Starter, history(H::Truss, L::IdBlankName)});
   table.push_back({"/TH/SECTIO", DeckPart::Starter, history(H::Section, L::Ids)});
   table.push_back({"/TH/RBODY", DeckPart::Starter, history(H::RigidBody, L::Ids)});
   table.push_back({"/TH/ACCEL", DeckPart::Starter, history(H::Accelerometer, L::Ids)});

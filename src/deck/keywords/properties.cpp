@@ -1,4 +1,4 @@
-// /PROP/TYPE1 (SHELL), /PROP/TYPE14 (SOLID) and /PROP/TYPE4 (SPRING). Layouts: docs/cards/starter-model.md.
+// /PROP/TYPE1 (SHELL), /PROP/TYPE14 (SOLID), the springs (/PROP/TYPE4, TYPE8, TYPE13) and /PROP/TYPE2 (TRUSS). Layouts: docs/cards/starter-model.md.
 #include <fmt/format.h>
 
 #include <utility>
@@ -423,9 +423,23 @@ void read_beam_spring_property(CardReader& reader, DeckContext& context) {
   context.model.properties.push_back(std::move(p));
 }
 
+// /PROP/TYPE2 (/PROP/TRUSS): the truss's initial cross-section and gap (docs/theory/truss.md).
+void read_truss_property(CardReader& reader, DeckContext& context) {
+  refuse_narrow_layout(reader);
+  Property p = begin_property(reader, PropertyKind::Truss);
+  const Line line = reader.next("Area, Gap_ini");
+  p.truss.area = line.real(1, 20, "Area", dim::area);
+  if (!(p.truss.area > 0.0)) line.fail(1, 20, "Area", "a positive cross-section");
+  p.truss.gap = line.real(21, 20, "Gap_ini", dim::length);  // negative: 0, as the manual says (TR-5)
+  reader.finish();
+  context.model.properties.push_back(std::move(p));
+}
+
 }  // namespace
 
 void register_property_keywords(KeywordTable& table) {
+  table.push_back({"/PROP/TYPE2", DeckPart::Starter, read_truss_property});
+  table.push_back({"/PROP/TRUSS", DeckPart::Starter, read_truss_property});
   table.push_back({"/PROP/TYPE1", DeckPart::Starter, read_shell_property});
   table.push_back({"/PROP/SHELL", DeckPart::Starter, read_shell_property});
   table.push_back({"/PROP/TYPE14", DeckPart::Starter, read_solid_property});

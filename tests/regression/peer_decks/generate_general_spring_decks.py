@@ -10,7 +10,9 @@
 #     whole spring goes (uni-directional failure, Ifail 0).
 #   springs_mixed_damped: the chain of general springs beside a chain of /PROP/TYPE4 springs and one of /PROP/TYPE13
 #     beam-type springs that share its nodes, under /DAMP (alpha and beta): the MPI deck of every spring kind
-#     (tests/mpi). Its step is its nodes' (SP-19), 19 % longer than its shortest spring's.
+#     beside soft elasto-plastic trusses (/PROP/TYPE2, LAW2, nu = 0.3) between every other node: the MPI deck of
+#     every spring kind and the trusses (tests/mpi). Its step is its nodes' (SP-19), 19 % longer than its shortest
+#     spring's.
 import os
 I = lambda *v: "".join("%10d" % x for x in v)
 R = lambda *v: "".join("%20.10g" % x for x in v)
@@ -52,6 +54,11 @@ def chain(name, run, end=2.5, pull_y=0.05, dmax_y=0.0, mixed=False, every=50):
         s += ("/PART/3\nbeam springs\n" + I(3, 0) + "\n/PROP/TYPE13/3\nbeam\n" + R(0.3, 0.005) + I(0, 0, 0, 0, 0, 0)
               + "\n" + law(800, 0.5) + law(300, 0.2) + law(300, 0.2) + law(5, 0.01) + law(10, 0.01) + law(10, 0.01)
               + R(1, 1, 0) + I(0) + "\n" + "".join(R(0, 0, 1, 2) + "\n" for _ in range(6)))
+        # and soft elasto-plastic trusses between every other node, beside the axial springs
+        s += "/TRUSS/4\n" + "".join(I(30 + i, i + 1, i + 3) + "\n" for i in range(3))
+        s += "/PART/4\ntrusses\n" + I(4, 1) + "\n/PROP/TRUSS/4\ntruss\n" + R(1e-4, 0) + "\n"
+        s += ("/MAT/LAW2/1\nsoft\n" + R(5000) + "\n" + R(1e6, 0.3) + "\n" + R(2e4, 1e5, 1, 0, 0) + "\n" + R(0, 0)
+              + I(0, 0) + R(0, 0) + "\n")
     s += funct(1, CURVE) + funct(3, ((-1, -0.5), (0, 0), (1, 0.5))) + funct(4, MOMENT) + funct(5, STIFFENING)
     s += funct(6, ((0, 0.1), (0.5, 0.1), (0.5001, -0.1), (1.5, -0.1), (1.5001, 0.1), (100, 0.1)))  # out, back, out
     s += funct(7, ((0, 1), (100, 1)))
