@@ -21,8 +21,9 @@ struct RawElements {
   std::vector<std::int64_t> node_ids;  // nodes_per_element per element
   std::vector<SourceLocation> where;
   std::vector<double> thickness;       // shells: the card's own thickness [L], 0 = the part's or property's
-  std::vector<std::int64_t> orientation_node_id;  // springs: node_ID3, a beam-type spring's orientation (0: none)
+  std::vector<std::int64_t> orientation_node_id;  // springs, beams: node_ID3, the orientation node (0: none)
   std::vector<SourceLocation> orientation_where;
+  std::vector<double> orientation_vector;  // beams: Vx Vy Vz, 3 per beam
 };
 
 // A //SUBMODEL block being read, and what it held once closed (docs/deck-format.md, "Submodels").

@@ -280,34 +280,48 @@ void check_shell_formulations(Resolver& r) {
   }
 }
 
-// A truss part's material (docs/theory/truss.md): LAW1 or LAW2, as the reference, which refuses the others on a
-// truss (its starter error 3046 for LAW36, measured); LAW2's strain-rate terms do nothing on a truss there
-// (measured: c 0.05 gives the runs of c 0), and Crumple's truss hardens isotropically only.
-void check_truss_materials(Resolver& r) {
+// A truss or beam part's material (docs/theory/truss.md, beam.md): LAW1 or LAW2, as the reference, which refuses
+// the others on them (its starter errors 3046 and 3047 for LAW36, measured); LAW2's strain-rate terms do nothing on
+// a truss there (measured: c 0.05 gives the runs of c 0); Crumple's trusses and beams harden isotropically only, and
+// its beams have neither rate effects nor failure.
+void check_line_element_materials(Resolver& r) {
   const Model& m = r.model;
   for (const Part& part : m.parts) {
     if (part.property < 0 || part.material < 0) continue;
-    if (m.properties[static_cast<std::size_t>(part.property)].kind != PropertyKind::Truss) continue;
+    const PropertyKind kind = m.properties[static_cast<std::size_t>(part.property)].kind;
+    if (kind != PropertyKind::Truss && kind != PropertyKind::Beam) continue;
+    const bool truss = kind == PropertyKind::Truss;
+    const std::string_view what = truss ? "trusses" : "beams";
     const Material& mat = m.materials[static_cast<std::size_t>(part.material)];
     const std::string keyword = fmt::format("/PART/{}", part.user_id);
     if (mat.law != MaterialLaw::Elastic && mat.law != MaterialLaw::JohnsonCook) {
       r.error(part.where, keyword, "mat_ID",
-              fmt::format("a LAW1 or LAW2 material for a truss (the reference refuses LAW{} on trusses)",
+              fmt::format("a LAW1 or LAW2 material for {} (the reference refuses LAW{} on them)", what,
                           static_cast<int>(mat.law)),
               std::to_string(mat.user_id));
       continue;
     }
     if (mat.law != MaterialLaw::JohnsonCook) continue;
     const JohnsonCookParameters& jc = mat.johnson_cook;
+    const std::string law_keyword = fmt::format("/MAT/LAW2/{}", mat.user_id);
     if (jc.chard != 0.0)
-      r.error(mat.where, fmt::format("/MAT/LAW2/{}", mat.user_id), "Chard",
-              fmt::format("0 for the trusses of part {}: kinematic hardening of a truss is not supported by Crumple",
+      r.error(mat.where, law_keyword, "Chard",
+              fmt::format("0 for the {} of part {}: their kinematic hardening is not supported by Crumple", what,
                           part.user_id),
               fmt::format("'{}'", jc.chard));
-    if (jc.c != 0.0)
-      r.context.warn(mat.where, fmt::format("/MAT/LAW2/{}", mat.user_id),
+    if (jc.c != 0.0 && truss)
+      r.context.warn(mat.where, law_keyword,
                      fmt::format("c (strain rate) does nothing on the trusses of part {}, as in the reference",
                                  part.user_id));
+    if (jc.c != 0.0 && !truss)
+      r.error(mat.where, law_keyword, "c",
+              fmt::format("0 for the beams of part {}: a beam's strain-rate effect is not supported by Crumple",
+                          part.user_id),
+              fmt::format("'{}'", jc.c));
+    if (!truss && jc.eps_p_max > 0.0 && jc.eps_p_max < 1e20)
+      r.error(mat.where, law_keyword, "EPS_max",
+              fmt::format("0 for the beams of part {}: a beam's failure is not supported by Crumple", part.user_id),
+              fmt::format("'{}'", jc.eps_p_max));
   }
 }
 
@@ -391,7 +405,7 @@ void resolve_definitions(Resolver& r) {
   m.formulations.clear();
   for (const Property& p : m.properties) m.formulations.push_back(formulation_of(r, p));
   check_shell_formulations(r);
-  check_truss_materials(r);
+  check_line_element_materials(r);
   for (Property& p : m.properties)
     if (p.kind == PropertyKind::Spring)
       for (int d = 0; d < p.spring.dofs(); ++d) resolve_spring_functions(r, p, d);

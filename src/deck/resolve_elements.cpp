@@ -13,15 +13,15 @@
 namespace crumple::deck {
 namespace {
 
-// A spring's node_ID3: a beam-type spring's orientation node (docs/theory/spring.md, SP-15); the other spring types
-// take none.
-std::int32_t orientation_node(Resolver& r, const RawElements& raw, std::size_t e, std::int32_t part) {
+// node_ID3: a beam's orientation node (docs/theory/beam.md, BM-0) or a beam-type spring's (docs/theory/spring.md,
+// SP-15); the other spring types take none.
+std::int32_t orientation_node(Resolver& r, ElementKind kind, const RawElements& raw, std::size_t e, std::int32_t part) {
   const std::int64_t id = raw.orientation_node_id[e];
   if (id == 0) return -1;
   const Model& m = r.model;
-  const std::string keyword = fmt::format("/SPRING/{}", raw.part_id[e]);
+  const std::string keyword = fmt::format("{}/{}", describe(kind).card, raw.part_id[e]);
   const std::int32_t property = m.parts[static_cast<std::size_t>(part)].property;
-  if (m.properties[static_cast<std::size_t>(property)].spring.frame != SpringFrame::Beam) {
+  if (kind == ElementKind::Spring && m.properties[static_cast<std::size_t>(property)].spring.frame != SpringFrame::Beam) {
     r.context.unsupported(DeckError(raw.orientation_where[e], keyword, "node_ID3",
                                     "blank (a third node orients /PROP/TYPE13 springs only; on another type it is not "
                                     "supported by Crumple)",
@@ -163,6 +163,7 @@ void resolve_kind(Resolver& r, ElementKind kind) {
   const bool oriented = std::any_of(raw.orientation_node_id.begin(), raw.orientation_node_id.end(),
                                     [](std::int64_t id) { return id != 0; });
   table.orientation_node.assign(oriented ? count : 0, -1);
+  table.orientation_vector.assign(raw.orientation_vector.empty() ? 0 : 3 * count, 0.0);
   IdMap& index = m.index.elements[static_cast<int>(kind)];
   index.reserve(count);
   for (std::size_t i = 0; i < count; ++i) {
@@ -170,7 +171,8 @@ void resolve_kind(Resolver& r, ElementKind kind) {
     table.user_id[i] = raw.user_id[e];
     table.part[i] = part[e];
     if (own_thickness) table.thickness[i] = raw.thickness[e];
-    if (oriented) table.orientation_node[i] = orientation_node(r, raw, e, part[e]);
+    if (oriented) table.orientation_node[i] = orientation_node(r, kind, raw, e, part[e]);
+    if (!raw.orientation_vector.empty()) std::copy_n(&raw.orientation_vector[3 * e], 3, &table.orientation_vector[3 * i]);
     std::copy_n(&connectivity[e * static_cast<std::size_t>(n)], n, &table.connectivity[i * static_cast<std::size_t>(n)]);
     index.emplace(raw.user_id[e], static_cast<std::int32_t>(i));
   }

@@ -36,6 +36,7 @@ const IdMap* history_map(const Model::Index& ix, HistoryObject object, std::stri
     case HistoryObject::Brick: what = "brick"; return &ix.elements[static_cast<int>(ElementKind::Brick8)];
     case HistoryObject::Spring: what = "spring"; return &ix.elements[static_cast<int>(ElementKind::Spring)];
     case HistoryObject::Truss: what = "truss"; return &ix.elements[static_cast<int>(ElementKind::Truss)];
+    case HistoryObject::Beam: what = "beam"; return &ix.elements[static_cast<int>(ElementKind::Beam)];
     case HistoryObject::Subset: what = "subset"; return &ix.subsets;
     case HistoryObject::Section: what = "section"; return &ix.sections;
     case HistoryObject::RigidBody: what = "rigid body"; return &ix.rigid_bodies;

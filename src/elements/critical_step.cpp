@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "crumple/core/geometry.hpp"
+#include "crumple/elements/beam.hpp"
 #include "crumple/elements/spring.hpp"
 #include "crumple/elements/truss.hpp"
 
@@ -58,6 +59,9 @@ double initial_element_time_step(const Model& model, ElementKind kind, std::size
     case ElementKind::Truss:
       return truss_critical_step(truss_parameters(material(), property.truss, model.functions),
                                  norm(x.position(n[1]) - x.position(n[0])));
+    case ElementKind::Beam:
+      return beam_critical_step(beam_parameters(material(), property.beam, model.functions),
+                                norm(x.position(n[1]) - x.position(n[0])));
   }
   return 0.0;
 }
@@ -68,6 +72,7 @@ NodalStiffnessFactor nodal_stiffness_factor(ElementKind kind, int ishell, double
     case ElementKind::Brick8: return {0.25, 0.25};             // 2 (m_e / 8) / dt_e^2
     case ElementKind::Spring: return {1.0, 1.0};               // K at each node: M / dt_e^2 (eq. SP-4a)
     case ElementKind::Truss: return {1.0, 1.0};                // E A / L at each node (eq. TR-6)
+    case ElementKind::Beam: return {1.0, 1.0};                 // E A / L at each node, as a truss (BM-8)
     case ElementKind::Shell3: return {0.6561 * plate, plate};  // 0.6561 V A11 / L^2; V A11 / L^2
     case ElementKind::Shell4:
       if (ishell == 24) return {0.5 * plate, 0.5 * plate};               // (1/2) V A11 / L^2, QEPH

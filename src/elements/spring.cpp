@@ -2,6 +2,8 @@
 // SP-8, SP-11), and /PROP/TYPE8, six in the global axes (SP-9, SP-10).
 #include "crumple/elements/spring.hpp"
 
+#include "crumple/core/geometry.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -54,12 +56,6 @@ SpringStepStiffness spring_step_stiffness(const SpringGroupParameters& p, double
     k.rotation_damping += std::max(p.dof[1].damping, p.dof[2].damping) * arm;
   }
   return k;
-}
-
-Vec3 beam_rest_frame_y(const Vec3& along, const Vec3& reference) {
-  Vec3 y = reference - scaled(along, dot(along, reference));
-  if (norm(y) < 1e-6) y = Vec3{1.0, 0.0, 0.0} - scaled(along, along.x);
-  return scaled(y, 1.0 / norm(y));
 }
 
 double spring_nodal_step(const SpringState& st, const std::int32_t* n, std::size_t e, const SpringStepStiffness* now) {
@@ -404,7 +400,7 @@ GroupStepResult beam_spring_forces(const ElementTable& table, const ElementGroup
     }
     double* y0 = &state.frame_y[3 * ue];
     if (at_rest_coincident && length > 0.0 && y0[0] == 0.0 && y0[1] == 0.0 && y0[2] == 0.0) {
-      const Vec3 y = beam_rest_frame_y(scaled(axis, 1.0 / length), {0.0, 1.0, 0.0});
+      const Vec3 y = geometry::rest_frame_y(scaled(axis, 1.0 / length), {0.0, 1.0, 0.0});
       y0[0] = y.x, y0[1] = y.y, y0[2] = y.z;
     }
     const BeamKinematics k = !(length > 0.0) ? coincident_beam_kinematics(nodes, state, ue, n, dt)

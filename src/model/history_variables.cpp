@@ -179,13 +179,21 @@ constexpr std::array<V, 6> kTruss{{{"OFF", "-", kNone, true},  {"F", "F", kForce
 constexpr std::array<S, 4> kTrussDef{"OFF", "F", "IE", "PLAS"};
 constexpr std::array<G, 1> kTrussGroups{{{"DEF", kTrussDef}}};
 
+// ---- /TH/BEAM: the resultants in the beam's frame on the face towards node 2, the moments at mid-length
+// (docs/theory/beam.md, BM-2); DEF is all of them, as the manual.
+constexpr std::array<V, 8> kBeam{{{"OFF", "-", kNone, true},     {"F1", "F", kForce, true},  {"F2", "F", kForce, true},
+                                  {"F3", "F", kForce, true},     {"M1", "F L", kMoment, true}, {"M2", "F L", kMoment, true},
+                                  {"M3", "F L", kMoment, true},  {"IE", "E", kMoment, true}}};
+constexpr std::array<S, 8> kBeamDef{"OFF", "F1", "F2", "F3", "M1", "M2", "M3", "IE"};
+constexpr std::array<G, 1> kBeamGroups{{{"DEF", kBeamDef}}};
+
 constexpr HistoryKind kNodeKind{"NODE", kNode, kNodeGroups}, kPartKind{"PART", kPart, kPartGroups},
     kSubsetKind{"SUBS", kPart, kPartGroups}, kShellKind{"SHEL", kShell, kShellGroups},
     kSh3nKind{"SH3N", kShell, kShellGroups}, kBrickKind{"BRIC", kBrick, kBrickGroups},
     kInterfaceKind{"INTER", kInterface, kInterfaceGroups}, kWallKind{"RWALL", kWall, kWallGroups},
     kBodyKind{"RBODY", kBody, kBodyGroups}, kSectionKind{"SECTIO", kSection, kSectionGroups},
     kAccelerometerKind{"ACCEL", kAccelerometer, kAccelerometerGroups}, kSpringKind{"SPRING", kSpring, kSpringGroups},
-    kTrussKind{"TRUSS", kTruss, kTrussGroups};
+    kTrussKind{"TRUSS", kTruss, kTrussGroups}, kBeamKind{"BEAM", kBeam, kBeamGroups};
 
 const HistoryVariable* find_variable(const HistoryKind& kind, std::string_view name) {
   for (const HistoryVariable& v : kind.variables)
@@ -210,6 +218,7 @@ const HistoryKind& history_kind(HistoryObject object) {
     case HistoryObject::Accelerometer: return kAccelerometerKind;
     case HistoryObject::Spring: return kSpringKind;
     case HistoryObject::Truss: return kTrussKind;
+    case HistoryObject::Beam: return kBeamKind;
   }
   return kNodeKind;
 }

@@ -57,7 +57,8 @@ double element_measure(const Nodes& x, ElementKind kind, const std::int32_t* n) 
       return geometry::brick_volume(p);
     }
     case ElementKind::Spring:
-    case ElementKind::Truss: return norm(x.position(n[1]) - x.position(n[0]));
+    case ElementKind::Truss:
+    case ElementKind::Beam: return norm(x.position(n[1]) - x.position(n[0]));
   }
   return 0.0;
 }
@@ -69,6 +70,7 @@ double element_mass(const Model& model, ElementKind kind, std::size_t element) {
   const double density = model.materials[static_cast<std::size_t>(part.material)].density;
   const double measure = element_measure(model.nodes, kind, model.elements[static_cast<int>(kind)].nodes_of(element));
   if (property.kind == PropertyKind::Truss) return density * property.truss.area * measure;  // rho A L0, half a node
+  if (property.kind == PropertyKind::Beam) return density * property.beam.area * measure;
   if (describe(kind).property == PropertyKind::Shell) return density * shell_thickness(model, kind, element) * measure;
   return density * measure * one_point_volume_scale(model, element);
 }

@@ -345,6 +345,20 @@ void add_truss_fields(FieldSink& out, const Model& m, const SolverState& state) 
   add_status_fields(out, ElementKind::Truss, t.deleted);
 }
 
+// Beams (docs/theory/beam.md): per beam, its six resultants in its frame (N Vy Vz T My Mz, BM-2) and plastic strain.
+void add_beam_fields(FieldSink& out, const Model& m, const SolverState& state) {
+  const std::size_t n = m.elements[static_cast<std::size_t>(ElementKind::Beam)].size();
+  if (n == 0) return;
+  const BeamState& b = state.beams;
+  for (const auto* v : {&b.internal_energy, &b.mass, &b.critical_dt}) require_size(*v, n, "beam values");
+  require_size(b.resultant, kBeamResultants * n, "beam values");
+  const int k = static_cast<int>(ElementKind::Beam);
+  out.push_back(field("beam_resultants", k, kBeamResultants, b.resultant));
+  out.push_back(field("plastic_strain", k, 1, std::vector<double>(b.eps_p.begin(), b.eps_p.end())));
+  add_element_scalars(out, m.run.anim, k, n, b.internal_energy, b.mass, b.hourglass_energy, b.critical_dt);
+  add_status_fields(out, ElementKind::Beam, b.deleted);
+}
+
 }  // namespace
 
 void frame_fields(const Model& model, const SolverState& state, FieldSink& out) {
@@ -354,6 +368,7 @@ void frame_fields(const Model& model, const SolverState& state, FieldSink& out) 
   add_brick_fields(out, model, state);
   add_spring_fields(out, model, state);
   add_truss_fields(out, model, state);
+  add_beam_fields(out, model, state);
 }
 
 std::vector<FrameField> frame_fields(const Model& model, const SolverState& state) {

@@ -111,6 +111,19 @@ constexpr Evaluator<TR> kTruss[] = {{"OFF", scalar<TR, &TR::off>}, {"F", scalar<
                                     {"IE", scalar<TR, &TR::ie>},   {"A", scalar<TR, &TR::area>},
                                     {"L", scalar<TR, &TR::length0>}, {"PLAS", scalar<TR, &TR::plastic_strain>}};
 
+struct BeamValues {
+  std::array<double, kBeamResultants> r;  // N Vy Vz T My Mz: F1 F2 F3 M1 M2 M3
+  double off, ie;
+};
+using BM = BeamValues;
+template <int C>
+double beam_resultant(const BM& b) {
+  return b.r[C];
+}
+constexpr Evaluator<BM> kBeam[] = {{"OFF", scalar<BM, &BM::off>}, {"F1", beam_resultant<0>}, {"F2", beam_resultant<1>},
+                                   {"F3", beam_resultant<2>},      {"M1", beam_resultant<3>}, {"M2", beam_resultant<4>},
+                                   {"M3", beam_resultant<5>},      {"IE", scalar<BM, &BM::ie>}};
+
 struct ForceValues {  // interfaces and rigid walls: normal and tangential force, interface energies
   Vec3 fn, ft;
   double elastic = 0.0, friction = 0.0, damping = 0.0;
@@ -179,6 +192,7 @@ int evaluator_of(HistoryObject object, std::string_view name) {
     case HistoryObject::Brick: return find(kBrick, name);
     case HistoryObject::Spring: return find(kSpring, name);
     case HistoryObject::Truss: return find(kTruss, name);
+    case HistoryObject::Beam: return find(kBeam, name);
     case HistoryObject::Interface:
     case HistoryObject::RigidWall: return find(kForces, name);
     case HistoryObject::RigidBody: return find(kBody, name);
@@ -329,6 +343,17 @@ TrussValues truss_values(const SolverState& s, std::size_t g, std::int32_t e) {
   const bool on = element_condition(t.deleted[ue]) != kElementDeleted &&
                   truss_acts(s.truss_groups[g], t.length0[ue], t.length[ue]);
   return {on ? t.off[ue] : 0.0, t.force[ue], t.internal_energy[ue], t.area[ue], t.length0[ue], static_cast<double>(t.eps_p[ue])};
+}
+
+// F1 F2 F3 M1 M2 M3: the resultants in the beam's frame (docs/theory/beam.md, BM-2).
+BeamValues beam_values(const SolverState& s, std::int32_t e) {
+  const BeamState& b = s.beams;
+  const auto ue = static_cast<std::size_t>(e);
+  BeamValues out{};
+  std::copy_n(&b.resultant[kBeamResultants * ue], kBeamResultants, out.r.begin());
+  out.off = element_condition(b.deleted[ue]) == kElementDeleted ? 0.0 : 1.0;
+  out.ie = b.internal_energy[ue];
+  return out;
 }
 
 // ---- Walls, interfaces, bodies.
@@ -638,6 +663,7 @@ void HistoryChannels::evaluate(const Request& r, const SolverState& s, const Vel
         append(kTruss, truss_values(s, g, object), r.getters, row);
         break;
       }
+      case HistoryObject::Beam: append(kBeam, beam_values(s, object), r.getters, row); break;
       case HistoryObject::Interface: {
         const std::size_t contacts = m.type7_interfaces.size();
         const ForceValues values = o < contacts ? interface_values(s.contact.results[o])

@@ -21,18 +21,19 @@ using hdf5::Handle;
 using hdf5::H5Types;
 
 // 2: marks/deleted_inverted and marks/step_drop_warned; 3: shells' hardening_term; 4: springs and /DAMP's alpha;
-// 6: trusses
+// 6: trusses and beams
 constexpr int kRestartFormat = 6;
 
 // The counts a snapshot's arrays are sized by; a restart file is read only by a model with the same counts.
-std::array<long long, 8> model_counts(const Model& m, const SolverState& s) {
-  return {static_cast<long long>(m.nodes.size()), static_cast<long long>(m.elements[0].size()),
+std::array<long long, 9> model_counts(const Model& m, const SolverState& s) {
+  return {static_cast<long long>(m.nodes.size()),       static_cast<long long>(m.elements[0].size()),
           static_cast<long long>(m.elements[1].size()), static_cast<long long>(m.elements[2].size()),
           static_cast<long long>(m.elements[3].size()), static_cast<long long>(m.elements[4].size()),
-          static_cast<long long>(s.bodies.size()), static_cast<long long>(s.contact.interfaces.size())};
+          static_cast<long long>(m.elements[5].size()), static_cast<long long>(s.bodies.size()),
+          static_cast<long long>(s.contact.interfaces.size())};
 }
-constexpr std::array<const char*, 8> kCountNames{"nodes",   "shells4", "shells3",      "bricks",
-                                                 "springs", "trusses", "rigid_bodies", "interfaces"};
+constexpr std::array<const char*, 9> kCountNames{"nodes",   "shells4", "shells3", "bricks",    "springs",
+                                                 "trusses", "beams",   "rigid_bodies", "interfaces"};
 
 template <class T>
 using Stored = std::conditional_t<std::is_same_v<T, bool>, std::uint8_t, T>;

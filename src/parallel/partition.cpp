@@ -42,6 +42,8 @@ constexpr int kBrickAssumedShear = 481;   // Isolid 14, 18
 constexpr int kSpring = 2;
 // Trusses (/PROP/TYPE2): a spring's arithmetic and a one-dimensional return, estimated as a spring's.
 constexpr int kTruss = 2;
+// Beams (/PROP/TYPE3): a frame, six resultants and a yield check, about three springs' arithmetic (estimated).
+constexpr int kBeam = 6;
 // An element a rigid body carries is not computed (docs/theory/rigid-bodies.md); it stays in the contact surfaces
 // and its nodes are moved by the body, a small cost.
 constexpr int kRigidElement = 1;
@@ -66,6 +68,7 @@ int computed_element_weight(const Model& model, ElementKind kind, std::size_t el
                                                 : kBrickEightPoints;
     case ElementKind::Spring: return kSpring;
     case ElementKind::Truss: return kTruss;
+    case ElementKind::Beam: return kBeam;
   }
   return kBrickAssumedShear;
 }

@@ -26,6 +26,7 @@ GroupStepResult group_forces(const Model& m, SolverState& s, std::size_t g) {
     case ElementKind::Brick8: return brick8_forces(table, group, s.brick_groups[g], s.nodes, s.bricks, s.dt);
     case ElementKind::Spring: return spring_forces(table, group, s.spring_groups[g], s.nodes, s.springs, s.dt);
     case ElementKind::Truss: return truss_forces(table, group, s.truss_groups[g], s.nodes, s.trusses, s.dt);
+    case ElementKind::Beam: return beam_forces(table, group, s.beam_groups[g], s.nodes, s.beams, s.dt);
   }
   return {};
 }

@@ -129,7 +129,7 @@ ElementStateNeed history_needs(const Model& m) {
   ElementStateNeed need = ElementStateNeed::None;
   for (const TimeHistoryRequest& th : m.histories) {
     const HistoryObject o = th.object;
-    if (o == HistoryObject::Shell || o == HistoryObject::Sh3n || o == HistoryObject::Brick || o == HistoryObject::Spring || o == HistoryObject::Truss ||
+    if (o == HistoryObject::Shell || o == HistoryObject::Sh3n || o == HistoryObject::Brick || o == HistoryObject::Spring || o == HistoryObject::Truss || o == HistoryObject::Beam ||
         o == HistoryObject::Section)
       return ElementStateNeed::All;
     if (o == HistoryObject::Part || o == HistoryObject::Subset) need = ElementStateNeed::Energies;
@@ -163,6 +163,8 @@ void share_element_state(SolverState& s, Exchange& exchange, ElementStateNeed ne
   share_kind_state(exchange, s.springs, springs, owner[3], points[3], std::initializer_list<std::string_view>{});
   auto trusses = [](auto& v, const std::string& at, TrussState& st) { snapshot_detail::visit_trusses(v, at, st); };
   share_kind_state(exchange, s.trusses, trusses, owner[4], points[4], std::initializer_list<std::string_view>{});
+  auto beams = [](auto& v, const std::string& at, BeamState& st) { snapshot_detail::visit_beams(v, at, st); };
+  share_kind_state(exchange, s.beams, beams, owner[5], points[5], std::initializer_list<std::string_view>{});
 }
 
 namespace {

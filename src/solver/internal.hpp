@@ -40,6 +40,8 @@ void update_skew_axes(const Model& model, SolverState& state);
 void setup_bricks(const Model& model, SolverState& state);
 // Spring groups' parameters and state (setup_springs.cpp, docs/theory/spring.md).
 void setup_springs(const Model& model, SolverState& state);
+// Beam groups' parameters and state, and their nodes' rotational inertia (setup_beams.cpp, docs/theory/beam.md).
+void setup_beams(const Model& model, SolverState& state);
 // Truss groups' parameters and state (setup_trusses.cpp, docs/theory/truss.md).
 void setup_trusses(const Model& model, SolverState& state);
 // The springs' steps again from the masses SpringState::node_held holds (after a tie changed a node's, TI-12).

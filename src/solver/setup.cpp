@@ -237,6 +237,7 @@ SolverState make_state(const Model& m, std::vector<std::string>& notes, Domain d
   setup_shells(m, s, ElementKind::Shell4);
   setup_shells(m, s, ElementKind::Shell3);
   setup_bricks(m, s);
+  setup_beams(m, s);  // before the springs, whose steps take their nodes' inertia (SP-19)
   setup_springs(m, s);
   setup_trusses(m, s);
   for (const RayleighDamping& d : m.dampings) s.damping.alpha.push_back(d.alpha), s.damping.beta.push_back(d.beta);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "crumple/core/geometry.hpp"
 #include "crumple/core/vec3.hpp"
 #include "crumple/elements/spring.hpp"
 #include "crumple/model/mass.hpp"
@@ -74,7 +75,7 @@ void setup_springs(const Model& m, SolverState& s) {
       const Vec3 offset = m.nodes.position(n[1]) - m.nodes.position(n[0]);
       st.rest_offset[3 * ue] = offset.x, st.rest_offset[3 * ue + 1] = offset.y, st.rest_offset[3 * ue + 2] = offset.z;
       if (p.frame == SpringFrame::Beam && st.length0[ue] > 0.0) {  // SP-15: its Y at rest
-        const Vec3 y = beam_rest_frame_y(scaled(offset, 1.0 / st.length0[ue]), reference_y(m, group, ue));
+        const Vec3 y = geometry::rest_frame_y(scaled(offset, 1.0 / st.length0[ue]), reference_y(m, group, ue));
         st.frame_y[3 * ue] = y.x, st.frame_y[3 * ue + 1] = y.y, st.frame_y[3 * ue + 2] = y.z;
       }
       st.mass[ue] = element_mass(m, ElementKind::Spring, ue);

@@ -12,8 +12,8 @@
 namespace crumple::solver {
 namespace {
 
-// The element's current volume: a shell's current area times its current thickness, a truss's its cross-section
-// times its length, a brick's exact volume.
+// The element's current volume: a shell's current area times its current thickness, a truss's or a beam's its
+// cross-section times its length, a brick's exact volume.
 template <class State>
 double current_volume(ElementKind kind, const State& st, std::size_t e, const std::int32_t* c, const NodalState& x) {
   if constexpr (requires { st.area; }) {
@@ -80,6 +80,7 @@ void element_interface_stiffness(const Model& m, SolverState& s) {
   element_stiffness(m, ElementKind::Brick8, s.bricks, s);
   element_stiffness(m, ElementKind::Spring, s.springs, s);
   element_stiffness(m, ElementKind::Truss, s.trusses, s);
+  element_stiffness(m, ElementKind::Beam, s.beams, s);
 }
 
 void nodal_interface_stiffness(const Model& m, SolverState& s) {

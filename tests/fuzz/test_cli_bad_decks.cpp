@@ -105,8 +105,8 @@ TEST(CliBadDecks, SkipUnknownListsTheSkippedOptionsInTheSummaryAndTheListing) {
   TempDir dir;
   dir.write("TEST_0001.rad", "/RUN/TEST/1\n2e-6\n/TFILE\n1e-6\n");
   const std::string skipped = "/MAT/LAW44/3\ncowper\n" + R(7800.0) + "\n";
-  const std::string beams = "/TH/BEAM/1\nbeams\nDEF\n" + I(1) + "\n";  // an output card Crumple does not write
-  const fs::path starter = dir.write("TEST_0000.rad", begin_card() + plate_cards() + skipped + beams + "/END\n");
+  const std::string quads = "/TH/QUAD/1\nquads\nDEF\n" + I(1) + "\n";  // an output card Crumple does not write
+  const fs::path starter = dir.write("TEST_0000.rad", begin_card() + plate_cards() + skipped + quads + "/END\n");
   EXPECT_EQ(crumple_run(starter, dir.path(), ""), 2) << read_text(dir.path() / "stderr.txt");
   ASSERT_EQ(crumple_run(starter, dir.path(), "--skip-unknown"), 0) << read_text(dir.path() / "stderr.txt");
   const std::string err = read_text(dir.path() / "stderr.txt");
@@ -123,13 +123,13 @@ TEST(CliBadDecks, SkipUnknownListsTheSkippedOptionsInTheSummaryAndTheListing) {
             std::string::npos)
       << list;
   EXPECT_NE(list.find("[output-only] "), std::string::npos) << list;
-  EXPECT_NE(list.find("/TH/BEAM/1: output-only card (/TH/BEAM): not written by Crumple"), std::string::npos) << list;
+  EXPECT_NE(list.find("/TH/QUAD/1: output-only card (/TH/QUAD): not written by Crumple"), std::string::npos) << list;
   // The listing carries the same list in its header.
   const std::string listing = read_text(dir.path() / "out" / "TEST.out");
   const auto header = listing.find("OPTIONS SKIPPED OR APPROXIMATED:");
   ASSERT_NE(header, std::string::npos) << listing;
   EXPECT_NE(listing.find("/MAT/LAW44/3: keyword skipped (--skip-unknown)", header), std::string::npos) << listing;
-  EXPECT_NE(listing.find("/TH/BEAM/1: output-only card", header), std::string::npos) << listing;
+  EXPECT_NE(listing.find("/TH/QUAD/1: output-only card", header), std::string::npos) << listing;
 }
 
 }  // namespace

@@ -90,15 +90,15 @@ TEST(KeywordCatalog, UnknownKeywordNamesTheNearestKnownOne) {
 
 // Class 2: output-only cards are warnings naming the card, listed as skipped output.
 TEST(KeywordCatalog, OutputOnlyCardsAreNamedWarnings) {
-  const std::string beams = "/TH/BEAM/1\nbeams\nDEF\n" + I(1) + "\n";
-  const Deck d = read(beams, test::engine_cards() + "/ANIM/TENS/STRAIN/MEMB\n/ANIM/GPS1\n/H3D/ELEM/VONM\n");
+  const std::string quads = "/TH/QUAD/1\nquads\nDEF\n" + I(1) + "\n";
+  const Deck d = read(quads, test::engine_cards() + "/ANIM/TENS/STRAIN/MEMB\n/ANIM/GPS1\n/H3D/ELEM/VONM\n");
   const auto output = skipped_of_kind(d, SkipKind::OutputOnly);
   std::vector<std::string> keywords;
   for (const auto& o : output) keywords.push_back(o.keyword);
-  for (const std::string k : {"/TH/BEAM/1", "/ANIM/TENS/STRAIN/MEMB", "/ANIM/GPS1", "/H3D/ELEM/VONM"})
+  for (const std::string k : {"/TH/QUAD/1", "/ANIM/TENS/STRAIN/MEMB", "/ANIM/GPS1", "/H3D/ELEM/VONM"})
     EXPECT_NE(std::find(keywords.begin(), keywords.end(), k), keywords.end()) << k;
   bool warned = false;
-  for (const auto& w : d.report.warnings) warned |= contains(w.text(), "/TH/BEAM/1: output-only card");
+  for (const auto& w : d.report.warnings) warned |= contains(w.text(), "/TH/QUAD/1: output-only card");
   EXPECT_TRUE(warned);
 }
 

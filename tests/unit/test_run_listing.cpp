@@ -123,7 +123,7 @@ TEST(RunListing, HeaderNamesTheVersionDeckUnitsAndModel) {
   EXPECT_TRUE(std::regex_search(l, std::regex(R"(\nSTARTED \d{4}-\d\d-\d\d \d\d:\d\d:\d\d\n)"))) << l;
   EXPECT_NE(l.find("\nDECK " + (dir.path() / "TEST_0000.rad").string() + "\n"), std::string::npos) << l;
   EXPECT_NE(l.find("\nWORKING UNITS (SI size of one unit): mass 1 kg  length 1 m  time 1 s\n"), std::string::npos) << l;
-  EXPECT_NE(l.find("\nnodes 6  4-node shells 2  3-node shells 0  8-node bricks 0  springs 0  trusses 0  "
+  EXPECT_NE(l.find("\nnodes 6  4-node shells 2  3-node shells 0  8-node bricks 0  springs 0  trusses 0  beams 0  "
                    "element groups 1  parts 1  interfaces 0  rigid bodies 0  rigid walls 0\n"),
             std::string::npos)
       << l;

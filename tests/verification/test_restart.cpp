@@ -9,7 +9,8 @@
 // carry over and whose loads the first cycle after the restart records again (section_strip), springs under
 // the mass damping of an engine /DAMP (damping_springs), general springs beside axial ones and trusses
 // (springs_mixed_damped), beam-type springs (beam_spring_cantilever), a spot weld tied to two plates
-// (tied_spot_weld), and trusses letting go over their last cycles (truss_tower_fails).
+// (tied_spot_weld), trusses letting go over their last cycles (truss_tower_fails) and a frame of beams past yield
+// (beam_frame_plastic).
 #include <gtest/gtest.h>
 #include <hdf5.h>
 
@@ -167,7 +168,9 @@ INSTANTIATE_TEST_SUITE_P(
                       // tied interfaces: the rigid-segment ties' added mass and the tied nodes' velocities
                       RestartCase{"tied_spot_weld", kPeerDecks / "tied_spot_weld_spotflag1" / "TIEDSW1_0000.rad", 700},
                       // trusses: plastic strain, area, and the members that are letting go (TR-7)
-                      RestartCase{"truss_tower_fails", kPeerDecks / "truss_tower_fails" / "TOWERF_0000.rad", 105}),
+                      RestartCase{"truss_tower_fails", kPeerDecks / "truss_tower_fails" / "TOWERF_0000.rad", 105},
+                      // beams past yield: their frames, resultants and plastic strains
+                      RestartCase{"beam_frame_plastic", kPeerDecks / "beam_frame_plastic" / "BFRAME_0000.rad", 150}),
     [](const auto& p) { return std::string(p.param.name); });
 
 TEST(Restart, FileOfAnotherModelIsRefusedWithItsCounts) {

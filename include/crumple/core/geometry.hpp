@@ -13,6 +13,14 @@ namespace crumple::geometry {
 
 
 // Area of a quadrilateral from its diagonals: A = |d13 x d24| / 2 (exact for a flat quad).
+// A line element's local y at rest (a beam's, BM-0; a beam-type spring's, SP-15): `reference` made normal to the
+// element's unit direction `along`, and unit; global X made normal to it where the two are parallel.
+inline Vec3 rest_frame_y(const Vec3& along, const Vec3& reference) {
+  Vec3 y = reference - scaled(along, dot(along, reference));
+  if (norm(y) < 1e-6) y = Vec3{1.0, 0.0, 0.0} - scaled(along, along.x);
+  return scaled(y, 1.0 / norm(y));
+}
+
 inline double quad_area(const Vec3& p1, const Vec3& p2, const Vec3& p3, const Vec3& p4) {
   return 0.5 * norm(cross(p3 - p1, p4 - p2));
 }

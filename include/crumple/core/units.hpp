@@ -16,6 +16,7 @@ inline constexpr Dimension mass{1, 0, 0};
 inline constexpr Dimension length{0, 1, 0};
 inline constexpr Dimension time{0, 0, 1};
 inline constexpr Dimension area{0, 2, 0};
+inline constexpr Dimension area_moment{0, 4, 0};  // second moment of area
 inline constexpr Dimension velocity{0, 1, -1};
 inline constexpr Dimension acceleration{0, 1, -2};
 inline constexpr Dimension rate{0, 0, -1};            // strain rate, frequency

@@ -66,10 +66,6 @@ struct SpringStepStiffness {
 };
 SpringStepStiffness spring_step_stiffness(const SpringGroupParameters& p, double length);
 
-// SP-15: a beam-type spring's Y at rest, `reference` (global Y, or its property's skew's Y) made normal to the
-// spring's direction `along` (global X where they are parallel).
-Vec3 beam_rest_frame_y(const Vec3& along, const Vec3& reference);
-
 // SP-19: spring `e`'s step, the smaller of its nodes' (each node's whole mass and inertia held by the sums
 // SpringState::node_held of every spring on it); `now`, when given, replaces the spring's own share at rest.
 double spring_nodal_step(const SpringState& st, const std::int32_t* n, std::size_t e,

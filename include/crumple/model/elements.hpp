@@ -12,11 +12,11 @@
 
 namespace crumple {
 
-enum class ElementKind : std::uint8_t { Shell4, Shell3, Brick8, Spring, Truss };
-inline constexpr int kElementKinds = 5;
+enum class ElementKind : std::uint8_t { Shell4, Shell3, Brick8, Spring, Truss, Beam };
+inline constexpr int kElementKinds = 6;
 inline constexpr ElementKind kAllElementKinds[kElementKinds] = {ElementKind::Shell4, ElementKind::Shell3,
                                                                 ElementKind::Brick8, ElementKind::Spring,
-                                                                ElementKind::Truss};
+                                                                ElementKind::Truss,  ElementKind::Beam};
 inline constexpr int kElementGroupSize = 128;
 
 // What an element kind is, as data: one row per kind in kElementKindTable, which the reader, the model, the
@@ -54,6 +54,8 @@ inline constexpr ElementKindDescription kElementKindTable[kElementKinds] = {
     {ElementKind::Truss, "TRUSS", "truss", "trusses", "/TRUSS", "TRUSS", 2, 3, PropertyKind::Truss, "length",
      "a truss of positive length", false, "/GRTRUS", "TRUS", "truss_ID", "truss2", "Polyline",
      &RunControl::dt_truss},
+    {ElementKind::Beam, "BEAM", "beam", "beams", "/BEAM", "BEAM", 2, 6, PropertyKind::Beam, "length",
+     "a beam of positive length", false, "/GRBEAM", "BEAM", "beam_ID", "beam2", "Polyline", &RunControl::dt_beam},
 };
 
 constexpr const ElementKindDescription& describe(ElementKind kind) {
@@ -68,8 +70,10 @@ struct ElementTable {
   std::vector<std::int32_t> part;          // dense part index
   std::vector<std::int32_t> connectivity;  // nodes_per_element(kind) dense node indices per element, deck order
   std::vector<double> thickness;           // shells: the element's own thickness [L] (0 = not given), else empty
-  // Springs: a beam-type spring's orientation node, its Y at rest towards it (dense index, -1: none); else empty.
+  // Springs and beams: a beam-type spring's or a beam's orientation node, its Y at rest towards it (dense index,
+  // -1: none); else empty.
   std::vector<std::int32_t> orientation_node;
+  std::vector<double> orientation_vector;  // beams: 3 per beam, the card's Vx Vy Vz (used without a node); else empty
   std::size_t size() const { return user_id.size(); }
   const std::int32_t* nodes_of(std::size_t element) const {
     return connectivity.data() + element * static_cast<std::size_t>(nodes_per_element(kind));

@@ -9,7 +9,7 @@
 namespace crumple {
 
 enum class HistoryObject : std::uint8_t {
-  Node, Part, RigidWall, Interface, Shell, Sh3n, Brick, Subset, Section, RigidBody, Accelerometer, Spring, Truss
+  Node, Part, RigidWall, Interface, Shell, Sh3n, Brick, Subset, Section, RigidBody, Accelerometer, Spring, Truss, Beam
 };
 
 // Layouts: docs/cards/loads-output-engine.md §6.1. Variables are kept as written (upper case, each once, group names

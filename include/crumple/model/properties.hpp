@@ -95,8 +95,19 @@ struct TrussSection {
   double gap = 0.0;   // Gap_ini: the truss acts only once shortened by more than this (TR-5); 0: always [L]
 };
 
-enum class PropertyKind : std::uint8_t { Shell, Solid, Spring, Truss };
-inline constexpr int kPropertyKinds = 4;
+// /PROP/TYPE3 (= /PROP/BEAM): a beam's section (docs/theory/beam.md).
+struct BeamSection {
+  int ismstr = 0;        // 0: the axial strain logarithmic and the step on the current length; 1: on L0 (BM-1, BM-8)
+  double dm = 0.0;       // membrane numerical damping as written (BM-7)
+  double df = 0.0;       // flexural numerical damping as written; 0 or blank: 0.01 (BM-7)
+  double area = 0.0;     // A [L^2] > 0
+  double iyy = 0.0, izz = 0.0, ixx = 0.0;  // second moments about local y and z, polar [L^4] > 0
+  int ishear = 0;        // 0: Timoshenko's shear (k = 5/6); 1: none, Euler-Bernoulli (BM-3)
+  double df_or_default() const { return df != 0.0 ? df : 0.01; }
+};
+
+enum class PropertyKind : std::uint8_t { Shell, Solid, Spring, Truss, Beam };
+inline constexpr int kPropertyKinds = 5;
 
 // What a property kind is, as data: its keyword's two names and whether it carries the law (a part of it needs
 // no material: mat_ID 0).
@@ -112,6 +123,7 @@ inline constexpr PropertyKindDescription kPropertyKindTable[kPropertyKinds] = {
     {PropertyKind::Solid, "SOLID", "/PROP/TYPE14", "solid", false},
     {PropertyKind::Spring, "SPRING", "/PROP/TYPE4", "spring", true},
     {PropertyKind::Truss, "TRUSS", "/PROP/TYPE2", "truss", false},
+    {PropertyKind::Beam, "BEAM", "/PROP/TYPE3", "beam", false},
 };
 constexpr const PropertyKindDescription& describe(PropertyKind kind) {
   return kPropertyKindTable[static_cast<int>(kind)];
@@ -126,6 +138,7 @@ struct Property {
   SolidSection solid;
   SpringSection spring;
   TrussSection truss;
+  BeamSection beam;
 };
 
 struct ShellDefaults {  // /DEF_SHELL

@@ -78,7 +78,7 @@ struct RunControl {
   // --accuracy draft: the step is the larger of the nodal step and the deck as written's (its elements' and its
   // contacts' steps), both stable bounds (docs/theory/time-step.md, T-3c); a deck's /DT/NODA/CST takes the nodal.
   bool nodal_step_at_least_as_written = false;
-  TimeStepControl dt_shell, dt_brick, dt_sh3n, dt_spring, dt_truss;  // /DT/<kind>: ElementKindDescription::step_control
+  TimeStepControl dt_shell, dt_brick, dt_sh3n, dt_spring, dt_truss, dt_beam;  // /DT/<kind>: ElementKindDescription::step_control
   TimeStepControl dt_inter_del, dt_inter_cst;
   SelectiveMassControl dt_ams;    // /DT/AMS
   // Steps ahead of its entry into the gap that a TYPE7 node closing in counts K0 in its step (eq. C-11). 0: from

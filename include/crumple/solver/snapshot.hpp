@@ -101,6 +101,18 @@ void visit_trusses(V& v, const std::string& at, TrussState& t) {
 }
 
 template <class V>
+void visit_beams(V& v, const std::string& at, BeamState& b) {
+  for (auto [name, field] :
+       {std::pair{"length0", &b.length0}, {"length", &b.length}, {"area", &b.area}, {"frame_y", &b.frame_y},
+        {"resultant", &b.resultant}, {"internal_energy", &b.internal_energy},
+        {"hourglass_energy", &b.hourglass_energy}, {"critical_dt", &b.critical_dt}, {"mass", &b.mass}})
+    v(at + name, *field);
+  v(at + "eps_p", b.eps_p);  // point_real, one point per beam
+  if (!b.section_work.empty()) v(at + "section_work", b.section_work);
+  v(at + "deleted", b.deleted);
+}
+
+template <class V>
 void visit_body(V& v, const std::string& at, RigidBodyState& b) {
   v(at + "rx", b.rx), v(at + "ry", b.ry), v(at + "rz", b.rz);
   v(at + "mass", b.mass);
@@ -181,6 +193,7 @@ void visit_state(V& v, SolverState& s, ResumeMarks& marks) {
   visit_bricks(v, "bricks/", s.bricks);
   visit_springs(v, "springs/", s.springs);
   visit_trusses(v, "trusses/", s.trusses);
+  visit_beams(v, "beams/", s.beams);
   v("damping/alpha", s.damping.alpha), v("damping/beta", s.damping.beta);
   if (s.damping.stiffness()) v("damping/element_force_before", s.damping.element_force_before);
   for (std::size_t k = 0; k < s.bodies.size(); ++k) visit_body(v, "bodies/" + std::to_string(k) + "/", s.bodies[k]);

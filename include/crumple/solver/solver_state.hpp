@@ -9,6 +9,7 @@
 #include "crumple/state/contact_state.hpp"
 #include "crumple/state/tied_state.hpp"
 #include "crumple/state/damping_state.hpp"
+#include "crumple/elements/beam.hpp"
 #include "crumple/elements/brick8.hpp"
 #include "crumple/elements/shell4.hpp"
 #include "crumple/elements/spring.hpp"
@@ -40,6 +41,8 @@ struct SolverState {
   std::vector<SpringGroupParameters> spring_groups;  // per element group (meaningful for spring groups only)
   TrussState trusses;                               // 2-node trusses
   std::vector<TrussGroupParameters> truss_groups;  // per element group (meaningful for truss groups only)
+  BeamState beams;                                  // 2-node beams
+  std::vector<BeamGroupParameters> beam_groups;    // per element group (meaningful for beam groups only)
   std::vector<RigidBodyState> bodies;
   TiedState ties;                                   // /INTER/TYPE2 (empty without it)
   std::vector<RigidWallState> walls;
@@ -76,6 +79,7 @@ inline ElementKindState& element_state(SolverState& s, ElementKind kind) {
     case ElementKind::Brick8: return s.bricks;
     case ElementKind::Spring: return s.springs;
     case ElementKind::Truss: return s.trusses;
+    case ElementKind::Beam: return s.beams;
   }
   return s.shells;
 }

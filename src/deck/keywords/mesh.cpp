@@ -1,4 +1,4 @@
-// /NODE, the element cards (/SHELL, /SH3N, /BRICK, /SPRING, /TRUSS) and /PART (docs/deck-format.md).
+// /NODE, the element cards (/SHELL, /SH3N, /BRICK, /SPRING, /TRUSS, /BEAM) and /PART (docs/deck-format.md).
 #include <fmt/format.h>
 
 #include "../context.hpp"
@@ -41,6 +41,15 @@ void read_spring_extras(const Line& line, int after, RawElements& raw, DeckConte
     context.unsupported(line.error(91, 10, "Skew_ID", default_only("a spring skew (/PROP/TYPE4 acts along its nodes) is")));
 }
 
+// Beams: node_ID3 (the orientation node), then Vx, Vy, Vz (columns 41-100), the orientation used without a node
+// (docs/theory/beam.md, BM-0).
+void read_beam_extras(const Line& line, int after, RawElements& raw, DeckContext&) {
+  raw.orientation_node_id.push_back(line.optional_id(after, 10, "node_ID3", IdKind::Node));
+  raw.orientation_where.push_back(line.where());
+  for (const auto& [column, name] : {std::pair{41, "Vx"}, {61, "Vy"}, {81, "Vz"}})
+    raw.orientation_vector.push_back(line.real(column, 20, name, dim::none));
+}
+
 // Each element card: its kind and what its lines hold after the nodes.
 struct ElementCard {
   ElementKind kind;
@@ -50,7 +59,8 @@ constexpr ElementCard kElementCards[] = {{ElementKind::Shell4, read_shell_extras
                                          {ElementKind::Shell3, read_shell_extras},
                                          {ElementKind::Brick8, read_no_extras},
                                          {ElementKind::Spring, read_spring_extras},
-                                         {ElementKind::Truss, read_no_extras}};
+                                         {ElementKind::Truss, read_no_extras},
+                                         {ElementKind::Beam, read_beam_extras}};
 
 // Elements: "id n1 .. nk" in 10-column fields, then the kind's extras.
 void read_elements(CardReader& reader, DeckContext& context, const ElementCard& card) {

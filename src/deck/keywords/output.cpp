@@ -127,7 +127,8 @@ IdKind object_id_kind(HistoryObject object) {
     case HistoryObject::Sh3n:
     case HistoryObject::Brick:
     case HistoryObject::Spring:
-    case HistoryObject::Truss: return IdKind::Element;
+    case HistoryObject::Truss:
+    case HistoryObject::Beam: return IdKind::Element;
     default: return IdKind::Other;
   }
 }
@@ -310,6 +311,7 @@ void register_output_keywords(KeywordTable& table) {
   table.push_back({"/TH/BRIC", DeckPart::Starter, history(H::Brick, L::IdBlankName)});
   table.push_back({"/TH/SPRING", DeckPart::Starter, history(H::Spring, L::IdBlankName)});
   table.push_back({"/TH/TRUSS", DeckPart::Starter, history(H::Truss, L::IdBlankName)});
+  table.push_back({"/TH/BEAM", DeckPart::Starter, history(H::Beam, L::IdBlankName)});
   table.push_back({"/TH/SECTIO", DeckPart::Starter, history(H::Section, L::Ids)});
   table.push_back({"/TH/RBODY", DeckPart::Starter, history(H::RigidBody, L::Ids)});
   table.push_back({"/TH/ACCEL", DeckPart::Starter, history(H::Accelerometer, L::Ids)});

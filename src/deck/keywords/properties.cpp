@@ -1,4 +1,5 @@
-// /PROP/TYPE1 (SHELL), /PROP/TYPE14 (SOLID), the springs (/PROP/TYPE4, TYPE8, TYPE13) and /PROP/TYPE2 (TRUSS). Layouts: docs/cards/starter-model.md.
+// /PROP/TYPE1 (SHELL), /PROP/TYPE14 (SOLID), the springs (/PROP/TYPE4, TYPE8, TYPE13), /PROP/TYPE2 (TRUSS) and
+// /PROP/TYPE3 (BEAM). Layouts: docs/cards/starter-model.md.
 #include <fmt/format.h>
 
 #include <utility>
@@ -435,9 +436,46 @@ void read_truss_property(CardReader& reader, DeckContext& context) {
   context.model.properties.push_back(std::move(p));
 }
 
+// /PROP/TYPE3 (/PROP/BEAM): Ismstr, the numerical dampings, the section, the rotation releases and Ishear
+// (docs/theory/beam.md).
+void read_beam_property(CardReader& reader, DeckContext& context) {
+  refuse_narrow_layout(reader);
+  Property p = begin_property(reader, PropertyKind::Beam);
+  BeamSection& b = p.beam;
+  const Line flags = reader.next("Ismstr");
+  b.ismstr = static_cast<int>(flags.integer(11, 10, "Ismstr"));
+  if (!one_of(b.ismstr, {0, 1}))
+    flags.fail(11, 10, "Ismstr", "0 (the axial strain logarithmic, the step on the current length) or 1 (on L0); "
+                                 "other values are not supported by Crumple");
+  const Line damping = reader.next("dm, df");
+  b.dm = damping.real(1, 20, "dm", dim::none), b.df = damping.real(21, 20, "df", dim::none);
+  const Line section = reader.next("Area, Iyy, Izz, Ixx");
+  b.area = section.real(1, 20, "Area", dim::area);
+  b.iyy = section.real(21, 20, "Iyy", dim::area_moment), b.izz = section.real(41, 20, "Izz", dim::area_moment);
+  b.ixx = section.real(61, 20, "Ixx", dim::area_moment);
+  for (const auto& [column, name, value] : {std::tuple{1, "Area", b.area}, {21, "Iyy", b.iyy}, {41, "Izz", b.izz},
+                                            {61, "Ixx", b.ixx}})
+    if (!(value > 0.0)) section.fail(column, 20, name, "a positive section value (the reference refuses 0)");
+  if (reader.has_data()) {
+    const Line releases = reader.next("rotation releases, Ishear");
+    const char* names[6] = {"Wx1", "Wy1", "Wz1", "Wx2", "Wy2", "Wz2"};
+    for (int k = 0; k < 6; ++k) {
+      const int column = k < 3 ? 4 + k : 8 + (k - 3);
+      if (releases.integer(column, 1, names[k]) != 0)
+        context.unsupported(releases.error(column, 1, names[k], default_only("a beam's rotation release is")));
+    }
+    b.ishear = static_cast<int>(releases.integer(11, 10, "Ishear"));
+    if (!one_of(b.ishear, {0, 1})) releases.fail(11, 10, "Ishear", "0 (Timoshenko's shear) or 1 (none)");
+  }
+  reader.finish();
+  context.model.properties.push_back(std::move(p));
+}
+
 }  // namespace
 
 void register_property_keywords(KeywordTable& table) {
+  table.push_back({"/PROP/TYPE3", DeckPart::Starter, read_beam_property});
+  table.push_back({"/PROP/BEAM", DeckPart::Starter, read_beam_property});
   table.push_back({"/PROP/TYPE2", DeckPart::Starter, read_truss_property});
   table.push_back({"/PROP/TRUSS", DeckPart::Starter, read_truss_property});
   table.push_back({"/PROP/TYPE1", DeckPart::Starter, read_shell_property});
