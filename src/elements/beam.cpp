@@ -5,6 +5,8 @@
 #include <array>
 #include <cmath>
 
+#include "crumple/elements/two_node_load.hpp"
+
 namespace crumple {
 namespace {
 
@@ -148,12 +150,7 @@ GroupStepResult beam_forces(const ElementTable& table, const ElementGroup& group
     const Vec3 couple = scaled(f.ex, load[3]) + scaled(f.ey, load[4]) + scaled(f.ez, load[5]);
     const Vec3 shear_moment = scaled(f.ey, 0.5 * length * load[2]) - scaled(f.ez, 0.5 * length * load[1]);
     const Vec3 moment_b = couple + shear_moment, moment_a = shear_moment - couple;
-    subtract_internal(nodes, a, scaled(force, -1.0), moment_a);
-    subtract_internal(nodes, b, force, moment_b);
-    if (recording) {
-      record_load(state.records.load_at(ue, 0), scaled(force, -1.0), moment_a);
-      record_load(state.records.load_at(ue, 1), force, moment_b);
-    }
+    hand_two_node_load(nodes, state.records, recording, ue, n, force, moment_a, moment_b);
     if (!std::isfinite(load[0] + load[1] + load[2] + load[3] + load[4] + load[5])) result.non_finite = e;
     close_element(state, result, e, beam_critical_step(p, p.engineering ? state.length0[ue] : length), false);
   }

@@ -3,6 +3,7 @@
 #include "crumple/elements/spring.hpp"
 
 #include "crumple/core/geometry.hpp"
+#include "crumple/elements/two_node_load.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -248,13 +249,7 @@ GroupStepResult axial_spring_forces(const ElementTable& table, const ElementGrou
     state.internal_energy[ue] += work;
     result.internal_energy += work;
 
-    const Vec3 pull = scaled(scaled(axis, 1.0 / length), force);  // internal force: -pull at node 1, +pull at node 2
-    subtract_internal(nodes, static_cast<std::size_t>(n[0]), scaled(pull, -1.0));
-    subtract_internal(nodes, static_cast<std::size_t>(n[1]), pull);
-    if (recording) {
-      record_load(state.records.load_at(ue, 0), scaled(pull, -1.0));
-      record_load(state.records.load_at(ue, 1), pull);
-    }
+    hand_two_node_force(nodes, state.records, recording, ue, n, scaled(scaled(axis, 1.0 / length), force));
     if (!std::isfinite(force)) result.non_finite = e;
     close_element(state, result, e, state.nodal_step[ue], outside(p.dof[0], elongation));
   }
@@ -311,12 +306,7 @@ GroupStepResult general_spring_forces(const ElementTable& table, const ElementGr
     bool broken = false;
     if (!six_law_step(p, state, e, delta, dt, result, f, broken)) continue;
     const Vec3 force{f[0], f[1], f[2]}, moment{f[3], f[4], f[5]};  // on node 2, internal; node 1 the opposite
-    subtract_internal(nodes, static_cast<std::size_t>(n[0]), scaled(force, -1.0), scaled(moment, -1.0));
-    subtract_internal(nodes, static_cast<std::size_t>(n[1]), force, moment);
-    if (recording) {
-      record_load(state.records.load_at(ue, 0), scaled(force, -1.0), scaled(moment, -1.0));
-      record_load(state.records.load_at(ue, 1), force, moment);
-    }
+    hand_two_node_load(nodes, state.records, recording, ue, n, force, scaled(moment, -1.0), moment);
     close_element(state, result, e, state.nodal_step[ue], broken);
   }
   return result;
@@ -390,7 +380,6 @@ GroupStepResult beam_spring_forces(const ElementTable& table, const ElementGroup
     if (recording && !(state.deleted[ue] & kElementElsewhere)) state.records.clear(ue);
     if (state.deleted[ue] & kElementElsewhere) continue;
     const std::int32_t* n = table.nodes_of(ue);
-    const auto n1 = static_cast<std::size_t>(n[0]), n2 = static_cast<std::size_t>(n[1]);
     const Vec3 axis = node_position(nodes, n[1]) - node_position(nodes, n[0]);
     const double length = norm(axis);
     const bool at_rest_coincident = state.length0[ue] == 0.0;
@@ -414,12 +403,7 @@ GroupStepResult beam_spring_forces(const ElementTable& table, const ElementGroup
     const Vec3 couple = scaled(k.axis[1], -0.5 * k.arm * f[2]) + scaled(k.axis[2], 0.5 * k.arm * f[1]);
     const Vec3 moment = scaled(k.turn[0], f[3]) + scaled(k.turn[1], f[4]) + scaled(k.turn[2], f[5]);
     const Vec3 on1 = couple + moment, on2 = couple - moment;  // internal: the opposite of what acts on the node
-    subtract_internal(nodes, n1, scaled(force, -1.0), scaled(on1, -1.0));
-    subtract_internal(nodes, n2, force, scaled(on2, -1.0));
-    if (recording) {
-      record_load(state.records.load_at(ue, 0), scaled(force, -1.0), scaled(on1, -1.0));
-      record_load(state.records.load_at(ue, 1), force, scaled(on2, -1.0));
-    }
+    hand_two_node_load(nodes, state.records, recording, ue, n, force, scaled(on1, -1.0), scaled(on2, -1.0));
     const SpringStepStiffness now = spring_step_stiffness(p, k.arm);  // SP-18 at the current length
     close_element(state, result, e, spring_nodal_step(state, n, ue, &now), broken);
   }

@@ -1,6 +1,8 @@
 // Trusses (docs/theory/truss.md, eq. TR-1 to TR-6).
 #include "crumple/elements/truss.hpp"
 
+#include "crumple/elements/two_node_load.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -71,13 +73,7 @@ GroupStepResult truss_forces(const ElementTable& table, const ElementGroup& grou
     state.internal_energy[ue] += work;
     result.internal_energy += work;
 
-    const Vec3 pull = scaled(axis, force / length);  // internal force: -pull at node 1, +pull at node 2
-    subtract_internal(nodes, static_cast<std::size_t>(n[0]), scaled(pull, -1.0));
-    subtract_internal(nodes, static_cast<std::size_t>(n[1]), pull);
-    if (recording) {
-      record_load(state.records.load_at(ue, 0), scaled(pull, -1.0));
-      record_load(state.records.load_at(ue, 1), pull);
-    }
+    hand_two_node_force(nodes, state.records, recording, ue, n, scaled(axis, force / length));
     if (!std::isfinite(force)) result.non_finite = e;
     close_element(state, result, e, truss_critical_step(p, length), gone);
   }
