@@ -31,6 +31,20 @@ std::int32_t orientation_node(Resolver& r, ElementKind kind, const RawElements& 
   return r.find(m.index.nodes, id, raw.orientation_where[e], keyword, "node_ID3", "node");
 }
 
+// A beam's vector Vx Vy Vz along the beam orients nothing: the reference warns (its warning 3090) and takes its
+// rule without one (docs/theory/beam.md, BM-0); Crumple says the same.
+void warn_parallel_orientation(Resolver& r, const RawElements& raw, std::size_t e, const std::int32_t* nodes,
+                               const std::string& keyword) {
+  const Vec3 v{raw.orientation_vector[3 * e], raw.orientation_vector[3 * e + 1], raw.orientation_vector[3 * e + 2]};
+  if (norm(v) == 0.0) return;
+  const Vec3 along = r.model.nodes.position(nodes[1]) - r.model.nodes.position(nodes[0]);
+  if (norm(cross(along, v)) > 1e-6 * norm(along) * norm(v)) return;
+  r.context.warn(raw.where[e], keyword,
+                 fmt::format("beam {}: its vector Vx, Vy, Vz lies along it and orients nothing; its third node, else "
+                             "global Y (global Z for a beam along Y), orients it, as in the reference",
+                             raw.user_id[e]));
+}
+
 // A brick may repeat nodes to write a prism, pyramid or tetrahedron, as the reference accepts: the equal node ids
 // must sit at connectivity positions joined by edges of the hexahedron (nodes merged along edges, e.g. the prism
 // 1 2 3 3 5 6 7 7 or the tetrahedron 1 2 3 3 4 4 4 4), and at least 4 nodes must stay distinct
@@ -146,6 +160,8 @@ void resolve_kind(Resolver& r, ElementKind kind) {
       else if (!std::isfinite(size))  // huge coordinates overflow: no usable size, mass or time step
         r.error(where, keyword, "node_ID1..", "node coordinates that give a finite size",
                 fmt::format("{} {} with an infinite {}", name, raw.user_id[e], description.measure));
+      else if (kind == ElementKind::Beam)
+        warn_parallel_orientation(r, raw, e, &connectivity[2 * e], keyword);
     }
   }
   if (!r.errors.empty()) return;

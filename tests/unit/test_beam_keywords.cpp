@@ -20,13 +20,14 @@ namespace {
 
 // Beam 7 of part 20 between nodes 101 and 102, 1 m apart along x, oriented by node 103; property 30, material 40.
 struct BeamDeck {
+  std::string beam_line = I(7) + I(101) + I(102) + I(103);
   std::string flags = std::string(10, ' ') + I(0), damping = R(0.0) + R(0.0);
   std::string section = R(1e-4) + R(1e-9) + R(2e-9) + R(3e-9), releases = "   000 000" + I(0);
   std::string material = "/MAT/LAW1/40\nsteel\n" + R(7800.0) + "\n" + R(2.1e11) + R(0.3) + "\n";
   std::string cards() const {
     std::string s = "/NODE\n" + I(101) + R(0.0) + R(0.0) + R(0.0) + "\n" + I(102) + R(1.0) + R(0.0) + R(0.0) + "\n" +
                     I(103) + R(0.0) + R(0.0) + R(1.0) + "\n";
-    s += "/BEAM/20\n" + I(7) + I(101) + I(102) + I(103) + "\n/PART/20\nbar\n" + I(30) + I(40) + "\n";
+    s += "/BEAM/20\n" + beam_line + "\n/PART/20\nbar\n" + I(30) + I(40) + "\n";
     return s + "/PROP/BEAM/30\nbeam\n" + flags + "\n" + damping + "\n" + section + "\n" + releases + "\n" + material;
   }
 };
@@ -106,6 +107,25 @@ TEST(BeamKeywords, OptionsCrumpleLacksAreNamed) {
                        "\n/FUNCT/50\ncurve\n" + R(0.0) + R(2e8) + "\n" + R(1.0) + R(4e8) + "\n";
   const std::string e = error_of(tabulated);
   EXPECT_TRUE(contains(e, "LAW36") && contains(e, "mat_ID")) << e;
+}
+
+// BM-0: a vector along the beam orients nothing, said in a warning (the reference's 3090); a vector across it is
+// read.
+TEST(BeamKeywords, OrientationVectorAlongTheBeamIsWarned) {
+  BeamDeck along;
+  along.beam_line = I(7) + I(101) + I(102) + I(0) + R(2.0) + R(0.0) + R(0.0);
+  test::TempDir dir;
+  const Deck d = read_deck(starter(dir, along));
+  std::string all;
+  for (const auto& w : d.report.warnings) all += w.text() + "\n";
+  EXPECT_TRUE(contains(all, "its vector Vx, Vy, Vz lies along it")) << all;
+  BeamDeck across;
+  across.beam_line = I(7) + I(101) + I(102) + I(0) + R(0.0) + R(1.0) + R(1.0);
+  test::TempDir other;
+  const Model m = read_deck(starter(other, across)).model;
+  const ElementTable& beams = m.elements[static_cast<int>(ElementKind::Beam)];
+  ASSERT_EQ(beams.orientation_vector.size(), 3u);
+  EXPECT_DOUBLE_EQ(beams.orientation_vector[2], 1.0);
 }
 
 TEST(BeamKeywords, TimeHistoryVariables) {
