@@ -65,10 +65,11 @@ GroupStepResult truss_forces(const ElementTable& table, const ElementGroup& grou
       state.stress[ue] = 0.0;
     }
     state.eps_p[ue] = static_cast<point_real>(eps_p);
-    // eq. TR-7: a failed truss lets go over a few cycles, its force times 0.8 each, gone below 0.1 (measured)
-    if (state.off[ue] < 1.0 || (failure_strain > 0.0 && eps_p >= failure_strain)) state.off[ue] *= kTrussOffDecay;
-    const bool gone = state.off[ue] < kTrussOffDeleted;
-    const double force = state.force[ue] = gone ? 0.0 : state.off[ue] * state.area[ue] * state.stress[ue];  // TR-4
+    // eq. TR-7: a failed truss lets go over a few cycles, its force times 0.8 each, deleted after the cycle its factor
+    // falls below 0.1 (measured)
+    if (state.off[ue] < 1.0 || (failure_strain > 0.0 && eps_p >= failure_strain)) state.off[ue] *= kLettingGoDecay;
+    const bool gone = state.off[ue] < kLettingGoDeleted;
+    const double force = state.force[ue] = state.off[ue] * state.area[ue] * state.stress[ue];  // eq. TR-4
     const double work = 0.5 * (force_before + force) * (length - before);
     state.internal_energy[ue] += work;
     result.internal_energy += work;

@@ -17,6 +17,11 @@ struct GroupStepResult {
   std::int32_t non_finite = -1;    // an element whose forces became NaN or infinite (-1: none)
 };
 
+// A failed truss or beam lets go over a few cycles: its factor `off` falls by the first number a cycle from the
+// cycle it fails in, and it is deleted after the cycle the factor falls below the second (docs/theory/truss.md,
+// TR-7; beam.md, BM-9; measured on both).
+inline constexpr double kLettingGoDecay = 0.8, kLettingGoDeleted = 0.1;
+
 // The end of one element's cycle in a kernel: its critical step into the state and the group's result (the
 // smallest and its element), and its deletion when it failed (every kernel closes its elements this way).
 template <class State>

@@ -23,9 +23,6 @@ struct TrussGroupParameters {
 TrussGroupParameters truss_parameters(const Material& material, const TrussSection& section,
                                       const std::vector<Function>& functions);
 
-// A failed truss's force falls by this factor a cycle and is gone below the second (eq. TR-7, measured).
-inline constexpr double kTrussOffDecay = 0.8, kTrussOffDeleted = 0.1;
-
 // Whether a truss of this rest length acts at `length`: always without a gap, else once shortened by more than
 // the gap (eq. TR-5).
 inline bool truss_acts(const TrussGroupParameters& p, double length0, double length) {

@@ -104,7 +104,7 @@ template <class V>
 void visit_beams(V& v, const std::string& at, BeamState& b) {
   for (auto [name, field] :
        {std::pair{"length0", &b.length0}, {"length", &b.length}, {"area", &b.area}, {"frame_y", &b.frame_y},
-        {"resultant", &b.resultant}, {"internal_energy", &b.internal_energy},
+        {"resultant", &b.resultant}, {"off", &b.off}, {"internal_energy", &b.internal_energy},
         {"hourglass_energy", &b.hourglass_energy}, {"critical_dt", &b.critical_dt}, {"mass", &b.mass}})
     v(at + name, *field);
   v(at + "eps_p", b.eps_p);  // point_real, one point per beam

@@ -19,12 +19,14 @@ struct BeamState : ElementKindState {  // one point per beam: eps_p[e], points 1
   // kBeamResultants per beam, in the beam's frame, on the face towards node 2, the moments at mid-length
   // (BM-2 to BM-4): N [F] positive in tension, Vy Vz [F], T My Mz [F L].
   std::vector<double> resultant;
+  std::vector<double> off;  // 1 intact; once failed, times 0.8 a cycle, the resultants with it (BM-9)
 
   void resize_elements(std::size_t n) {
     resize_common(n);
     for (auto* v : {&length0, &length, &area}) v->assign(n, 0.0);
     frame_y.assign(3 * n, 0.0);
     resultant.assign(kBeamResultants * n, 0.0);
+    off.assign(n, 1.0);
     eps_p.assign(n, point_real(0));
   }
 };
