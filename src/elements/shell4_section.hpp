@@ -65,8 +65,7 @@ inline double characteristic_length(const double (&lx)[NN], const double (&ly)[N
     if (belytschko_tsay) {
       const double d13 = (lx[2] - lx[0]) * (lx[2] - lx[0]) + (ly[2] - ly[0]) * (ly[2] - ly[0]);
       const double d24 = (lx[3] - lx[1]) * (lx[3] - lx[1]) + (ly[3] - ly[1]) * (ly[3] - ly[1]);
-      return geometry::belytschko_tsay_length(area, std::sqrt(shortest), std::sqrt(longest),
-                                              std::sqrt(std::max(d13, d24)));
+      return geometry::belytschko_tsay_length(area, std::sqrt(shortest), std::sqrt(std::max(d13, d24)));
     }
   }
   return (NN == 4 ? area : 2.0 * area) / std::sqrt(longest);

@@ -30,12 +30,22 @@ TEST(Geometry, BelytschkoTsayLengthIsTheReferences) {
   EXPECT_LT(belytschko_tsay_length(p1, p2, p3, p4), quad_characteristic_length(p1, p2, p3, p4));
 }
 
-// A rhombus at 30 degrees: its shortest side is a, but a wave crosses its height a / 2; the length is bounded by
-// the area over the longest side, which is that height.
-TEST(Geometry, BelytschkoTsayLengthOfASkewedElementIsItsHeight) {
+// A rhombus at 30 degrees: its shortest side a, as the reference takes it (its height a / 2 is not the length:
+// measured on the reference's deformed shells, the welded rail of docs/theory/time-step.md).
+TEST(Geometry, BelytschkoTsayLengthOfASkewedElementIsItsShortestSide) {
   const double a = 1.0, s = std::sin(M_PI / 6.0), c = std::cos(M_PI / 6.0);
   const Vec3 p1{0, 0, 0}, p2{a, 0, 0}, p3{a + a * c, a * s, 0}, p4{a * c, a * s, 0};
-  EXPECT_NEAR(belytschko_tsay_length(p1, p2, p3, p4), 0.5 * a, 1e-14);
+  EXPECT_NEAR(belytschko_tsay_length(p1, p2, p3, p4), a, 1e-14);
+}
+
+// SHELL 2666 of the welded rail (docs/theory/time-step.md, T-1b), folded: its corners as the reference's /TH/NODE
+// gave them at 2 ms; the reference's step there is 1.4955 mm over sqrt(E / rho) / 0.9, its A / longest diagonal
+// (the sides in its plane are shorter: 1.39 mm).
+TEST(Geometry, BelytschkoTsayLengthOfAFoldedElementIsTheReferences) {
+  const Vec3 p1{-25.26, -11.62, 1.66}, p2{-20.22, -6.39, 1.38}, p3{-20.04, -8.97, 3.81}, p4{-24.95, -7.39, 2.56};
+  const double area = 0.5 * norm(cross(p3 - p1, p4 - p2));
+  EXPECT_NEAR(belytschko_tsay_length(p1, p2, p3, p4), area / std::max(norm(p3 - p1), norm(p4 - p2)), 1e-12);
+  EXPECT_NEAR(belytschko_tsay_length(p1, p2, p3, p4), 1.4955, 0.003);
 }
 
 // The QEPH length (eq. T-1d) on eight single elements, against the steps the reference solver's starter printed

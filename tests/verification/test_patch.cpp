@@ -275,7 +275,7 @@ TEST_P(PatchTest, MembranePatchThroughTheSolver) {
   SolverState last;
   const RunResult run = run_deck(dir, starter, end_time, end_time, [&](const Model&, const SolverState& s) { last = s; });
   ASSERT_EQ(run.summary.status, RunStatus::Normal) << run.summary.message;
-  ASSERT_GT(run.summary.cycles, 2000);
+  ASSERT_GT(run.summary.cycles, 1900);  // about 2000 (1988 with the skewed elements' T-1b length of Ishell 1 to 4)
   ASSERT_NEAR(last.time, end_time, 1e-12);
   const Model& m = run.model;
   const double T = last.time;

@@ -89,17 +89,24 @@ inline double quad_characteristic_length(const Vec3& p1, const Vec3& p2, const V
                                        std::max(norm(p4 - p3), norm(p1 - p4)));
   return area / longest_side;
 }
-// The Belytschko-Tsay quadrilateral's length (eq. T-1b): the reference's max(shortest side, A / longest
-// diagonal), never above T-1's A / longest side [L]. Equal to T-1 on rectangles; below it on trapezoids with one
-// short side, where the reference's steps are A / longest diagonal.
-inline double belytschko_tsay_length(double area, double shortest_side, double longest_side, double longest_diagonal) {
-  return std::min(area / longest_side, std::max(shortest_side, area / longest_diagonal));
+// The Belytschko-Tsay quadrilateral's length (eq. T-1b): the reference's max(shortest side, A / longest diagonal),
+// the sides in the element's plane (normal to the diagonals' cross product), A half that product's norm [L].
+// Equal to T-1 on rectangles; below it on trapezoids with one short side, where the reference's steps are
+// A / longest diagonal; on a folded (warped) element its sides' projections are short and A / longest diagonal
+// holds (measured on the reference's deformed shells, docs/theory/time-step.md).
+inline double belytschko_tsay_length(double area, double shortest_side, double longest_diagonal) {
+  return std::max(shortest_side, area / longest_diagonal);
 }
 inline double belytschko_tsay_length(const Vec3& p1, const Vec3& p2, const Vec3& p3, const Vec3& p4) {
-  const double sides[4] = {norm(p2 - p1), norm(p3 - p2), norm(p4 - p3), norm(p1 - p4)};
-  const double longest_diagonal = std::max(norm(p3 - p1), norm(p4 - p2));
-  return belytschko_tsay_length(quad_area(p1, p2, p3, p4), *std::min_element(sides, sides + 4),
-                                *std::max_element(sides, sides + 4), longest_diagonal);
+  const Vec3 normal = cross(p3 - p1, p4 - p2);
+  const Vec3 n = scaled(normal, 1.0 / norm(normal));
+  const Vec3 corners[4] = {p1, p2, p3, p4};
+  double shortest = 1e300;
+  for (int a = 0; a < 4; ++a) {
+    const Vec3 side = corners[(a + 1) % 4] - corners[a];
+    shortest = std::min(shortest, norm(side - scaled(n, dot(side, n))));
+  }
+  return belytschko_tsay_length(0.5 * norm(normal), shortest, std::max(norm(p3 - p1), norm(p4 - p2)));
 }
 // The Belytschko-Tsay quadrilateral's length under /DT/NODA/CST (eq. T-2a): sqrt(2) A / longest diagonal [L]; a
 // square's side, a 10 x 2 rectangle's 2.77 (T-1b: 2).
