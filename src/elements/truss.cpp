@@ -1,4 +1,4 @@
-// Trusses (docs/theory/truss.md, eq. TR-1 to TR-6).
+// Trusses (docs/theory/truss.md, eq. TR-1 to TR-7).
 #include "crumple/elements/truss.hpp"
 
 #include "crumple/elements/two_node_load.hpp"
@@ -19,18 +19,18 @@ TrussGroupParameters truss_parameters(const Material& material, const TrussSecti
 
 // eq. TR-2b: the hardening slope the truss's return divides by, at the plastic strain before the cycle; at 0 the
 // slope of b eps^n is b for n = 1 and 0 below (measured, docs/theory/truss.md).
-double truss_hardening_slope(const TrussGroupParameters& p, double eps_p, double rate) {
-  if (p.hardening.law != MaterialLaw::JohnsonCook || eps_p > 0.0) return p.hardening.slope(eps_p, rate);
-  return p.hardening.johnson_cook->n == 1.0 ? p.hardening.slope(0.0, rate) : 0.0;
+double truss_hardening_slope(const TrussGroupParameters& p, double eps_p) {
+  if (p.hardening.law != MaterialLaw::JohnsonCook || eps_p > 0.0) return p.hardening.slope(eps_p, 0.0);
+  return p.hardening.johnson_cook->n == 1.0 ? p.hardening.slope(0.0, 0.0) : 0.0;
 }
 
-double truss_stress_update(const TrussGroupParameters& p, double stress, double d_eps, double rate, double& eps_p) {
+double truss_stress_update(const TrussGroupParameters& p, double stress, double d_eps, double& eps_p) {
   const double trial = stress + p.young * d_eps;
   if (!p.hardening.plastic()) return trial;
-  const double yield = p.hardening.yield(eps_p, rate);
+  const double yield = p.hardening.yield(eps_p, 0.0);  // no strain rate (TR-2c)
   if (std::abs(trial) <= yield) return trial;
   // eq. TR-2b: one step of the return, the stress set to the yield stress before the step (measured)
-  eps_p += (std::abs(trial) - yield) / (p.young + truss_hardening_slope(p, eps_p, rate));
+  eps_p += (std::abs(trial) - yield) / (p.young + truss_hardening_slope(p, eps_p));
   return std::copysign(yield, trial);
 }
 
@@ -52,16 +52,15 @@ GroupStepResult truss_forces(const ElementTable& table, const ElementGroup& grou
     }
     state.length[ue] = length;
     const double d_eps = (length - before) / length;  // eq. TR-1, over the new length
-    const double rate = 0.0;  // the reference's trusses take no strain rate (measured: LAW2 c 0.05 changes nothing)
     const double force_before = state.force[ue];
     double eps_p = state.eps_p[ue];
     if (truss_acts(p, state.length0[ue], length)) {
       const double area = state.area[ue] * (1.0 - 2.0 * p.poisson * d_eps);  // eq. TR-3
       // eq. TR-2: the stress carried to the new area, so that an elastic force grows by E A1 d_eps
-      state.stress[ue] = truss_stress_update(p, state.stress[ue] * state.area[ue] / area, d_eps, rate, eps_p);
+      state.stress[ue] = truss_stress_update(p, state.stress[ue] * state.area[ue] / area, d_eps, eps_p);
       state.area[ue] = area;
     } else {  // eq. TR-5: open, no stress; the law still runs from zero stress (measured: eps_p grows)
-      truss_stress_update(p, 0.0, d_eps, rate, eps_p);
+      truss_stress_update(p, 0.0, d_eps, eps_p);
       state.stress[ue] = 0.0;
     }
     state.eps_p[ue] = static_cast<point_real>(eps_p);

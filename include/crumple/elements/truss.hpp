@@ -36,8 +36,8 @@ inline double truss_critical_step(const TrussGroupParameters& p, double length) 
 }
 
 // The one-dimensional law (eq. TR-2, TR-2b): the stress after a strain increment `d_eps` from `stress`, and the
-// plastic strain `eps_p` it leaves (`rate`: the strain rate the yield stress sees [1/T]).
-double truss_stress_update(const TrussGroupParameters& p, double stress, double d_eps, double rate, double& eps_p);
+// plastic strain `eps_p` it leaves. No strain rate enters (TR-2c: the reference's trusses take none, measured).
+double truss_stress_update(const TrussGroupParameters& p, double stress, double d_eps, double& eps_p);
 
 // Computes the axial force of the group's trusses at the current positions, subtracts it from the nodal force
 // accumulators and adds its work to the trusses' internal energy (eq. TR-1 to TR-6).
