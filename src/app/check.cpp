@@ -116,6 +116,11 @@ void print_check_report(const Deck& deck, std::ostream& out) {
   }
   fmt::print(out, "  rigid walls           {}\n", m.rigid_walls.size());
   fmt::print(out, "  rigid bodies          {}\n", m.rigid_bodies.size());
+  if (!m.rigid_elements.empty()) {
+    std::size_t carried = 0;
+    for (const RigidElement& e : m.rigid_elements) carried += e.secondary_nodes.size();
+    fmt::print(out, "  rigid elements /RBE2  {} ({} secondary nodes)\n", m.rigid_elements.size(), carried);
+  }
   fmt::print(out, "  boundary conditions   {}\n", m.boundary_conditions.size());
   fmt::print(out, "  imposed motions/loads {}\n", m.imposed.size());
   fmt::print(out, "  initial velocities    {}\n", m.initial_velocities.size());

@@ -83,6 +83,7 @@ std::string rigid_wall_keyword(const RigidWall& w);
 SensorWindow sensor_window(Resolver& r, std::int64_t sensor_id, const SourceLocation& where, const std::string& kw,
                            std::string_view field = "sensor_ID");
 void resolve_load_references(Resolver& r);    // loads, imposed motion, added mass, rigid walls and bodies
-void resolve_output_references(Resolver& r, std::vector<RunControl>& continued_runs);  // interfaces, sections, time histories, run control
+void resolve_output_references(Resolver& r, std::vector<RunControl>& continued_runs);
+void resolve_rigid_elements(Resolver& r);  // /RBE2, /RBE3: node sets, conflicts with other kinematic conditions  // interfaces, sections, time histories, run control
 
 }  // namespace crumple::deck

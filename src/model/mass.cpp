@@ -105,6 +105,16 @@ void compute_mass(Model& model) {
     model.nodal_mass[static_cast<std::size_t>(b.main_node)] += b.mass;
     model.added_mass += b.mass;
   }
+  // An /RBE3's dependent node has no mass of its own: what it was given goes to its independent nodes in the share of
+  // their weights as given (docs/theory/rigid-bodies.md, RI-5, measured).
+  for (const InterpolationConstraint& c : model.interpolation_constraints) {
+    const auto dependent = static_cast<std::size_t>(c.dependent_node);
+    const double mass = model.nodal_mass[dependent];
+    if (!(mass > 0.0) || !(c.total_weight > 0.0)) continue;
+    for (const InterpolationNode& i : c.independent)
+      model.nodal_mass[static_cast<std::size_t>(i.node)] += mass * i.given_weight / c.total_weight;
+    model.nodal_mass[dependent] = 0.0;
+  }
   // A moving rigid wall's Mass is added to the node that carries the wall.
   for (const RigidWall& w : model.rigid_walls) {
     if (w.node < 0) continue;  // fixed wall

@@ -170,9 +170,12 @@ Domain make_domain(const Model& m, const Partition& partition, int index) {
   d.node_owner.assign(m.nodes.size(), 0);
   d.local.assign(m.nodes.size(), 0), d.multi_local.assign(m.nodes.size(), 0);
   // Nodes every domain advances although elements use them: the main nodes of rigid bodies and the nodes that
-  // carry moving walls, whose motion every domain needs (a body's centre, a wall's plane).
+  // carry moving walls, whose motion every domain needs (a body's centre, an /RBE2's main node, an /RBE3's dependent node, a wall's plane).
   std::vector<std::uint8_t> everywhere(m.nodes.size(), 0);
   for (const RigidBody& b : m.rigid_bodies) everywhere[static_cast<std::size_t>(b.main_node)] = 1;
+  for (const RigidElement& e : m.rigid_elements) everywhere[static_cast<std::size_t>(e.main_node)] = 1;
+  for (const InterpolationConstraint& c : m.interpolation_constraints)
+    everywhere[static_cast<std::size_t>(c.dependent_node)] = 1;
   for (const RigidWall& w : m.rigid_walls)
     if (w.node >= 0) everywhere[static_cast<std::size_t>(w.node)] = 1;
   for (std::size_t k = 0; k < m.nodes.size(); ++k) {

@@ -258,7 +258,9 @@ void compute_contact_forces(const Model& m, SolverState& s, RunEvents& events, b
 void apply_loads(const Model& m, SolverState& s) {
   add_external_forces(m, s, s.time);
   if (!s.recorded.external_force.empty()) record_external_forces(m, s, s.time);
+  spread_interpolation_loads(m, s);  // first: an independent node may be tied, or carried by a body
   transfer_tied_forces(s);  // before the bodies gather: a segment's node may be a body's
+  gather_rigid_element_forces(m, s);
   gather_rigid_body_forces(s);
 }
 
@@ -365,7 +367,8 @@ void integrate(SolverState& s, VelocityScratch& scratch, double dt_average, bool
 
 void apply_constraints(const Model& m, SolverState& s, VelocityScratch& scratch, double dt_average, double dt_next) {
   NodalState& n = s.nodes;
-  const double body_work = update_rigid_bodies(m, s, dt_average, dt_next);
+  const double body_work = update_rigid_bodies(m, s, dt_average, dt_next) +
+                           update_rigid_elements(m, s, scratch.before, dt_average, dt_next);
   link_velocities(m, s);
   auto v = velocities(n);
   // A link's sharing of momentum is internal to its nodes, as the reference counts it: what it dissipates shows in
@@ -380,9 +383,17 @@ void apply_constraints(const Model& m, SolverState& s, VelocityScratch& scratch,
         scratch.free[d][static_cast<std::size_t>(node)] = (*v[d])[static_cast<std::size_t>(node)];
       scratch.free[d][static_cast<std::size_t>(b.main_node)] = (*v[d])[static_cast<std::size_t>(b.main_node)];
     }
+  auto keep_as_free = [&](std::int32_t node) {
+    for (std::size_t d = 0; d < 6; ++d) scratch.free[d][static_cast<std::size_t>(node)] = (*v[d])[static_cast<std::size_t>(node)];
+  };
+  for (const RigidElement& e : m.rigid_elements) {  // as a body's: the group's motion is its own (RE-4)
+    keep_as_free(e.main_node);
+    for (std::int32_t node : e.secondary_nodes) keep_as_free(node);
+  }
   impose_kinematics(m, s, s.time, dt_next);
   apply_rigid_walls(m, s, dt_average, dt_next);
   tie_velocities(s);  // on the segments' final velocities; a tied node has no mass, so no work
+  interpolate_dependent_motion(m, s);  // last: from the independent nodes' final velocities; no mass, so no work
   // The works of the step as exact sums over the owned nodes, combined over the domains (docs/parallel.md): the
   // loads' and conditions' work, then each interface's contact work.
   std::vector<ExactSum>& work = s.reducer.sums;

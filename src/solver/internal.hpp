@@ -56,7 +56,7 @@ struct NodalStep {
   std::int32_t node;
 };
 NodalStep nodal_time_step(const Model& model, SolverState& state);
-// The reference's nodal step of a deck with a TYPE7 interface (docs/theory/time-step.md, eq. T-4): on when the
+// The reference's nodal step of a deck with a TYPE7 interface or an /RBE3 (docs/theory/time-step.md, eq. T-4): on when the
 // deck has one and neither /DT/NODA/CST nor /DT/INTER/CST; each element's stiffness (this domain's), their sums
 // per node (every node, after the exchange), and the step over this domain's nodes with the contact's, reduced.
 bool interface_nodal_step_on(const Model& model);
@@ -123,6 +123,29 @@ void gather_rigid_body_forces(SolverState& state);
 // Rigid bodies after the free velocity update: new momentum, rotation and the secondary nodes' velocities. Fixed
 // and imposed dofs of a main node drive its body; returns the work of those conditions over the step.
 double update_rigid_bodies(const Model& model, SolverState& state, double dt_average, double dt_next);
+// The velocity v (x y z rx ry rz) of a main node as its fixed dofs (/BCS) and its /IMPVEL, /IMPDISP cards set it
+// (RB-4, RE-4); true when any acts.
+bool drive_main_node(const Model& model, const SolverState& state, std::int32_t main_node,
+                     const std::vector<std::int32_t>& conditions, const std::vector<std::int32_t>& skewed_fixes,
+                     std::array<double, 6>& v, double dt_next);
+// The /IMPVEL, /IMPDISP cards (indices into Model::imposed) and the /BCS in a skew that hold `main_node`.
+void find_main_node_conditions(const Model& model, std::int32_t main_node, std::vector<std::int32_t>& conditions,
+                               std::vector<std::int32_t>& skewed_fixes);
+// /RBE2 (docs/theory/rigid-bodies.md, RE-1 to RE-5). At the start: each group's mass and inertia, and the secondary
+// nodes moving with their main node. Each cycle after the loads: the secondary nodes' forces and the moments they
+// make about the main node gathered on it; after the velocity update: the main node's motion from them, the
+// secondary nodes placed rigidly about it. Returns the work of the conditions that drive main nodes.
+void setup_rigid_elements(const Model& model, SolverState& state);
+void gather_rigid_element_forces(const Model& model, SolverState& state);
+double update_rigid_elements(const Model& model, SolverState& state, const std::array<std::vector<double>, 6>& before,
+                             double dt_average, double dt_next);
+// /RBE3 (docs/theory/rigid-bodies.md, RI-1 to RI-6). At the start: the weights the solver uses (an /RBE3 whose
+// independent nodes do not hold its dependent node is a DeckError) and the dependent node's motion. Each cycle after
+// the loads: the dependent node's load spread over the independent nodes; after every other condition: the
+// dependent node's motion from theirs (`whole_model`: every node's terms, at the start).
+void setup_interpolation_constraints(const Model& model, SolverState& state);
+void spread_interpolation_loads(const Model& model, SolverState& state);
+void interpolate_dependent_motion(const Model& model, SolverState& state, bool whole_model = false);
 // The translational velocity of node k.
 inline Vec3 node_velocity(const NodalState& n, std::size_t k) { return {n.vx[k], n.vy[k], n.vz[k]}; }
 // /VEL/TRA of the engine deck: each link's nodes take their mass-weighted mean velocity along its axes (L-8).

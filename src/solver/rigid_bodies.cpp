@@ -180,37 +180,8 @@ void form_body(const RigidBody& rb, const Model& m, SolverState& s, std::int32_t
 // work, the change of momentum times the mid-step velocity, like any other kinematic condition (energy.md).
 double drive_body(const Model& m, const SolverState& s, RigidBodyState& b, const Vec3& velocity_before,
                   const Vec3& omega_before, const Mat3& inertia, double dt_next) {
-  const auto main = static_cast<std::size_t>(b.main_node);
-  std::uint8_t driven = s.fixed[main];
   std::array<double, 6> v{b.velocity[0], b.velocity[1], b.velocity[2], b.omega[0], b.omega[1], b.omega[2]};
-  for (int d = 0; d < 6; ++d)
-    if (driven & (1u << d)) v[static_cast<std::size_t>(d)] = 0.0;
-  // A condition in a skew sets the component along the skew's axis (eq. SK-5) of the translation or the rotation.
-  auto set_along = [&v](bool rotation, Vec3 e, double value) {
-    const std::size_t first = rotation ? 3 : 0;
-    const Vec3 set = with_component({v[first], v[first + 1], v[first + 2]}, e, value);
-    v[first] = set.x, v[first + 1] = set.y, v[first + 2] = set.z;
-  };
-  for (std::int32_t c : b.main_node_skewed_fixes) {
-    const BoundaryCondition& bc = m.boundary_conditions[static_cast<std::size_t>(c)];
-    const SkewAxes& a = s.skew_axes[static_cast<std::size_t>(bc.skew)];
-    for (std::size_t d = 0; d < 3; ++d) {
-      if (bc.fixed_translation[d]) set_along(false, a.axis[d], 0.0);
-      if (bc.fixed_rotation[d]) set_along(true, a.axis[d], 0.0);
-    }
-    driven = static_cast<std::uint8_t>(driven | 64u);
-  }
-  for (std::int32_t c : b.main_node_conditions) {
-    const ImposedMotion& im = m.imposed[static_cast<std::size_t>(c)];
-    if (const auto value = imposed_velocity(m, s, im, main, s.time, dt_next)) {
-      if (im.skew < 0)
-        v[static_cast<std::size_t>(im.dof)] = *value;
-      else
-        set_along(is_rotation(im.dof), s.skew_axes[static_cast<std::size_t>(im.skew)].axis[dof_axis(im.dof)], *value);
-      driven = static_cast<std::uint8_t>(driven | 64u);
-    }
-  }
-  if (driven == 0) return 0.0;
+  if (!drive_main_node(m, s, b.main_node, b.main_node_conditions, b.main_node_skewed_fixes, v, dt_next)) return 0.0;
   const Vec3 momentum_free = b.momentum_angular;
   double work = 0.0;
   for (std::size_t d = 0; d < 3; ++d) {
@@ -254,6 +225,57 @@ void mark_contact_nodes_in_rigid_bodies(SolverState& s) {
 
 }  // namespace
 
+bool drive_main_node(const Model& m, const SolverState& s, std::int32_t main_node,
+                     const std::vector<std::int32_t>& conditions, const std::vector<std::int32_t>& skewed_fixes,
+                     std::array<double, 6>& v, double dt_next) {
+  const auto main = static_cast<std::size_t>(main_node);
+  std::uint8_t driven = s.fixed[main];
+  for (int d = 0; d < 6; ++d)
+    if (driven & (1u << d)) v[static_cast<std::size_t>(d)] = 0.0;
+  // A condition in a skew sets the component along the skew's axis (eq. SK-5) of the translation or the rotation.
+  auto set_along = [&v](bool rotation, Vec3 e, double value) {
+    const std::size_t first = rotation ? 3 : 0;
+    const Vec3 set = with_component({v[first], v[first + 1], v[first + 2]}, e, value);
+    v[first] = set.x, v[first + 1] = set.y, v[first + 2] = set.z;
+  };
+  for (std::int32_t c : skewed_fixes) {
+    const BoundaryCondition& bc = m.boundary_conditions[static_cast<std::size_t>(c)];
+    const SkewAxes& a = s.skew_axes[static_cast<std::size_t>(bc.skew)];
+    for (std::size_t d = 0; d < 3; ++d) {
+      if (bc.fixed_translation[d]) set_along(false, a.axis[d], 0.0);
+      if (bc.fixed_rotation[d]) set_along(true, a.axis[d], 0.0);
+    }
+    driven = static_cast<std::uint8_t>(driven | 64u);
+  }
+  for (std::int32_t c : conditions) {
+    const ImposedMotion& im = m.imposed[static_cast<std::size_t>(c)];
+    if (const auto value = imposed_velocity(m, s, im, main, s.time, dt_next)) {
+      if (im.skew < 0)
+        v[static_cast<std::size_t>(im.dof)] = *value;
+      else
+        set_along(is_rotation(im.dof), s.skew_axes[static_cast<std::size_t>(im.skew)].axis[dof_axis(im.dof)], *value);
+      driven = static_cast<std::uint8_t>(driven | 64u);
+    }
+  }
+  return driven != 0;
+}
+
+void find_main_node_conditions(const Model& m, std::int32_t main_node, std::vector<std::int32_t>& conditions,
+                               std::vector<std::int32_t>& skewed_fixes) {
+  for (std::size_t c = 0; c < m.imposed.size(); ++c) {
+    const ImposedMotion& im = m.imposed[c];
+    if (im.kind == ImposedKind::Force) continue;
+    const auto& nodes = m.node_groups[static_cast<std::size_t>(im.node_group)].nodes;
+    if (std::find(nodes.begin(), nodes.end(), main_node) != nodes.end()) conditions.push_back(static_cast<std::int32_t>(c));
+  }
+  for (std::size_t c = 0; c < m.boundary_conditions.size(); ++c) {
+    const BoundaryCondition& bc = m.boundary_conditions[c];
+    const auto& nodes = m.node_groups[static_cast<std::size_t>(bc.node_group)].nodes;
+    if (bc.skew >= 0 && std::find(nodes.begin(), nodes.end(), main_node) != nodes.end())
+      skewed_fixes.push_back(static_cast<std::int32_t>(c));
+  }
+}
+
 void setup_rigid_bodies(const Model& m, SolverState& s) {
   for (std::size_t index = 0; index < m.rigid_bodies.size(); ++index) {
     const RigidBody& rb = m.rigid_bodies[index];
@@ -261,19 +283,7 @@ void setup_rigid_bodies(const Model& m, SolverState& s) {
     form_body(rb, m, s, static_cast<std::int32_t>(index), b, true);
     const auto main = static_cast<std::size_t>(rb.main_node);
     s.x0[main] = s.nodes.x[main], s.y0[main] = s.nodes.y[main], s.z0[main] = s.nodes.z[main];
-    for (std::size_t c = 0; c < m.imposed.size(); ++c) {
-      const ImposedMotion& im = m.imposed[c];
-      if (im.kind == ImposedKind::Force) continue;
-      const auto& nodes = m.node_groups[static_cast<std::size_t>(im.node_group)].nodes;
-      if (std::find(nodes.begin(), nodes.end(), rb.main_node) != nodes.end())
-        b.main_node_conditions.push_back(static_cast<std::int32_t>(c));
-    }
-    for (std::size_t c = 0; c < m.boundary_conditions.size(); ++c) {
-      const BoundaryCondition& bc = m.boundary_conditions[c];
-      const auto& nodes = m.node_groups[static_cast<std::size_t>(bc.node_group)].nodes;
-      if (bc.skew >= 0 && std::find(nodes.begin(), nodes.end(), rb.main_node) != nodes.end())
-        b.main_node_skewed_fixes.push_back(static_cast<std::int32_t>(c));
-    }
+    find_main_node_conditions(m, rb.main_node, b.main_node_conditions, b.main_node_skewed_fixes);
     s.bodies.push_back(std::move(b));
   }
   if (!s.bodies.empty()) mark_elements_in_rigid_bodies(m, s), mark_contact_nodes_in_rigid_bodies(s);

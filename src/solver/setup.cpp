@@ -248,6 +248,8 @@ SolverState make_state(const Model& m, std::vector<std::string>& notes, Domain d
   setup_sections(m, s);  // /TH/SECTIO: after the domain, whose records it may restrict or read
   update_skew_axes(m, s);  // every domain holds every node here
   setup_rigid_bodies(m, s);
+  setup_rigid_elements(m, s);
+  setup_interpolation_constraints(m, s);
   setup_rigid_walls(m, s);
   if (selective_mass_on(m)) size_selective_mass(m, s);  // before a restart reads what the last cycle left
   setup_accelerometers(m.accelerometers.size(), s.histories);

@@ -70,7 +70,8 @@ void element_stiffness(const Model& m, ElementKind kind, const State& st, Solver
 // their own step (C-11c).
 // Off under selective mass scaling too: its mass holds the nodes at dt_min (SM-0).
 bool interface_nodal_step_on(const Model& m) {
-  return !m.type7_interfaces.empty() && !m.run.dt_nodal_cst.given && !m.run.dt_inter_cst.given &&
+  // An /RBE3 puts the reference on its nodal step too (docs/theory/rigid-bodies.md, RI-6, measured).
+  return (!m.type7_interfaces.empty() || !m.interpolation_constraints.empty()) && !m.run.dt_nodal_cst.given && !m.run.dt_inter_cst.given &&
          !selective_mass_on(m);
 }
 

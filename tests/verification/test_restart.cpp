@@ -9,8 +9,8 @@
 // carry over and whose loads the first cycle after the restart records again (section_strip), springs under
 // the mass damping of an engine /DAMP (damping_springs), general springs beside axial ones and trusses
 // (springs_mixed_damped), beam-type springs (beam_spring_cantilever), a spot weld tied to two plates
-// (tied_spot_weld), trusses letting go over their last cycles (truss_tower_fails) and a frame of beams past yield
-// (beam_frame_plastic).
+// (tied_spot_weld), trusses letting go over their last cycles (truss_tower_fails), a frame of beams past yield
+// (beam_frame_plastic), a bolt on an /RBE2 (rbe2_bolt_beam) and a mass on an /RBE3 (rbe3_mass_dependent).
 #include <gtest/gtest.h>
 #include <hdf5.h>
 
@@ -170,7 +170,11 @@ INSTANTIATE_TEST_SUITE_P(
                       // trusses: plastic strain, area, and the members that are letting go (TR-7)
                       RestartCase{"truss_tower_fails", kPeerDecks / "truss_tower_fails" / "TOWERF_0000.rad", 105},
                       // beams past yield: their frames, resultants and plastic strains
-                      RestartCase{"beam_frame_plastic", kPeerDecks / "beam_frame_plastic" / "BFRAME_0000.rad", 150}),
+                      RestartCase{"beam_frame_plastic", kPeerDecks / "beam_frame_plastic" / "BFRAME_0000.rad", 150},
+                      // /RBE2: a bolt's main node and the shell nodes it carries, from their positions and velocities
+                      RestartCase{"rbe2_bolt_beam", kPeerDecks / "rbe2_bolt_beam" / "RBEBOLT_0000.rad", 600},
+                      // /RBE3: the dependent node's mass spread, its motion from the independent nodes
+                      RestartCase{"rbe3_mass_dependent", kPeerDecks / "rbe3_mass_dependent" / "RBE3MD_0000.rad", 400}),
     [](const auto& p) { return std::string(p.param.name); });
 
 TEST(Restart, FileOfAnotherModelIsRefusedWithItsCounts) {

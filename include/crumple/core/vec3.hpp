@@ -23,5 +23,12 @@ inline double dot(Vec3 a, Vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 inline Vec3 cross(Vec3 a, Vec3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
 inline double norm(Vec3 a) { return std::sqrt(dot(a, a)); }
 inline Vec3 unit(Vec3 a) { return scaled(a, 1.0 / norm(a)); }
+// `a` turned by the rotation vector phi (Rodrigues): a cos t + (k x a) sin t + k (k . a)(1 - cos t), t = |phi|, k = phi / t.
+inline Vec3 rotated(Vec3 a, Vec3 phi) {
+  const double t = norm(phi);
+  if (t < 1e-300) return a;
+  const Vec3 k = scaled(phi, 1.0 / t);
+  return scaled(a, std::cos(t)) + scaled(cross(k, a), std::sin(t)) + scaled(k, dot(k, a) * (1.0 - std::cos(t)));
+}
 
 }  // namespace crumple

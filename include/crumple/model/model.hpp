@@ -65,6 +65,8 @@ struct Model {
   std::vector<AddedMass> added_masses;
   std::vector<RigidWall> rigid_walls;
   std::vector<RigidBody> rigid_bodies;
+  std::vector<RigidElement> rigid_elements;                       // /RBE2
+  std::vector<InterpolationConstraint> interpolation_constraints;  // /RBE3
   std::vector<RayleighDamping> dampings;  // /DAMP
   std::vector<Type7Interface> type7_interfaces;
   std::vector<Type2Interface> type2_interfaces;  // /INTER/TYPE2; /TH/INTER numbers them after the TYPE7 ones
@@ -87,7 +89,8 @@ struct Model {
 
   struct Index {
     IdMap nodes, parts, properties, materials, functions, node_groups, shell_groups, sh3n_groups, brick_groups,
-        surfaces, lines, subsets, skews, sensors, boxes, rigid_walls, rigid_bodies, interfaces, sections,
+        surfaces, lines, subsets, skews, sensors, boxes, rigid_walls, rigid_bodies, rigid_elements,
+        interpolation_constraints, interfaces, sections,
         accelerometers, dampings;
     std::array<IdMap, kElementKinds> elements;
   } index;

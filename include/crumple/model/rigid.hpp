@@ -107,4 +107,55 @@ struct RigidBody {  // /RBODY
   int iexpams = 0;                // AMS expansion flag, no effect
 };
 
+// /RBE2: secondary nodes that follow a main node rigidly in the coupled degrees of freedom
+// (docs/theory/rigid-bodies.md, RE-1 to RE-5). Crumple couples the three translations (Trarot TX TY TZ 111) and
+// any of the rotations; Iflag 0 turns the secondary nodes about the main node with its whole angular velocity,
+// Iflag 1 with only its coupled components.
+struct RigidElement {
+  SourceLocation where;
+  std::int64_t user_id = 0;
+  std::string title;
+  std::int64_t main_node_id = 0;
+  std::int32_t main_node = -1;
+  std::array<bool, 3> rotation{true, true, true};  // RX RY RZ coupled (Trarot's last three digits)
+  std::int64_t skew_id = 0;                         // only with 111 111, where it changes nothing (RE-1)
+  std::int64_t node_group_id = 0;
+  std::int32_t node_group = -1;
+  int iflag = 0;  // 0: the secondaries turn with the whole rotation of the main node; 1: with its coupled part
+  std::vector<std::int32_t> secondary_nodes;  // model build: the group's nodes without the main node, sorted
+  // The components of the main node's rotation the secondary nodes turn with (RE-2): all three with Iflag 0,
+  // the coupled ones with Iflag 1.
+  bool turns_about(std::size_t axis) const { return iflag == 0 || rotation[axis]; }
+};
+
+// /RBE3: a dependent node whose loads are spread over independent node sets, and which moves with their weighted
+// least-squares rigid motion (docs/theory/rigid-bodies.md, RI-1 to RI-6).
+struct InterpolationSet {
+  double weight = 1.0;  // WT_i [-] (0 or blank: 1)
+  // Trarot_Mi: blank or six zeros is 111 000 (measured on the reference; its manual says all six).
+  std::array<bool, 3> translation{true, true, true}, rotation{};
+  std::int64_t skew_id = 0;  // only with codes a rotation leaves unchanged (111 or 000 for each triple)
+  std::int64_t node_group_id = 0;
+  std::int32_t node_group = -1;
+};
+
+// One independent node of one set: its weight on each dof x y z rx ry rz, after I_modif (RI-2) [-].
+struct InterpolationNode {
+  std::int32_t node = -1;
+  std::array<double, 6> weight{};
+  double given_weight = 0.0;  // its set's WT_i as given: its share of the dependent node's mass (RI-5)
+};
+
+struct InterpolationConstraint {
+  SourceLocation where;
+  std::int64_t user_id = 0;
+  std::string title;
+  std::int64_t dependent_node_id = 0;
+  std::int32_t dependent_node = -1;
+  std::array<bool, 6> reference_dofs{true, true, true, true, true, true};  // Trarot_ref (blank or zeros: all six)
+  int i_modif = 1;  // weights: 1 made to carry every translation alike, 2 as given, 3 all 1 then as 1
+  std::vector<InterpolationSet> sets;
+  std::vector<InterpolationNode> independent;  // model build, in set order
+  double total_weight = 0.0;                   // sum of the sets' weights over their nodes, as given (RI-5) [-]
+};
 }  // namespace crumple

@@ -44,6 +44,8 @@ struct SolverState {
   BeamState beams;                                  // 2-node beams
   std::vector<BeamGroupParameters> beam_groups;    // per element group (meaningful for beam groups only)
   std::vector<RigidBodyState> bodies;
+  std::vector<RigidElementState> rigid_elements;   // /RBE2
+  std::vector<InterpolationState> interpolations;  // /RBE3
   TiedState ties;                                   // /INTER/TYPE2 (empty without it)
   std::vector<RigidWallState> walls;
   ContactState contact;                             // TYPE7 interfaces (empty without /INTER/TYPE7)

@@ -28,6 +28,26 @@ struct RigidBodyState {
   std::vector<std::int32_t> main_node_skewed_fixes;
 };
 
+// /RBE2 (docs/theory/rigid-bodies.md, RE-2): the main node's mass and inertia as the group carries them, from the
+// last gather, and the conditions on the main node that drive the group.
+struct RigidElementState {
+  double mass = 0.0;  // M = m_main + sum m_s [M]
+  // About the main node, per axis of its rotation that turns the secondary nodes: I_main + sum 2 m_s |r_s|^2, plus
+  // the secondary nodes' own inertia on their coupled axes (RE-2); 0 on the other axes [M L^2].
+  Vec3 inertia{};
+  std::vector<std::int32_t> main_node_conditions;    // /IMPVEL, /IMPDISP on the main node (indices into Model::imposed)
+  std::vector<std::int32_t> main_node_skewed_fixes;  // /BCS in a skew on the main node
+};
+
+// /RBE3 (docs/theory/rigid-bodies.md, RI-1 to RI-4): each independent node's dof weights as the solver uses them
+// (rotations dropped where the node has no rotational inertia), and the last load solve's inverse, which the
+// dependent node's motion of the same cycle reuses.
+struct InterpolationState {
+  std::vector<std::array<double, 6>> weight;  // per independent node of the model's list [-]
+  double length_squared = 0.0;                 // Lc^2 of the last solve [L^2]
+  std::array<double, 36> inverse{};            // A^-1 of the last solve, row-major
+};
+
 struct RigidWallState {
   std::vector<std::int32_t> nodes;   // candidate secondary nodes
   std::vector<std::uint8_t> tied;    // tied walls: 1 once the node touched

@@ -3,6 +3,7 @@
 // checks the geometry of moving walls (their point M is the wall node's position) and builds the secondary sets.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <optional>
 
@@ -221,12 +222,138 @@ void read_rigid_body(CardReader& reader, DeckContext& context) {
   context.model.rigid_bodies.push_back(std::move(b));
 }
 
+
+// ---------------------------------------------------------------------------------------------------------------
+// /RBE2/id and /RBE3/id: degree-of-freedom codes are single digits, TX TY TZ in columns 14-16 and RX RY RZ in 18-20
+// after a 10-column node id (Trarot). A code of six zeros, like a blank one, couples every degree of freedom, as
+// the manual says (the reference reads the digits as integers, so the two cannot differ).
+
+struct DofCodes {
+  std::array<bool, 3> translation{}, rotation{};
+  bool none() const {
+    return std::none_of(translation.begin(), translation.end(), [](bool b) { return b; }) &&
+           std::none_of(rotation.begin(), rotation.end(), [](bool b) { return b; });
+  }
+};
+
+bool read_dof_digit(const Line& line, int column, std::string_view name) {
+  const char code = line.raw(column, 1)[0];
+  if (code == '1') return true;
+  if (code != ' ' && code != '0') line.fail(column, 1, name, "0, 1 or blank (1 couples the degree of freedom)");
+  return false;
+}
+
+// Trarot at `first` (TX) .. first + 6 (RZ), with the blank separators around it; blank or six zeros: all six.
+DofCodes read_trarot(const Line& line, int first, std::string_view field) {
+  const int lead = first == 14 ? 11 : 21;  // the three blanks before the codes
+  if (!line.text(lead, 3).empty())
+    line.fail(lead, 3, "blank", fmt::format("blank (the {} codes are in columns {}-{} and {}-{})", field, first,
+                                            first + 2, first + 4, first + 6));
+  if (!line.text(first + 3, 1).empty())
+    line.fail(first + 3, 1, "separator", fmt::format("blank (between the {} translation and rotation codes)", field));
+  DofCodes codes;
+  constexpr const char* kNames[2][3] = {{"TX", "TY", "TZ"}, {"RX", "RY", "RZ"}};
+  for (int k = 0; k < 3; ++k) {
+    codes.translation[static_cast<std::size_t>(k)] = read_dof_digit(line, first + k, kNames[0][k]);
+    codes.rotation[static_cast<std::size_t>(k)] = read_dof_digit(line, first + 4 + k, kNames[1][k]);
+  }
+  if (codes.none()) codes.translation = codes.rotation = {true, true, true};
+  return codes;
+}
+
+std::string trarot_text(const DofCodes& c) {
+  std::string t;
+  for (bool b : c.translation) t += b ? '1' : '0';
+  t += ' ';
+  for (bool b : c.rotation) t += b ? '1' : '0';
+  return t;
+}
+
+// Line 2: node_ID, Trarot, skew_ID, grnod_ID, Iflag (Iflag came with input version 110; blank before).
+void read_rbe2(CardReader& reader, DeckContext& context) {
+  RigidElement e;
+  e.where = reader.card().where;
+  e.user_id = card_id(reader, 1);
+  e.title = read_title(reader);
+  const Line line = reader.next("node_ID, Trarot, skew_ID, grnod_ID, Iflag").as_written();
+  e.main_node_id = line.id(1, 10, "node_ID", IdKind::Node);
+  if (e.main_node_id <= 0) line.fail(1, 10, "node_ID", "a positive main node id");
+  const DofCodes codes = read_trarot(line, 14, "Trarot");
+  // Secondary nodes that follow the main node in some translations only: not in Crumple (RE-1).
+  if (codes.translation != std::array<bool, 3>{true, true, true})
+    context.unsupported(line.error(14, 3, "Trarot TX TY TZ",
+                                   fmt::format("111 (every translation coupled; found {}: partial translation coupling "
+                                               "is not supported by Crumple)", trarot_text(codes))));
+  e.rotation = codes.rotation;
+  e.skew_id = line.optional_id(21, 10, "skew_ID");
+  const bool all_six = codes.rotation == std::array<bool, 3>{true, true, true};
+  if (e.skew_id != 0 && !all_six)
+    context.unsupported(line.error(21, 10, "skew_ID",
+                                   "0 (a skew orients partial Trarot codes, which Crumple does not support in a skew; "
+                                   "with Trarot 111 111 it changes nothing)"));
+  e.node_group_id = line.id(31, 10, "grnod_ID", IdKind::Other);
+  if (e.node_group_id <= 0) line.fail(31, 10, "grnod_ID", "a positive node group id (the secondary nodes)");
+  e.iflag = read_flag(line, 41, "Iflag", 0, 0, 1, "0 (whole rotation of the main node, default) or 1 (its coupled "
+                                                  "rotations only)");
+  reader.finish();
+  context.model.rigid_elements.push_back(std::move(e));
+}
+
+// Line 2: Node_IDr, Trarot_ref, N_set, I_modif, Iform (2026); then N_set lines WT_i, Trarot_Mi, skew_IDi, grnod_IDi.
+void read_interpolation_set(const Line& line, InterpolationSet& set, DeckContext& context) {
+  set.weight = line.real(1, 20, "WT", dim::none);
+  if (set.weight < 0.0) line.fail(1, 20, "WT", "a non-negative weight (0 or blank: 1)");
+  if (set.weight == 0.0) set.weight = 1.0;
+  DofCodes codes = read_trarot(line, 24, "Trarot_Mi");
+  // Blank or zero codes: the reference takes 111 000 here (measured), where its manual says all six.
+  if (codes.translation == std::array<bool, 3>{true, true, true} && codes.rotation == codes.translation &&
+      line.text(24, 7).find('1') == std::string::npos)
+    codes.rotation = {false, false, false};
+  set.translation = codes.translation, set.rotation = codes.rotation;
+  set.skew_id = line.optional_id(31, 10, "skew_IDi");
+  const auto uniform = [](const std::array<bool, 3>& a) { return a[0] == a[1] && a[1] == a[2]; };
+  if (set.skew_id != 0 && !(uniform(set.translation) && uniform(set.rotation)))
+    context.unsupported(line.error(31, 10, "skew_IDi",
+                                   "0 (a skew orients partial Trarot_Mi codes, which Crumple does not support in a "
+                                   "skew; with 111 or 000 in each triple it changes nothing)"));
+  set.node_group_id = line.id(41, 10, "grnod_IDi", IdKind::Other);
+  if (set.node_group_id <= 0) line.fail(41, 10, "grnod_IDi", "a positive node group id (the independent nodes)");
+}
+
+void read_rbe3(CardReader& reader, DeckContext& context) {
+  InterpolationConstraint c;
+  c.where = reader.card().where;
+  c.user_id = card_id(reader, 1);
+  c.title = read_title(reader);
+  const Line line = reader.next("Node_IDr, Trarot_ref, N_set, I_modif, Iform").as_written();
+  c.dependent_node_id = line.id(1, 10, "Node_IDr", IdKind::Node);
+  if (c.dependent_node_id <= 0) line.fail(1, 10, "Node_IDr", "a positive dependent node id");
+  const DofCodes codes = read_trarot(line, 14, "Trarot_ref");
+  for (std::size_t d = 0; d < 3; ++d) c.reference_dofs[d] = codes.translation[d], c.reference_dofs[3 + d] = codes.rotation[d];
+  const std::int64_t sets = line.integer(21, 10, "N_set");
+  if (sets < 1 || sets > 1000) line.fail(21, 10, "N_set", "the number of independent node sets, 1 to 1000");
+  c.i_modif = read_flag(line, 31, "I_modif", 1, 1, 3, "1 (weights made to carry each translation alike, default), "
+                                                     "2 (as given) or 3 (all 1)");
+  const std::int64_t iform = line.integer(41, 10, "Iform");
+  if (iform != 0 && iform != 1)
+    context.unsupported(line.error(41, 10, "Iform", "0 or 1 (the formulation the reference prints as IFORM 1)"));
+  for (std::int64_t k = 0; k < sets; ++k) {
+    InterpolationSet set;
+    read_interpolation_set(reader.next("WT_i, Trarot_Mi, skew_IDi, grnod_IDi").as_written(), set, context);
+    c.sets.push_back(set);
+  }
+  reader.finish();
+  context.model.interpolation_constraints.push_back(std::move(c));
+}
+
 }  // namespace
 
 void register_rigid_keywords(KeywordTable& table) {
   // /RWALL is registered whole so that other types get a clear "not supported" rather than "unknown keyword".
   table.push_back({"/RWALL", DeckPart::Starter, read_rigid_wall});
   table.push_back({"/RBODY", DeckPart::Starter, read_rigid_body});
+  table.push_back({"/RBE2", DeckPart::Starter, read_rbe2});
+  table.push_back({"/RBE3", DeckPart::Starter, read_rbe3});
 }
 
 }  // namespace crumple::deck
