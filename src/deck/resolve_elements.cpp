@@ -23,7 +23,7 @@ std::int32_t orientation_node(Resolver& r, ElementKind kind, const RawElements& 
   const std::int32_t property = m.parts[static_cast<std::size_t>(part)].property;
   if (kind == ElementKind::Spring && m.properties[static_cast<std::size_t>(property)].spring.frame != SpringFrame::Beam) {
     r.context.unsupported(DeckError(raw.orientation_where[e], keyword, "node_ID3",
-                                    "blank (a third node orients /PROP/TYPE13 springs only; on another type it is not "
+                                    "blank (a third node orients /PROP/TYPE13 and TYPE25 springs only; on another type it is not "
                                     "supported by Crumple)",
                                     std::to_string(id)));
     return -1;

@@ -34,7 +34,7 @@ SpringDofParameters dof_parameters(const SpringLaw& s, const std::vector<Functio
 }  // namespace
 
 SpringGroupParameters spring_parameters(const SpringSection& s, const std::vector<Function>& functions) {
-  SpringGroupParameters p{s.mass, s.inertia, s.frame};
+  SpringGroupParameters p{s.mass, s.inertia, s.frame, {}, s.radial};
   for (int d = 0; d < s.dofs(); ++d)
     p.dof[static_cast<std::size_t>(d)] = dof_parameters(s.dof[static_cast<std::size_t>(d)], functions);
   return p;
@@ -203,18 +203,35 @@ double last_work(SpringState& state, std::size_t slot, double elongation) {
   return work;
 }
 
-// One degree of freedom's force at elongation `delta` (its elastic part and dashpot, eq. SP-2) and its work over the
-// step, trapezoidal (eq. SP-3); the state's slot keeps the elongation, the force and the hardening.
-double dof_force(const SpringDofParameters& p, SpringState& state, std::size_t slot, double delta, double dt,
-                 double& work, double length0 = 0.0) {
+// What one law keeps from cycle to cycle: its elongation, force, elastic force and hardening variables.
+struct LawHistory {
+  double& elongation;
+  double& force;
+  double& elastic;
+  double& plastic_a;
+  double& plastic_b;
+};
+LawHistory slot_history(SpringState& state, std::size_t slot) {
+  return {state.elongation[slot], state.force[slot], state.elastic_force[slot], state.plastic_a[slot],
+          state.plastic_b[slot]};
+}
+// A TYPE25 spring's radial law (SP-20): `which` 0 the shear's, 1 the bending's.
+LawHistory radial_history(SpringState& state, std::size_t ue, std::size_t which) {
+  double* h = &state.radial_law[SpringState::kRadialValues * ue + 5 * which];
+  return {h[0], h[1], h[2], h[3], h[4]};
+}
+
+// One law's force at elongation `delta` (its elastic part and dashpot, eq. SP-2) and its work over the step,
+// trapezoidal (eq. SP-3); the history keeps the elongation, the force and the hardening.
+double law_force(const SpringDofParameters& p, LawHistory h, double delta, double dt, double& work,
+                 double length0 = 0.0) {
   // The elongation rate over the last step (none before the first: the reference's dashpot starts at rest).
-  const double rate = dt > 0.0 ? (delta - state.elongation[slot]) / dt : 0.0;
-  const double elastic = spring_elastic_force(p, delta, state.elongation[slot], state.elastic_force[slot],
-                                              state.plastic_a[slot], state.plastic_b[slot], length0);
-  state.elastic_force[slot] = elastic;
+  const double rate = dt > 0.0 ? (delta - h.elongation) / dt : 0.0;
+  const double elastic = spring_elastic_force(p, delta, h.elongation, h.elastic, h.plastic_a, h.plastic_b, length0);
+  h.elastic = elastic;
   const double force = elastic + p.damping * rate;
-  work += 0.5 * (state.force[slot] + force) * (delta - state.elongation[slot]);
-  state.force[slot] = force, state.elongation[slot] = delta;
+  work += 0.5 * (h.force + force) * (delta - h.elongation);
+  h.force = force, h.elongation = delta;
   return force;
 }
 
@@ -245,7 +262,7 @@ GroupStepResult axial_spring_forces(const ElementTable& table, const ElementGrou
       continue;
     }
     double work = 0.0;
-    const double force = dof_force(p.dof[0], state, slot, elongation, dt, work, state.length0[ue]);
+    const double force = law_force(p.dof[0], slot_history(state, slot), elongation, dt, work, state.length0[ue]);
     state.internal_energy[ue] += work;
     result.internal_energy += work;
 
@@ -254,6 +271,23 @@ GroupStepResult axial_spring_forces(const ElementTable& table, const ElementGrou
     close_element(state, result, e, state.nodal_step[ue], outside(p.dof[0], elongation));
   }
   return result;
+}
+
+// A TYPE25 spring's radial pair of degrees of freedom `d`, `d + 1` (shear Y and Z, or bending Y and Z): one law of
+// the magnitude r of (delta_d, delta_d+1), its force along them (SP-20); the slots keep the components.
+double radial_pair_step(const SpringDofParameters& law, SpringState& state, std::size_t ue, std::size_t d,
+                        const std::array<double, kSpringDofs>& delta, double dt, std::array<double, kSpringDofs>& f,
+                        bool& broken) {
+  const std::size_t slot = kSpringDofs * ue + d;
+  const double r = std::hypot(delta[d], delta[d + 1]);
+  double work = 0.0;
+  const double magnitude = law_force(law, radial_history(state, ue, d == 1 ? 0 : 1), r, dt, work);
+  for (std::size_t c = 0; c < 2; ++c) {
+    f[d + c] = r > 0.0 ? magnitude * delta[d + c] / r : 0.0;
+    state.force[slot + c] = f[d + c], state.elongation[slot + c] = delta[d + c];
+  }
+  broken = broken || outside(law, r);
+  return work;
 }
 
 // The six laws of a general or beam-type spring at their elongations: their forces `f` and work, and whether one
@@ -270,10 +304,16 @@ bool six_law_step(const SpringGroupParameters& p, SpringState& state, std::int32
       if (state.force[slot + d] != 0.0) work += last_work(state, slot + d, delta[d]);
       continue;
     }
-    f[d] = dof_force(p.dof[d], state, slot + d, delta[d], dt, work);  // a law without K, C or function: 0
+    if (p.radial && (d == 1 || d == 4)) {  // the pair d, d + 1 as one law (SP-20)
+      work += radial_pair_step(p.dof[d], state, ue, d, delta, dt, f, broken);
+      ++d;
+      continue;
+    }
+    f[d] = law_force(p.dof[d], slot_history(state, slot + d), delta[d], dt, work);  // no K, C or function: 0
     broken = broken || outside(p.dof[d], delta[d]);
-    if (!std::isfinite(f[d])) result.non_finite = e;
   }
+  for (std::size_t d = 0; d < kSpringDofs && active; ++d)
+    if (!std::isfinite(f[d])) result.non_finite = e;
   state.internal_energy[ue] += work;
   result.internal_energy += work;
   return active;

@@ -382,3 +382,31 @@ TEST(SpringKeywords, OrientationNodeOnlyForBeamTypeSprings) {
 }
 
 }  // namespace test_spring_keywords
+
+namespace test_spring_keywords {
+
+// /PROP/TYPE25 (SP-20): TYPE25's layout (F at columns 41-60 of a law's second line, Ascale first on its third), held as
+// TYPE13's six laws with shear Y = Z and bending Y = Z; the rate and failure tail may be absent.
+TEST(SpringKeywords, AxisymmetricSpringIsABeamTypeSpringWithRadialLaws) {
+  auto law = [](double k, double ascale, double delta_max) {
+    return R(k) + R(0.0) + R(1.0) + R(0.0) + R(0.0) + "\n" + I(0) + I(0) + I(0) + I(0) + R(1.0) + R(0.0) +
+           R(delta_max) + "\n" + R(ascale) + R(0.0) + I(0) + R(0.0) + "\n";
+  };
+  const std::string cards = "/NODE\n" + I(1) + R(0.0) + R(0.0) + R(0.0) + "\n" + I(2) + R(1.0) + R(0.0) + R(0.0) +
+                            "\n/SPRING/20\n" + I(7) + I(1) + I(2) + "\n/PART/20\nspring\n" + I(30) + I(0) +
+                            "\n/PROP/TYPE25/30\naxi\n" + R(0.01) + R(0.001) + "\n" + law(1e4, 0.0, 0.0) +
+                            law(2000.0, 2.0, 0.05) + law(30.0, 0.0, 0.0) + law(40.0, 0.0, 0.25);
+  test::TempDir dir;
+  const Model m = read_deck(dir.write("T_0000.rad", test::begin_card("T") + cards + "/END\n")).model;
+  const SpringSection& s = m.properties[0].spring;
+  EXPECT_TRUE(s.radial);
+  EXPECT_EQ(s.frame, SpringFrame::Beam);
+  EXPECT_EQ(s.card(), "SPR_AXI");
+  const std::array<double, 6> stiffness{1e4, 2000.0, 2000.0, 30.0, 40.0, 40.0};
+  for (std::size_t d = 0; d < 6; ++d) EXPECT_DOUBLE_EQ(s.dof[d].stiffness, stiffness[d]) << d;
+  EXPECT_DOUBLE_EQ(s.dof[2].abscissa_scale, 2.0);  // the shear's Ascale, first on its third line
+  EXPECT_DOUBLE_EQ(s.dof[1].delta_max, 0.05);
+  EXPECT_DOUBLE_EQ(s.dof[5].delta_max, 0.25);  // the bending's limit, on its magnitude (SP-20)
+}
+
+}  // namespace test_spring_keywords

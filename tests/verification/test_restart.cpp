@@ -10,7 +10,8 @@
 // the mass damping of an engine /DAMP (damping_springs), general springs beside axial ones and trusses
 // (springs_mixed_damped), beam-type springs (beam_spring_cantilever), a spot weld tied to two plates
 // (tied_spot_weld), trusses letting go over their last cycles (truss_tower_fails), a frame of beams past yield
-// (beam_frame_plastic), a bolt on an /RBE2 (rbe2_bolt_beam) and a mass on an /RBE3 (rbe3_mass_dependent).
+// (beam_frame_plastic), a bolt on an /RBE2 (rbe2_bolt_beam), a mass on an /RBE3 (rbe3_mass_dependent) and an
+// axisymmetric spring's radial law (spring_axi_swinging_mass).
 #include <gtest/gtest.h>
 #include <hdf5.h>
 
@@ -174,7 +175,9 @@ INSTANTIATE_TEST_SUITE_P(
                       // /RBE2: a bolt's main node and the shell nodes it carries, from their positions and velocities
                       RestartCase{"rbe2_bolt_beam", kPeerDecks / "rbe2_bolt_beam" / "RBEBOLT_0000.rad", 600},
                       // /RBE3: the dependent node's mass spread, its motion from the independent nodes
-                      RestartCase{"rbe3_mass_dependent", kPeerDecks / "rbe3_mass_dependent" / "RBE3MD_0000.rad", 400}),
+                      RestartCase{"rbe3_mass_dependent", kPeerDecks / "rbe3_mass_dependent" / "RBE3MD_0000.rad", 400},
+                      // /PROP/TYPE25: the radial shear law's own history (SP-20)
+                      RestartCase{"spring_axi_swinging_mass", kPeerDecks / "spring_axi_swinging_mass" / "AXISWING_0000.rad", 2000}),
     [](const auto& p) { return std::string(p.param.name); });
 
 TEST(Restart, FileOfAnotherModelIsRefusedWithItsCounts) {

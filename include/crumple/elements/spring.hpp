@@ -32,6 +32,7 @@ struct SpringGroupParameters {
   double inertia = 0.0;  // I, a general or beam-type spring's rotational inertia [M L^2]
   SpringFrame frame = SpringFrame::Axial;  // TYPE4 along the nodes; TYPE8 the global axes (SP-9); TYPE13 (SP-15)
   std::array<SpringDofParameters, kSpringDofs> dof{};  // /PROP/TYPE4: dof[0]
+  bool radial = false;  // TYPE25: shear and bending on the radial magnitude (SP-20)
 };
 
 // The curve of the spring, g(delta) = A f(delta / Ascale) [F] (eq. SP-2b).

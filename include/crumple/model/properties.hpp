@@ -83,8 +83,12 @@ struct SpringSection {
   std::array<SpringLaw, kSpringDofs> dof;  // TYPE4: dof[0] only
   std::int64_t skew_id = 0;  // TYPE13: the skew whose Y orients the frame at rest (SP-15); 0: global Y
   std::int32_t skew = -1;
+  // TYPE25: the beam-type spring whose shear (dof[1] = dof[2]) and bending (dof[4] = dof[5]) are each one law of the
+  // magnitude of the radial displacement or rotation (docs/theory/spring.md, SP-20).
+  bool radial = false;
   int dofs() const { return frame == SpringFrame::Axial ? 1 : kSpringDofs; }
   std::string_view card() const {  // /PROP/<card>
+    if (radial) return "SPR_AXI";
     return frame == SpringFrame::Axial ? "SPRING" : frame == SpringFrame::Global ? "SPR_GENE" : "SPR_BEAM";
   }
 };

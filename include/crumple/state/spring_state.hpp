@@ -31,11 +31,15 @@ struct SpringState : ElementKindState {  // no integration points: points and ep
   // Hardening: H 1 and 6, the hardening displacement x (SP-6, SP-12) and 0; H 2, the plastic elongations of the
   // tension and of the compression side (SP-7); H 5, each side's largest elongation (SP-11) [L].
   std::vector<double> plastic_a, plastic_b;
+  // TYPE25 (SP-20): the radial shear's and bending's laws, each its own history of the magnitude (elongation,
+  // force, elastic force, hardening a and b), kRadialValues per spring; the slots above keep their components.
+  static constexpr std::size_t kRadialValues = 10;
+  std::vector<double> radial_law;
 
   void resize_elements(std::size_t n) {
     resize_common(n);
     for (auto* v : {&length0, &step_stiffness, &nodal_step}) v->assign(n, 0.0);
-    rest_offset.assign(3 * n, 0.0), frame_y.assign(3 * n, 0.0);
+    rest_offset.assign(3 * n, 0.0), frame_y.assign(3 * n, 0.0), radial_law.assign(kRadialValues * n, 0.0);
     for (auto* v : {&elongation, &force, &elastic_force, &plastic_a, &plastic_b}) v->assign(kSpringDofs * n, 0.0);
   }
 };

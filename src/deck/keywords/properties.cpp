@@ -191,9 +191,11 @@ struct SpringLawNames {
   std::string k, c, a, b, d, curve, h, unloading, lower, rate, delta_min, delta_max, f, e, ascale, hscale;
   // A rotation's law (XX, YY, ZZ) is a moment against an angle in radians.
   Dimension stiffness = dim::stiffness, damping = dim::viscous_damping, force = dim::force, displacement = dim::length;
-  int dof = 0;  // 0: TYPE4's law; 1 to 6: a TYPE8 law's degree of freedom
-  explicit SpringLawNames(int index) : dof(index) {
-    if (dof > 3)
+  int dof = 0;  // 0: TYPE4's law; 1 to 6: a TYPE8 law's degree of freedom (1 to 4 for TYPE25's)
+  bool axisymmetric = false;  // TYPE25's layout of the law's last two lines (SP-20)
+  // `first_rotation`: the first degree of freedom that is a rotation (4 for TYPE8 and TYPE13, 3 for TYPE25).
+  explicit SpringLawNames(int index, int first_rotation = 4) : dof(index) {
+    if (dof >= first_rotation)
       stiffness = dim::moment, damping = Dimension{1, 2, -1}, force = dim::moment, displacement = dim::none;
     const std::string i = dof == 0 ? "" : std::to_string(dof), j = dof == 0 ? "1" : std::to_string(dof);
     k = "K" + i, c = "C" + i, a = "A" + i, b = "B" + i, d = "D" + i, h = "H" + i;
@@ -268,14 +270,36 @@ void check_spring_hardening(const Line& third, CardReader& reader, DeckContext& 
   }
 }
 
+void read_abscissa_scale(const Line& line, int column, const CardReader& reader, SpringLaw& s, const SpringLawNames& n) {
+  const double ascale = line.real(column, 20, n.ascale, dim::none);
+  if (ascale < 0.0) line.fail(column, 20, n.ascale, "a positive abscissa scale (0 or blank: 1)");
+  s.abscissa_scale = (ascale == 0.0 ? 1.0 : ascale) * reader.units().factor(n.displacement);
+}
+
+// TYPE25's third line of a law: Ascale, E, fct_ID4, Hscale (its F is on the line before).
+void read_axisymmetric_law_scales(const Line& line, const CardReader& reader, DeckContext& context, SpringLaw& s,
+                                  const SpringLawNames& n) {
+  read_abscissa_scale(line, 1, reader, s, n);
+  spring_default_only(line, context, 21, 20, n.e, line.real(21, 20, n.e, dim::none), 1.0,
+                      "the rate effect's factor E (with a function) is");
+  if (line.optional_id(41, 10, n.rate, IdKind::Other) != 0)
+    context.unsupported(line.error(41, 10, n.rate, default_only("a rate function (with B) is")));
+  spring_default_only(line, context, 51, 20, n.hscale, line.real(51, 20, n.hscale, dim::none), 1.0,
+                      "the ordinate scale of the hardening functions (with H) is");
+}
+
 // A law's second and third lines: fct_ID1, H, fct_ID2, fct_ID3, fct_ID4, delta_min, delta_max; F, E, Ascale, Hscale.
 void read_spring_law(CardReader& reader, DeckContext& context, SpringLaw& s, const SpringLawNames& n) {
   const Line third = reader.next("fct_ID1, H, fct_ID2, fct_ID3, fct_ID4, delta_min, delta_max");
   s.function_id = third.optional_id(1, 10, n.curve, IdKind::Other);
   s.lower_function_id = third.optional_id(31, 10, n.lower, IdKind::Other);
+  // TYPE25 has F at 41-60 here and fct_ID4 on the next line (measured, its starter listing).
   for (const auto& [column, name] : {std::pair{21, &n.unloading}, {41, &n.rate}})
-    if (third.optional_id(column, 10, *name, IdKind::Other) != 0)
+    if (!(n.axisymmetric && column == 41) && third.optional_id(column, 10, *name, IdKind::Other) != 0)
       context.unsupported(third.error(column, 10, *name, default_only("an unloading or rate function (with H or B) is")));
+  if (n.axisymmetric)
+    spring_default_only(third, context, 41, 20, n.f, third.real(41, 20, n.f, dim::none), 1.0,
+                        "the rate effect's velocity scale (with B or a function) is");
   // A scales the function only: the reference prints A = 1 for a spring without one (measured, /PROP/SPRING with
   // K 1000 and A 2: the same energies as A 1), so a linear spring ignores it, as the reference does.
   if (s.function_id == 0 && s.function_scale != reader.units().factor(n.force))
@@ -295,14 +319,16 @@ void read_spring_law(CardReader& reader, DeckContext& context, SpringLaw& s, con
   if (low < 0.0) s.delta_min = low;
   if (high > 0.0) s.delta_max = high;
   if (!reader.has_data()) return;
+  if (n.axisymmetric) {
+    read_axisymmetric_law_scales(reader.next("Ascale, E, fct_ID4, Hscale"), reader, context, s, n);
+    return;
+  }
   const Line fourth = reader.next("F, E, Ascale, Hscale");
   spring_default_only(fourth, context, 1, 20, n.f, fourth.real(1, 20, n.f, dim::none), 1.0,
                       "the rate effect's velocity scale (with B or a function) is");
   spring_default_only(fourth, context, 21, 20, n.e, fourth.real(21, 20, n.e, dim::none), 1.0,
                       "the rate effect's factor E (with a function) is");
-  const double ascale = fourth.real(41, 20, n.ascale, dim::none);
-  if (ascale < 0.0) fourth.fail(41, 20, n.ascale, "a positive abscissa scale (0 or blank: 1)");
-  s.abscissa_scale = (ascale == 0.0 ? 1.0 : ascale) * reader.units().factor(n.displacement);
+  read_abscissa_scale(fourth, 41, reader, s, n);
   spring_default_only(fourth, context, 61, 20, n.hscale, fourth.real(61, 20, n.hscale, dim::none), 1.0,
                       "the ordinate scale of the hardening functions (with H) is");
 }
@@ -424,6 +450,38 @@ void read_beam_spring_property(CardReader& reader, DeckContext& context) {
   context.model.properties.push_back(std::move(p));
 }
 
+// /PROP/TYPE25 (/PROP/SPR_AXI): the beam-type spring whose shear and bending are each one law of the radial magnitude
+// (docs/theory/spring.md, SP-20). Line 1 as TYPE13's; four laws (tension, shear, torsion, bending) in TYPE25's layout,
+// held as TYPE13's six with shear Y = Z and bending Y = Z; the rate line (Vo, Wo) and four lines c, n, alpha, beta
+// (Ifail2 only), each optional (measured: the reference reads them so, not as its manual's four lines c, n).
+void read_axisymmetric_spring_property(CardReader& reader, DeckContext& context) {
+  refuse_narrow_layout(reader);
+  Property p = begin_property(reader, PropertyKind::Spring);
+  p.spring.frame = SpringFrame::Beam;
+  p.spring.radial = true;
+  read_beam_spring_mass(reader, context, p.spring);
+  constexpr std::size_t kSlot[4] = {0, 1, 3, 4};  // tension, shear, torsion, bending in TYPE13's order
+  for (int d = 0; d < 4; ++d) {
+    SpringLawNames names(d + 1, 3);
+    names.axisymmetric = true;
+    SpringLaw& law = p.spring.dof[kSlot[d]];
+    read_spring_stiffness(reader, context, law, names);
+    read_spring_law(reader, context, law, names);
+  }
+  p.spring.dof[2] = p.spring.dof[1], p.spring.dof[5] = p.spring.dof[4];
+  if (reader.has_data()) {
+    const Line rate = reader.next("Vo, Wo");
+    rate.real(1, 20, "Vo", dim::velocity), rate.real(21, 20, "Wo", dim::angular_velocity);  // rate effects only
+  }
+  for (int d = 0; d < 4 && reader.has_data(); ++d) {
+    const Line failure = *reader.next_nonblank();
+    for (const auto& [column, name] : {std::pair{1, "c"}, {21, "n"}, {41, "alpha"}, {61, "beta"}})
+      failure.real(column, 20, name, dim::none);  // read to check them; they act with Ifail2 only (refused)
+  }
+  reader.finish();
+  context.model.properties.push_back(std::move(p));
+}
+
 // /PROP/TYPE2 (/PROP/TRUSS): the truss's initial cross-section and gap (docs/theory/truss.md).
 void read_truss_property(CardReader& reader, DeckContext& context) {
   refuse_narrow_layout(reader);
@@ -488,6 +546,8 @@ void register_property_keywords(KeywordTable& table) {
   table.push_back({"/PROP/SPR_GENE", DeckPart::Starter, read_general_spring_property});
   table.push_back({"/PROP/TYPE13", DeckPart::Starter, read_beam_spring_property});
   table.push_back({"/PROP/SPR_BEAM", DeckPart::Starter, read_beam_spring_property});
+  table.push_back({"/PROP/TYPE25", DeckPart::Starter, read_axisymmetric_spring_property});
+  table.push_back({"/PROP/SPR_AXI", DeckPart::Starter, read_axisymmetric_spring_property});
 }
 
 }  // namespace crumple::deck
