@@ -1,6 +1,9 @@
 // /RBE2: secondary nodes carried rigidly by a main node that stays where it is (docs/theory/rigid-bodies.md,
 // RE-1 to RE-5). Each group's sums are exact, each node's terms from the domain that owns it, combined over the
 // domains, so that every domain moves the main node alike; every domain then places its own secondary nodes.
+#include <fmt/format.h>
+
+#include "crumple/core/deck_error.hpp"
 #include "solver/internal.hpp"
 
 namespace crumple::solver {
@@ -59,6 +62,10 @@ void setup_rigid_elements(const Model& m, SolverState& s) {
     const RigidElement& e = m.rigid_elements[i];
     RigidElementState& g = s.rigid_elements[i];
     keep_mass_terms(e, &sums[kSums * i], g);
+    if (!(g.mass > 0.0))  // nothing to carry the group's force: the reference stops too (its error 804)
+      throw DeckError(e.where, fmt::format("/RBE2/{}", e.user_id), "grnod_ID",
+                      "a group with mass (its main node's or its secondary nodes'), as the reference requires",
+                      "no mass");
     find_main_node_conditions(m, e.main_node, g.main_node_conditions, g.main_node_skewed_fixes);
     const auto main = static_cast<std::size_t>(e.main_node);
     // The secondary nodes start with the main node's motion (RE-3): an /INIVEL of the main node moves the group,
