@@ -14,6 +14,7 @@ namespace {
 
 SpringDofParameters dof_parameters(const SpringLaw& s, const std::vector<Function>& functions) {
   SpringDofParameters p{s.stiffness, s.damping, s.delta_min, s.delta_max};
+  p.rate_c = s.rate_c, p.rate_n = s.rate_n, p.alpha = s.alpha, p.beta = s.beta;
   p.step_stiffness = s.stiffness;
   if (s.function < 0) return p;
   p.function = &functions[static_cast<std::size_t>(s.function)];
@@ -34,7 +35,7 @@ SpringDofParameters dof_parameters(const SpringLaw& s, const std::vector<Functio
 }  // namespace
 
 SpringGroupParameters spring_parameters(const SpringSection& s, const std::vector<Function>& functions) {
-  SpringGroupParameters p{s.mass, s.inertia, s.frame, {}, s.radial};
+  SpringGroupParameters p{s.mass, s.inertia, s.frame, {}, s.radial, s.failure};
   for (int d = 0; d < s.dofs(); ++d)
     p.dof[static_cast<std::size_t>(d)] = dof_parameters(s.dof[static_cast<std::size_t>(d)], functions);
   return p;
@@ -273,45 +274,92 @@ GroupStepResult axial_spring_forces(const ElementTable& table, const ElementGrou
   return result;
 }
 
+// What a law's failure criterion reads from its cycle (SP-5b): its elongation, force and rate, and the work done on
+// it so far.
+struct LawFailureValues {
+  double elongation = 0.0, force = 0.0, rate = 0.0, energy = 0.0;
+  bool present = false;
+};
+
+// One law's force at elongation `delta` and its failure values; the work over the step into `work` and the law's own.
+double law_step(const SpringDofParameters& law, LawHistory h, double& energy, double delta, double dt, double& work,
+                LawFailureValues& values) {
+  const double rate = dt > 0.0 ? (delta - h.elongation) / dt : 0.0;
+  double own = 0.0;
+  const double force = law_force(law, h, delta, dt, own);
+  work += own, energy += own;
+  values = {delta, force, rate, energy, true};
+  return force;
+}
+
 // A TYPE25 spring's radial pair of degrees of freedom `d`, `d + 1` (shear Y and Z, or bending Y and Z): one law of
 // the magnitude r of (delta_d, delta_d+1), its force along them (SP-20); the slots keep the components.
-double radial_pair_step(const SpringDofParameters& law, SpringState& state, std::size_t ue, std::size_t d,
-                        const std::array<double, kSpringDofs>& delta, double dt, std::array<double, kSpringDofs>& f,
-                        bool& broken) {
+void radial_pair_step(const SpringDofParameters& law, SpringState& state, std::size_t ue, std::size_t d,
+                      const std::array<double, kSpringDofs>& delta, double dt, std::array<double, kSpringDofs>& f,
+                      double& work, LawFailureValues& values) {
   const std::size_t slot = kSpringDofs * ue + d;
   const double r = std::hypot(delta[d], delta[d + 1]);
-  double work = 0.0;
-  const double magnitude = law_force(law, radial_history(state, ue, d == 1 ? 0 : 1), r, dt, work);
+  const double magnitude =
+      law_step(law, radial_history(state, ue, d == 1 ? 0 : 1), state.law_energy[slot], r, dt, work, values);
   for (std::size_t c = 0; c < 2; ++c) {
     f[d + c] = r > 0.0 ? magnitude * delta[d + c] / r : 0.0;
     state.force[slot + c] = f[d + c], state.elongation[slot + c] = delta[d + c];
   }
-  broken = broken || outside(law, r);
-  return work;
 }
 
-// The six laws of a general or beam-type spring at their elongations: their forces `f` and work, and whether one
-// breaks it (SP-5, any law: Ifail 0). False for a spring broken last cycle: its last forces do their work over the
-// step they acted (SP-5a), and nothing more.
+// A law's share of the failure criterion (SP-5b): its value over its limit, the limit raised by c (|rate| / V)^n
+// where the rate acts; 0 where it has no limit on that side.
+double failure_ratio(const SpringFailure& failure, const SpringDofParameters& law, const LawFailureValues& v,
+                     bool rotation) {
+  const double x = failure.measure == SpringFailureMeasure::Force    ? v.force
+                 : failure.measure == SpringFailureMeasure::Energy ? v.energy : v.elongation;
+  // The energy against delta_max always; the others against delta_max or |delta_min| by their sign.
+  const double limit = failure.measure == SpringFailureMeasure::Energy || x >= 0.0 ? law.delta_max : -law.delta_min;
+  if (!(limit < 1e29)) return 0.0;  // none on that side
+  double raised = limit;
+  if (failure.rate_effect && law.rate_c != 0.0)
+    raised += law.rate_c * std::pow(std::abs(v.rate) / (rotation ? failure.rotation_rate : failure.translation_rate),
+                                    law.rate_n);
+  return std::abs(x) / raised;
+}
+
+// Ifail 0: one law with alpha x / lim >= 1; Ifail 1: the sum of alpha (x / lim)^beta >= 1 (SP-5b).
+bool spring_breaks(const SpringGroupParameters& p, const std::array<LawFailureValues, kSpringDofs>& values) {
+  double sum = 0.0;
+  for (std::size_t d = 0; d < kSpringDofs; ++d) {
+    if (!values[d].present) continue;
+    const SpringDofParameters& law = p.dof[d];
+    const double ratio = failure_ratio(p.failure, law, values[d], d >= 3);
+    if (!p.failure.combined && law.alpha * ratio >= 1.0) return true;
+    if (p.failure.combined && ratio > 0.0) sum += law.alpha * std::pow(ratio, law.beta);
+  }
+  return p.failure.combined && sum >= 1.0;
+}
+
+// The six laws of a general or beam-type spring at their elongations: their forces `f` and work, and whether they
+// break it (SP-5b). False for a spring broken last cycle: its last forces do their work over the step they acted
+// (SP-5a), and nothing more.
 bool six_law_step(const SpringGroupParameters& p, SpringState& state, std::int32_t e,
                   const std::array<double, kSpringDofs>& delta, double dt, GroupStepResult& result,
                   std::array<double, kSpringDofs>& f, bool& broken) {
   const auto ue = static_cast<std::size_t>(e), slot = kSpringDofs * ue;
   double work = 0.0;
   const bool active = !state.deleted[ue];
+  std::array<LawFailureValues, kSpringDofs> values{};
   for (std::size_t d = 0; d < kSpringDofs; ++d) {
     if (!active) {
       if (state.force[slot + d] != 0.0) work += last_work(state, slot + d, delta[d]);
       continue;
     }
     if (p.radial && (d == 1 || d == 4)) {  // the pair d, d + 1 as one law (SP-20)
-      work += radial_pair_step(p.dof[d], state, ue, d, delta, dt, f, broken);
+      radial_pair_step(p.dof[d], state, ue, d, delta, dt, f, work, values[d]);
       ++d;
       continue;
     }
-    f[d] = law_force(p.dof[d], slot_history(state, slot + d), delta[d], dt, work);  // no K, C or function: 0
-    broken = broken || outside(p.dof[d], delta[d]);
+    // A law without K, C or function: 0.
+    f[d] = law_step(p.dof[d], slot_history(state, slot + d), state.law_energy[slot + d], delta[d], dt, work, values[d]);
   }
+  if (active) broken = broken || spring_breaks(p, values);
   for (std::size_t d = 0; d < kSpringDofs && active; ++d)
     if (!std::isfinite(f[d])) result.non_finite = e;
   state.internal_energy[ue] += work;

@@ -252,7 +252,8 @@ TEST(SpringKeywords, GeneralSpringRefusalsNameTheirField) {
             std::string::npos);
   EXPECT_NE(general_error(general_property({R(1000.0), "", "", "", "", ""}, 0.01, I(5))).find("skew_ID"),
             std::string::npos);
-  EXPECT_NE(general_error(general_property({R(1000.0), "", "", "", "", ""}, 0.01, I(0) + I(0) + I(0) + I(1)))
+  // Ifail is 0 (each law on its own) or 1 (combined, SP-5b).
+  EXPECT_NE(general_error(general_property({R(1000.0), "", "", "", "", ""}, 0.01, I(0) + I(0) + I(0) + I(2)))
                 .find("Ifail"),
             std::string::npos);
   // The second degree of freedom's hardening names its own field.
@@ -407,6 +408,38 @@ TEST(SpringKeywords, AxisymmetricSpringIsABeamTypeSpringWithRadialLaws) {
   EXPECT_DOUBLE_EQ(s.dof[2].abscissa_scale, 2.0);  // the shear's Ascale, first on its third line
   EXPECT_DOUBLE_EQ(s.dof[1].delta_max, 0.05);
   EXPECT_DOUBLE_EQ(s.dof[5].delta_max, 0.25);  // the bending's limit, on its magnitude (SP-20)
+}
+
+}  // namespace test_spring_keywords
+
+namespace test_spring_keywords {
+
+// Ifail and Ifail2 of /PROP/TYPE13 (SP-5b): Ifail 1 combines the laws; Ifail2 2 compares forces, its limits read in
+// force units, raised by c (|rate| / Vo)^n from the failure lines, whose blank n, alpha, beta are 1, 1, 2.
+TEST(SpringKeywords, BeamTypeSpringFailureCriteria) {
+  auto law = [](double k, double delta_max) {
+    return R(k) + R(0.0) + R(1.0) + R(0.0) + R(0.0) + "\n" + I(0) + I(0) + I(0) + I(0) + I(0) + std::string(10, ' ') +
+           R(0.0) + R(delta_max) + "\n" + R(0.0) + R(0.0) + R(1.0) + R(0.0) + "\n";
+  };
+  std::string cards = "/NODE\n" + I(1) + R(0.0) + R(0.0) + R(0.0) + "\n" + I(2) + R(1.0) + R(0.0) + R(0.0) +
+                      "\n/SPRING/20\n" + I(7) + I(1) + I(2) + "\n/PART/20\nspring\n" + I(30) + I(0) +
+                      "\n/PROP/TYPE13/30\nweld\n" + R(0.01) + R(0.001) + I(0) + I(0) + I(0) + I(1) + I(0) + I(2) + "\n";
+  cards += law(1e4, 60.0);
+  for (int d = 1; d < 6; ++d) cards += law(100.0, 0.0);
+  cards += R(0.5) + R(0.0) + "\n" + R(20.0) + R(0.0) + R(0.0) + R(3.0) + "\n";
+  test::TempDir dir;
+  const Model m = read_deck(dir.write("T_0000.rad", test::begin_card("T") + cards + "/END\n")).model;
+  const SpringSection& s = m.properties[0].spring;
+  EXPECT_TRUE(s.failure.combined);
+  EXPECT_EQ(s.failure.measure, SpringFailureMeasure::Force);
+  EXPECT_TRUE(s.failure.rate_effect);
+  EXPECT_DOUBLE_EQ(s.failure.translation_rate, 0.5);
+  EXPECT_DOUBLE_EQ(s.failure.rotation_rate, 1.0);  // Wo blank: 1
+  EXPECT_DOUBLE_EQ(s.dof[0].delta_max, 60.0);
+  EXPECT_DOUBLE_EQ(s.dof[0].rate_c, 20.0);
+  EXPECT_DOUBLE_EQ(s.dof[0].rate_n, 1.0);
+  EXPECT_DOUBLE_EQ(s.dof[0].alpha, 1.0);
+  EXPECT_DOUBLE_EQ(s.dof[0].beta, 3.0);
 }
 
 }  // namespace test_spring_keywords

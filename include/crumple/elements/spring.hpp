@@ -24,6 +24,7 @@ struct SpringDofParameters {
                       // (SP-11), 6 unloading curve (SP-12), 7 hysteresis (SP-13), 8 total length (SP-14)
   const Function* lower_function = nullptr;  // fct_ID3: H 4's lower yield curve, H 5's residual elongation,
                                              // H 6 and 7's unloading curve
+  double rate_c = 0.0, rate_n = 1.0, alpha = 1.0, beta = 2.0;  // SP-5b
 };
 
 // Everything a spring kernel needs about a group that is the same for all its springs.
@@ -33,6 +34,7 @@ struct SpringGroupParameters {
   SpringFrame frame = SpringFrame::Axial;  // TYPE4 along the nodes; TYPE8 the global axes (SP-9); TYPE13 (SP-15)
   std::array<SpringDofParameters, kSpringDofs> dof{};  // /PROP/TYPE4: dof[0]
   bool radial = false;  // TYPE25: shear and bending on the radial magnitude (SP-20)
+  SpringFailure failure;  // SP-5b
 };
 
 // The curve of the spring, g(delta) = A f(delta / Ascale) [F] (eq. SP-2b).

@@ -65,7 +65,11 @@ struct SpringLaw {
   int hardening = 0;  // H: 0 elastic (on the function), 1 isotropic, 2 uncoupled, 4 kinematic (SP-6 to SP-8)
   std::int64_t lower_function_id = 0;  // fct_ID3: the lower yield curve of kinematic hardening (H 4)
   std::int32_t lower_function = -1;
-  double delta_min = -1e30, delta_max = 1e30;  // the elongations that break it (0 or blank: never) [L]
+  double delta_min = -1e30, delta_max = 1e30;  // the elongations that break it (0 or blank: never) [L]; with
+                                                // Ifail2, forces [F] or energies [E] (SP-5b)
+  // TYPE13's failure line of this degree of freedom (with Ifail2 >= 1, SP-5b): the limit raised by c (|rate| / V)^n,
+  // and the criterion's weight alpha and exponent beta.
+  double rate_c = 0.0, rate_n = 1.0, alpha = 1.0, beta = 2.0;
   bool acts() const { return stiffness > 0.0 || damping > 0.0 || function_id != 0; }
 };
 
@@ -75,6 +79,17 @@ inline constexpr int kSpringDofs = 6;  // the most a spring has: three translati
 // /PROP/TYPE8 (= /PROP/SPR_GENE), six in the global axes; /PROP/TYPE13 (= /PROP/SPR_BEAM), six in a frame that
 // turns with the spring, shear and bending coupled as a beam's.
 enum class SpringFrame : std::uint8_t { Axial, Global, Beam };
+
+// How a general or beam-type spring fails (Ifail, Ifail2; docs/theory/spring.md, SP-5b). Each law's value x (its
+// elongation, its force or the work done on it) against its limit: Ifail 0 breaks the spring when one law reaches
+// alpha x / lim >= 1, Ifail 1 when the sum of alpha (x / lim)^beta does.
+enum class SpringFailureMeasure : std::uint8_t { Elongation, Force, Energy };
+struct SpringFailure {
+  bool combined = false;  // Ifail 1
+  SpringFailureMeasure measure = SpringFailureMeasure::Elongation;
+  bool rate_effect = false;  // TYPE13 with Ifail2 >= 1: the limits raised by the rate, alpha and beta from its lines
+  double translation_rate = 1.0, rotation_rate = 1.0;  // Vo [L/T], Wo [1/T] (0 or blank: 1)
+};
 
 struct SpringSection {
   double mass = 0.0;     // M, the spring's mass, half at each node [M]; > 0 (the reference refuses 0)
@@ -86,6 +101,7 @@ struct SpringSection {
   // TYPE25: the beam-type spring whose shear (dof[1] = dof[2]) and bending (dof[4] = dof[5]) are each one law of the
   // magnitude of the radial displacement or rotation (docs/theory/spring.md, SP-20).
   bool radial = false;
+  SpringFailure failure;  // TYPE8, TYPE13, TYPE25 (TYPE4: Ifail 0 on the elongation)
   int dofs() const { return frame == SpringFrame::Axial ? 1 : kSpringDofs; }
   std::string_view card() const {  // /PROP/<card>
     if (radial) return "SPR_AXI";

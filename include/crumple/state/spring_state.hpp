@@ -35,12 +35,16 @@ struct SpringState : ElementKindState {  // no integration points: points and ep
   // force, elastic force, hardening a and b), kRadialValues per spring; the slots above keep their components.
   static constexpr std::size_t kRadialValues = 10;
   std::vector<double> radial_law;
+  // kSpringDofs per spring: the work done on each law so far, its dashpot's included, which Ifail2's energy criterion
+  // reads (SP-5b) [E].
+  std::vector<double> law_energy;
 
   void resize_elements(std::size_t n) {
     resize_common(n);
     for (auto* v : {&length0, &step_stiffness, &nodal_step}) v->assign(n, 0.0);
     rest_offset.assign(3 * n, 0.0), frame_y.assign(3 * n, 0.0), radial_law.assign(kRadialValues * n, 0.0);
-    for (auto* v : {&elongation, &force, &elastic_force, &plastic_a, &plastic_b}) v->assign(kSpringDofs * n, 0.0);
+    for (auto* v : {&elongation, &force, &elastic_force, &plastic_a, &plastic_b, &law_energy})
+      v->assign(kSpringDofs * n, 0.0);
   }
 };
 

@@ -193,10 +193,14 @@ struct SpringLawNames {
   Dimension stiffness = dim::stiffness, damping = dim::viscous_damping, force = dim::force, displacement = dim::length;
   int dof = 0;  // 0: TYPE4's law; 1 to 6: a TYPE8 law's degree of freedom (1 to 4 for TYPE25's)
   bool axisymmetric = false;  // TYPE25's layout of the law's last two lines (SP-20)
+  Dimension limit = dim::length;  // delta_min, delta_max: an elongation, or with Ifail2 a force or an energy (SP-5b)
+  bool rotation = false;
   // `first_rotation`: the first degree of freedom that is a rotation (4 for TYPE8 and TYPE13, 3 for TYPE25).
   explicit SpringLawNames(int index, int first_rotation = 4) : dof(index) {
-    if (dof >= first_rotation)
-      stiffness = dim::moment, damping = Dimension{1, 2, -1}, force = dim::moment, displacement = dim::none;
+    rotation = dof >= first_rotation;
+    if (rotation)
+      stiffness = dim::moment, damping = Dimension{1, 2, -1}, force = dim::moment, displacement = dim::none,
+      limit = dim::none;
     const std::string i = dof == 0 ? "" : std::to_string(dof), j = dof == 0 ? "1" : std::to_string(dof);
     k = "K" + i, c = "C" + i, a = "A" + i, b = "B" + i, d = "D" + i, h = "H" + i;
     curve = "fct_ID1" + j, unloading = "fct_ID2" + j, lower = "fct_ID3" + j, rate = "fct_ID4" + j;
@@ -312,10 +316,10 @@ void read_spring_law(CardReader& reader, DeckContext& context, SpringLaw& s, con
   if (s.hardening == 8 && n.dof > 0)  // a six-law spring's law: its total length is not measured
     context.unsupported(third.error(11, 10, n.h, "0 to 7 for a spring of six laws (H 8, the total length's curve, is "
                                                  "not supported by Crumple on /PROP/TYPE8 and TYPE13)"));
-  const double low = third.real(61, 20, n.delta_min, n.displacement);
-  const double high = third.real(81, 20, n.delta_max, n.displacement);
-  if (low > 0.0) third.fail(61, 20, n.delta_min, "a negative failure elongation (0 or blank: none)");
-  if (high < 0.0) third.fail(81, 20, n.delta_max, "a positive failure elongation (0 or blank: none)");
+  const double low = third.real(61, 20, n.delta_min, n.limit);
+  const double high = third.real(81, 20, n.delta_max, n.limit);
+  if (low > 0.0) third.fail(61, 20, n.delta_min, "a negative failure limit (0 or blank: none)");
+  if (high < 0.0) third.fail(81, 20, n.delta_max, "a positive failure limit (0 or blank: none)");
   if (low < 0.0) s.delta_min = low;
   if (high > 0.0) s.delta_max = high;
   if (!reader.has_data()) return;
@@ -369,14 +373,22 @@ void read_six_law_spring_line(const Line& first, DeckContext& context, SpringSec
     context.unsupported(first.error(51, 10, "sens_ID", default_only("a spring switched by a sensor is")));
   spring_default_only(first, context, 61, 10, "Isflag", static_cast<double>(first.integer(61, 10, "Isflag")), 0.0,
                       "the sensor flag (with a sensor) is");
-  spring_default_only(first, context, 71, 10, "Ifail", static_cast<double>(first.integer(71, 10, "Ifail")), 0.0,
-                      "the multi-directional failure criterion is");
+  const std::int64_t ifail = first.integer(71, 10, "Ifail");
+  if (ifail != 0 && ifail != 1) first.fail(71, 10, "Ifail", "0 (each law on its own) or 1 (the laws combined)");
+  s.failure.combined = ifail == 1;
+}
+
+// The limits' dimension of a failure measure (SP-5b): an elongation, a force or an energy.
+void set_limit_dimension(SpringLawNames& n, SpringFailureMeasure measure) {
+  if (measure == SpringFailureMeasure::Force) n.limit = n.rotation ? dim::moment : dim::force;
+  if (measure == SpringFailureMeasure::Energy) n.limit = dim::moment;  // an energy
 }
 
 // The six laws of a /PROP/TYPE8 or /PROP/TYPE13 spring, three lines each, X to ZZ.
 void read_six_laws(CardReader& reader, DeckContext& context, SpringSection& s) {
   for (int d = 0; d < kSpringDofs; ++d) {
-    const SpringLawNames names(d + 1);
+    SpringLawNames names(d + 1);
+    set_limit_dimension(names, s.failure.measure);
     read_spring_stiffness(reader, context, s.dof[static_cast<std::size_t>(d)], names);
     read_spring_law(reader, context, s.dof[static_cast<std::size_t>(d)], names);
   }
@@ -388,8 +400,13 @@ void read_general_spring_mass(CardReader& reader, DeckContext& context, SpringSe
   read_six_law_spring_line(first, context, s, false);
   if (first.optional_id(41, 10, "skew_ID", IdKind::Other) != 0)
     context.unsupported(first.error(41, 10, "skew_ID", default_only("a general spring in a skew's axes is")));
-  spring_default_only(first, context, 81, 10, "Ifail2", static_cast<double>(first.integer(81, 10, "Ifail2")), 0.0,
-                      "a failure criterion other than the displacement's is");
+  // Ifail2: 0 the elongation, 1 the force, 2 the energy; the reference runs other values as 0 (measured: 3, 5).
+  const std::int64_t ifail2 = first.integer(81, 10, "Ifail2");
+  if (ifail2 == 1 || ifail2 == 2)
+    s.failure.measure = ifail2 == 1 ? SpringFailureMeasure::Force : SpringFailureMeasure::Energy;
+  else if (ifail2 != 0)
+    context.warn(first.where(), "/PROP/SPR_GENE", fmt::format("Ifail2 {}: the elongation criterion, as the reference "
+                                                              "runs it (0 elongation, 1 force, 2 energy)", ifail2));
   spring_default_only(first, context, 91, 10, "Iequil", static_cast<double>(first.integer(91, 10, "Iequil")), 0.0,
                       "the moment equilibrium option is");
 }
@@ -421,8 +438,34 @@ void read_beam_spring_mass(CardReader& reader, DeckContext& context, SpringSecti
   s.skew_id = first.optional_id(41, 10, "skew_ID", IdKind::Other);
   spring_default_only(first, context, 81, 10, "Ileng", static_cast<double>(first.integer(81, 10, "Ileng")), 0.0,
                       "input per unit length is");
-  spring_default_only(first, context, 91, 10, "Ifail2", static_cast<double>(first.integer(91, 10, "Ifail2")), 0.0,
-                      "a failure criterion other than the displacement's is");
+  // Ifail2 (SP-5b): 0 the elongation; 1 the elongation, 2 the force, 3 the energy, each limit raised by the rate.
+  const std::int64_t ifail2 = first.integer(91, 10, "Ifail2");
+  if (ifail2 < 0 || ifail2 > 3)
+    first.fail(91, 10, "Ifail2", "0 (elongation), 1 (elongation and rate), 2 (force and rate) or 3 (energy and rate)");
+  s.failure.rate_effect = ifail2 >= 1;
+  s.failure.measure = ifail2 == 2 ? SpringFailureMeasure::Force
+                    : ifail2 == 3 ? SpringFailureMeasure::Energy : SpringFailureMeasure::Elongation;
+}
+
+// The rate line's reference velocities Vo, Wo of the failure's rate term (0 or blank: 1, measured).
+void read_failure_rates(const Line& line, SpringFailure& f) {
+  const double vo = line.real(1, 20, "Vo", dim::velocity), wo = line.real(21, 20, "Wo", dim::angular_velocity);
+  f.translation_rate = vo > 0.0 ? vo : 1.0;
+  f.rotation_rate = wo > 0.0 ? wo : 1.0;
+}
+
+// A failure line of a degree of freedom (SP-5b): c (in the limit's unit), n, alpha, beta; they act with Ifail2 >= 1
+// only (measured), where 0 or blank is n 1, alpha 1, beta 2.
+void read_failure_line(const Line& line, const SpringSection& s, SpringLaw& law, int dof) {
+  SpringLawNames names(dof);
+  set_limit_dimension(names, s.failure.measure);
+  const std::string i = std::to_string(dof);
+  const double c = line.real(1, 20, "c" + i, names.limit), n = line.real(21, 20, "n" + i, dim::none);
+  const double alpha = line.real(41, 20, "alpha" + i, dim::none), beta = line.real(61, 20, "beta" + i, dim::none);
+  if (!s.failure.rate_effect) return;
+  if (c < 0.0 || n < 0.0 || alpha < 0.0 || beta < 0.0)
+    line.fail(1, 80, "c, n, alpha, beta", "non-negative values (0 or blank: c 0, n 1, alpha 1, beta 2)");
+  law.rate_c = c, law.rate_n = n > 0.0 ? n : 1.0, law.alpha = alpha > 0.0 ? alpha : 1.0, law.beta = beta > 0.0 ? beta : 2.0;
 }
 
 // /PROP/TYPE13 (/PROP/SPR_BEAM): the beam-type spring, one law per degree of freedom of its own turning frame
@@ -437,15 +480,12 @@ void read_beam_spring_property(CardReader& reader, DeckContext& context) {
   read_six_laws(reader, context, p.spring);
   if (reader.has_data()) {
     const Line rate = reader.next("Vo, Wo, Fcut, Fsmooth");
-    rate.real(1, 20, "Vo", dim::velocity), rate.real(21, 20, "Wo", dim::angular_velocity);  // rate effects only
+    read_failure_rates(rate, p.spring.failure);
     refuse_rate_filter(rate, context, 61, 41);
   }
   // Blank lines between them are skipped (measured: a deck with one before each is the reference's deck as written).
-  for (int d = 0; d < kSpringDofs && reader.has_data(); ++d) {
-    const Line failure = *reader.next_nonblank();
-    for (const auto& [column, name] : {std::pair{1, "c"}, {21, "n"}, {41, "alpha"}, {61, "beta"}})
-      failure.real(column, 20, name, dim::none);  // read to check them; they act with Ifail2 only (refused)
-  }
+  for (int d = 0; d < kSpringDofs && reader.has_data(); ++d)
+    read_failure_line(*reader.next_nonblank(), p.spring, p.spring.dof[static_cast<std::size_t>(d)], d + 1);
   reader.finish();
   context.model.properties.push_back(std::move(p));
 }
@@ -460,6 +500,12 @@ void read_axisymmetric_spring_property(CardReader& reader, DeckContext& context)
   p.spring.frame = SpringFrame::Beam;
   p.spring.radial = true;
   read_beam_spring_mass(reader, context, p.spring);
+  if (p.spring.failure.rate_effect) {  // measured on TYPE13 only
+    context.unsupported(DeckError(p.where, reader.card().keyword, "Ifail2",
+                                  default_only("a failure criterion other than the elongation's (on /PROP/TYPE25) is"),
+                                  "non-zero"));
+    p.spring.failure = {p.spring.failure.combined};
+  }
   constexpr std::size_t kSlot[4] = {0, 1, 3, 4};  // tension, shear, torsion, bending in TYPE13's order
   for (int d = 0; d < 4; ++d) {
     SpringLawNames names(d + 1, 3);
