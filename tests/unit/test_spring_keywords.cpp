@@ -252,8 +252,8 @@ TEST(SpringKeywords, GeneralSpringRefusalsNameTheirField) {
             std::string::npos);
   EXPECT_NE(general_error(general_property({R(1000.0), "", "", "", "", ""}, 0.01, I(5))).find("skew_ID"),
             std::string::npos);
-  // Ifail is 0 (each law on its own) or 1 (combined, SP-5b).
-  EXPECT_NE(general_error(general_property({R(1000.0), "", "", "", "", ""}, 0.01, I(0) + I(0) + I(0) + I(2)))
+  // Ifail is 0 (each law on its own) or 1 (combined, SP-5b); the reference runs a general spring's 2 as 1.
+  EXPECT_NE(general_error(general_property({R(1000.0), "", "", "", "", ""}, 0.01, I(0) + I(0) + I(0) + I(3)))
                 .find("Ifail"),
             std::string::npos);
   // The second degree of freedom's hardening names its own field.

@@ -374,8 +374,13 @@ void read_six_law_spring_line(const Line& first, DeckContext& context, SpringSec
   spring_default_only(first, context, 61, 10, "Isflag", static_cast<double>(first.integer(61, 10, "Isflag")), 0.0,
                       "the sensor flag (with a sensor) is");
   const std::int64_t ifail = first.integer(71, 10, "Ifail");
-  if (ifail != 0 && ifail != 1) first.fail(71, 10, "Ifail", "0 (each law on its own) or 1 (the laws combined)");
-  s.failure.combined = ifail == 1;
+  // The reference runs a general spring's Ifail 2 as 1 (measured); a beam-type spring's other values are unknown.
+  const bool general = !inertia_required;
+  if (general && ifail == 2)
+    context.warn(first.where(), "/PROP/SPR_GENE", "Ifail 2: the laws combined (Ifail 1), as the reference runs it");
+  else if (ifail != 0 && ifail != 1)
+    first.fail(71, 10, "Ifail", "0 (each law on its own) or 1 (the laws combined)");
+  s.failure.combined = ifail == 1 || (general && ifail == 2);
 }
 
 // The limits' dimension of a failure measure (SP-5b): an elongation, a force or an energy.
