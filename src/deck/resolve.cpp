@@ -39,6 +39,19 @@ void check_mass(Resolver& r) {
             fmt::format("{}", m.total_mass()));
 }
 
+// An /RBE2 group without mass has nothing to carry its force: the reference stops (its error 804); so does
+// `crumple check`, before the solver's own guard (docs/theory/rigid-bodies.md, RE-6).
+void refuse_massless_rigid_elements(Resolver& r) {
+  const Model& m = r.model;
+  for (const RigidElement& e : m.rigid_elements) {
+    double mass = m.nodal_mass[static_cast<std::size_t>(e.main_node)];
+    for (std::int32_t n : e.secondary_nodes) mass += m.nodal_mass[static_cast<std::size_t>(n)];
+    if (!(mass > 0.0))
+      r.error(e.where, fmt::format("/RBE2/{}", e.user_id), "grnod_ID",
+              "a group with mass (its main node's or its secondary nodes'), as the reference requires", "no mass");
+  }
+}
+
 // /RANDOM (docs/deck-format.md): after /TRANSFORM (the reference's order, measured), each coordinate of each node
 // moved by Xalea (2 u - 1), u uniform in [0, 1) from a 64-bit Mersenne twister seeded by Seed, so that the same
 // deck gives the same model everywhere. The reference moves its nodes the same way (each axis within +-Xalea,
@@ -110,6 +123,7 @@ void resolve_model(DeckContext& context, std::vector<RunControl>& continued_runs
   r.throw_if_errors();
   compute_mass(context.model);
   check_mass(r);
+  refuse_massless_rigid_elements(r);
   warn_degenerate_one_point_bricks(r);
   warn_defaults_without_elements(r);
   r.throw_if_errors();

@@ -13,11 +13,11 @@ using test::R;
 
 namespace {
 
-// Nodes 1-4 on a line, node 9 the main node; group 5 holds nodes 1-4, group 6 node 1.
+// Nodes 1-4 on a line (1 kg each), node 9 the main node; group 5 holds nodes 1-4, group 6 node 1.
 const std::string kNodes = "/NODE\n" + I(1) + R(0.0) + R(0.0) + R(0.0) + "\n" + I(2) + R(1.0) + R(0.0) + R(0.0) + "\n" +
                            I(3) + R(2.0) + R(0.0) + R(0.0) + "\n" + I(4) + R(3.0) + R(0.0) + R(0.0) + "\n" + I(9) +
                            R(1.5) + R(1.0) + R(0.0) + "\n/GRNOD/NODE/5\nsecondary\n" + I(1) + I(2) + I(3) + I(4) +
-                           "\n/GRNOD/NODE/6\none\n" + I(1) + "\n";
+                           "\n/GRNOD/NODE/6\none\n" + I(1) + "\n/ADMAS/0/1\nmass\n" + R(1.0) + I(5) + "\n";
 
 std::string rbe2(int id, int main, const std::string& trarot, int skew, int group, const std::string& iflag = "") {
   return "/RBE2/" + std::to_string(id) + "\nlink\n" + I(main) + "   " + trarot + I(skew) + I(group) + iflag + "\n";
@@ -89,6 +89,14 @@ TEST(RigidElementKeywords, RefusesANodeThatAnotherConditionDrives) {
                                    rbe2(2, 10, "111 111", 0, 6));
   EXPECT_TRUE(contains(two, "/RBE2/2")) << two;
   EXPECT_TRUE(contains(two, "a secondary node of /RBE2/1")) << two;
+}
+
+// A group of nodes without mass (no element, no added mass) has nothing to carry its force: the reference's 804.
+TEST(RigidElementKeywords, RefusesAGroupWithoutMass) {
+  const std::string e = error_of("/NODE\n" + I(11) + R(0.0) + R(5.0) + R(0.0) + "\n" + I(12) + R(1.0) + R(5.0) + R(0.0) +
+                                 "\n/GRNOD/NODE/13\nmassless\n" + I(12) + "\n" + rbe2(1, 11, "111 111", 0, 13));
+  EXPECT_TRUE(contains(e, "/RBE2/1")) << e;
+  EXPECT_TRUE(contains(e, "no mass")) << e;
 }
 
 // /RBE3 (RI-1 to RI-6): blank Trarot_Mi is 111 000 as the reference reads it (its manual says all six); I_modif 1
