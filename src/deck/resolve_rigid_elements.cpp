@@ -33,31 +33,37 @@ const std::vector<std::int32_t>& group_nodes(const Model& m, std::int32_t group)
   return m.node_groups[static_cast<std::size_t>(group)].nodes;
 }
 
-// Every condition that sets a node's velocity, and the nodes a rigid wall may hold.
-NodeClaims kinematic_claims(const Model& m) {
-  NodeClaims claims(m.nodes.size());
-  for (const RigidBody& b : m.rigid_bodies) {
-    claims.claim(b.main_node, fmt::format("the main node of /RBODY/{}", b.user_id));
-    if (b.node_group >= 0)
-      for (std::int32_t n : group_nodes(m, b.node_group)) claims.claim(n, fmt::format("in /RBODY/{}", b.user_id));
-  }
+// The conditions that set a node's velocity, in two kinds: those that may drive an /RBE2's main node (the group
+// follows them, RE-4) and those that may drive none of its nodes (a body carrying the node, a wall, a tie or a final
+// geometry acting after the /RBE2 has placed it). Every /RBE2 secondary and /RBE3 dependent node is refused both.
+struct KinematicClaims {
+  NodeClaims drivers, carriers;
+};
+
+KinematicClaims kinematic_claims(const Model& m) {
+  KinematicClaims k{NodeClaims(m.nodes.size()), NodeClaims(m.nodes.size())};
   for (const BoundaryCondition& bc : m.boundary_conditions)
     if (bc.node_group >= 0)
-      for (std::int32_t n : group_nodes(m, bc.node_group)) claims.claim(n, fmt::format("held by /BCS/{}", bc.user_id));
+      for (std::int32_t n : group_nodes(m, bc.node_group)) k.drivers.claim(n, fmt::format("held by /BCS/{}", bc.user_id));
   for (const ImposedMotion& im : m.imposed)
     if (im.kind != ImposedKind::Force && im.node_group >= 0)
       for (std::int32_t n : group_nodes(m, im.node_group))
-        claims.claim(n, fmt::format("driven by {}/{}", im.kind == ImposedKind::Velocity ? "/IMPVEL" : "/IMPDISP",
-                                    im.user_id));
+        k.drivers.claim(n, fmt::format("driven by {}/{}", im.kind == ImposedKind::Velocity ? "/IMPVEL" : "/IMPDISP",
+                                       im.user_id));
+  for (const RigidBody& b : m.rigid_bodies) {
+    k.carriers.claim(b.main_node, fmt::format("the main node of /RBODY/{}", b.user_id));
+    if (b.node_group >= 0)
+      for (std::int32_t n : group_nodes(m, b.node_group)) k.carriers.claim(n, fmt::format("in /RBODY/{}", b.user_id));
+  }
   for (const FinalGeometry& g : m.final_geometries)
-    for (std::int32_t n : g.nodes) claims.claim(n, fmt::format("driven by /IMPDISP/FGEO/{}", g.user_id));
+    for (std::int32_t n : g.nodes) k.carriers.claim(n, fmt::format("driven by /IMPDISP/FGEO/{}", g.user_id));
   for (const RigidWall& w : m.rigid_walls) {
-    claims.claim(w.node, fmt::format("the node of /RWALL/{}", w.user_id));
-    for (std::int32_t n : w.secondary_nodes) claims.claim(n, fmt::format("held by /RWALL/{}", w.user_id));
+    k.carriers.claim(w.node, fmt::format("the node of /RWALL/{}", w.user_id));
+    for (std::int32_t n : w.secondary_nodes) k.carriers.claim(n, fmt::format("held by /RWALL/{}", w.user_id));
   }
   for (const Type2Interface& i : m.type2_interfaces)
-    for (const Tie& t : i.ties) claims.claim(t.node, fmt::format("tied by /INTER/TYPE2/{}", i.user_id));
-  return claims;
+    for (const Tie& t : i.ties) k.carriers.claim(t.node, fmt::format("tied by /INTER/TYPE2/{}", i.user_id));
+  return k;
 }
 
 void refuse_claimed(Resolver& r, const NodeClaims& claims, std::int32_t node, const SourceLocation& where,
@@ -72,15 +78,12 @@ void refuse_claimed(Resolver& r, const NodeClaims& claims, std::int32_t node, co
 // The main node drives its secondary nodes; /BCS, /IMPVEL and /IMPDISP on the main node act on the whole group
 // (RE-4), so they are claims only for the secondary nodes. A secondary node in the main node's own group is
 // dropped, as the reference does (its warning 1624).
-void resolve_rbe2(Resolver& r, RigidElement& e, const NodeClaims& others, NodeClaims& rbe2_nodes) {
+void resolve_rbe2(Resolver& r, RigidElement& e, const KinematicClaims& others, NodeClaims& rigid_nodes) {
   Model& m = r.model;
   const std::string kw = fmt::format("/RBE2/{}", e.user_id);
   e.main_node = r.find(m.index.nodes, e.main_node_id, e.where, kw, "node_ID", "node");
   e.node_group = r.find(m.index.node_groups, e.node_group_id, e.where, kw, "grnod_ID", "node group");
   r.find_optional(m.index.skews, e.skew_id, e.where, kw, "skew_ID", "skew");  // with 111 111 it changes nothing (RE-1)
-  if (m.run.dt_ams.given)
-    r.error(e.where, kw, "", "a model without /DT/AMS (selective mass scaling of /RBE2 groups is not supported by "
-            "Crumple)", "/DT/AMS");
   if (e.main_node < 0 || e.node_group < 0) return;
   for (std::int32_t n : group_nodes(m, e.node_group))
     if (n != e.main_node) e.secondary_nodes.push_back(n);
@@ -90,40 +93,15 @@ void resolve_rbe2(Resolver& r, RigidElement& e, const NodeClaims& others, NodeCl
   if (e.secondary_nodes.empty())
     r.context.warn(e.where, kw, fmt::format("node group {} has no secondary node: the /RBE2 does nothing",
                                             e.node_group_id));
-  const NodeClaims* claims[] = {&rbe2_nodes, &others};
-  const std::string* held = rbe2_nodes.held(e.main_node);
-  if (held != nullptr)
+  if (const std::string* held = rigid_nodes.held(e.main_node))
     r.error(e.where, kw, "node_ID", "a main node in no other /RBE2 (chains of /RBE2 are not supported by Crumple)",
             fmt::format("node {} is {}", e.main_node_id, *held));
-  for (const NodeClaims* c : claims)
+  refuse_claimed(r, others.carriers, e.main_node, e.where, kw, "node_ID", "a main node");
+  for (const NodeClaims* c : {static_cast<const NodeClaims*>(&rigid_nodes), &others.drivers, &others.carriers})
     for (std::int32_t n : e.secondary_nodes) refuse_claimed(r, *c, n, e.where, kw, "grnod_ID", "secondary nodes");
-  for (const RigidBody& b : m.rigid_bodies)  // a body would have to carry the /RBE2's main node and its mass
-    if (b.main_node == e.main_node || (b.node_group >= 0 && std::binary_search(group_nodes(m, b.node_group).begin(),
-                                                                               group_nodes(m, b.node_group).end(),
-                                                                               e.main_node)))
-      r.error(e.where, kw, "node_ID", "a main node outside rigid bodies (not supported by Crumple)",
-              fmt::format("node {} is in /RBODY/{}", e.main_node_id, b.user_id));
-  rbe2_nodes.claim(e.main_node, fmt::format("the main node of {}", kw));
-  for (std::int32_t n : e.secondary_nodes) rbe2_nodes.claim(n, fmt::format("a secondary node of {}", kw));
+  rigid_nodes.claim(e.main_node, fmt::format("the main node of {}", kw));
+  for (std::int32_t n : e.secondary_nodes) rigid_nodes.claim(n, fmt::format("a secondary node of {}", kw));
 }
-
-// Walls, ties and final geometries act on a node's velocity after the /RBE2 has placed it: none may act on its main node either.
-void refuse_claimed_main_nodes(Resolver& r) {
-  const Model& m = r.model;
-  NodeClaims after(m.nodes.size());
-  for (const RigidWall& w : m.rigid_walls) {
-    after.claim(w.node, fmt::format("the node of /RWALL/{}", w.user_id));
-    for (std::int32_t n : w.secondary_nodes) after.claim(n, fmt::format("held by /RWALL/{}", w.user_id));
-  }
-  for (const Type2Interface& i : m.type2_interfaces)
-    for (const Tie& t : i.ties) after.claim(t.node, fmt::format("tied by /INTER/TYPE2/{}", i.user_id));
-  for (const FinalGeometry& g : m.final_geometries)
-    for (std::int32_t n : g.nodes) after.claim(n, fmt::format("driven by /IMPDISP/FGEO/{}", g.user_id));
-  for (const RigidElement& e : m.rigid_elements)
-    if (e.main_node >= 0)
-      refuse_claimed(r, after, e.main_node, e.where, fmt::format("/RBE2/{}", e.user_id), "node_ID", "a main node");
-}
-
 
 // I_modif (RI-2, measured): 2 keeps the weights; 1 scales each translation k of the nodes that carry it (and their
 // rotation k) by W / W_k, so that every translation carries the whole weight; 3 sets every weight to 1 first.
@@ -147,7 +125,7 @@ void apply_weight_modification(InterpolationConstraint& c, const std::vector<std
 
 // The dependent node carries no element (the reference switches such an /RBE3 to a penalty formulation, its warning
 // 3097) and no other kinematic condition; its independent sets are node groups without it.
-void resolve_rbe3(Resolver& r, InterpolationConstraint& c, const NodeClaims& others, NodeClaims& rigid_nodes,
+void resolve_rbe3(Resolver& r, InterpolationConstraint& c, const KinematicClaims& others, NodeClaims& rigid_nodes,
                   const std::vector<std::uint8_t>& in_element) {
   Model& m = r.model;
   const std::string kw = fmt::format("/RBE3/{}", c.user_id);
@@ -156,7 +134,7 @@ void resolve_rbe3(Resolver& r, InterpolationConstraint& c, const NodeClaims& oth
     if (in_element[static_cast<std::size_t>(c.dependent_node)] != 0)
       r.error(c.where, kw, "Node_IDr", "a dependent node that no element uses (the reference's penalty formulation "
               "for such a node is not supported by Crumple)", fmt::format("node {}", c.dependent_node_id));
-    for (const NodeClaims* claims : {&others, static_cast<const NodeClaims*>(&rigid_nodes)})
+    for (const NodeClaims* claims : {&others.drivers, &others.carriers, static_cast<const NodeClaims*>(&rigid_nodes)})
       refuse_claimed(r, *claims, c.dependent_node, c.where, kw, "Node_IDr", "a dependent node");
     rigid_nodes.claim(c.dependent_node, fmt::format("the dependent node of {}", kw));
   }
@@ -197,26 +175,28 @@ void resolve_rigid_elements(Resolver& r) {
   if (m.rigid_elements.empty() && m.interpolation_constraints.empty()) return;
   r.index(m.rigid_elements, m.index.rigid_elements, "/RBE2");
   r.index(m.interpolation_constraints, m.index.interpolation_constraints, "/RBE3");
-  const NodeClaims others = kinematic_claims(m);
+  if (m.run.dt_ams.given)
+    r.error(m.run.dt_ams.where, "/DT/AMS", "", "a model without /RBE2 or /RBE3 (selective mass scaling of their "
+            "groups is not supported by Crumple)", "/DT/AMS");
+  const KinematicClaims others = kinematic_claims(m);
   NodeClaims rigid_nodes(m.nodes.size());
   for (RigidElement& e : m.rigid_elements) resolve_rbe2(r, e, others, rigid_nodes);
-  refuse_claimed_main_nodes(r);
   std::vector<std::uint8_t> in_element(m.nodes.size(), 0);
   for (const ElementTable& table : m.elements)
     for (std::int32_t node : table.connectivity) in_element[static_cast<std::size_t>(node)] = 1;
   for (InterpolationConstraint& c : m.interpolation_constraints) resolve_rbe3(r, c, others, rigid_nodes, in_element);
   // An independent node that is another /RBE3's dependent node would make a chain, which Crumple does not solve.
+  std::vector<std::int32_t> dependent_of(m.nodes.size(), -1);
+  for (std::size_t k = 0; k < m.interpolation_constraints.size(); ++k)
+    if (const std::int32_t d = m.interpolation_constraints[k].dependent_node; d >= 0)
+      dependent_of[static_cast<std::size_t>(d)] = static_cast<std::int32_t>(k);
   for (const InterpolationConstraint& c : m.interpolation_constraints)
     for (const InterpolationNode& i : c.independent)
-      for (const InterpolationConstraint& other : m.interpolation_constraints)
-        if (other.dependent_node == i.node)
-          r.error(c.where, fmt::format("/RBE3/{}", c.user_id), "grnod_IDi",
-                  "independent nodes that are no /RBE3's dependent node (chains of /RBE3 are not supported by Crumple)",
-                  fmt::format("node {} is the dependent node of /RBE3/{}", m.nodes.user_id[static_cast<std::size_t>(i.node)],
-                              other.user_id));
-  if (m.run.dt_ams.given && !m.interpolation_constraints.empty())
-    r.error(m.interpolation_constraints.front().where, fmt::format("/RBE3/{}", m.interpolation_constraints.front().user_id),
-            "", "a model without /DT/AMS (selective mass scaling with /RBE3 is not supported by Crumple)", "/DT/AMS");
+      if (const std::int32_t k = dependent_of[static_cast<std::size_t>(i.node)]; k >= 0)
+        r.error(c.where, fmt::format("/RBE3/{}", c.user_id), "grnod_IDi",
+                "independent nodes that are no /RBE3's dependent node (chains of /RBE3 are not supported by Crumple)",
+                fmt::format("node {} is the dependent node of /RBE3/{}", m.nodes.user_id[static_cast<std::size_t>(i.node)],
+                            m.interpolation_constraints[static_cast<std::size_t>(k)].user_id));
 }
 
 }  // namespace crumple::deck

@@ -37,8 +37,8 @@ void add_system_terms(const InterpolationConstraint& c, const InterpolationState
 }
 
 // A with the rotational weights scaled by Lc^2, Lc the mean distance of the independent nodes from the dependent
-// node (RI-2), and its inverse.
-void solve_system(const InterpolationConstraint& c, const ExactSum* sum, InterpolationState& g, bool& constrained) {
+// node (RI-2), and its inverse; false when A leaves a motion of the dependent node unheld.
+bool solve_system(const InterpolationConstraint& c, const ExactSum* sum, InterpolationState& g) {
   const double lc = sum[39].value() / static_cast<double>(c.independent.size());
   g.length_squared = lc * lc;
   Matrix6 a{};
@@ -46,7 +46,7 @@ void solve_system(const InterpolationConstraint& c, const ExactSum* sum, Interpo
   for (std::size_t d = 0; d < 3; ++d) a[6 * (3 + d) + 3 + d] += g.length_squared * sum[36 + d].value();
   const InterpolationInverse inverse = invert_interpolation(a);
   g.inverse = inverse.inverse;
-  constrained = inverse.constrained;
+  return inverse.constrained;
 }
 
 Vector6 scaled_weight(const InterpolationState& g, std::size_t i) {
@@ -72,9 +72,7 @@ void setup_interpolation_constraints(const Model& m, SolverState& s) {
     }
     std::vector<ExactSum> sums(kSystemSums);  // every domain holds every node here
     add_system_terms(ic, g, s, true, sums.data());
-    bool constrained = true;
-    solve_system(ic, sums.data(), g, constrained);
-    if (!constrained)
+    if (!solve_system(ic, sums.data(), g))
       throw DeckError(ic.where, fmt::format("/RBE3/{}", ic.user_id), "grnod_IDi",
                       "independent nodes that hold every motion of the dependent node (three not on one line, or "
                       "rotations that take part), as the reference requires (its error 706)",
@@ -96,8 +94,7 @@ void spread_interpolation_loads(const Model& m, SolverState& s) {
   for (std::size_t c = 0; c < m.interpolation_constraints.size(); ++c) {
     const InterpolationConstraint& ic = m.interpolation_constraints[c];
     InterpolationState& g = s.interpolations[c];
-    bool constrained = true;
-    solve_system(ic, &sums[kSystemSums * c], g, constrained);
+    solve_system(ic, &sums[kSystemSums * c], g);  // held at the start (set-up); its pseudo-inverse after
     const auto d = static_cast<std::size_t>(ic.dependent_node);
     Vector6 load{n.fx[d], n.fy[d], n.fz[d], n.mx[d], n.my[d], n.mz[d]};
     for (std::size_t k = 0; k < 6; ++k)

@@ -1,9 +1,6 @@
 // /RBE2: secondary nodes carried rigidly by a main node that stays where it is (docs/theory/rigid-bodies.md,
 // RE-1 to RE-5). Each group's sums are exact, each node's terms from the domain that owns it, combined over the
 // domains, so that every domain moves the main node alike; every domain then places its own secondary nodes.
-#include <fmt/format.h>
-
-#include "crumple/core/deck_error.hpp"
 #include "solver/internal.hpp"
 
 namespace crumple::solver {
@@ -13,18 +10,16 @@ namespace {
 // the main node's inertia plus sum 2 m_s |r_s|^2, and the secondary nodes' own inertia.
 enum Sum : std::size_t { kFx, kFy, kFz, kMx, kMy, kMz, kMass, kLever, kOwnInertia, kSums };
 
-Vec3 position(const NodalState& n, std::int32_t node) { return node_position(n, node); }
-
 // Adds the mass terms of the group's nodes that this domain owns (every node: `whole_model`) to `sum` (kSums values).
 void add_mass_terms(const RigidElement& e, const SolverState& s, ExactSum* sum, bool whole_model = false) {
   const NodalState& n = s.nodes;
   const auto main = static_cast<std::size_t>(e.main_node);
   if (whole_model || s.domain.owns(main)) sum[kMass].add(n.mass[main]), sum[kLever].add(n.inertia[main]);
-  const Vec3 x_main = position(n, e.main_node);
+  const Vec3 x_main = node_position(n, e.main_node);
   for (std::int32_t node : e.secondary_nodes) {
     const auto k = static_cast<std::size_t>(node);
     if (!whole_model && !s.domain.owns(k)) continue;
-    const Vec3 r = position(n, node) - x_main;
+    const Vec3 r = node_position(n, node) - x_main;
     sum[kMass].add(n.mass[k]), sum[kLever].add(2.0 * n.mass[k] * dot(r, r)), sum[kOwnInertia].add(n.inertia[k]);
   }
 }
@@ -35,9 +30,8 @@ void keep_mass_terms(const RigidElement& e, const ExactSum* sum, RigidElementSta
     g.inertia[d] = e.turns_about(d) ? sum[kLever].value() + (e.rotation[d] ? sum[kOwnInertia].value() : 0.0) : 0.0;
 }
 
-// The velocity of a secondary node at r from the main node (eq. RE-3), and its coupled rotations.
-void carry_secondary(const RigidElement& e, NodalState& n, std::size_t k, Vec3 v, Vec3 spin, Vec3 omega, Vec3 r) {
-  const Vec3 u = v + cross(spin, r);
+// A secondary node's velocity `u` (eq. RE-3), and the main node's angular velocity on its coupled rotations.
+void carry_secondary(const RigidElement& e, NodalState& n, std::size_t k, Vec3 u, Vec3 omega) {
   n.vx[k] = u.x, n.vy[k] = u.y, n.vz[k] = u.z;
   if (e.rotation[0]) n.wx[k] = omega.x;
   if (e.rotation[1]) n.wy[k] = omega.y;
@@ -61,20 +55,16 @@ void setup_rigid_elements(const Model& m, SolverState& s) {
   for (std::size_t i = 0; i < m.rigid_elements.size(); ++i) {
     const RigidElement& e = m.rigid_elements[i];
     RigidElementState& g = s.rigid_elements[i];
-    keep_mass_terms(e, &sums[kSums * i], g);
-    if (!(g.mass > 0.0))  // nothing to carry the group's force: the reference stops too (its error 804)
-      throw DeckError(e.where, fmt::format("/RBE2/{}", e.user_id), "grnod_ID",
-                      "a group with mass (its main node's or its secondary nodes'), as the reference requires",
-                      "no mass");
+    keep_mass_terms(e, &sums[kSums * i], g);  // with mass: the reader refuses a group without (RE-6)
     find_main_node_conditions(m, e.main_node, g.main_node_conditions, g.main_node_skewed_fixes);
     const auto main = static_cast<std::size_t>(e.main_node);
     // The secondary nodes start with the main node's motion (RE-3): an /INIVEL of the main node moves the group,
     // one of the secondary nodes alone does not (measured on the reference).
     const Vec3 v = node_velocity(n, main), omega{n.wx[main], n.wy[main], n.wz[main]};
-    const Vec3 x_main = position(n, e.main_node);
+    const Vec3 x_main = node_position(n, e.main_node);
     for (std::int32_t node : e.secondary_nodes) {
       const auto k = static_cast<std::size_t>(node);
-      carry_secondary(e, n, k, v, turning(e, omega), omega, position(n, node) - x_main);
+      carry_secondary(e, n, k, v + cross(turning(e, omega), node_position(n, node) - x_main), omega);
     }
   }
 }
@@ -95,13 +85,13 @@ void gather_rigid_element_forces(const Model& m, SolverState& s) {
       const double own[6] = {n.fx[main], n.fy[main], n.fz[main], n.mx[main], n.my[main], n.mz[main]};
       for (std::size_t c = 0; c < 6; ++c) sum[c].add(own[c]);
     }
-    const Vec3 x_main = position(n, e.main_node);
+    const Vec3 x_main = node_position(n, e.main_node);
     for (std::int32_t node : e.secondary_nodes) {
       const auto k = static_cast<std::size_t>(node);
       double* moment[3] = {&n.mx[k], &n.my[k], &n.mz[k]};
       if (s.domain.owns(k)) {
         const Vec3 f{n.fx[k], n.fy[k], n.fz[k]};
-        const Vec3 lever = cross(position(n, node) - x_main, f);
+        const Vec3 lever = cross(node_position(n, node) - x_main, f);
         sum[kFx].add(f.x), sum[kFy].add(f.y), sum[kFz].add(f.z);
         for (std::size_t d = 0; d < 3; ++d)
           if (e.turns_about(d)) sum[kMx + d].add(lever[d] + (e.rotation[d] ? *moment[d] : 0.0));
@@ -152,14 +142,14 @@ double update_rigid_elements(const Model& m, SolverState& s, const std::array<st
     n.wx[main] = v[3], n.wy[main] = v[4], n.wz[main] = v[5];
     const Vec3 velocity{v[0], v[1], v[2]}, omega{v[3], v[4], v[5]};
     const Vec3 turn = scaled(turning(e, omega), dt_next);
-    const Vec3 x_main = position(n, e.main_node);
+    const Vec3 x_main = node_position(n, e.main_node);
     for (std::int32_t node : e.secondary_nodes) {
       const auto k = static_cast<std::size_t>(node);
       if (!s.domain.is_local(k)) continue;
-      const Vec3 r = position(n, node) - x_main;
+      const Vec3 r = node_position(n, node) - x_main;
       // x_s^(n+1) = x_m^(n+1) + R(w dt) r: the velocity that lands there keeps |r| exactly.
       const Vec3 step = dt_next > 0.0 ? scaled(rotated(r, turn) - r, 1.0 / dt_next) : Vec3{};
-      carry_secondary(e, n, k, velocity + step, Vec3{}, omega, Vec3{});
+      carry_secondary(e, n, k, velocity + step, omega);
     }
   }
   return work;
