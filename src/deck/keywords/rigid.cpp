@@ -243,9 +243,11 @@ bool read_dof_digit(const Line& line, int column, std::string_view name) {
   return false;
 }
 
-// Trarot at `first` (TX) .. first + 6 (RZ), with the blank separators around it; blank or six zeros: all six.
-DofCodes read_trarot(const Line& line, int first, std::string_view field) {
-  const int lead = first == 14 ? 11 : 21;  // the three blanks before the codes
+constexpr DofCodes kAllSix{{true, true, true}, {true, true, true}};
+
+// Trarot at `first` (TX) .. first + 6 (RZ), with the blank separators around it; blank or six zeros: `when_blank`.
+DofCodes read_trarot(const Line& line, int first, std::string_view field, DofCodes when_blank = kAllSix) {
+  const int lead = first - 3;  // the three blanks before the codes
   if (!line.text(lead, 3).empty())
     line.fail(lead, 3, "blank", fmt::format("blank (the {} codes are in columns {}-{} and {}-{})", field, first,
                                             first + 2, first + 4, first + 6));
@@ -257,8 +259,7 @@ DofCodes read_trarot(const Line& line, int first, std::string_view field) {
     codes.translation[static_cast<std::size_t>(k)] = read_dof_digit(line, first + k, kNames[0][k]);
     codes.rotation[static_cast<std::size_t>(k)] = read_dof_digit(line, first + 4 + k, kNames[1][k]);
   }
-  if (codes.none()) codes.translation = codes.rotation = {true, true, true};
-  return codes;
+  return codes.none() ? when_blank : codes;
 }
 
 std::string trarot_text(const DofCodes& c) {
@@ -304,11 +305,8 @@ void read_interpolation_set(const Line& line, InterpolationSet& set, DeckContext
   set.weight = line.real(1, 20, "WT", dim::none);
   if (set.weight < 0.0) line.fail(1, 20, "WT", "a non-negative weight (0 or blank: 1)");
   if (set.weight == 0.0) set.weight = 1.0;
-  DofCodes codes = read_trarot(line, 24, "Trarot_Mi");
   // Blank or zero codes: the reference takes 111 000 here (measured), where its manual says all six.
-  if (codes.translation == std::array<bool, 3>{true, true, true} && codes.rotation == codes.translation &&
-      line.text(24, 7).find('1') == std::string::npos)
-    codes.rotation = {false, false, false};
+  const DofCodes codes = read_trarot(line, 24, "Trarot_Mi", DofCodes{{true, true, true}, {false, false, false}});
   set.translation = codes.translation, set.rotation = codes.rotation;
   set.skew_id = line.optional_id(31, 10, "skew_IDi");
   const auto uniform = [](const std::array<bool, 3>& a) { return a[0] == a[1] && a[1] == a[2]; };
