@@ -35,10 +35,23 @@ SpringDofParameters dof_parameters(const SpringLaw& s, const std::vector<Functio
 }  // namespace
 
 SpringGroupParameters spring_parameters(const SpringSection& s, const std::vector<Function>& functions) {
-  SpringGroupParameters p{s.mass, s.inertia, s.frame, {}, s.radial, s.failure};
+  SpringGroupParameters p{s.mass, s.inertia, s.frame, {}, s.radial, s.per_unit_length, s.failure};
   for (int d = 0; d < s.dofs(); ++d)
     p.dof[static_cast<std::size_t>(d)] = dof_parameters(s.dof[static_cast<std::size_t>(d)], functions);
   return p;
+}
+
+SpringGroupParameters spring_of_length(const SpringGroupParameters& p, double length0) {
+  SpringGroupParameters q = p;
+  q.per_unit_length = false, q.mass *= length0, q.inertia *= length0;
+  q.failure.translation_rate *= length0, q.failure.rotation_rate *= length0;
+  const bool limits = p.frame == SpringFrame::Beam && p.failure.measure == SpringFailureMeasure::Elongation;
+  for (SpringDofParameters& d : q.dof) {
+    d.stiffness /= length0, d.damping /= length0, d.step_stiffness /= length0, d.abscissa_scale *= length0;
+    if (limits && d.delta_min > -1e29) d.delta_min *= length0;  // none stays none
+    if (limits && d.delta_max < 1e29) d.delta_max *= length0;
+  }
+  return q;
 }
 
 SpringStepStiffness spring_step_stiffness(const SpringGroupParameters& p, double length) {
@@ -76,6 +89,7 @@ double spring_nodal_step(const SpringState& st, const std::int32_t* n, std::size
 }
 
 double spring_critical_step(const SpringGroupParameters& p, double length) {
+  if (p.per_unit_length) return spring_critical_step(spring_of_length(p, length), length);  // SP-21, at rest
   const SpringStepStiffness k = spring_step_stiffness(p, length);
   return std::min(held_mass_step(0.5 * p.mass, k.translation, k.translation_damping),
                   held_mass_step(0.5 * p.inertia, k.rotation, k.rotation_damping));
@@ -239,9 +253,10 @@ double law_force(const SpringDofParameters& p, LawHistory h, double delta, doubl
 bool outside(const SpringDofParameters& p, double delta) { return delta < p.delta_min || delta > p.delta_max; }  // SP-5
 
 // /PROP/TYPE4: one degree of freedom along the nodes (eq. SP-1 to SP-5).
-GroupStepResult axial_spring_forces(const ElementTable& table, const ElementGroup& group, const SpringGroupParameters& p,
+GroupStepResult axial_spring_forces(const ElementTable& table, const ElementGroup& group, const SpringGroupParameters& group_p,
                                     NodalState& nodes, SpringState& state, double dt) {
   GroupStepResult result;
+  SpringGroupParameters own;  // Ileng 1: each spring's own (SP-21)
   const bool recording = state.records.on(group.begin);
   for (std::int32_t e = group.begin; e < group.end; ++e) {
     const auto ue = static_cast<std::size_t>(e), slot = kSpringDofs * ue;
@@ -251,6 +266,7 @@ GroupStepResult axial_spring_forces(const ElementTable& table, const ElementGrou
     const Vec3 axis = node_position(nodes, n[1]) - node_position(nodes, n[0]);
     const double length = norm(axis);
     const double elongation = length - state.length0[ue];  // eq. SP-1
+    const SpringGroupParameters& p = group_p.per_unit_length ? (own = spring_of_length(group_p, state.length0[ue])) : group_p;
     if (state.deleted[ue]) {  // broken last cycle: the work of its last force over the step it acted (eq. SP-5a)
       if (state.force[slot] != 0.0) {
         const double work = last_work(state, slot, elongation);
@@ -460,8 +476,9 @@ BeamKinematics coincident_beam_kinematics(const NodalState& nodes, const SpringS
 // /PROP/TYPE13: six laws in the spring's own frame, tension, shear, torsion and bending, the shear coupled to the
 // ends' rotations as a beam's (eq. SP-15 to SP-18).
 GroupStepResult beam_spring_forces(const ElementTable& table, const ElementGroup& group,
-                                   const SpringGroupParameters& p, NodalState& nodes, SpringState& state, double dt) {
+                                   const SpringGroupParameters& group_p, NodalState& nodes, SpringState& state, double dt) {
   GroupStepResult result;
+  SpringGroupParameters own;  // Ileng 1: each spring's own (SP-21)
   const bool recording = state.records.on(group.begin);
   for (std::int32_t e = group.begin; e < group.end; ++e) {
     const auto ue = static_cast<std::size_t>(e);
@@ -471,6 +488,7 @@ GroupStepResult beam_spring_forces(const ElementTable& table, const ElementGroup
     const Vec3 axis = node_position(nodes, n[1]) - node_position(nodes, n[0]);
     const double length = norm(axis);
     const bool at_rest_coincident = state.length0[ue] == 0.0;
+    const SpringGroupParameters& p = group_p.per_unit_length ? (own = spring_of_length(group_p, state.length0[ue])) : group_p;
     if (!(length > 0.0) && !at_rest_coincident) {  // the nodes met: no frame left
       result.inverted = e;
       continue;

@@ -66,9 +66,10 @@ double element_measure(const Nodes& x, ElementKind kind, const std::int32_t* n) 
 double element_mass(const Model& model, ElementKind kind, std::size_t element) {
   const Part& part = part_of(model, kind, element);
   const Property& property = model.properties[static_cast<std::size_t>(part.property)];
-  if (property.kind == PropertyKind::Spring) return property.spring.mass;  // the property's, half at each node
-  const double density = model.materials[static_cast<std::size_t>(part.material)].density;
   const double measure = element_measure(model.nodes, kind, model.elements[static_cast<int>(kind)].nodes_of(element));
+  if (property.kind == PropertyKind::Spring)  // the property's, half at each node; per unit length times L0 (SP-21)
+    return property.spring.mass * (property.spring.per_unit_length ? measure : 1.0);
+  const double density = model.materials[static_cast<std::size_t>(part.material)].density;
   if (property.kind == PropertyKind::Truss) return density * property.truss.area * measure;  // rho A L0, half a node
   if (property.kind == PropertyKind::Beam) return density * property.beam.area * measure;
   if (describe(kind).property == PropertyKind::Shell) return density * shell_thickness(model, kind, element) * measure;

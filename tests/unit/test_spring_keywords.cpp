@@ -132,7 +132,7 @@ TEST(SpringKeywords, RefusedOptionsNameTheirField) {
   d.line2 = R(1000.0) + R(0.0) + R(1.0) + R(0.5);
   EXPECT_NE(error_of(d).find("field B"), std::string::npos) << error_of(d);
   d = SpringDeck{};
-  d.line1 = R(2.0) + std::string(30, ' ') + I(0) + I(0) + I(1);
+  d.line1 = R(2.0) + std::string(30, ' ') + I(0) + I(0) + I(2);
   EXPECT_NE(error_of(d).find("Ileng"), std::string::npos) << error_of(d);
   d = SpringDeck{};
   d.spring_line = I(7) + I(101) + I(102) + std::string(60, ' ') + I(3);
@@ -245,6 +245,39 @@ TEST(SpringKeywords, GeneralSpringReadsSixLawsAndSteps) {
   const double rotation = 0.01 / (std::sqrt(100.0 * 0.01 + 0.0025) + 0.05);  // 9.5125e-3, the reference's
   EXPECT_NEAR(initial_element_time_step(m, ElementKind::Spring, 0), std::min(translation, rotation), 1e-15);
   EXPECT_NEAR(rotation, 9.5124921972504e-3, 1e-13);
+}
+
+// Ileng 1 (SP-21): the spring of rest length L0 = 0.5 (nodes moved apart) is the one of M L0, K / L0, C / L0, its
+// curve of the strain; its limit stays a length. The reference's starter step for M 1, K 1e6, L0 0.5 is 5e-4.
+TEST(SpringKeywords, InputPerUnitLengthScalesByTheRestLength) {
+  test::TempDir dir;
+  SpringDeck d;
+  d.line1 = R(1.0) + std::string(30, ' ') + I(0) + I(0) + I(1);
+  d.line2 = R(1e6);
+  d.line3 = I(0) + I(0) + I(0) + I(0) + I(0) + std::string(10, ' ') + R(0.0) + R(0.01);
+  d.spring_line = I(7) + I(101) + I(103);
+  d.extra = "/NODE\n" + I(103) + R(0.0) + R(0.5) + R(0.0) + "\n";
+  const Model m = read_deck(starter(dir, d)).model;
+  EXPECT_TRUE(m.properties[0].spring.per_unit_length);
+  EXPECT_DOUBLE_EQ(m.element_mass, 0.5);
+  EXPECT_NEAR(initial_element_time_step(m, ElementKind::Spring, 0), 5e-4, 1e-15);
+  const SpringGroupParameters p = spring_of_length(spring_parameters(m.properties[0].spring, m.functions), 0.5);
+  EXPECT_DOUBLE_EQ(p.dof[0].stiffness, 2e6);
+  EXPECT_DOUBLE_EQ(p.dof[0].delta_max, 0.01);  // a 1-D spring's limit is not scaled (measured)
+  SpringGroupParameters beam = p;  // a beam-type spring's elongation limits are strains; its curves' too
+  beam.frame = SpringFrame::Beam, beam.dof[0].abscissa_scale = 1.0;
+  const SpringGroupParameters q = spring_of_length(beam, 2.0);
+  EXPECT_DOUBLE_EQ(q.dof[0].delta_max, 0.02);
+  EXPECT_DOUBLE_EQ(q.dof[0].abscissa_scale, 2.0);
+  EXPECT_DOUBLE_EQ(q.dof[1].delta_max, 1e30);  // no limit stays none
+  // A beam-type spring between coincident nodes has no length to scale by.
+  std::string beam_property = "/PROP/TYPE13/30\nbeam\n" + R(2.0) + R(1.0) + I(0) + I(0) + I(0) + I(0) + I(1) + "\n";
+  for (double k : {100.0, 100.0, 100.0, 10.0, 10.0, 10.0}) beam_property += R(k) + "\n" + I(0) + "\n" + R(0.0) + "\n";
+  std::string coincident = general_deck(beam_property);
+  coincident.replace(coincident.find(I(102) + R(0.0) + R(1.0)), 60, I(102) + R(0.0) + R(0.0));
+  test::TempDir other;
+  const std::string error = test::first_error(other.write("T_0000.rad", test::begin_card("T") + coincident + "/END\n"));
+  EXPECT_NE(error.find("Ileng 1"), std::string::npos) << error;
 }
 
 TEST(SpringKeywords, GeneralSpringRefusalsNameTheirField) {

@@ -34,8 +34,15 @@ struct SpringGroupParameters {
   SpringFrame frame = SpringFrame::Axial;  // TYPE4 along the nodes; TYPE8 the global axes (SP-9); TYPE13 (SP-15)
   std::array<SpringDofParameters, kSpringDofs> dof{};  // /PROP/TYPE4: dof[0]
   bool radial = false;  // TYPE25: shear and bending on the radial magnitude (SP-20)
+  bool per_unit_length = false;  // Ileng 1: each spring's values follow from its rest length (SP-21)
   SpringFailure failure;  // SP-5b
 };
+
+// Ileng 1 (eq. SP-21): the parameters of one spring of rest length `length0` [L] > 0 whose property gives them per
+// unit length: M L0, I L0, K / L0, C / L0, its curves of the strain (Ascale L0), its rate term's reference velocities
+// L0 Vo, L0 Wo, and a beam-type spring's elongation limits L0 delta (a 1-D spring's, and force and energy limits,
+// stay as given).
+SpringGroupParameters spring_of_length(const SpringGroupParameters& p, double length0);
 
 // The curve of the spring, g(delta) = A f(delta / Ascale) [F] (eq. SP-2b).
 inline double spring_curve(const SpringDofParameters& p, double delta) {

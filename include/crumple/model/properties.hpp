@@ -101,6 +101,9 @@ struct SpringSection {
   // TYPE25: the beam-type spring whose shear (dof[1] = dof[2]) and bending (dof[4] = dof[5]) are each one law of the
   // magnitude of the radial displacement or rotation (docs/theory/spring.md, SP-20).
   bool radial = false;
+  // Ileng 1 (TYPE4, TYPE13): the mass, inertia, stiffnesses and dampings per unit length, the curves of the strain
+  // delta / L0 (docs/theory/spring.md, SP-21); each spring's own values follow from its rest length.
+  bool per_unit_length = false;
   SpringFailure failure;  // TYPE8, TYPE13, TYPE25 (TYPE4: Ifail 0 on the elongation)
   int dofs() const { return frame == SpringFrame::Axial ? 1 : kSpringDofs; }
   std::string_view card() const {  // /PROP/<card>

@@ -185,6 +185,10 @@ void spring_default_only(const Line& line, DeckContext& context, int column, int
     context.unsupported(line.error(column, width, name, default_only(feature)));
 }
 
+// Per unit length (SP-21): a mass per length [M / L], an inertia per length [M L]; `power` 1 for a
+// stiffness per unit strain.
+Dimension per_length(Dimension d, int power = -1) { return {d.mass, d.length + power, d.time}; }
+
 // The names of a spring law's fields in messages: /PROP/TYPE4's (K, fct_ID11, H, ...) or the i-th degree of
 // freedom's of /PROP/TYPE8 (K1, fct_ID11, H1, ... for X; K4 and fct_ID14 for XX).
 struct SpringLawNames {
@@ -207,19 +211,33 @@ struct SpringLawNames {
     delta_min = "delta_min" + i, delta_max = "delta_max" + i, f = "F" + i, e = "E" + i;
     ascale = "Ascale" + i, hscale = "Hscale" + i;
   }
+  // Ileng 1 (SP-21): the stiffness and damping per unit length (times a length), the curve's abscissa a strain;
+  // `limits`: the elongation limits a strain too (a beam-type spring's; a 1-D spring's stay lengths, and force and
+  // energy limits are not scaled, measured).
+  void per_unit_length(bool limits) {
+    stiffness = per_length(stiffness, 1), damping = per_length(damping, 1), displacement = per_length(displacement);
+    if (limits) limit = per_length(limit);
+  }
 };
+
+// Ileng (TYPE4 and TYPE13): 0, or 1 for the input per unit length (SP-21), which changes the dimensions of the mass,
+// inertia, stiffnesses and dampings, read after it.
+bool read_unit_length_flag(const Line& line, int column) {
+  const std::int64_t ileng = line.integer(column, 10, "Ileng");
+  if (ileng != 0 && ileng != 1) line.fail(column, 10, "Ileng", "0 (the values as given) or 1 (per unit length)");
+  return ileng == 1;
+}
 
 // Line 1 of /PROP/TYPE4: Mass, sens_ID, Isflag, Ileng.
 void read_spring_mass(CardReader& reader, DeckContext& context, SpringSection& s) {
   const Line first = reader.next("Mass, sens_ID, Isflag, Ileng");
-  s.mass = first.real(1, 20, "Mass", dim::mass);
+  s.per_unit_length = read_unit_length_flag(first, 71);
+  s.mass = first.real(1, 20, "Mass", s.per_unit_length ? per_length(dim::mass) : dim::mass);
   if (!(s.mass > 0.0)) first.fail(1, 20, "Mass", "a positive spring mass (the reference refuses a spring without mass)");
   if (first.optional_id(51, 10, "sens_ID", IdKind::Other) != 0)
     context.unsupported(first.error(51, 10, "sens_ID", default_only("a spring switched by a sensor is")));
   spring_default_only(first, context, 61, 10, "Isflag", static_cast<double>(first.integer(61, 10, "Isflag")), 0.0,
                       "the sensor flag (with a sensor) is");
-  spring_default_only(first, context, 71, 10, "Ileng", static_cast<double>(first.integer(71, 10, "Ileng")), 0.0,
-                      "input per unit length is");
 }
 
 // A law's first line: K, C, A, B, D.
@@ -341,9 +359,13 @@ void read_spring_property(CardReader& reader, DeckContext& context) {
   refuse_narrow_layout(reader);
   Property p = begin_property(reader, PropertyKind::Spring);
   read_spring_mass(reader, context, p.spring);
-  const SpringLawNames names(0);
+  SpringLawNames names(0);
+  if (p.spring.per_unit_length) names.per_unit_length(false);
   read_spring_stiffness(reader, context, p.spring.dof[0], names);
   read_spring_law(reader, context, p.spring.dof[0], names);
+  if (p.spring.per_unit_length && p.spring.dof[0].hardening == 8)
+    context.unsupported(DeckError(p.where, reader.card().keyword, "Ileng",
+                                  "0 with H 8 (the total length's curve per unit length is not supported by Crumple)", "1"));
   if (!p.spring.dof[0].acts())
     throw DeckError(p.where, reader.card().keyword, "K, C, fct_ID11", "a stiffness, a damping or a force function",
                     "none of them");
@@ -364,9 +386,9 @@ void refuse_rate_filter(const Line& line, DeckContext& context, int smooth, int 
 // Line 1's fields that /PROP/TYPE8 and /PROP/TYPE13 share: Mass, Inertia (> 0 where `inertia_required`), sens_ID,
 // Isflag, Ifail (the skew at 41-50 and the last fields are each card's own).
 void read_six_law_spring_line(const Line& first, DeckContext& context, SpringSection& s, bool inertia_required) {
-  s.mass = first.real(1, 20, "Mass", dim::mass);
+  s.mass = first.real(1, 20, "Mass", s.per_unit_length ? per_length(dim::mass) : dim::mass);
   if (!(s.mass > 0.0)) first.fail(1, 20, "Mass", "a positive spring mass (the reference refuses a spring without mass)");
-  s.inertia = first.real(21, 20, "Inertia", dim::inertia);
+  s.inertia = first.real(21, 20, "Inertia", s.per_unit_length ? per_length(dim::inertia) : dim::inertia);
   if (inertia_required ? !(s.inertia > 0.0) : s.inertia < 0.0)
     first.fail(21, 20, "Inertia", inertia_required ? "a positive rotational inertia" : "a non-negative rotational inertia");
   if (first.optional_id(51, 10, "sens_ID", IdKind::Other) != 0)
@@ -394,6 +416,7 @@ void read_six_laws(CardReader& reader, DeckContext& context, SpringSection& s) {
   for (int d = 0; d < kSpringDofs; ++d) {
     SpringLawNames names(d + 1);
     set_limit_dimension(names, s.failure.measure);
+    if (s.per_unit_length) names.per_unit_length(s.failure.measure == SpringFailureMeasure::Elongation);
     read_spring_stiffness(reader, context, s.dof[static_cast<std::size_t>(d)], names);
     read_spring_law(reader, context, s.dof[static_cast<std::size_t>(d)], names);
   }
@@ -439,10 +462,9 @@ void read_general_spring_property(CardReader& reader, DeckContext& context) {
 // Line 1 of /PROP/TYPE13: Mass, Inertia, skew_ID, sens_ID, Isflag, Ifail, Ileng, Ifail2.
 void read_beam_spring_mass(CardReader& reader, DeckContext& context, SpringSection& s) {
   const Line first = reader.next("Mass, Inertia, skew_ID, sens_ID, Isflag, Ifail, Ileng, Ifail2");
+  s.per_unit_length = read_unit_length_flag(first, 81);
   read_six_law_spring_line(first, context, s, true);
   s.skew_id = first.optional_id(41, 10, "skew_ID", IdKind::Other);
-  spring_default_only(first, context, 81, 10, "Ileng", static_cast<double>(first.integer(81, 10, "Ileng")), 0.0,
-                      "input per unit length is");
   // Ifail2 (SP-5b): 0 the elongation; 1 the elongation, 2 the force, 3 the energy, each limit raised by the rate.
   const std::int64_t ifail2 = first.integer(91, 10, "Ifail2");
   if (ifail2 < 0 || ifail2 > 3)
@@ -505,6 +527,11 @@ void read_axisymmetric_spring_property(CardReader& reader, DeckContext& context)
   p.spring.frame = SpringFrame::Beam;
   p.spring.radial = true;
   read_beam_spring_mass(reader, context, p.spring);
+  if (p.spring.per_unit_length) {  // SP-21 measured on TYPE4 and TYPE13 only
+    context.unsupported(DeckError(p.where, reader.card().keyword, "Ileng",
+                                  default_only("the input per unit length (on /PROP/TYPE25) is"), "1"));
+    p.spring.per_unit_length = false;
+  }
   if (p.spring.failure.rate_effect) {  // measured on TYPE13 only
     context.unsupported(DeckError(p.where, reader.card().keyword, "Ifail2",
                                   default_only("a failure criterion other than the elongation's (on /PROP/TYPE25) is"),
