@@ -66,6 +66,51 @@ void write_first_frame(const Model& m, const SolverState& s, RunObserver& observ
   solver::advance_schedule(m, s, written, schedule);
 }
 
+// E-3 (docs/theory/energy.md): the energies of the state the run ends at, as the reference's last row gives them:
+// the elements' at the final positions x^N, the kinetic energy of the velocity at t^N, between the half steps
+// around it, and the work to t^N (that share of the next cycle's). The next cycle is taken on a copy of the state, so that a
+// restart and the next engine deck go on from the loop's state; false when a phase of that cycle stops.
+bool end_state_energies(const Model& m, const SolverState& s, Exchange* exchange, bool selective,
+                        EnergyBalanceState& end) {
+  using namespace solver;
+  SolverState next = s;
+  RunEvents quiet;
+  bool deleted = false;
+  StepBound bound = compute_element_forces(m, next, quiet, deleted, exchange);
+  stiffness_damping_forces(m, next);
+  if (!next.contact.interfaces.empty()) compute_contact_forces(m, next, quiet, deleted, bound);
+  apply_loads(m, next);
+  choose_time_step(m, next, quiet, bound);
+  const double dt_next = bound.dt;  // the step past the end time the loop would take
+  if (quiet.stop.stopped() || !(dt_next > 0.0) || !(dt_next < 1e300)) return false;
+  const double dt_average = next.cycle + next.cycles_done == 0 ? 0.5 * dt_next : 0.5 * (next.dt + dt_next);
+  apply_damping(m, next, dt_average);
+  if (selective) solve_accelerations(m, next, quiet, dt_average, dt_next);
+  if (quiet.stop.stopped()) return false;
+  VelocityScratch scratch(next.nodes.size());
+  const std::vector<RigidBodyState> bodies_before = next.bodies;
+  integrate(next, scratch, dt_average, selective);
+  apply_constraints(m, next, scratch, dt_average, dt_next);
+  // v^N between v^(N-1/2) and v^(N+1/2) at t^N, the weight of the last half step in dt^N (1/2 at a constant step;
+  // the last step cut to the end time weighs less), and the work to t^N likewise.
+  const double w = next.cycle + next.cycles_done == 0 ? 0.0 : 0.5 * next.dt / dt_average;
+  auto at_end = [w](double before, double after) { return before + w * (after - before); };
+  NodalState& n = next.nodes;
+  std::array<std::vector<double>*, 6> v{&n.vx, &n.vy, &n.vz, &n.wx, &n.wy, &n.wz};
+  for (std::size_t d = 0; d < 6; ++d)
+    for (std::size_t k = 0; k < n.size(); ++k) (*v[d])[k] = at_end(scratch.before[d][k], (*v[d])[k]);
+  for (std::size_t b = 0; b < next.bodies.size(); ++b)
+    for (std::size_t i = 0; i < 3; ++i) {
+      next.bodies[b].velocity[i] = at_end(bodies_before[b].velocity[i], next.bodies[b].velocity[i]);
+      next.bodies[b].omega[i] = at_end(bodies_before[b].omega[i], next.bodies[b].omega[i]);
+    }
+  update_energies(m, next);
+  end = next.energy;
+  end.external_work = at_end(s.energy.external_work, next.energy.external_work);
+  end.contact = at_end(s.energy.contact, next.energy.contact);
+  return true;
+}
+
 }  // namespace
 
 RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunObserver& observer, SolverState& s,
@@ -103,6 +148,7 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunObse
   auto keep = [&control](const StepBound& bound) {
     if (bound.control.source != StepControl::Source::None) control = bound.control;
   };
+  bool ended_on_a_cycle = false;  // the loop's last cycle completed: positions, time and outputs advanced
   const bool body_sensors = rigid_bodies_have_sensors(m);
   const StepBound carried = body_sensors ? sensor_bodies_step(m, step_scale(m.run)) : StepBound{};
   for (;;) {
@@ -148,7 +194,7 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunObse
     // shows the progress line with the last one taken.
     if (due.energies() || (show_progress && !s.domain.several())) update_energies(m, s);
     if (due.energies()) {
-      if (due.print) observer.row(s, dt_next, control);
+      if (due.print && !due.finished) observer.row(s, dt_next, control);  // the last row after the loop (E-3)
       check_run_limits(m, s, events);
       if (!events.pending.empty()) observer.events(events);
       if (events.stop.stopped()) break;
@@ -171,23 +217,36 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunObse
     if (restart_now) write_snapshot(observer, s, options, events, schedule);
     if (show_progress) observer.progress(s, dt_next, control);
     clock.lap(phases.output);
-    if (due.finished || stop_requested(options.stop_request, s, events, options.exchange, due.energies())) break;
+    if (due.finished || stop_requested(options.stop_request, s, events, options.exchange, due.energies())) {
+      ended_on_a_cycle = true;
+      break;
+    }
     if (rebalance_due(s)) rebalance(m, s, *options.exchange, events, options.repartition);
   }
   update_energies(m, s);
   if (s.domain.several()) share_element_state(s, *options.exchange), share_node_state(m, s, *options.exchange, true);
   observer.events(events);
-  observer.row(s, dt_next, control);  // the cycle the run ended at, unless its row is printed already
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   // A snapshot at the end with /RFILE, and always when the run was asked to stop (it can go on from there); never
   // after a failure (NaN, inverted element), whose state is not worth resuming.
   const bool resumable = !events.stop.stopped() || events.stop.requested() || events.stop.is_limit();
+  // The last row and the summary show the end state's energies (E-3); the loop's go on into a restart and the next
+  // engine deck.
+  const EnergyBalanceState loop_energy = s.energy;
+  EnergyBalanceState end;
+  const bool end_state = ended_on_a_cycle && resumable && end_state_energies(m, s, options.exchange, selective, end);
+  if (end_state) s.energy = end;
+  observer.row(s, dt_next, control);  // the cycle the run ended at
+  s.energy = loop_energy;
   if (resumable && (m.run.restart_every > 0 || events.stop.requested()))
     write_snapshot(observer, s, options, events, schedule);
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   phases.contact_sort = s.contact.sort_seconds - sort_seconds_before;
   phases.contact_sorts = -sorts_before;
   for (const ContactInterface& in : s.contact.interfaces) phases.contact_sorts += in.sorts;
-  return observer.finish(s, events, phases, dt_next, wall);
+  if (end_state) s.energy = end;
+  RunSummary summary = observer.finish(s, events, phases, dt_next, wall);
+  s.energy = loop_energy;
+  return summary;
 }
 
 SolverState initial_state(const Model& m, std::vector<std::string>& notes) {

@@ -83,8 +83,10 @@ TEST(Skews, ConditionsLoadsAndVelocitiesActAlongTheSkewAxes) {
     for (std::size_t c = 0; c < 3; ++c)
       EXPECT_NEAR(velocity[k][c], expected[k][c], 1e-9) << "node " << k + 1 << ", component " << c;
   EXPECT_EQ(spin[4], 0.0) << "the spin about Z' is held";
-  // The loads' work is the kinetic energy they gave; the held load does no work (energy balance, loads.md).
-  EXPECT_LT(std::abs(run.summary.energy.error_percent), 1e-6);
+  // The loads' work is the kinetic energy they gave; the held load does no work (energy balance, loads.md). The end
+  // row's work to t^N is the linear share of the next cycle's (energy.md, E-3): for constant loads it is off by
+  // dt^2 / (4 t^2) of their work, 2.5e-5 of it here (the loop's own balance closes to round-off).
+  EXPECT_LT(std::abs(run.summary.energy.error_percent), 1e-4);
 }
 
 // A body spinning at 1 rad/s about z through its main node 10 (ICoG 3, the deck skew_mov_frame's arrangement),
