@@ -367,6 +367,16 @@ void resolve_load_references(Resolver& r) {
       p.spring.skew = r.find(r.model.index.skews, p.spring.skew_id, p.where,
                              fmt::format("/PROP/{}/{}", p.spring.card(), p.user_id), "skew_ID", "skew");
   r.index(m.sensors, m.index.sensors, "/SENSOR");
+  for (Property& p : r.model.properties) {  // a pretensioner's activation (docs/theory/spring.md, SP-22)
+    SpringPretension& pre = p.spring.pretension;
+    if (p.kind != PropertyKind::Spring || !pre.on || pre.sensor_id == 0) continue;
+    const std::string kw = fmt::format("/PROP/SPR_PRE/{}", p.user_id);
+    const SensorWindow window = sensor_window(r, pre.sensor_id, p.where, kw, "sens_ID");
+    pre.activation_time = window.on;
+    if (std::isfinite(window.off))
+      r.error(p.where, kw, "sens_ID", "a sensor that stays on (a pretensioner's sensor turning off is not measured)",
+              fmt::format("/SENSOR {} turns off at {:g}", pre.sensor_id, window.off));
+  }
   r.index(m.rigid_walls, m.index.rigid_walls, "/RWALL");
   r.index(m.rigid_bodies, m.index.rigid_bodies, "/RBODY");
   r.index(m.dampings, m.index.dampings, "/DAMP");

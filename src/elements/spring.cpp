@@ -35,7 +35,7 @@ SpringDofParameters dof_parameters(const SpringLaw& s, const std::vector<Functio
 }  // namespace
 
 SpringGroupParameters spring_parameters(const SpringSection& s, const std::vector<Function>& functions) {
-  SpringGroupParameters p{s.mass, s.inertia, s.frame, {}, s.radial, s.per_unit_length, s.failure};
+  SpringGroupParameters p{s.mass, s.inertia, s.frame, {}, s.radial, s.per_unit_length, s.pretension, s.failure};
   for (int d = 0; d < s.dofs(); ++d)
     p.dof[static_cast<std::size_t>(d)] = dof_parameters(s.dof[static_cast<std::size_t>(d)], functions);
   return p;
@@ -252,9 +252,36 @@ double law_force(const SpringDofParameters& p, LawHistory h, double delta, doubl
 
 bool outside(const SpringDofParameters& p, double delta) { return delta < p.delta_min || delta > p.delta_max; }  // SP-5
 
+// The pretensioner's phases (SP-22), kept in its law's second hardening variable; the first holds its shortening
+// since the sensor came on.
+constexpr double kBeforeSensor = 0.0, kPretensioning = 1.0, kLocked = 2.0;
+
+// SP-22: an elastic K0 spring whose force, while the sensor is on and the pretension F1 - K1 delta is positive,
+// is at least that pretension; with Ilock 2 it stays elastic once it has held more. Its work as SP-3.
+double pretension_force(const SpringPretension& pre, const SpringDofParameters& law, LawHistory h, double delta,
+                        double time, double& work) {
+  const double increment = delta - h.elongation;
+  const double elastic = h.force + law.stiffness * increment;
+  double& shortening = h.plastic_a;
+  double& phase = h.plastic_b;
+  // A sensor is looked at after a cycle, for the next: one on at t = 0 acts from the second cycle (measured).
+  const bool sensor_on = pre.sensor_id == 0 || (time >= pre.activation_time && time > 0.0);
+  if (phase == kBeforeSensor && sensor_on) phase = kPretensioning;
+  double force = elastic;
+  if (phase == kPretensioning) {
+    shortening -= increment;
+    const double pretension = pre.force - pre.stiffness * shortening;
+    if (pretension > 0.0 && elastic > pretension && pre.lock) phase = kLocked;
+    if (pretension > 0.0 && elastic <= pretension) force = pretension;
+  }
+  work += 0.5 * (h.force + force) * increment;
+  h.force = force, h.elastic = force, h.elongation = delta;
+  return force;
+}
+
 // /PROP/TYPE4: one degree of freedom along the nodes (eq. SP-1 to SP-5).
 GroupStepResult axial_spring_forces(const ElementTable& table, const ElementGroup& group, const SpringGroupParameters& group_p,
-                                    NodalState& nodes, SpringState& state, double dt) {
+                                    NodalState& nodes, SpringState& state, double dt, double time) {
   GroupStepResult result;
   SpringGroupParameters own;  // Ileng 1: each spring's own (SP-21)
   const bool recording = state.records.on(group.begin);
@@ -279,13 +306,17 @@ GroupStepResult axial_spring_forces(const ElementTable& table, const ElementGrou
       continue;
     }
     double work = 0.0;
-    const double force = law_force(p.dof[0], slot_history(state, slot), elongation, dt, work, state.length0[ue]);
+    const double force = p.pretension.on
+                             ? pretension_force(p.pretension, p.dof[0], slot_history(state, slot), elongation, time, work)
+                             : law_force(p.dof[0], slot_history(state, slot), elongation, dt, work, state.length0[ue]);
     state.internal_energy[ue] += work;
     result.internal_energy += work;
 
     hand_two_node_force(nodes, state.records, recording, ue, n, scaled(scaled(axis, 1.0 / length), force));
     if (!std::isfinite(force)) result.non_finite = e;
-    close_element(state, result, e, state.nodal_step[ue], outside(p.dof[0], elongation));
+    // A pretensioner steps on its own mass and K0, whatever its nodes carry (SP-22, measured).
+    const double step = p.pretension.on ? spring_critical_step(p) : state.nodal_step[ue];
+    close_element(state, result, e, step, outside(p.dof[0], elongation));
   }
   return result;
 }
@@ -519,9 +550,9 @@ GroupStepResult beam_spring_forces(const ElementTable& table, const ElementGroup
 }  // namespace
 
 GroupStepResult spring_forces(const ElementTable& table, const ElementGroup& group, const SpringGroupParameters& p,
-                              NodalState& nodes, SpringState& state, double dt) {
+                              NodalState& nodes, SpringState& state, double dt, double time) {
   switch (p.frame) {
-    case SpringFrame::Axial: return axial_spring_forces(table, group, p, nodes, state, dt);
+    case SpringFrame::Axial: return axial_spring_forces(table, group, p, nodes, state, dt, time);
     case SpringFrame::Global: return general_spring_forces(table, group, p, nodes, state, dt);
     case SpringFrame::Beam: return beam_spring_forces(table, group, p, nodes, state, dt);
   }

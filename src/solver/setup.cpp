@@ -258,7 +258,10 @@ SolverState make_state(const Model& m, std::vector<std::string>& notes, Domain d
   for (double mass : s.nodes.mass) s.mass_initial += mass;
   // A rigid body's initial spin is rotational (RB-7); every domain holds every node here.
   const auto [translational, rotational] = kinetic_energy(s, true);
-  s.energy.initial_kinetic = translational + rotational;
+  // E_0 holds the energy a pretensioner stores from the start (docs/theory/spring.md, SP-22).
+  double stored = 0.0;
+  for (double e : s.springs.internal_energy) stored += e;
+  s.energy.initial_kinetic = translational + rotational + stored;
   return s;
 }
 

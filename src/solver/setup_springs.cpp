@@ -1,5 +1,6 @@
 // Solver state of the springs (docs/theory/spring.md): per-group parameters from the part's property (/PROP/TYPE4,
 // TYPE8, TYPE13), each spring's length at rest, mass, frame and step.
+#include <cmath>
 #include <algorithm>
 #include <vector>
 
@@ -85,6 +86,7 @@ void setup_springs(const Model& m, SolverState& s) {
       // The stiffness it gives each node in the nodal steps (SP-4a): a general spring's stiffest translation.
       st.step_stiffness[ue] = spring_step_stiffness(p, st.length0[ue]).translation;
       for (int a = 0; a < 2; ++a) s.nodes.inertia[static_cast<std::size_t>(n[a])] += 0.5 * p.inertia;  // half each
+      if (p.pretension.on) st.internal_energy[ue] = std::abs(p.pretension.energy);  // SP-22: |E1| from t = 0
     }
   }
   setup_spring_steps(m, s);

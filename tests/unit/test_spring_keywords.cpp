@@ -280,6 +280,40 @@ TEST(SpringKeywords, InputPerUnitLengthScalesByTheRestLength) {
   EXPECT_NE(error.find("Ileng 1"), std::string::npos) << error;
 }
 
+// /PROP/SPR_PRE (SP-22): F1, D1, E1, K1 resolved from the two given, as the reference's starter echoes them (F1 100
+// and D1 0.1, or D1 and K1, or E1 and K1: F1 100, D1 0.1, E1 5, K1 1000); more than two, a force function, a sensor
+// that turns off are errors naming the field; the step is the 1-D spring's of M and K0.
+TEST(SpringKeywords, PretensionerResolvesItsForceStrokeEnergyAndStiffness) {
+  auto deck = [](const std::string& line2, const std::string& line3 = "", const std::string& sensor_off = "") {
+    std::string s = "/NODE\n" + I(101) + R(0.0) + R(0.0) + R(0.0) + "\n" + I(102) + R(1.0) + R(0.0) + R(0.0) + "\n";
+    s += "/SPRING/20\n" + I(7) + I(101) + I(102) + "\n/PART/20\npretensioner\n" + I(30) + I(0) + "\n";
+    s += "/PROP/SPR_PRE/30\npretensioner\n" + R(0.001) + std::string(30, ' ') + I(4) + I(2) + "\n" + line2 + "\n" + line3 + "\n";
+    return s + "/SENSOR/TIME/4\nsensor\n" + R(0.01) + sensor_off + "\n";
+  };
+  for (const std::string& given : {R(1e5) + R(100.0) + R(0.1), R(1e5) + R(0.0) + R(0.1) + R(0.0) + R(1000.0),
+                                   R(1e5) + R(0.0) + R(0.0) + R(5.0) + R(1000.0)}) {
+    test::TempDir dir;
+    const Model m = read_deck(dir.write("T_0000.rad", test::begin_card("T") + deck(given) + "/END\n")).model;
+    const SpringPretension& p = m.properties[0].spring.pretension;
+    EXPECT_TRUE(p.on);
+    EXPECT_TRUE(p.lock);
+    EXPECT_DOUBLE_EQ(p.activation_time, 0.01);
+    EXPECT_NEAR(p.force, 100.0, 1e-9);
+    EXPECT_NEAR(p.stroke, 0.1, 1e-12);
+    EXPECT_NEAR(p.energy, 5.0, 1e-9);
+    EXPECT_NEAR(p.stiffness, 1000.0, 1e-9);
+    EXPECT_NEAR(initial_element_time_step(m, ElementKind::Spring, 0), std::sqrt(0.001 / 1e5), 1e-15);
+  }
+  auto error = [&](const std::string& d, int version = 2019) {
+    test::TempDir dir;
+    return test::first_error(dir.write("T_0000.rad", test::begin_card("T", version) + d + "/END\n"));
+  };
+  EXPECT_NE(error(deck(R(1e5) + R(100.0) + R(0.1) + R(5.0))).find("F1, D1, E1, K1"), std::string::npos);
+  EXPECT_NE(error(deck(R(1e5) + R(100.0), I(5))).find("fct_ID1"), std::string::npos);
+  EXPECT_NE(error(deck(R(1e5) + R(100.0), "", "\n" + R(0.5)), 2023).find("sens_ID"), std::string::npos);
+  EXPECT_NE(error(deck(R(0.0) + R(100.0))).find("K0"), std::string::npos);
+}
+
 TEST(SpringKeywords, GeneralSpringRefusalsNameTheirField) {
   EXPECT_NE(general_error(general_property({R(1000.0), "", "", R(100.0), "", ""}, 0.0)).find("Inertia"),
             std::string::npos);

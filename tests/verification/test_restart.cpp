@@ -11,7 +11,7 @@
 // (springs_mixed_damped), beam-type springs (beam_spring_cantilever), a spot weld tied to two plates
 // (tied_spot_weld), trusses letting go over their last cycles (truss_tower_fails), a frame of beams past yield
 // (beam_frame_plastic), a bolt on an /RBE2 (rbe2_bolt_beam), a mass on an /RBE3 (rbe3_mass_dependent) and an
-// axisymmetric spring's radial law (spring_axi_swinging_mass).
+// axisymmetric spring's radial law (spring_axi_swinging_mass) and pretensioners, one locked (spring_pretension_locks).
 #include <gtest/gtest.h>
 #include <hdf5.h>
 
@@ -177,7 +177,9 @@ INSTANTIATE_TEST_SUITE_P(
                       // /RBE3: the dependent node's mass spread, its motion from the independent nodes
                       RestartCase{"rbe3_mass_dependent", kPeerDecks / "rbe3_mass_dependent" / "RBE3MD_0000.rad", 400},
                       // /PROP/TYPE25: the radial shear law's own history (SP-20)
-                      RestartCase{"spring_axi_swinging_mass", kPeerDecks / "spring_axi_swinging_mass" / "AXISWING_0000.rad", 2000}),
+                      RestartCase{"spring_axi_swinging_mass", kPeerDecks / "spring_axi_swinging_mass" / "AXISWING_0000.rad", 2000},
+                      // /PROP/TYPE32: the pretensioners' shortening and phase, one locked before the restart (SP-22)
+                      RestartCase{"spring_pretension_locks", kPeerDecks / "spring_pretension_locks" / "SPRELOCK_0000.rad", 1500}),
     [](const auto& p) { return std::string(p.param.name); });
 
 TEST(Restart, FileOfAnotherModelIsRefusedWithItsCounts) {

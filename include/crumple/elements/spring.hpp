@@ -35,6 +35,7 @@ struct SpringGroupParameters {
   std::array<SpringDofParameters, kSpringDofs> dof{};  // /PROP/TYPE4: dof[0]
   bool radial = false;  // TYPE25: shear and bending on the radial magnitude (SP-20)
   bool per_unit_length = false;  // Ileng 1: each spring's values follow from its rest length (SP-21)
+  SpringPretension pretension;   // TYPE32 (SP-22)
   SpringFailure failure;  // SP-5b
 };
 
@@ -85,9 +86,9 @@ double spring_nodal_step(const SpringState& st, const std::int32_t* n, std::size
 // element step, which `crumple check` prints.
 double spring_critical_step(const SpringGroupParameters& p, double length = 0.0);
 
-// Computes the force of the group's springs at the current positions (velocities at mid-step), subtracts it from
-// the nodal force accumulators and adds its work to the springs' internal energy (eq. SP-1 to SP-3).
+// Computes the force of the group's springs at the current positions (velocities at mid-step) at time `time`,
+// subtracts it from the nodal force accumulators and adds its work to the springs' internal energy (eq. SP-1 to SP-3).
 GroupStepResult spring_forces(const ElementTable& table, const ElementGroup& group, const SpringGroupParameters& p,
-                              NodalState& nodes, SpringState& state, double dt);
+                              NodalState& nodes, SpringState& state, double dt, double time);
 
 }  // namespace crumple

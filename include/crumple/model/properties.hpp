@@ -91,6 +91,20 @@ struct SpringFailure {
   double translation_rate = 1.0, rotation_rate = 1.0;  // Vo [L/T], Wo [1/T] (0 or blank: 1)
 };
 
+// /PROP/TYPE32 (/PROP/SPR_PRE): the pretensioner, a 1-D spring of stiffness K0 (dof[0]) that, once its sensor is
+// on, holds at least the pretension F1 - K1 delta while its shortening delta since then is within the stroke
+// D1 = F1 / K1 (docs/theory/spring.md, SP-22). F1, D1, E1, K1 resolved from the two the card gives.
+struct SpringPretension {
+  bool on = false;
+  std::int64_t sensor_id = 0;  // sens_ID; 0: active from the start
+  double activation_time = 0.0;  // [T] the sensor's Tdelay (resolved; 0 without a sensor)
+  bool lock = false;           // Ilock 2: a plain K0 spring for good once the spring holds more than the pretension
+  double force = 0.0;          // F1 [F]
+  double stroke = 0.0;         // D1 [L]
+  double energy = 0.0;         // E1 [E]: the spring's internal energy at t = 0 is |E1| (measured)
+  double stiffness = 0.0;      // K1 [F/L]
+};
+
 struct SpringSection {
   double mass = 0.0;     // M, the spring's mass, half at each node [M]; > 0 (the reference refuses 0)
   double inertia = 0.0;  // TYPE8 and TYPE13: its rotational inertia, half at each node [M L^2]
@@ -104,10 +118,12 @@ struct SpringSection {
   // Ileng 1 (TYPE4, TYPE13): the mass, inertia, stiffnesses and dampings per unit length, the curves of the strain
   // delta / L0 (docs/theory/spring.md, SP-21); each spring's own values follow from its rest length.
   bool per_unit_length = false;
+  SpringPretension pretension;  // TYPE32
   SpringFailure failure;  // TYPE8, TYPE13, TYPE25 (TYPE4: Ifail 0 on the elongation)
   int dofs() const { return frame == SpringFrame::Axial ? 1 : kSpringDofs; }
   std::string_view card() const {  // /PROP/<card>
     if (radial) return "SPR_AXI";
+    if (pretension.on) return "SPR_PRE";
     return frame == SpringFrame::Axial ? "SPRING" : frame == SpringFrame::Global ? "SPR_GENE" : "SPR_BEAM";
   }
 };

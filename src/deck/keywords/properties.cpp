@@ -2,6 +2,7 @@
 // /PROP/TYPE3 (BEAM). Layouts: docs/cards/starter-model.md.
 #include <fmt/format.h>
 
+#include <cmath>
 #include <utility>
 #include <tuple>
 
@@ -560,6 +561,64 @@ void read_axisymmetric_spring_property(CardReader& reader, DeckContext& context)
   context.model.properties.push_back(std::move(p));
 }
 
+// The pretension's F1, D1, E1, K1 from the two the card gives (SP-22, the reference's starter, measured): F1 = K1 D1,
+// E1 = F1 D1 / 2; a K1 left at 0 is 1e-20 (F1 alone is a constant pull without a stroke); more than two is the
+// reference's error 408.
+void resolve_pretension(const Line& line, SpringPretension& p) {
+  int given = 0;
+  for (double v : {p.force, p.stroke, p.energy, p.stiffness}) given += v != 0.0;
+  if (given > 2)
+    line.fail(21, 80, "F1, D1, E1, K1", "at most two of F1, D1, E1 and K1 (the others follow from them)");
+  double& f = p.force;
+  double& d = p.stroke;
+  double& e = p.energy;
+  double& k = p.stiffness;
+  d = std::abs(d);
+  if (k == 0.0) k = 1e-20;
+  if (f != 0.0 && d != 0.0) k = f / d, e = 0.5 * f * d;
+  else if (f != 0.0 && e != 0.0) d = 2.0 * e / f, k = f / d;
+  else if (d != 0.0 && e != 0.0) f = 2.0 * e / d, k = f / d;
+  else if (f != 0.0) d = f / k, e = 0.5 * f * d;
+  else if (d != 0.0) f = k * d, e = 0.5 * f * d;
+  else if (e != 0.0) f = std::sqrt(2.0 * e * k), d = f / k;
+}
+
+// /PROP/TYPE32 (/PROP/SPR_PRE): the pretensioner (docs/theory/spring.md, SP-22). Line 1 M, sens_ID, Ilock; line 2
+// K0, F1, D1, E1, K1; line 3 the force functions of the stroke and of time and their scales (columns measured on
+// the reference's starter echo, input versions 100 to 2019).
+void read_pretension_spring_property(CardReader& reader, DeckContext& context) {
+  refuse_narrow_layout(reader);
+  Property p = begin_property(reader, PropertyKind::Spring);
+  SpringSection& s = p.spring;
+  SpringPretension& pre = s.pretension;
+  pre.on = true;
+  const Line first = reader.next("M, sens_ID, Ilock");
+  s.mass = first.real(1, 20, "M", dim::mass);
+  if (!(s.mass > 0.0)) first.fail(1, 20, "M", "a positive spring mass");
+  pre.sensor_id = first.optional_id(51, 10, "sens_ID", IdKind::Other);
+  const std::int64_t ilock = first.integer(61, 10, "Ilock");
+  pre.lock = ilock == 2;  // measured: 0, 1, 3 and -1 run alike
+  const Line second = reader.next("K0, F1, D1, E1, K1");
+  SpringLaw& law = s.dof[0];
+  law.stiffness = second.real(1, 20, "K0", dim::stiffness);
+  if (!(law.stiffness > 0.0)) second.fail(1, 20, "K0", "a positive stiffness before the sensor (and to unload)");
+  pre.force = second.real(21, 20, "F1", dim::force);
+  pre.stroke = second.real(41, 20, "D1", dim::length);
+  pre.energy = second.real(61, 20, "E1", dim::moment);
+  pre.stiffness = second.real(81, 20, "K1", dim::stiffness);
+  resolve_pretension(second, pre);
+  if (reader.has_data()) {
+    const Line third = reader.next("fct_ID1, fct_ID2, Ascale_2, Ascale_1, Fscale_F");
+    for (const auto& [column, name] : {std::pair{1, "fct_ID1"}, {11, "fct_ID2"}})
+      if (third.optional_id(column, 10, name, IdKind::Other) != 0)
+        context.unsupported(third.error(column, 10, name, default_only("a pretension force function is")));
+    for (const auto& [column, name] : {std::pair{41, "Ascale_2"}, {61, "Ascale_1"}, {81, "Fscale_F"}})
+      third.real(column, 20, name, dim::none);  // the functions' scales: nothing to scale without them
+  }
+  reader.finish();
+  context.model.properties.push_back(std::move(p));
+}
+
 // /PROP/TYPE2 (/PROP/TRUSS): the truss's initial cross-section and gap (docs/theory/truss.md).
 void read_truss_property(CardReader& reader, DeckContext& context) {
   refuse_narrow_layout(reader);
@@ -626,6 +685,8 @@ void register_property_keywords(KeywordTable& table) {
   table.push_back({"/PROP/SPR_BEAM", DeckPart::Starter, read_beam_spring_property});
   table.push_back({"/PROP/TYPE25", DeckPart::Starter, read_axisymmetric_spring_property});
   table.push_back({"/PROP/SPR_AXI", DeckPart::Starter, read_axisymmetric_spring_property});
+  table.push_back({"/PROP/TYPE32", DeckPart::Starter, read_pretension_spring_property});
+  table.push_back({"/PROP/SPR_PRE", DeckPart::Starter, read_pretension_spring_property});
 }
 
 }  // namespace crumple::deck
