@@ -280,8 +280,9 @@ double pretension_force(const SpringPretension& pre, const SpringDofParameters& 
 }
 
 // /PROP/TYPE4: one degree of freedom along the nodes (eq. SP-1 to SP-5).
-GroupStepResult axial_spring_forces(const ElementTable& table, const ElementGroup& group, const SpringGroupParameters& group_p,
-                                    NodalState& nodes, SpringState& state, double dt, double time) {
+GroupStepResult axial_spring_forces(const ElementTable& table, const ElementGroup& group,
+                                    const SpringGroupParameters& group_p, NodalState& nodes, SpringState& state,
+                                    double dt, double time) {
   GroupStepResult result;
   SpringGroupParameters own;  // Ileng 1: each spring's own (SP-21)
   const bool recording = state.records.on(group.begin);
@@ -293,7 +294,8 @@ GroupStepResult axial_spring_forces(const ElementTable& table, const ElementGrou
     const Vec3 axis = node_position(nodes, n[1]) - node_position(nodes, n[0]);
     const double length = norm(axis);
     const double elongation = length - state.length0[ue];  // eq. SP-1
-    const SpringGroupParameters& p = group_p.per_unit_length ? (own = spring_of_length(group_p, state.length0[ue])) : group_p;
+    const SpringGroupParameters& p =
+        group_p.per_unit_length ? (own = spring_of_length(group_p, state.length0[ue])) : group_p;
     if (state.deleted[ue]) {  // broken last cycle: the work of its last force over the step it acted (eq. SP-5a)
       if (state.force[slot] != 0.0) {
         const double work = last_work(state, slot, elongation);
@@ -507,7 +509,8 @@ BeamKinematics coincident_beam_kinematics(const NodalState& nodes, const SpringS
 // /PROP/TYPE13: six laws in the spring's own frame, tension, shear, torsion and bending, the shear coupled to the
 // ends' rotations as a beam's (eq. SP-15 to SP-18).
 GroupStepResult beam_spring_forces(const ElementTable& table, const ElementGroup& group,
-                                   const SpringGroupParameters& group_p, NodalState& nodes, SpringState& state, double dt) {
+                                   const SpringGroupParameters& group_p, NodalState& nodes, SpringState& state,
+                                   double dt) {
   GroupStepResult result;
   SpringGroupParameters own;  // Ileng 1: each spring's own (SP-21)
   const bool recording = state.records.on(group.begin);
@@ -519,7 +522,8 @@ GroupStepResult beam_spring_forces(const ElementTable& table, const ElementGroup
     const Vec3 axis = node_position(nodes, n[1]) - node_position(nodes, n[0]);
     const double length = norm(axis);
     const bool at_rest_coincident = state.length0[ue] == 0.0;
-    const SpringGroupParameters& p = group_p.per_unit_length ? (own = spring_of_length(group_p, state.length0[ue])) : group_p;
+    const SpringGroupParameters& p =
+        group_p.per_unit_length ? (own = spring_of_length(group_p, state.length0[ue])) : group_p;
     if (!(length > 0.0) && !at_rest_coincident) {  // the nodes met: no frame left
       result.inverted = e;
       continue;

@@ -68,8 +68,8 @@ void write_first_frame(const Model& m, const SolverState& s, RunObserver& observ
 
 // E-3 (docs/theory/energy.md): the energies of the state the run ends at, as the reference's last row gives them:
 // the elements' at the final positions x^N, the kinetic energy of the velocity at t^N, between the half steps
-// around it, and the work to t^N (that share of the next cycle's). The next cycle is taken on a copy of the state, so that a
-// restart and the next engine deck go on from the loop's state; false when a phase of that cycle stops.
+// around it, and the work to t^N (that share of the next cycle's). The next cycle is taken on a copy of the state,
+// so that a restart and the next engine deck go on from the loop's state; false when a phase of that cycle stops.
 bool end_state_energies(const Model& m, const SolverState& s, Exchange* exchange, bool selective,
                         EnergyBalanceState& end) {
   using namespace solver;
