@@ -128,9 +128,20 @@ TEST(SpringKeywords, RefusedOptionsNameTheirField) {
   d.line3 = I(8) + I(1);  // isotropic hardening on a curve that is not odd about 0
   d.extra = "/FUNCT/8\nyield\n" + R(-1.0) + R(-30.0) + "\n" + R(0.0) + R(0.0) + "\n" + R(1.0) + R(20.0) + "\n";
   EXPECT_NE(error_of(d).find("odd about 0"), std::string::npos) << error_of(d);
-  d = SpringDeck{};
+  d = SpringDeck{};  // the logarithmic rate effect on a curve
   d.line2 = R(1000.0) + R(0.0) + R(1.0) + R(0.5);
+  d.line3 = I(8);
+  d.extra = "/FUNCT/8\nforce\n" + R(-1.0) + R(-30.0) + "\n" + R(1.0) + R(30.0) + "\n";
   EXPECT_NE(error_of(d).find("field B"), std::string::npos) << error_of(d);
+  d = SpringDeck{};  // on a linear spring: ignored, as the reference ignores it, with a warning that names it
+  d.line2 = R(1000.0) + R(0.0) + R(1.0) + R(0.5);
+  {
+    test::TempDir dir;
+    const Deck r = read_deck(starter(dir, d));
+    bool warned = false;
+    for (const auto& w : r.report.warnings) warned = warned || w.message.find("logarithmic rate") != std::string::npos;
+    EXPECT_TRUE(warned);
+  }
   d = SpringDeck{};
   d.line1 = R(2.0) + std::string(30, ' ') + I(0) + I(0) + I(2);
   EXPECT_NE(error_of(d).find("Ileng"), std::string::npos) << error_of(d);

@@ -241,8 +241,14 @@ void read_spring_mass(CardReader& reader, DeckContext& context, SpringSection& s
                       "the sensor flag (with a sensor) is");
 }
 
+// B and D of a law's first line, checked once its curve is known (check_log_rate).
+struct LogRateFields {
+  Line line;
+  double b = 0.0, d = 0.0;
+};
+
 // A law's first line: K, C, A, B, D.
-void read_spring_stiffness(CardReader& reader, DeckContext& context, SpringLaw& s, const SpringLawNames& n) {
+LogRateFields read_spring_stiffness(CardReader& reader, SpringLaw& s, const SpringLawNames& n) {
   const Line second = reader.next("K, C, A, B, D");
   s.stiffness = second.real(1, 20, n.k, n.stiffness);
   s.damping = second.real(21, 20, n.c, n.damping);
@@ -251,10 +257,24 @@ void read_spring_stiffness(CardReader& reader, DeckContext& context, SpringLaw& 
   // A scales the function fct_ID1 (read_spring_law checks it against one); blank or 0: 1.
   const double a = second.real(41, 20, n.a, dim::none);
   s.function_scale = (a == 0.0 ? 1.0 : a) * reader.units().factor(n.force);
-  spring_default_only(second, context, 61, 20, n.b, second.real(61, 20, n.b, dim::none), 0.0,
-                      "the logarithmic rate effect is");
-  spring_default_only(second, context, 81, 20, n.d, second.real(81, 20, n.d, dim::none), 1.0,
-                      "the rate effect's scale (with B) is");
+  const double b = second.real(61, 20, n.b, dim::none), d = second.real(81, 20, n.d, dim::none);
+  return {second, b, d};
+}
+
+// The logarithmic rate effect B (with its rate D) scales the curve fct_ID1 only: on a curve it is refused; a linear
+// spring ignores it, as the reference does (measured: its starter prints B = 0, and a /PROP/TYPE25 deck with B 50 on
+// its linear laws runs to the same time history as with B 0).
+void check_log_rate(const LogRateFields& rate, const SpringLaw& s, const CardReader& reader, DeckContext& context,
+                    const SpringLawNames& n) {
+  if (s.function_id != 0) {
+    spring_default_only(rate.line, context, 61, 20, n.b, rate.b, 0.0, "the logarithmic rate effect is");
+    spring_default_only(rate.line, context, 81, 20, n.d, rate.d, 1.0, "the rate effect's scale (with B) is");
+  } else if (rate.b != 0.0) {
+    context.note(rate.line.where(), reader.card().keyword, n.b,
+                 "the logarithmic rate effect acts on the force function only; a linear spring ignores it, as the "
+                 "reference does",
+                 SkipKind::Unsupported);
+  }
 }
 
 // The hardening flag and its curves (line 2 of a law): every flag needs fct_ID1, most an unloading K; H 4 to 7 take
@@ -362,8 +382,9 @@ void read_spring_property(CardReader& reader, DeckContext& context) {
   read_spring_mass(reader, context, p.spring);
   SpringLawNames names(0);
   if (p.spring.per_unit_length) names.per_unit_length(false);
-  read_spring_stiffness(reader, context, p.spring.dof[0], names);
+  const LogRateFields rate = read_spring_stiffness(reader, p.spring.dof[0], names);
   read_spring_law(reader, context, p.spring.dof[0], names);
+  check_log_rate(rate, p.spring.dof[0], reader, context, names);
   if (p.spring.per_unit_length && p.spring.dof[0].hardening == 8)
     context.unsupported(DeckError(p.where, reader.card().keyword, "Ileng",
                                   "0 with H 8 (the total length's curve per unit length is not supported by Crumple)", "1"));
@@ -418,8 +439,9 @@ void read_six_laws(CardReader& reader, DeckContext& context, SpringSection& s) {
     SpringLawNames names(d + 1);
     set_limit_dimension(names, s.failure.measure);
     if (s.per_unit_length) names.per_unit_length(s.failure.measure == SpringFailureMeasure::Elongation);
-    read_spring_stiffness(reader, context, s.dof[static_cast<std::size_t>(d)], names);
+    const LogRateFields rate = read_spring_stiffness(reader, s.dof[static_cast<std::size_t>(d)], names);
     read_spring_law(reader, context, s.dof[static_cast<std::size_t>(d)], names);
+    check_log_rate(rate, s.dof[static_cast<std::size_t>(d)], reader, context, names);
   }
 }
 
@@ -544,8 +566,9 @@ void read_axisymmetric_spring_property(CardReader& reader, DeckContext& context)
     SpringLawNames names(d + 1, 3);
     names.axisymmetric = true;
     SpringLaw& law = p.spring.dof[kSlot[d]];
-    read_spring_stiffness(reader, context, law, names);
+    const LogRateFields rate = read_spring_stiffness(reader, law, names);
     read_spring_law(reader, context, law, names);
+    check_log_rate(rate, law, reader, context, names);
   }
   p.spring.dof[2] = p.spring.dof[1], p.spring.dof[5] = p.spring.dof[4];
   if (reader.has_data()) {
