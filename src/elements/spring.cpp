@@ -43,6 +43,7 @@ SpringGroupParameters spring_parameters(const SpringSection& s, const std::vecto
 
 SpringGroupParameters spring_of_length(const SpringGroupParameters& p, double length0) {
   SpringGroupParameters q = p;
+  if (!p.per_unit_length) return q;
   q.per_unit_length = false, q.mass *= length0, q.inertia *= length0;
   q.failure.translation_rate *= length0, q.failure.rotation_rate *= length0;
   const bool limits = p.frame == SpringFrame::Beam && p.failure.measure == SpringFailureMeasure::Elongation;
@@ -316,9 +317,7 @@ GroupStepResult axial_spring_forces(const ElementTable& table, const ElementGrou
 
     hand_two_node_force(nodes, state.records, recording, ue, n, scaled(scaled(axis, 1.0 / length), force));
     if (!std::isfinite(force)) result.non_finite = e;
-    // A pretensioner steps on its own mass and K0, whatever its nodes carry (SP-22, measured).
-    const double step = p.pretension.on ? spring_critical_step(p) : state.nodal_step[ue];
-    close_element(state, result, e, step, outside(p.dof[0], elongation));
+    close_element(state, result, e, state.nodal_step[ue], outside(p.dof[0], elongation));
   }
   return result;
 }

@@ -39,9 +39,8 @@ void setup_spring_steps(const Model& m, SolverState& s) {
     if (m.element_groups[g].kind != ElementKind::Spring) continue;
     for (std::int32_t e = m.element_groups[g].begin; e < m.element_groups[g].end; ++e) {
       const auto ue = static_cast<std::size_t>(e);
-      const SpringGroupParameters& group_p = s.spring_groups[g];
-      const SpringStepStiffness k = spring_step_stiffness(
-          group_p.per_unit_length ? spring_of_length(group_p, st.length0[ue]) : group_p, st.length0[ue]);
+      const SpringStepStiffness k =
+          spring_step_stiffness(spring_of_length(s.spring_groups[g], st.length0[ue]), st.length0[ue]);
       const double own[4] = {k.translation, k.translation_damping, k.rotation, k.rotation_damping};
       for (std::size_t i = 0; i < 4; ++i) st.own_held[4 * ue + i] = own[i];
       for (int a = 0; a < 2; ++a)
@@ -56,7 +55,15 @@ void setup_spring_steps(const Model& m, SolverState& s) {
 
 void refresh_spring_steps(const Model& m, SolverState& s) {
   const ElementTable& table = m.elements[static_cast<int>(ElementKind::Spring)];
-  for (std::size_t e = 0; e < table.size(); ++e) s.springs.nodal_step[e] = spring_nodal_step(s.springs, table.nodes_of(e), e);
+  for (std::size_t g = 0; g < m.element_groups.size(); ++g) {
+    const ElementGroup& group = m.element_groups[g];
+    if (group.kind != ElementKind::Spring) continue;
+    // A pretensioner steps on its own mass and K0, whatever its nodes carry (SP-22, measured).
+    const SpringGroupParameters& p = s.spring_groups[g];
+    for (auto e = static_cast<std::size_t>(group.begin); e < static_cast<std::size_t>(group.end); ++e)
+      s.springs.nodal_step[e] =
+          p.pretension.on ? spring_critical_step(p) : spring_nodal_step(s.springs, table.nodes_of(e), e);
+  }
 }
 
 void setup_springs(const Model& m, SolverState& s) {
@@ -75,7 +82,7 @@ void setup_springs(const Model& m, SolverState& s) {
       const auto ue = static_cast<std::size_t>(e);
       const std::int32_t* n = table.nodes_of(ue);
       st.length0[ue] = element_measure(m.nodes, ElementKind::Spring, n);
-      const SpringGroupParameters p = group_p.per_unit_length ? spring_of_length(group_p, st.length0[ue]) : group_p;
+      const SpringGroupParameters p = spring_of_length(group_p, st.length0[ue]);
       const Vec3 offset = m.nodes.position(n[1]) - m.nodes.position(n[0]);
       st.rest_offset[3 * ue] = offset.x, st.rest_offset[3 * ue + 1] = offset.y, st.rest_offset[3 * ue + 2] = offset.z;
       if (p.frame == SpringFrame::Beam && st.length0[ue] > 0.0) {  // SP-15: its Y at rest

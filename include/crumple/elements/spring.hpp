@@ -42,7 +42,7 @@ struct SpringGroupParameters {
 // Ileng 1 (eq. SP-21): the parameters of one spring of rest length `length0` [L] > 0 whose property gives them per
 // unit length: M L0, I L0, K / L0, C / L0, its curves of the strain (Ascale L0), its rate term's reference velocities
 // L0 Vo, L0 Wo, and a beam-type spring's elongation limits L0 delta (a 1-D spring's, and force and energy limits,
-// stay as given).
+// stay as given). Without Ileng, the group's own.
 SpringGroupParameters spring_of_length(const SpringGroupParameters& p, double length0);
 
 // The curve of the spring, g(delta) = A f(delta / Ascale) [F] (eq. SP-2b).

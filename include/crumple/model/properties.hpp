@@ -100,9 +100,8 @@ struct SpringPretension {
   double activation_time = 0.0;  // [T] the sensor's Tdelay (resolved; 0 without a sensor)
   bool lock = false;           // Ilock 2: a plain K0 spring for good once the spring holds more than the pretension
   double force = 0.0;          // F1 [F]
-  double stroke = 0.0;         // D1 [L]
   double energy = 0.0;         // E1 [E]: the spring's internal energy at t = 0 is |E1| (measured)
-  double stiffness = 0.0;      // K1 [F/L]
+  double stiffness = 0.0;      // K1 [F/L]; the stroke D1 = F1 / K1
 };
 
 struct SpringSection {

@@ -269,11 +269,17 @@ void check_log_rate(const LogRateFields& rate, const SpringLaw& s, const CardRea
   if (s.function_id != 0) {
     spring_default_only(rate.line, context, 61, 20, n.b, rate.b, 0.0, "the logarithmic rate effect is");
     spring_default_only(rate.line, context, 81, 20, n.d, rate.d, 1.0, "the rate effect's scale (with B) is");
-  } else if (rate.b != 0.0) {
-    context.note(rate.line.where(), reader.card().keyword, n.b,
-                 "the logarithmic rate effect acts on the force function only; a linear spring ignores it, as the "
-                 "reference does",
-                 SkipKind::Unsupported);
+  } else {
+    if (rate.b != 0.0)
+      context.note(rate.line.where(), reader.card().keyword, n.b,
+                   "the logarithmic rate effect acts on the force function only; a linear spring ignores it, as the "
+                   "reference does",
+                   SkipKind::Unsupported);
+    if (rate.d != 0.0 && rate.d != 1.0)
+      context.note(rate.line.where(), reader.card().keyword, n.d,
+                   "the rate of the logarithmic rate effect acts with a force function only; a linear spring "
+                   "ignores it, as the reference does",
+                   SkipKind::Unsupported);
   }
 }
 
@@ -584,26 +590,25 @@ void read_axisymmetric_spring_property(CardReader& reader, DeckContext& context)
   context.model.properties.push_back(std::move(p));
 }
 
-// The pretension's F1, D1, E1, K1 from the two the card gives (SP-22, the reference's starter, measured): F1 = K1 D1,
-// E1 = F1 D1 / 2; a K1 left at 0 is 1e-20 (F1 alone is a constant pull without a stroke); more than two is the
-// reference's error 408.
-void resolve_pretension(const Line& line, SpringPretension& p) {
+// The pretension's F1, E1, K1 from the two of F1, D1, E1, K1 the card gives (SP-22, the reference's starter,
+// measured): F1 = K1 D1, E1 = F1 D1 / 2; a K1 left at 0 is 1e-20 (F1 alone is a constant pull without a stroke);
+// more than two is the reference's error 408.
+void resolve_pretension(const Line& line, double stroke, SpringPretension& p) {
   int given = 0;
-  for (double v : {p.force, p.stroke, p.energy, p.stiffness}) given += v != 0.0;
+  for (double v : {p.force, stroke, p.energy, p.stiffness}) given += v != 0.0;
   if (given > 2)
     line.fail(21, 80, "F1, D1, E1, K1", "at most two of F1, D1, E1 and K1 (the others follow from them)");
   double& f = p.force;
-  double& d = p.stroke;
+  double d = std::abs(stroke);
   double& e = p.energy;
   double& k = p.stiffness;
-  d = std::abs(d);
   if (k == 0.0) k = 1e-20;
   if (f != 0.0 && d != 0.0) k = f / d, e = 0.5 * f * d;
   else if (f != 0.0 && e != 0.0) d = 2.0 * e / f, k = f / d;
   else if (d != 0.0 && e != 0.0) f = 2.0 * e / d, k = f / d;
-  else if (f != 0.0) d = f / k, e = 0.5 * f * d;
+  else if (f != 0.0) e = 0.5 * f * f / k;
   else if (d != 0.0) f = k * d, e = 0.5 * f * d;
-  else if (e != 0.0) f = std::sqrt(2.0 * e * k), d = f / k;
+  else if (e != 0.0) f = std::sqrt(2.0 * e * k);
 }
 
 // /PROP/TYPE32 (/PROP/SPR_PRE): the pretensioner (docs/theory/spring.md, SP-22). Line 1 M, sens_ID, Ilock; line 2
@@ -626,17 +631,22 @@ void read_pretension_spring_property(CardReader& reader, DeckContext& context) {
   law.stiffness = second.real(1, 20, "K0", dim::stiffness);
   if (!(law.stiffness > 0.0)) second.fail(1, 20, "K0", "a positive stiffness before the sensor (and to unload)");
   pre.force = second.real(21, 20, "F1", dim::force);
-  pre.stroke = second.real(41, 20, "D1", dim::length);
+  const double stroke = second.real(41, 20, "D1", dim::length);
   pre.energy = second.real(61, 20, "E1", dim::moment);
   pre.stiffness = second.real(81, 20, "K1", dim::stiffness);
-  resolve_pretension(second, pre);
+  resolve_pretension(second, stroke, pre);
   if (reader.has_data()) {
     const Line third = reader.next("fct_ID1, fct_ID2, Ascale_2, Ascale_1, Fscale_F");
     for (const auto& [column, name] : {std::pair{1, "fct_ID1"}, {11, "fct_ID2"}})
       if (third.optional_id(column, 10, name, IdKind::Other) != 0)
         context.unsupported(third.error(column, 10, name, default_only("a pretension force function is")));
-    for (const auto& [column, name] : {std::pair{41, "Ascale_2"}, {61, "Ascale_1"}, {81, "Fscale_F"}})
-      third.real(column, 20, name, dim::none);  // the functions' scales: nothing to scale without them
+    for (const auto& [column, name] : {std::pair{41, "Ascale_2"}, {61, "Ascale_1"}, {81, "Fscale_F"}}) {
+      const double scale = third.real(column, 20, name, dim::none);
+      if (scale != 0.0 && scale != 1.0)  // measured: each scales its function only
+        context.note(third.where(), reader.card().keyword, name,
+                     "the scale of a pretension function; without one it does nothing, as in the reference",
+                     SkipKind::Unsupported);
+    }
   }
   reader.finish();
   context.model.properties.push_back(std::move(p));
