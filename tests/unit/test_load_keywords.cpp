@@ -108,6 +108,16 @@ TEST(LoadKeywords, BcsWithoutFixedDofWarns) {
   EXPECT_NE(warnings_of(dir, bcs("   000 000")).find("no degree of freedom fixed"), std::string::npos);
 }
 
+// /ALE/BCS fixes the ALE grid of ALE parts, which a Crumple model never has: a named warning, no constraint.
+TEST(LoadKeywords, AleBcsActsOnNothingWithAWarning) {
+  test::TempDir dir;
+  const std::string card = "/ALE/BCS/1\ngrid\n" + std::string("   111 111") + I(0) + I(10) + "\n";
+  const std::string w = warnings_of(dir, card);
+  EXPECT_NE(w.find("/ALE/BCS"), std::string::npos) << w;
+  EXPECT_NE(w.find("ALE grid"), std::string::npos) << w;
+  EXPECT_TRUE(read(dir, card).boundary_conditions.empty());
+}
+
 // An imposed velocity on a dof that a /BCS fixes: the imposed motion wins, and the warning says what the reference's
 // listing makes of it (a quarter of the kinetic energy, measured; resolve_loads.cpp). A free dof says nothing.
 TEST(LoadKeywords, ImposedMotionOnAFixedDofIsNamed) {

@@ -123,6 +123,23 @@ void read_bcs(CardReader& reader, DeckContext& context) {
   context.model.boundary_conditions.push_back(std::move(bc));
 }
 
+// /ALE/BCS fixes the ALE grid's motion of ALE nodes. Crumple has no ALE material (each is refused), so the card acts
+// on nothing: a named warning, as the reference runs a Lagrangian model with it (measured by a helper on the QA deck
+// LOIS/LOI2/BESH: its result with the cards and without them is the same).
+void read_ale_bcs(CardReader& reader, DeckContext& context) {
+  const SourceLocation where = reader.card().where;
+  card_id(reader, 2);
+  read_title(reader);
+  const Line line = reader.next("Tra rot, skew_ID, grnod_ID");
+  line.text(1, 10);  // the grid's codes
+  line.optional_id(11, 10, "skew_ID"), line.optional_id(21, 10, "grnod_ID");
+  reader.finish();
+  context.note(where, reader.card().keyword, "grnod_ID",
+               "fixes the ALE grid of ALE parts only; the model has none (Crumple has no ALE material), so it acts on "
+               "nothing, as in the reference",
+               SkipKind::Unsupported);
+}
+
 // ---------------------------------------------------------------------------------------------------------------
 // /IMPVEL, /IMPDISP, /CLOAD
 
@@ -321,6 +338,7 @@ void read_added_mass(CardReader& reader, DeckContext& context) {
 
 void register_load_keywords(KeywordTable& table) {
   table.push_back({"/BCS", DeckPart::Starter, read_bcs});
+  table.push_back({"/ALE/BCS", DeckPart::Starter, read_ale_bcs});
   table.push_back({"/IMPVEL", DeckPart::Starter,
                    [](CardReader& r, DeckContext& c) { read_imposed_motion(r, c, ImposedKind::Velocity); }});
   table.push_back({"/IMPDISP", DeckPart::Starter,
