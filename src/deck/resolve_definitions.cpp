@@ -326,16 +326,21 @@ void move_functions(Resolver& r) {
   }
 }
 
-// A spring law's functions (docs/theory/spring.md): the force or yield curve and H 4's lower curve, by their ids.
+// A spring law's functions (docs/theory/spring.md): the force or yield curve, H 4's lower curve and the rate
+// functions g and h (SP-23), by their ids.
 void resolve_spring_functions(Resolver& r, Property& p, int d) {
   SpringLaw& law = p.spring.dof[static_cast<std::size_t>(d)];
-  if (law.function_id == 0) return;
   const bool six = p.spring.dofs() > 1;
   const std::string i = six ? std::to_string(d + 1) : "1";
   Model& m = r.model;
-  law.function = r.find(m.index.functions, law.function_id, p.where, keyword_of(p), "fct_ID1" + i, "function");
-  if (law.lower_function_id != 0)
-    law.lower_function = r.find(m.index.functions, law.lower_function_id, p.where, keyword_of(p), "fct_ID3" + i, "function");
+  const auto find = [&](std::int64_t id, std::string_view field) {
+    return r.find_optional(m.index.functions, id, p.where, keyword_of(p), std::string(field) + i, "function");
+  };
+  law.rate_force_function = find(law.rate_force_function_id, "fct_ID4");
+  if (law.function_id == 0) return;
+  law.function = find(law.function_id, "fct_ID1");
+  law.lower_function = find(law.lower_function_id, "fct_ID3");
+  law.rate_factor_function = find(law.rate_factor_function_id, "fct_ID2");
   if (law.function < 0) return;  // an unknown id: already an error
   // SP-4c: a hardening spring unloads at no less than its curve's steepest slope, as the reference runs it.
   const double slope =

@@ -146,11 +146,12 @@ void resolve_kind(Resolver& r, ElementKind kind) {
                                       .spring.frame != SpringFrame::Axial;
     if (nodes_ok) {
       const double size = element_measure(m.nodes, kind, &connectivity[e * static_cast<std::size_t>(n)]);
-      const bool skewed_beam = may_coincide && m.properties[static_cast<std::size_t>(
-                                                   m.parts[static_cast<std::size_t>(part[e])].property)].spring.skew_id != 0;
-      const bool per_unit_length =
-          may_coincide &&
-          m.properties[static_cast<std::size_t>(m.parts[static_cast<std::size_t>(part[e])].property)].spring.per_unit_length;
+      const SpringSection* section =
+          may_coincide
+              ? &m.properties[static_cast<std::size_t>(m.parts[static_cast<std::size_t>(part[e])].property)].spring
+              : nullptr;
+      const bool skewed_beam = section && section->frame == SpringFrame::Beam && section->skew_id != 0;
+      const bool per_unit_length = section && section->per_unit_length;
       if (size == 0.0 && per_unit_length)
         r.error(where, keyword, "node_ID1..", "nodes apart for a spring given per unit length (Ileng 1, SP-21)",
                 fmt::format("{} {} with its nodes at one place", name, raw.user_id[e]));

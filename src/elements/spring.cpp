@@ -16,8 +16,18 @@ SpringDofParameters dof_parameters(const SpringLaw& s, const std::vector<Functio
   SpringDofParameters p{s.stiffness, s.damping, s.delta_min, s.delta_max};
   p.rate_c = s.rate_c, p.rate_n = s.rate_n, p.alpha = s.alpha, p.beta = s.beta;
   p.step_stiffness = s.stiffness;
+  p.rate_scale = s.rate_scale;
+  if (s.rate_force_function >= 0) {  // SP-23b: h's steepest slope is a dashpot of the step
+    p.rate_force = &functions[static_cast<std::size_t>(s.rate_force_function)];
+    p.rate_force_scale = s.rate_force_scale;
+    p.rate_force_damping = std::abs(p.rate_force_scale) * p.rate_force->steepest_slope() / p.rate_scale;
+  }
+  p.step_damping = p.damping + p.rate_force_damping;
   if (s.function < 0) return p;
   p.function = &functions[static_cast<std::size_t>(s.function)];
+  p.log_rate = s.log_rate, p.log_rate_reference = s.log_rate_reference;
+  if (s.rate_factor_function >= 0)
+    p.rate_factor = &functions[static_cast<std::size_t>(s.rate_factor_function)], p.rate_factor_scale = s.rate_factor_scale;
   p.function_scale = s.function_scale, p.abscissa_scale = s.abscissa_scale;
   p.hardening = s.hardening;
   if (s.lower_function >= 0) p.lower_function = &functions[static_cast<std::size_t>(s.lower_function)];
@@ -49,6 +59,8 @@ SpringGroupParameters spring_of_length(const SpringGroupParameters& p, double le
   const bool limits = p.frame == SpringFrame::Beam && p.failure.measure == SpringFailureMeasure::Elongation;
   for (SpringDofParameters& d : q.dof) {
     d.stiffness /= length0, d.damping /= length0, d.step_stiffness /= length0, d.abscissa_scale *= length0;
+    d.log_rate_reference *= length0, d.rate_scale *= length0;  // SP-23 on the strain rate
+    d.rate_force_damping /= length0, d.step_damping /= length0;
     if (limits && d.delta_min > -1e29) d.delta_min *= length0;  // none stays none
     if (limits && d.delta_max < 1e29) d.delta_max *= length0;
   }
@@ -56,20 +68,22 @@ SpringGroupParameters spring_of_length(const SpringGroupParameters& p, double le
 }
 
 SpringStepStiffness spring_step_stiffness(const SpringGroupParameters& p, double length) {
-  if (p.frame == SpringFrame::Axial) return {p.dof[0].step_stiffness, p.dof[0].damping};
+  if (p.frame == SpringFrame::Axial) return {p.dof[0].step_stiffness, p.dof[0].step_damping};
   // SP-10: the translations as one degree of freedom with their largest stiffness and largest damping, the rotations
   // likewise (measured: K 1000 on X beside C 3 on Y steps as K 1000 with C 3).
   SpringStepStiffness k;
   for (std::size_t d = 0; d < 3; ++d) {
     k.translation = std::max(k.translation, p.dof[d].step_stiffness);
-    k.translation_damping = std::max(k.translation_damping, p.dof[d].damping);
+    k.translation_damping = std::max(k.translation_damping, p.dof[d].step_damping);
     k.rotation = std::max(k.rotation, p.dof[d + 3].step_stiffness);
-    k.rotation_damping = std::max(k.rotation_damping, p.dof[d + 3].damping);
+    k.rotation_damping = std::max(k.rotation_damping, p.dof[d + 3].step_damping);
   }
   if (p.frame == SpringFrame::Beam) {  // SP-18: the shear turns the ends as well, its stiffness times l^2
     const double arm = length * length;
     k.rotation += std::max(p.dof[1].step_stiffness, p.dof[2].step_stiffness) * arm;
-    k.rotation_damping += std::max(p.dof[1].damping, p.dof[2].damping) * arm;
+    k.rotation_damping += std::max(p.dof[1].step_damping, p.dof[2].step_damping) * arm;
+    // SP-23b: a shear's rate force h damps the ends' rotations once more, without the arm (measured).
+    k.rotation_damping += std::max(p.dof[1].rate_force_damping, p.dof[2].rate_force_damping);
   }
   return k;
 }
@@ -244,8 +258,8 @@ double law_force(const SpringDofParameters& p, LawHistory h, double delta, doubl
   // The elongation rate over the last step (none before the first: the reference's dashpot starts at rest).
   const double rate = dt > 0.0 ? (delta - h.elongation) / dt : 0.0;
   const double elastic = spring_elastic_force(p, delta, h.elongation, h.elastic, h.plastic_a, h.plastic_b, length0);
-  h.elastic = elastic;
-  const double force = elastic + p.damping * rate;
+  h.elastic = elastic;  // the static history: the rate effects do not enter it (SP-23)
+  const double force = elastic * spring_rate_factor(p, rate) + p.damping * rate + spring_rate_force(p, rate);
   work += 0.5 * (h.force + force) * (delta - h.elongation);
   h.force = force, h.elongation = delta;
   return force;
@@ -415,33 +429,37 @@ bool six_law_step(const SpringGroupParameters& p, SpringState& state, std::int32
   return active;
 }
 
-// The general spring's six elongations: the relative displacement of node 2 from its rest offset, and the relative
-// rotation, summed over the steps, in the global axes (eq. SP-9).
+// The general spring's six elongations in its axes `axes` (the global ones, or a skew's at the current positions):
+// node 2's offset from node 1 in them less the rest offset in the axes at rest, and the relative rotation, its
+// steps' increments in the axes of each step (eq. SP-9, SP-9b).
 std::array<double, kSpringDofs> general_elongations(const NodalState& nodes, const SpringState& state, std::size_t ue,
-                                                    const std::int32_t* n, double dt) {
+                                                    const std::int32_t* n, double dt, const SkewAxes& axes) {
   const auto a = static_cast<std::size_t>(n[0]), b = static_cast<std::size_t>(n[1]), slot = kSpringDofs * ue;
-  const Vec3 offset = node_position(nodes, n[1]) - node_position(nodes, n[0]);
+  const Vec3 offset = to_skew(axes, node_position(nodes, n[1]) - node_position(nodes, n[0]));
+  const Vec3 turn = to_skew(axes, Vec3{nodes.wx[b] - nodes.wx[a], nodes.wy[b] - nodes.wy[a], nodes.wz[b] - nodes.wz[a]});
   return {offset.x - state.rest_offset[3 * ue], offset.y - state.rest_offset[3 * ue + 1],
-          offset.z - state.rest_offset[3 * ue + 2], state.elongation[slot + 3] + (nodes.wx[b] - nodes.wx[a]) * dt,
-          state.elongation[slot + 4] + (nodes.wy[b] - nodes.wy[a]) * dt,
-          state.elongation[slot + 5] + (nodes.wz[b] - nodes.wz[a]) * dt};
+          offset.z - state.rest_offset[3 * ue + 2], state.elongation[slot + 3] + turn.x * dt,
+          state.elongation[slot + 4] + turn.y * dt, state.elongation[slot + 5] + turn.z * dt};
 }
 
 // /PROP/TYPE8: six degrees of freedom in the global axes, each its own law (eq. SP-9, SP-10).
 GroupStepResult general_spring_forces(const ElementTable& table, const ElementGroup& group,
-                                      const SpringGroupParameters& p, NodalState& nodes, SpringState& state, double dt) {
+                                      const SpringGroupParameters& p, NodalState& nodes, SpringState& state, double dt,
+                                      const std::vector<SkewAxes>& skew_axes) {
   GroupStepResult result;
+  const SkewAxes axes = p.skew >= 0 ? skew_axes[static_cast<std::size_t>(p.skew)] : SkewAxes{};
   const bool recording = state.records.on(group.begin);
   for (std::int32_t e = group.begin; e < group.end; ++e) {
     const auto ue = static_cast<std::size_t>(e);
     if (recording && !(state.deleted[ue] & kElementElsewhere)) state.records.clear(ue);
     if (state.deleted[ue] & kElementElsewhere) continue;
     const std::int32_t* n = table.nodes_of(ue);
-    const std::array<double, kSpringDofs> delta = general_elongations(nodes, state, ue, n, dt);
+    const std::array<double, kSpringDofs> delta = general_elongations(nodes, state, ue, n, dt, axes);
     std::array<double, kSpringDofs> f{};
     bool broken = false;
     if (!six_law_step(p, state, e, delta, dt, result, f, broken)) continue;
-    const Vec3 force{f[0], f[1], f[2]}, moment{f[3], f[4], f[5]};  // on node 2, internal; node 1 the opposite
+    // On node 2, internal; node 1 the opposite.
+    const Vec3 force = to_global(axes, {f[0], f[1], f[2]}), moment = to_global(axes, {f[3], f[4], f[5]});
     hand_two_node_load(nodes, state.records, recording, ue, n, force, scaled(moment, -1.0), moment);
     close_element(state, result, e, state.nodal_step[ue], broken);
   }
@@ -553,10 +571,11 @@ GroupStepResult beam_spring_forces(const ElementTable& table, const ElementGroup
 }  // namespace
 
 GroupStepResult spring_forces(const ElementTable& table, const ElementGroup& group, const SpringGroupParameters& p,
-                              NodalState& nodes, SpringState& state, double dt, double time) {
+                              NodalState& nodes, SpringState& state, double dt, double time,
+                              const std::vector<SkewAxes>& skew_axes) {
   switch (p.frame) {
     case SpringFrame::Axial: return axial_spring_forces(table, group, p, nodes, state, dt, time);
-    case SpringFrame::Global: return general_spring_forces(table, group, p, nodes, state, dt);
+    case SpringFrame::Global: return general_spring_forces(table, group, p, nodes, state, dt, skew_axes);
     case SpringFrame::Beam: return beam_spring_forces(table, group, p, nodes, state, dt);
   }
   return {};

@@ -24,7 +24,7 @@ GroupStepResult group_forces(const Model& m, SolverState& s, std::size_t g) {
     case ElementKind::Shell4: return shell4_forces(table, group, s.shell_groups[g], s.nodes, s.shells, s.dt);
     case ElementKind::Shell3: return shell3_forces(table, group, s.shell_groups[g], s.nodes, s.shells3, s.dt);
     case ElementKind::Brick8: return brick8_forces(table, group, s.brick_groups[g], s.nodes, s.bricks, s.dt);
-    case ElementKind::Spring: return spring_forces(table, group, s.spring_groups[g], s.nodes, s.springs, s.dt, s.time);
+    case ElementKind::Spring: return spring_forces(table, group, s.spring_groups[g], s.nodes, s.springs, s.dt, s.time, s.skew_axes);
     case ElementKind::Truss: return truss_forces(table, group, s.truss_groups[g], s.nodes, s.trusses, s.dt);
     case ElementKind::Beam: return beam_forces(table, group, s.beam_groups[g], s.nodes, s.beams, s.dt);
   }

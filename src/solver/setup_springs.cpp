@@ -76,15 +76,21 @@ void setup_springs(const Model& m, SolverState& s) {
   for (std::size_t g = 0; g < m.element_groups.size(); ++g) {
     const ElementGroup& group = m.element_groups[g];
     if (group.kind != ElementKind::Spring) continue;
-    const SpringGroupParameters& group_p = s.spring_groups[g] =
-        spring_parameters(m.properties[static_cast<std::size_t>(group.property)].spring, m.functions);
+    const SpringSection& section = m.properties[static_cast<std::size_t>(group.property)].spring;
+    SpringGroupParameters& group_p = s.spring_groups[g] = spring_parameters(section, m.functions);
+    if (group_p.frame == SpringFrame::Global) group_p.skew = section.skew;  // SP-9b
+    // The general spring's rest offset in its skew's axes at rest (every domain holds every node here).
+    const SkewAxes axes = group_p.skew >= 0 ? skew_axes(m.skews[static_cast<std::size_t>(group_p.skew)], m.nodes.x,
+                                                        m.nodes.y, m.nodes.z)
+                                            : SkewAxes{};
     for (std::int32_t e = group.begin; e < group.end; ++e) {
       const auto ue = static_cast<std::size_t>(e);
       const std::int32_t* n = table.nodes_of(ue);
       st.length0[ue] = element_measure(m.nodes, ElementKind::Spring, n);
       const SpringGroupParameters p = spring_of_length(group_p, st.length0[ue]);
       const Vec3 offset = m.nodes.position(n[1]) - m.nodes.position(n[0]);
-      st.rest_offset[3 * ue] = offset.x, st.rest_offset[3 * ue + 1] = offset.y, st.rest_offset[3 * ue + 2] = offset.z;
+      const Vec3 rest = to_skew(axes, offset);
+      st.rest_offset[3 * ue] = rest.x, st.rest_offset[3 * ue + 1] = rest.y, st.rest_offset[3 * ue + 2] = rest.z;
       if (p.frame == SpringFrame::Beam && st.length0[ue] > 0.0) {  // SP-15: its Y at rest
         const Vec3 y = geometry::rest_frame_y(scaled(offset, 1.0 / st.length0[ue]), reference_y(m, group, ue));
         st.frame_y[3 * ue] = y.x, st.frame_y[3 * ue + 1] = y.y, st.frame_y[3 * ue + 2] = y.z;

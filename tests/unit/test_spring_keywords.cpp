@@ -101,8 +101,15 @@ TEST(SpringKeywords, RefusedOptionsNameTheirField) {
   d.line3 = I(5);  // no /FUNCT/5
   EXPECT_NE(error_of(d).find("fct_ID11"), std::string::npos) << error_of(d);
   d = SpringDeck{};
-  d.line3 = I(0) + I(0) + I(6);
+  d.line3 = I(8) + I(0) + I(6);  // a rate function that does not exist
+  d.extra = "/FUNCT/8\nforce\n" + R(-1.0) + R(-30.0) + "\n" + R(1.0) + R(30.0) + "\n";
   EXPECT_NE(error_of(d).find("fct_ID21"), std::string::npos) << error_of(d);
+  d = SpringDeck{};
+  d.line3 = I(0) + I(4);  // H 4 without its curve: the reference's error 231
+  EXPECT_NE(error_of(d).find("fct_ID11"), std::string::npos) << error_of(d);
+  d = SpringDeck{};
+  d.line2 = R(1000.0) + R(0.0) + R(-1.0);  // a negative function scale (the reference's step is then NaN)
+  EXPECT_NE(error_of(d).find("field A"), std::string::npos) << error_of(d);
   d = SpringDeck{};
   d.line3 = I(0) + I(3);
   EXPECT_NE(error_of(d).find("field H"), std::string::npos) << error_of(d);
@@ -128,11 +135,6 @@ TEST(SpringKeywords, RefusedOptionsNameTheirField) {
   d.line3 = I(8) + I(1);  // isotropic hardening on a curve that is not odd about 0
   d.extra = "/FUNCT/8\nyield\n" + R(-1.0) + R(-30.0) + "\n" + R(0.0) + R(0.0) + "\n" + R(1.0) + R(20.0) + "\n";
   EXPECT_NE(error_of(d).find("odd about 0"), std::string::npos) << error_of(d);
-  d = SpringDeck{};  // the logarithmic rate effect on a curve
-  d.line2 = R(1000.0) + R(0.0) + R(1.0) + R(0.5);
-  d.line3 = I(8);
-  d.extra = "/FUNCT/8\nforce\n" + R(-1.0) + R(-30.0) + "\n" + R(1.0) + R(30.0) + "\n";
-  EXPECT_NE(error_of(d).find("field B"), std::string::npos) << error_of(d);
   d = SpringDeck{};  // on a linear spring: B and D ignored, as the reference ignores them, each with a warning
   d.line2 = R(1000.0) + R(0.0) + R(1.0) + R(0.5) + R(3.0);
   {
@@ -151,6 +153,53 @@ TEST(SpringKeywords, RefusedOptionsNameTheirField) {
   d = SpringDeck{};
   d.line2 = R(0.0) + R(0.0);
   EXPECT_NE(error_of(d).find("K, C"), std::string::npos) << error_of(d);
+}
+
+// The rate effects (SP-23): B over A, |D|, g's scale E over A, F and Hscale read with their defaults and units; the
+// step takes h's steepest slope over F, times Hscale, as a dashpot (SP-23b); on a linear spring B, g and E are
+// warnings and dropped, h stays.
+TEST(SpringKeywords, RateEffectsReadTheirScalesAndStep) {
+  const std::string functions = "/FUNCT/8\nforce\n" + R(-1.0) + R(-20.0) + "\n" + R(0.0) + R(0.0) + "\n" + R(0.01) +
+                                R(10.0) + "\n" + R(1.0) + R(208.0) + "\n/FUNCT/9\nrate\n" + R(-1.0) + R(-3.0) + "\n" +
+                                R(0.0) + R(0.0) + "\n" + R(0.01) + R(1.0) + "\n" + R(1.0) + R(3.0) + "\n";
+  SpringDeck d;
+  d.line2 = R(1000.0) + R(5.0) + R(2.0) + R(0.5) + R(-0.01);
+  d.line3 = I(8) + I(0) + I(9) + I(0) + I(9);
+  d.line4 = R(0.5) + R(3.0) + R(0.0) + R(2.0);
+  d.extra = functions;
+  {
+    test::TempDir dir;
+    const Model m = read_deck(starter(dir, d)).model;
+    const SpringLaw& law = m.properties[0].spring.dof[0];
+    EXPECT_DOUBLE_EQ(law.log_rate, 0.25);  // B / A
+    EXPECT_DOUBLE_EQ(law.log_rate_reference, 0.01);  // |D|
+    EXPECT_DOUBLE_EQ(law.rate_factor_scale, 1.5);  // E / A
+    EXPECT_DOUBLE_EQ(law.rate_scale, 0.5);
+    EXPECT_DOUBLE_EQ(law.rate_force_scale, 2.0);
+    EXPECT_EQ(law.rate_factor_function, 1);
+    EXPECT_EQ(law.rate_force_function, 1);
+    // SP-4 with K_e = max(K, A max|f'|) = 2000 and C_e = C + Hscale max|h'| / F = 5 + 2 100 / 0.5 = 405
+    EXPECT_NEAR(initial_element_time_step(m, ElementKind::Spring, 0), 2.0 / (std::sqrt(2.0 * 2000.0 + 405.0 * 405.0) + 405.0),
+                1e-15);
+    const SpringDofParameters p = spring_parameters(m.properties[0].spring, m.functions).dof[0];
+    // g(2) = 3 + 2 / 0.99 on its last segment, extended; g(-0.01) = -0.03 and h(-2) = -6 on its first
+    EXPECT_NEAR(spring_rate_factor(p, 1.0), 1.0 + 0.25 * std::log(100.0) + 1.5 * (3.0 + 2.0 / 0.99), 1e-12);
+    EXPECT_NEAR(spring_rate_factor(p, -0.005), 1.0 + 1.5 * -0.03, 1e-15);  // below D no log term; g signed
+    EXPECT_NEAR(spring_rate_force(p, -1.0), 2.0 * -6.0, 1e-12);
+  }
+  d.line3 = I(0) + I(0) + I(9) + I(0) + I(9);  // linear: B, D, g, E dropped with warnings; h acts
+  {
+    test::TempDir dir;
+    const Deck r = read_deck(starter(dir, d));
+    const SpringLaw& law = r.model.properties[0].spring.dof[0];
+    EXPECT_EQ(law.log_rate, 0.0);
+    EXPECT_EQ(law.rate_factor_function_id, 0);
+    EXPECT_EQ(law.rate_force_function, 1);
+    std::string fields;
+    for (const auto& w : r.report.warnings) fields += w.message + "\n";
+    for (const char* field : {"field B", "field D", "field fct_ID21", "field E", "field A"})
+      EXPECT_NE(fields.find(field), std::string::npos) << field << " in\n" << fields;
+  }
 }
 
 // A hardening spring's K below its curve's steepest slope unloads at that slope, as the reference runs it (SP-4c),

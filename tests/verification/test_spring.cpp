@@ -224,6 +224,81 @@ TEST(Spring, BeamTypeSpringCantileverTip) {
 }
 
 
+// The rate effects (docs/theory/spring.md, SP-23) on a spring pulled at a constant rate v = 1 m/s: the curve
+// f (10 N at 0.01 m, then 200 N/m) with A 2, B 0.5, D 0.01, g (fct_ID2, log-like: g(1) = 3, g(10) = 4) with E 3 and
+// F 0.5, h = g with Hscale 2, and C 5. At every cycle the force is A f(delta) R / A + C v + Hscale h(v / F), R = A +
+// B ln(v / D) + E g(v / F), to round-off (1e-9 relative: the rate is the elongation's change over the step, v to
+// about 1e-12); at delta = 0.01994203 it is the reference solver's 174.695 N (its time history, single precision).
+TEST(Spring, RateEffectsScaleTheCurveAndAddTheRateForce) {
+  test::TempDir dir;
+  const std::vector<std::pair<double, double>> curve = {{-1.0, -208.0}, {-0.01, -10.0}, {0.0, 0.0}, {0.01, 10.0},
+                                                        {1.0, 208.0}};
+  const std::vector<std::pair<double, double>> rate = {{-100.0, -5.0}, {-10.0, -4.0}, {-1.0, -3.0}, {-0.1, -2.0},
+                                                       {-0.01, -1.0}, {0.0, 0.0}, {0.01, 1.0}, {0.1, 2.0},
+                                                       {1.0, 3.0}, {10.0, 4.0}, {100.0, 5.0}};
+  std::string d = node_cards({{1, 0.0, 0.0, 0.0}, {2, 0.5, 0.0, 0.0}});
+  d += "/SPRING/1\n" + I(1) + I(1) + I(2) + "\n/PART/1\nspring\n" + I(1) + I(0) + "\n";
+  d += "/PROP/SPRING/1\nspring\n" + R(0.0648) + "\n" + R(1000.0) + R(5.0) + R(2.0) + R(0.5) + R(0.01) + "\n" +
+       I(10) + I(0) + I(20) + I(0) + I(20) + "\n" + R(0.5) + R(3.0) + R(0.0) + R(2.0) + "\n";
+  d += function_card(10, curve) + function_card(20, rate) + unit_function(9);
+  d += node_group(1, {1}) + node_group(2, {2}) + boundary_condition(1, "111 111", 1) +
+       boundary_condition(2, "011 111", 2) + imposed_velocity(1, 9, "X", 2, 1.0);
+  const auto f = [&](const std::vector<std::pair<double, double>>& pts, double x) {
+    for (std::size_t k = 1; k < pts.size(); ++k)
+      if (x <= pts[k].first || k + 1 == pts.size())
+        return pts[k - 1].second + (x - pts[k - 1].first) * (pts[k].second - pts[k - 1].second) /
+                                       (pts[k].first - pts[k - 1].first);
+    return 0.0;
+  };
+  const double factor = 2.0 + 0.5 * std::log(1.0 / 0.01) + 3.0 * f(rate, 1.0 / 0.5);
+  const double added = 5.0 * 1.0 + 2.0 * f(rate, 1.0 / 0.5);
+  const auto expected = [&](double delta) { return 2.0 * f(curve, delta) * factor / 2.0 + added; };
+  double worst = 0.0;
+  int rows = 0;
+  run_deck(dir, d, 0.02, 1e-9, [&](const Model&, const SolverState& s) {
+    const double delta = s.springs.elongation[0];
+    if (!(delta > 1e-6)) return;  // from the second cycle: the first has no rate yet
+    worst = std::max(worst, std::abs(s.springs.force[0] / expected(delta) - 1.0));
+    ++rows;
+  });
+  std::printf("rate effects: %d cycles, largest relative difference %.2e; at delta 0.01994203: %.4f N\n", rows, worst,
+              expected(0.01994203));
+  EXPECT_GT(rows, 200);
+  EXPECT_LT(worst, 1e-9);
+  EXPECT_NEAR(expected(0.01994203), 174.695, 0.001);  // the reference's, at its last row
+}
+
+// A general spring in a fixed skew turned 30 degrees about z (docs/theory/spring.md, SP-9b), node 2 driven at
+// v = (1, 0.5, 0.2) m/s: each law's elongation is the offset's change along its axis, d . e_i, its force K_i d . e_i,
+// and the force on node 2 is their sum along the axes, to round-off. Without the skew it would be K_i d_i.
+TEST(Spring, GeneralSpringInASkewActsAlongItsAxes) {
+  test::TempDir dir;
+  const double c = std::cos(M_PI / 6.0), sn = std::sin(M_PI / 6.0);
+  std::string d = node_cards({{1, 0.0, 0.0, 0.0}, {2, 0.5, 0.0, 0.0}});
+  d += "/SPRING/1\n" + I(1) + I(1) + I(2) + "\n/PART/1\nspring\n" + I(1) + I(0) + "\n";
+  d += "/PROP/TYPE8/1\ngeneral\n" + R(1e-3) + R(1e-3) + I(5) + "\n";
+  for (double k : {1000.0, 3000.0, 5000.0, 0.0, 0.0, 0.0}) d += R(k) + "\n" + I(0) + "\n" + R(0.0) + "\n";
+  d += "/SKEW/FIX/5\nturned\n" + R(0.0) + R(0.0) + R(0.0) + "\n" + R(-sn) + R(c) + R(0.0) + "\n" + R(0.0) + R(0.0) +
+       R(1.0) + "\n";
+  d += unit_function(9) + node_group(1, {1}) + node_group(2, {2}) + boundary_condition(1, "111 111", 1) +
+       boundary_condition(2, "000 111", 2);
+  d += imposed_velocity(1, 9, "X", 2, 1.0) + imposed_velocity(2, 9, "Y", 2, 0.5) + imposed_velocity(3, 9, "Z", 2, 0.2);
+  const Vec3 e[3] = {{c, sn, 0.0}, {-sn, c, 0.0}, {0.0, 0.0, 1.0}};
+  const double k[3] = {1000.0, 3000.0, 5000.0};
+  double worst = 0.0;
+  Vec3 before{};  // the forces after a cycle are those of the positions it started from
+  run_deck(dir, d, 0.01, 1e-9, [&](const Model& m, const SolverState& s) {
+    const auto n2 = static_cast<std::size_t>(node_index(m, 2));
+    for (std::size_t i = 0; i < 3; ++i) {
+      const double expected = k[i] * dot(before, e[i]);
+      worst = std::max(worst, std::abs(s.springs.force[i] - expected) / (k[0] * 0.01));
+    }
+    before = {s.nodes.x[n2] - 0.5, s.nodes.y[n2], s.nodes.z[n2]};
+  });
+  std::printf("general spring in a skew: largest force difference %.2e of K_X v t\n", worst);
+  EXPECT_LT(worst, 1e-9);
+}
+
 // A spot weld tied to its plates (docs/theory/tied-interfaces.md, TI-6): the force each tie passes to its plate is
 // the weld's force on the tied node, so the interface's FN + FT has the magnitude of the spring's force (its frame
 // turns it, it does not change its length) at every history row, to round-off.

@@ -1,12 +1,14 @@
 #pragma once
 // Springs (docs/theory/spring.md): /PROP/TYPE4, one translational degree of freedom along their two nodes;
 // /PROP/TYPE8, six in the global axes; /PROP/TYPE13, six in a frame that turns with the spring.
+#include <algorithm>
 #include <array>
 #include <cmath>
 
 #include "crumple/elements/group_result.hpp"
 #include "crumple/model/elements.hpp"
 #include "crumple/model/functions.hpp"
+#include "crumple/model/skews.hpp"
 #include "crumple/state/nodal_state.hpp"
 #include "crumple/state/spring_state.hpp"
 
@@ -25,6 +27,16 @@ struct SpringDofParameters {
   const Function* lower_function = nullptr;  // fct_ID3: H 4's lower yield curve, H 5's residual elongation,
                                              // H 6 and 7's unloading curve
   double rate_c = 0.0, rate_n = 1.0, alpha = 1.0, beta = 2.0;  // SP-5b
+  // SP-23, the rate effects of the elongation rate r: the curve's force times 1 + B' ln(max(1, |r| / D)) + E' g(r / F)
+  // (B' = B / A, E' = E / A), and Hscale h(r / F) added.
+  double log_rate = 0.0, log_rate_reference = 1.0;  // B / A; D [L/T] or [1/T]
+  const Function* rate_factor = nullptr;            // fct_ID2: g
+  double rate_factor_scale = 0.0;                   // E / A
+  double rate_scale = 1.0;                          // F [L/T] or [1/T]
+  const Function* rate_force = nullptr;             // fct_ID4: h
+  double rate_force_scale = 0.0;                    // Hscale [F]
+  double rate_force_damping = 0.0;  // Hscale max|h'| / F, the dashpot h is to the step (SP-23b) [F T/L]
+  double step_damping = 0.0;        // the damping of the step: C + the above (SP-4, SP-23b)
 };
 
 // Everything a spring kernel needs about a group that is the same for all its springs.
@@ -37,6 +49,7 @@ struct SpringGroupParameters {
   bool per_unit_length = false;  // Ileng 1: each spring's values follow from its rest length (SP-21)
   SpringPretension pretension;   // TYPE32 (SP-22)
   SpringFailure failure;  // SP-5b
+  std::int32_t skew = -1;  // TYPE8: the skew whose axes its laws act in (SP-9b); -1 the global axes
 };
 
 // Ileng 1 (eq. SP-21): the parameters of one spring of rest length `length0` [L] > 0 whose property gives them per
@@ -51,6 +64,19 @@ inline double spring_curve(const SpringDofParameters& p, double delta) {
 }
 inline double spring_lower_curve(const SpringDofParameters& p, double delta) {
   return p.function_scale * (*p.lower_function)(delta / p.abscissa_scale);
+}
+
+// SP-23: the factor R / A of the curve's force at the elongation rate r, 1 + B' ln(max(1, |r| / D)) + E' g(r / F);
+// 1 for a linear spring.
+inline double spring_rate_factor(const SpringDofParameters& p, double rate) {
+  double factor = 1.0;
+  if (p.log_rate != 0.0) factor += p.log_rate * std::log(std::max(1.0, std::abs(rate) / p.log_rate_reference));
+  if (p.rate_factor != nullptr) factor += p.rate_factor_scale * (*p.rate_factor)(rate / p.rate_scale);
+  return factor;
+}
+// SP-23: the force of the rate, Hscale h(r / F) [F]; 0 without h.
+inline double spring_rate_force(const SpringDofParameters& p, double rate) {
+  return p.rate_force == nullptr ? 0.0 : p.rate_force_scale * (*p.rate_force)(rate / p.rate_scale);
 }
 
 // The spring's force without its dashpot at elongation `delta` from the last cycle's (`before`, `force_before`),
@@ -88,7 +114,9 @@ double spring_critical_step(const SpringGroupParameters& p, double length = 0.0)
 
 // Computes the force of the group's springs at the current positions (velocities at mid-step) at time `time`,
 // subtracts it from the nodal force accumulators and adds its work to the springs' internal energy (eq. SP-1 to SP-3).
+// `skew_axes`: the model's skews' axes at the current positions (a general spring's in a skew, SP-9b).
 GroupStepResult spring_forces(const ElementTable& table, const ElementGroup& group, const SpringGroupParameters& p,
-                              NodalState& nodes, SpringState& state, double dt, double time);
+                              NodalState& nodes, SpringState& state, double dt, double time,
+                              const std::vector<SkewAxes>& skew_axes);
 
 }  // namespace crumple

@@ -53,7 +53,7 @@ struct SolidSection {  // /PROP/TYPE14 (= /PROP/SOLID), the values as written (0
 
 // The law of one degree of freedom of a spring (docs/theory/spring.md): a /PROP/TYPE4 spring has one, along its two
 // nodes; a /PROP/TYPE8 spring six, in the global axes (X, Y, Z, then the rotations XX, YY, ZZ). The reader refuses
-// the options Crumple lacks (sensors, rate effects, input per unit length, some hardening flags).
+// the options Crumple lacks (sensors, some hardening flags).
 struct SpringLaw {
   double stiffness = 0.0;  // K, the linear loading and unloading stiffness [F/L] or [F L/rad]; with a function, its step only
   double damping = 0.0;    // C, the viscous damping [F T/L] or [F L T/rad]
@@ -70,7 +70,20 @@ struct SpringLaw {
   // TYPE13's failure line of this degree of freedom (with Ifail2 >= 1, SP-5b): the limit raised by c (|rate| / V)^n,
   // and the criterion's weight alpha and exponent beta.
   double rate_c = 0.0, rate_n = 1.0, alpha = 1.0, beta = 2.0;
-  bool acts() const { return stiffness > 0.0 || damping > 0.0 || function_id != 0; }
+  // The rate effects (SP-23), r the elongation rate: the curve's force times R / A, R = A + B ln(max(1, |r| / D)) +
+  // E g(r / F), and the force Hscale h(r / F) added. B and g act with fct_ID1 only (the reader drops them without).
+  double log_rate = 0.0;            // B / A
+  double log_rate_reference = 1.0;  // |D| (0 or blank: 1) [L/T] or [1/T]
+  std::int64_t rate_factor_function_id = 0;  // fct_ID2: g, a factor of the rate (0: none)
+  std::int32_t rate_factor_function = -1;
+  double rate_factor_scale = 1.0;   // E / A (E 0 or blank: 1)
+  double rate_scale = 1.0;          // F, the rate that g and h read in (0 or blank: 1) [L/T] or [1/T]
+  std::int64_t rate_force_function_id = 0;  // fct_ID4: h, a force of the rate (0: none)
+  std::int32_t rate_force_function = -1;
+  double rate_force_scale = 1.0;    // Hscale, times the input force unit (0 or blank: 1) [F]
+  bool acts() const {
+    return stiffness > 0.0 || damping > 0.0 || function_id != 0 || rate_force_function_id != 0;
+  }
 };
 
 inline constexpr int kSpringDofs = 6;  // the most a spring has: three translations, three rotations

@@ -193,9 +193,10 @@ Dimension per_length(Dimension d, int power = -1) { return {d.mass, d.length + p
 // The names of a spring law's fields in messages: /PROP/TYPE4's (K, fct_ID11, H, ...) or the i-th degree of
 // freedom's of /PROP/TYPE8 (K1, fct_ID11, H1, ... for X; K4 and fct_ID14 for XX).
 struct SpringLawNames {
-  std::string k, c, a, b, d, curve, h, unloading, lower, rate, delta_min, delta_max, f, e, ascale, hscale;
-  // A rotation's law (XX, YY, ZZ) is a moment against an angle in radians.
-  Dimension stiffness = dim::stiffness, damping = dim::viscous_damping, force = dim::force, displacement = dim::length;
+  std::string k, c, a, b, d, curve, h, rate_factor, lower, rate_force, delta_min, delta_max, f, e, ascale, hscale;
+  // A rotation's law (XX, YY, ZZ) is a moment against an angle in radians; `rate` the unit of D and F.
+  Dimension stiffness = dim::stiffness, damping = dim::viscous_damping, force = dim::force, displacement = dim::length,
+            rate = dim::velocity;
   int dof = 0;  // 0: TYPE4's law; 1 to 6: a TYPE8 law's degree of freedom (1 to 4 for TYPE25's)
   bool axisymmetric = false;  // TYPE25's layout of the law's last two lines (SP-20)
   Dimension limit = dim::length;  // delta_min, delta_max: an elongation, or with Ifail2 a force or an energy (SP-5b)
@@ -205,10 +206,10 @@ struct SpringLawNames {
     rotation = dof >= first_rotation;
     if (rotation)
       stiffness = dim::moment, damping = Dimension{1, 2, -1}, force = dim::moment, displacement = dim::none,
-      limit = dim::none;
+      rate = dim::angular_velocity, limit = dim::none;
     const std::string i = dof == 0 ? "" : std::to_string(dof), j = dof == 0 ? "1" : std::to_string(dof);
     k = "K" + i, c = "C" + i, a = "A" + i, b = "B" + i, d = "D" + i, h = "H" + i;
-    curve = "fct_ID1" + j, unloading = "fct_ID2" + j, lower = "fct_ID3" + j, rate = "fct_ID4" + j;
+    curve = "fct_ID1" + j, rate_factor = "fct_ID2" + j, lower = "fct_ID3" + j, rate_force = "fct_ID4" + j;
     delta_min = "delta_min" + i, delta_max = "delta_max" + i, f = "F" + i, e = "E" + i;
     ascale = "Ascale" + i, hscale = "Hscale" + i;
   }
@@ -217,6 +218,7 @@ struct SpringLawNames {
   // energy limits are not scaled, measured).
   void per_unit_length(bool limits) {
     stiffness = per_length(stiffness, 1), damping = per_length(damping, 1), displacement = per_length(displacement);
+    rate = per_length(rate);
     if (limits) limit = per_length(limit);
   }
 };
@@ -241,14 +243,22 @@ void read_spring_mass(CardReader& reader, DeckContext& context, SpringSection& s
                       "the sensor flag (with a sensor) is");
 }
 
-// B and D of a law's first line, checked once its curve is known (check_log_rate).
-struct LogRateFields {
-  Line line;
-  double b = 0.0, d = 0.0;
+// A law's rate fields as written (SP-23), checked once the whole law is read (resolve_rate_effects): B and D on its
+// first line, F, E and Hscale on the later ones (where, for the messages).
+struct RateFields {
+  SourceLocation first, scales;
+  double a = 1.0;  // A, resolved (0 or blank: 1)
+  double b = 0.0, d = 0.0, f = 0.0, e = 0.0, hscale = 0.0;
+  bool lower_curve_given = false;  // fct_ID3 as written, before the hardening flag drops it
 };
 
+// A rate scale D or F [n.rate]: its magnitude (a negative D acts as |D|, measured), 0 or blank 1.
+double rate_reference(double value, const CardReader& reader, const SpringLawNames& n) {
+  return (value == 0.0 ? 1.0 : std::abs(value)) * reader.units().factor(n.rate);
+}
+
 // A law's first line: K, C, A, B, D.
-LogRateFields read_spring_stiffness(CardReader& reader, SpringLaw& s, const SpringLawNames& n) {
+void read_spring_stiffness(CardReader& reader, SpringLaw& s, const SpringLawNames& n, RateFields& rate) {
   const Line second = reader.next("K, C, A, B, D");
   s.stiffness = second.real(1, 20, n.k, n.stiffness);
   s.damping = second.real(21, 20, n.c, n.damping);
@@ -256,31 +266,57 @@ LogRateFields read_spring_stiffness(CardReader& reader, SpringLaw& s, const Spri
   if (s.damping < 0.0) second.fail(21, 20, n.c, "a non-negative damping");
   // A scales the function fct_ID1 (read_spring_law checks it against one); blank or 0: 1.
   const double a = second.real(41, 20, n.a, dim::none);
-  s.function_scale = (a == 0.0 ? 1.0 : a) * reader.units().factor(n.force);
-  const double b = second.real(61, 20, n.b, dim::none), d = second.real(81, 20, n.d, dim::none);
-  return {second, b, d};
+  if (a < 0.0) second.fail(41, 20, n.a, "a positive function scale (0 or blank: 1)");
+  rate.a = a == 0.0 ? 1.0 : a;
+  s.function_scale = rate.a * reader.units().factor(n.force);
+  rate.first = second.where();
+  rate.b = second.real(61, 20, n.b, dim::none), rate.d = second.real(81, 20, n.d, dim::none);
 }
 
-// The logarithmic rate effect B (with its rate D) scales the curve fct_ID1 only: on a curve it is refused; a linear
-// spring ignores it, as the reference does (measured: its starter prints B = 0, and a /PROP/TYPE25 deck with B 50 on
-// its linear laws runs to the same time history as with B 0).
-void check_log_rate(const LogRateFields& rate, const SpringLaw& s, const CardReader& reader, DeckContext& context,
-                    const SpringLawNames& n) {
-  if (s.function_id != 0) {
-    spring_default_only(rate.line, context, 61, 20, n.b, rate.b, 0.0, "the logarithmic rate effect is");
-    spring_default_only(rate.line, context, 81, 20, n.d, rate.d, 1.0, "the rate effect's scale (with B) is");
-  } else {
+// A rate field that acts on nothing in this law (SP-23; the reference ignores it there, measured): a named warning.
+void rate_field_ignored(DeckContext& context, const CardReader& reader, const SourceLocation& where,
+                        const std::string& field, double value, std::string_view why) {
+  if (value != 0.0 && value != 1.0)
+    context.note(where, reader.card().keyword, field, std::string(why), SkipKind::Unsupported);
+}
+
+// SP-23: the rate factor R (B, D, fct_ID2, E) scales the curve fct_ID1 and acts with it only: a linear spring drops
+// it, as the reference does (measured: its starter prints B = 0 and E = 0, and a /PROP/TYPE25 deck with B 50 on its
+// linear laws runs to the same time history as with B 0); the rate force (fct_ID4, Hscale) acts on every law.
+// The curve A f is scaled by R / A: B and E are kept over A.
+void resolve_rate_effects(const RateFields& rate, SpringLaw& s, const CardReader& reader, DeckContext& context,
+                          const SpringLawNames& n) {
+  s.log_rate = rate.b / rate.a, s.log_rate_reference = rate_reference(rate.d, reader, n);
+  s.rate_factor_scale = (rate.e == 0.0 ? 1.0 : rate.e) / rate.a, s.rate_scale = rate_reference(rate.f, reader, n);
+  s.rate_force_scale = (rate.hscale == 0.0 ? 1.0 : rate.hscale) * reader.units().factor(n.force);
+  if (s.function_id == 0) {
     if (rate.b != 0.0)
-      context.note(rate.line.where(), reader.card().keyword, n.b,
+      context.note(rate.first, reader.card().keyword, n.b,
                    "the logarithmic rate effect acts on the force function only; a linear spring ignores it, as the "
                    "reference does",
                    SkipKind::Unsupported);
-    if (rate.d != 0.0 && rate.d != 1.0)
-      context.note(rate.line.where(), reader.card().keyword, n.d,
-                   "the rate of the logarithmic rate effect acts with a force function only; a linear spring "
-                   "ignores it, as the reference does",
+    if (s.rate_factor_function_id != 0)
+      context.note(rate.scales, reader.card().keyword, n.rate_factor,
+                   "the rate factor function acts on the force function only; a linear spring ignores it, as the "
+                   "reference does",
                    SkipKind::Unsupported);
+    s.log_rate = 0.0, s.rate_factor_function_id = 0;
   }
+  // Measured: a /PROP/TYPE4 law with fct_ID3 given reads g and h at a rate scale that is not F (it follows the rank
+  // of fct_ID3's id among the deck's functions); Crumple reads them at r / F, as the manual defines them.
+  if (n.dof == 0 && rate.lower_curve_given && (s.rate_factor_function_id != 0 || s.rate_force_function_id != 0))
+    context.warn(rate.scales, reader.card().keyword,
+                 fmt::format("{} and {} are read at the rate over {}, as the manual defines them; beside {} the "
+                             "reference reads them at another scale, so its rate effects differ from Crumple's",
+                             n.rate_factor, n.rate_force, n.f, n.lower));
+  if (s.log_rate == 0.0)
+    rate_field_ignored(context, reader, rate.first, n.d, rate.d, "the rate D acts with the logarithmic rate effect B only");
+  if (s.rate_factor_function_id == 0)
+    rate_field_ignored(context, reader, rate.scales, n.e, rate.e, "E scales the rate factor function fct_ID2 only");
+  if (s.rate_factor_function_id == 0 && s.rate_force_function_id == 0)
+    rate_field_ignored(context, reader, rate.scales, n.f, rate.f, "F scales the rate of the functions fct_ID2 and fct_ID4 only");
+  if (s.rate_force_function_id == 0)
+    rate_field_ignored(context, reader, rate.scales, n.hscale, rate.hscale, "Hscale scales the rate force fct_ID4 only");
 }
 
 // The hardening flag and its curves (line 2 of a law): every flag needs fct_ID1, most an unloading K; H 4 to 7 take
@@ -291,7 +327,10 @@ void check_spring_hardening(const Line& third, CardReader& reader, DeckContext& 
     context.unsupported(third.error(11, 10, n.h, "0 (elastic), 1 (isotropic), 2 (uncoupled), 4 (kinematic), 5 "
                                                  "(residual), 6 (unloading curve), 7 (hysteresis) or 8 (total length) "
                                                  "hardening (3 is not supported by Crumple)"));
-  if (s.hardening != 0 && s.function_id == 0) {  // measured: H 1 without a curve runs as the linear spring
+  // The reference's errors 231, 1057 and 1058 (measured, /PROP/TYPE4): H 4 to 8 need their curve.
+  if (s.hardening >= 4 && s.hardening <= 8 && s.function_id == 0)
+    third.fail(1, 10, n.curve, fmt::format("the force curve of hardening H {} (H 4 to 8 need one)", s.hardening));
+  if (s.hardening != 0 && s.function_id == 0) {  // measured: H 1 and 2 without a curve run as the linear spring
     context.warn(third.where(), reader.card().keyword,
                  fmt::format("{} {} without a curve ({}): the spring is linear at {}, as the reference runs it", n.h,
                              s.hardening, n.curve, n.k));
@@ -325,30 +364,31 @@ void read_abscissa_scale(const Line& line, int column, const CardReader& reader,
   s.abscissa_scale = (ascale == 0.0 ? 1.0 : ascale) * reader.units().factor(n.displacement);
 }
 
-// TYPE25's third line of a law: Ascale, E, fct_ID4, Hscale (its F is on the line before).
-void read_axisymmetric_law_scales(const Line& line, const CardReader& reader, DeckContext& context, SpringLaw& s,
-                                  const SpringLawNames& n) {
-  read_abscissa_scale(line, 1, reader, s, n);
-  spring_default_only(line, context, 21, 20, n.e, line.real(21, 20, n.e, dim::none), 1.0,
-                      "the rate effect's factor E (with a function) is");
-  if (line.optional_id(41, 10, n.rate, IdKind::Other) != 0)
-    context.unsupported(line.error(41, 10, n.rate, default_only("a rate function (with B) is")));
-  spring_default_only(line, context, 51, 20, n.hscale, line.real(51, 20, n.hscale, dim::none), 1.0,
-                      "the ordinate scale of the hardening functions (with H) is");
+// F of a law (SP-23), the rate g and h read in: positive, 0 or blank 1.
+void read_rate_scale(const Line& line, int column, const SpringLawNames& n, RateFields& rate) {
+  rate.f = line.real(column, 20, n.f, dim::none);
+  if (rate.f < 0.0) line.fail(column, 20, n.f, "a positive rate scale (0 or blank: 1)");
+}
+
+// E and Hscale of a law (SP-23), the scales of g and h.
+void read_rate_function_scales(const Line& line, int e_column, int hscale_column, const SpringLawNames& n,
+                               RateFields& rate) {
+  rate.e = line.real(e_column, 20, n.e, dim::none), rate.hscale = line.real(hscale_column, 20, n.hscale, dim::none);
 }
 
 // A law's second and third lines: fct_ID1, H, fct_ID2, fct_ID3, fct_ID4, delta_min, delta_max; F, E, Ascale, Hscale.
-void read_spring_law(CardReader& reader, DeckContext& context, SpringLaw& s, const SpringLawNames& n) {
+// TYPE25's (SP-20): fct_ID1, H, fct_ID2, fct_ID3, F, delta_min, delta_max; Ascale, E, fct_ID4, Hscale.
+void read_spring_law(CardReader& reader, DeckContext& context, SpringLaw& s, const SpringLawNames& n, RateFields& rate) {
   const Line third = reader.next("fct_ID1, H, fct_ID2, fct_ID3, fct_ID4, delta_min, delta_max");
   s.function_id = third.optional_id(1, 10, n.curve, IdKind::Other);
   s.lower_function_id = third.optional_id(31, 10, n.lower, IdKind::Other);
-  // TYPE25 has F at 41-60 here and fct_ID4 on the next line (measured, its starter listing).
-  for (const auto& [column, name] : {std::pair{21, &n.unloading}, {41, &n.rate}})
-    if (!(n.axisymmetric && column == 41) && third.optional_id(column, 10, *name, IdKind::Other) != 0)
-      context.unsupported(third.error(column, 10, *name, default_only("an unloading or rate function (with H or B) is")));
+  s.rate_factor_function_id = third.optional_id(21, 10, n.rate_factor, IdKind::Other);
+  rate.scales = third.where();
+  rate.lower_curve_given = s.lower_function_id != 0;
   if (n.axisymmetric)
-    spring_default_only(third, context, 41, 20, n.f, third.real(41, 20, n.f, dim::none), 1.0,
-                        "the rate effect's velocity scale (with B or a function) is");
+    read_rate_scale(third, 41, n, rate);
+  else
+    s.rate_force_function_id = third.optional_id(41, 10, n.rate_force, IdKind::Other);
   // A scales the function only: the reference prints A = 1 for a spring without one (measured, /PROP/SPRING with
   // K 1000 and A 2: the same energies as A 1), so a linear spring ignores it, as the reference does.
   if (s.function_id == 0 && s.function_scale != reader.units().factor(n.force))
@@ -369,17 +409,17 @@ void read_spring_law(CardReader& reader, DeckContext& context, SpringLaw& s, con
   if (high > 0.0) s.delta_max = high;
   if (!reader.has_data()) return;
   if (n.axisymmetric) {
-    read_axisymmetric_law_scales(reader.next("Ascale, E, fct_ID4, Hscale"), reader, context, s, n);
+    const Line last = reader.next("Ascale, E, fct_ID4, Hscale");
+    read_abscissa_scale(last, 1, reader, s, n);
+    s.rate_force_function_id = last.optional_id(41, 10, n.rate_force, IdKind::Other);
+    read_rate_function_scales(last, 21, 51, n, rate);
     return;
   }
   const Line fourth = reader.next("F, E, Ascale, Hscale");
-  spring_default_only(fourth, context, 1, 20, n.f, fourth.real(1, 20, n.f, dim::none), 1.0,
-                      "the rate effect's velocity scale (with B or a function) is");
-  spring_default_only(fourth, context, 21, 20, n.e, fourth.real(21, 20, n.e, dim::none), 1.0,
-                      "the rate effect's factor E (with a function) is");
+  rate.scales = fourth.where();
+  read_rate_scale(fourth, 1, n, rate);
+  read_rate_function_scales(fourth, 21, 61, n, rate);
   read_abscissa_scale(fourth, 41, reader, s, n);
-  spring_default_only(fourth, context, 61, 20, n.hscale, fourth.real(61, 20, n.hscale, dim::none), 1.0,
-                      "the ordinate scale of the hardening functions (with H) is");
 }
 
 void read_spring_property(CardReader& reader, DeckContext& context) {
@@ -388,9 +428,10 @@ void read_spring_property(CardReader& reader, DeckContext& context) {
   read_spring_mass(reader, context, p.spring);
   SpringLawNames names(0);
   if (p.spring.per_unit_length) names.per_unit_length(false);
-  const LogRateFields rate = read_spring_stiffness(reader, p.spring.dof[0], names);
-  read_spring_law(reader, context, p.spring.dof[0], names);
-  check_log_rate(rate, p.spring.dof[0], reader, context, names);
+  RateFields rate;
+  read_spring_stiffness(reader, p.spring.dof[0], names, rate);
+  read_spring_law(reader, context, p.spring.dof[0], names, rate);
+  resolve_rate_effects(rate, p.spring.dof[0], reader, context, names);
   if (p.spring.per_unit_length && p.spring.dof[0].hardening == 8)
     context.unsupported(DeckError(p.where, reader.card().keyword, "Ileng",
                                   "0 with H 8 (the total length's curve per unit length is not supported by Crumple)", "1"));
@@ -401,12 +442,22 @@ void read_spring_property(CardReader& reader, DeckContext& context) {
   context.model.properties.push_back(std::move(p));
 }
 
-// The rate filter of /PROP/TYPE8 and TYPE13 (Fsmooth, an integer at `smooth`; Fcut, a real at `cut`): blank, 0 or
-// the reference's default 1e30 only.
-void refuse_rate_filter(const Line& line, DeckContext& context, int smooth, int cut) {
-  spring_default_only(line, context, smooth, 10, "Fsmooth", static_cast<double>(line.integer(smooth, 10, "Fsmooth")),
-                      0.0, "the rate filter is");
+// The rate filter of /PROP/TYPE8 and TYPE13 (Fsmooth, an integer at `smooth`; Fcut, a real at `cut`). The reference
+// runs a general spring's rate effects with and without it to the same forces (measured, /PROP/TYPE8 on a velocity
+// step, every rate term: the largest difference 0): there it is a warning. On TYPE13, whose failure reads the rate
+// too, blank, 0 or the reference's default 1e30 only.
+void read_rate_filter(const Line& line, const CardReader& reader, DeckContext& context, int smooth, int cut,
+                      bool without_effect) {
+  const auto fsmooth = static_cast<double>(line.integer(smooth, 10, "Fsmooth"));
   const double frequency = line.real(cut, 20, "Fcut", dim::rate);
+  if (without_effect) {
+    if (fsmooth != 0.0 || (frequency != 0.0 && frequency < 1e29))
+      context.note(line.where(), reader.card().keyword, "Fsmooth, Fcut",
+                   "the rate filter changes none of a general spring's forces in the reference (measured); ignored",
+                   SkipKind::Unsupported);
+    return;
+  }
+  spring_default_only(line, context, smooth, 10, "Fsmooth", fsmooth, 0.0, "the rate filter is");
   if (frequency != 0.0 && frequency < 1e29)
     context.unsupported(line.error(cut, 20, "Fcut", default_only("the rate filter's cut-off frequency is")));
 }
@@ -445,9 +496,11 @@ void read_six_laws(CardReader& reader, DeckContext& context, SpringSection& s) {
     SpringLawNames names(d + 1);
     set_limit_dimension(names, s.failure.measure);
     if (s.per_unit_length) names.per_unit_length(s.failure.measure == SpringFailureMeasure::Elongation);
-    const LogRateFields rate = read_spring_stiffness(reader, s.dof[static_cast<std::size_t>(d)], names);
-    read_spring_law(reader, context, s.dof[static_cast<std::size_t>(d)], names);
-    check_log_rate(rate, s.dof[static_cast<std::size_t>(d)], reader, context, names);
+    SpringLaw& law = s.dof[static_cast<std::size_t>(d)];
+    RateFields rate;
+    read_spring_stiffness(reader, law, names, rate);
+    read_spring_law(reader, context, law, names, rate);
+    resolve_rate_effects(rate, law, reader, context, names);
   }
 }
 
@@ -455,8 +508,7 @@ void read_six_laws(CardReader& reader, DeckContext& context, SpringSection& s) {
 void read_general_spring_mass(CardReader& reader, DeckContext& context, SpringSection& s) {
   const Line first = reader.next("Mass, Inertia, skew_ID, sens_ID, Isflag, Ifail, Ifail2, Iequil");
   read_six_law_spring_line(first, context, s, false);
-  if (first.optional_id(41, 10, "skew_ID", IdKind::Other) != 0)
-    context.unsupported(first.error(41, 10, "skew_ID", default_only("a general spring in a skew's axes is")));
+  s.skew_id = first.optional_id(41, 10, "skew_ID", IdKind::Other);  // the axes of its laws (SP-9b); 0: global
   // Ifail2: 0 the elongation, 1 the force, 2 the energy; the reference runs other values as 0 (measured: 3, 5).
   const std::int64_t ifail2 = first.integer(81, 10, "Ifail2");
   if (ifail2 == 1 || ifail2 == 2)
@@ -478,7 +530,7 @@ void read_general_spring_property(CardReader& reader, DeckContext& context) {
   read_six_laws(reader, context, p.spring);
   if (reader.has_data()) {
     const Line last = reader.next("Fsmooth, Fcut");
-    refuse_rate_filter(last, context, 1, 11);
+    read_rate_filter(last, reader, context, 1, 11, true);
   }
   if (p.spring.dof[3].acts() || p.spring.dof[4].acts() || p.spring.dof[5].acts())
     if (!(p.spring.inertia > 0.0))
@@ -537,7 +589,7 @@ void read_beam_spring_property(CardReader& reader, DeckContext& context) {
   if (reader.has_data()) {
     const Line rate = reader.next("Vo, Wo, Fcut, Fsmooth");
     read_failure_rates(rate, p.spring.failure);
-    refuse_rate_filter(rate, context, 61, 41);
+    read_rate_filter(rate, reader, context, 61, 41, false);
   }
   // Blank lines between them are skipped (measured: a deck with one before each is the reference's deck as written).
   for (int d = 0; d < kSpringDofs && reader.has_data(); ++d)
@@ -572,9 +624,10 @@ void read_axisymmetric_spring_property(CardReader& reader, DeckContext& context)
     SpringLawNames names(d + 1, 3);
     names.axisymmetric = true;
     SpringLaw& law = p.spring.dof[kSlot[d]];
-    const LogRateFields rate = read_spring_stiffness(reader, law, names);
-    read_spring_law(reader, context, law, names);
-    check_log_rate(rate, law, reader, context, names);
+    RateFields rate;
+    read_spring_stiffness(reader, law, names, rate);
+    read_spring_law(reader, context, law, names, rate);
+    resolve_rate_effects(rate, law, reader, context, names);
   }
   p.spring.dof[2] = p.spring.dof[1], p.spring.dof[5] = p.spring.dof[4];
   if (reader.has_data()) {
