@@ -359,6 +359,25 @@ std::string rigid_wall_keyword(const RigidWall& w) {
   return fmt::format("/RWALL/{}/{}", rigid_wall_shape_name(w.shape), w.user_id);
 }
 
+// A spring switched by a sensor (docs/theory/spring.md, SP-24): the sensor's window, and what is measured only.
+void resolve_spring_switch(Resolver& r, Property& p) {
+  SpringSwitch& sw = p.spring.sensor;
+  const std::string kw = fmt::format("/PROP/{}/{}", p.spring.card(), p.user_id);
+  const SensorWindow window = sensor_window(r, sw.sensor_id, p.where, kw, "sens_ID");
+  sw.on = window.on, sw.off = std::isfinite(window.off) ? window.off : 1e300;
+  const auto refuse = [&](std::string_view field, std::string_view what) {
+    r.context.unsupported(DeckError(p.where, kw, std::string(field), default_only(what), "given"));
+  };
+  if (p.spring.radial)  // measured: the reference's inactive TYPE25 pushes with -10 times its force
+    return refuse("sens_ID", "a sensor on /PROP/TYPE25 is");
+  if (sw.flag == 2 && p.spring.frame != SpringFrame::Axial)
+    return refuse("Isflag", "Isflag 2 (the six laws' rest taken anew) is");
+  if (sw.flag == 2 && p.spring.per_unit_length) return refuse("Isflag", "Isflag 2 with Ileng 1 is");
+  for (int d = 0; d < p.spring.dofs(); ++d)
+    if (p.spring.dof[static_cast<std::size_t>(d)].hardening != 0)
+      return refuse("sens_ID", "a sensor on a hardening spring (H 1 to 8) is");
+}
+
 void resolve_load_references(Resolver& r) {
   Model& m = r.model;
   resolve_skews(r);
@@ -367,6 +386,8 @@ void resolve_load_references(Resolver& r) {
       p.spring.skew = r.find(r.model.index.skews, p.spring.skew_id, p.where,
                              fmt::format("/PROP/{}/{}", p.spring.card(), p.user_id), "skew_ID", "skew");
   r.index(m.sensors, m.index.sensors, "/SENSOR");
+  for (Property& p : r.model.properties)
+    if (p.kind == PropertyKind::Spring && p.spring.sensor.sensor_id != 0) resolve_spring_switch(r, p);
   for (Property& p : r.model.properties) {  // a pretensioner's activation (docs/theory/spring.md, SP-22)
     SpringPretension& pre = p.spring.pretension;
     if (p.kind != PropertyKind::Spring || !pre.on || pre.sensor_id == 0) continue;

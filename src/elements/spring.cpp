@@ -45,7 +45,9 @@ SpringDofParameters dof_parameters(const SpringLaw& s, const std::vector<Functio
 }  // namespace
 
 SpringGroupParameters spring_parameters(const SpringSection& s, const std::vector<Function>& functions) {
-  SpringGroupParameters p{s.mass, s.inertia, s.frame, {}, s.radial, s.per_unit_length, s.pretension, s.failure};
+  SpringGroupParameters p;
+  p.mass = s.mass, p.inertia = s.inertia, p.frame = s.frame, p.radial = s.radial;
+  p.per_unit_length = s.per_unit_length, p.pretension = s.pretension, p.failure = s.failure, p.sensor = s.sensor;
   for (int d = 0; d < s.dofs(); ++d)
     p.dof[static_cast<std::size_t>(d)] = dof_parameters(s.dof[static_cast<std::size_t>(d)], functions);
   return p;
@@ -294,6 +296,49 @@ double pretension_force(const SpringPretension& pre, const SpringDofParameters& 
   return force;
 }
 
+// SP-24: a sensor-switched spring's phase, kept in its first law's second hardening variable (a switched spring has
+// no hardening): before the sensor, on, and off for good.
+constexpr double kSwitchBefore = 0.0, kSwitchOn = 1.0, kSwitchOff = 2.0;
+enum class SwitchStep : std::uint8_t { Acting, Idle, ComesOn, GoesOff };
+
+// SP-24: what a switched spring does this cycle, at the time of the positions `time` (a sensor is seen from the first
+// cycle at or past its Tdelay, never in the cycle at t = 0, measured), its phase advanced.
+SwitchStep switch_step(const SpringSwitch& sw, double& phase, double time) {
+  if (sw.sensor_id == 0) return SwitchStep::Acting;
+  const bool sensor_on = time >= sw.on && time > 0.0 && time < sw.off;
+  if (phase == kSwitchBefore && sensor_on) {
+    phase = sw.flag == 1 ? kSwitchOff : kSwitchOn;
+    return sw.flag == 1 ? SwitchStep::GoesOff : SwitchStep::ComesOn;
+  }
+  if (phase == kSwitchOn && sw.flag == 2 && !sensor_on) {
+    phase = kSwitchOff;
+    return SwitchStep::GoesOff;
+  }
+  const bool acting = sw.flag == 1 ? phase == kSwitchBefore : phase == kSwitchOn;
+  return acting ? SwitchStep::Acting : SwitchStep::Idle;
+}
+
+// SP-24: a spring that leaves the run when its sensor switches it off: deleted, its last force's work over the step
+// done as a break's (SP-5a).
+void switch_off(SpringState& state, GroupStepResult& result, std::size_t ue) {
+  state.deleted[ue] = kElementDeleted;
+  ++result.failed;
+}
+
+// SP-24: a general or beam-type spring's switch this cycle; true while it is idle (no force, its elongations
+// followed, its step not the run's), false when its laws act (or, switched off, do their last work).
+bool six_law_spring_idles(const SpringSwitch& sw, SpringState& state, GroupStepResult& result, std::int32_t e,
+                          const std::array<double, kSpringDofs>& delta, double time) {
+  const auto ue = static_cast<std::size_t>(e), slot = kSpringDofs * ue;
+  const SwitchStep step = state.deleted[ue] ? SwitchStep::Acting : switch_step(sw, state.plastic_b[slot], time);
+  if (step == SwitchStep::GoesOff) switch_off(state, result, ue);
+  if (step != SwitchStep::Idle) return false;
+  for (std::size_t d = 0; d < kSpringDofs; ++d)
+    state.elongation[slot + d] = delta[d], state.force[slot + d] = state.elastic_force[slot + d] = 0.0;
+  close_element(state, result, e, 1e30, false);
+  return true;
+}
+
 // /PROP/TYPE4: one degree of freedom along the nodes (eq. SP-1 to SP-5).
 GroupStepResult axial_spring_forces(const ElementTable& table, const ElementGroup& group,
                                     const SpringGroupParameters& group_p, NodalState& nodes, SpringState& state,
@@ -308,9 +353,20 @@ GroupStepResult axial_spring_forces(const ElementTable& table, const ElementGrou
     const std::int32_t* n = table.nodes_of(ue);
     const Vec3 axis = node_position(nodes, n[1]) - node_position(nodes, n[0]);
     const double length = norm(axis);
-    const double elongation = length - state.length0[ue];  // eq. SP-1
+    double elongation = length - state.length0[ue];  // eq. SP-1
     const SpringGroupParameters& p =
         group_p.per_unit_length ? (own = spring_of_length(group_p, state.length0[ue])) : group_p;
+    const SwitchStep sw = state.deleted[ue] ? SwitchStep::Acting : switch_step(p.sensor, state.plastic_b[slot], time);
+    if (sw == SwitchStep::GoesOff) switch_off(state, result, ue);
+    if (sw == SwitchStep::Idle) {  // no force, its elongation followed, its step not the run's (SP-24)
+      state.elongation[slot] = elongation, state.force[slot] = state.elastic_force[slot] = 0.0;
+      close_element(state, result, e, 1e30, false);
+      continue;
+    }
+    if (sw == SwitchStep::ComesOn && p.sensor.flag == 2) {  // at rest at the last cycle's length (SP-24)
+      state.length0[ue] += state.elongation[slot];
+      state.elongation[slot] = 0.0, elongation = length - state.length0[ue];
+    }
     if (state.deleted[ue]) {  // broken last cycle: the work of its last force over the step it acted (eq. SP-5a)
       if (state.force[slot] != 0.0) {
         const double work = last_work(state, slot, elongation);
@@ -445,7 +501,7 @@ std::array<double, kSpringDofs> general_elongations(const NodalState& nodes, con
 // /PROP/TYPE8: six degrees of freedom in the global axes, each its own law (eq. SP-9, SP-10).
 GroupStepResult general_spring_forces(const ElementTable& table, const ElementGroup& group,
                                       const SpringGroupParameters& p, NodalState& nodes, SpringState& state, double dt,
-                                      const std::vector<SkewAxes>& skew_axes) {
+                                      double time, const std::vector<SkewAxes>& skew_axes) {
   GroupStepResult result;
   const SkewAxes axes = p.skew >= 0 ? skew_axes[static_cast<std::size_t>(p.skew)] : SkewAxes{};
   const bool recording = state.records.on(group.begin);
@@ -455,6 +511,7 @@ GroupStepResult general_spring_forces(const ElementTable& table, const ElementGr
     if (state.deleted[ue] & kElementElsewhere) continue;
     const std::int32_t* n = table.nodes_of(ue);
     const std::array<double, kSpringDofs> delta = general_elongations(nodes, state, ue, n, dt, axes);
+    if (six_law_spring_idles(p.sensor, state, result, e, delta, time)) continue;
     std::array<double, kSpringDofs> f{};
     bool broken = false;
     if (!six_law_step(p, state, e, delta, dt, result, f, broken)) continue;
@@ -527,7 +584,7 @@ BeamKinematics coincident_beam_kinematics(const NodalState& nodes, const SpringS
 // ends' rotations as a beam's (eq. SP-15 to SP-18).
 GroupStepResult beam_spring_forces(const ElementTable& table, const ElementGroup& group,
                                    const SpringGroupParameters& group_p, NodalState& nodes, SpringState& state,
-                                   double dt) {
+                                   double dt, double time) {
   GroupStepResult result;
   SpringGroupParameters own;  // Ileng 1: each spring's own (SP-21)
   const bool recording = state.records.on(group.begin);
@@ -553,6 +610,7 @@ GroupStepResult beam_spring_forces(const ElementTable& table, const ElementGroup
     const BeamKinematics k = !(length > 0.0) ? coincident_beam_kinematics(nodes, state, ue, n, dt)
                                              : beam_kinematics(nodes, state, ue, n, dt, axis, length);
     const std::array<double, kSpringDofs>& delta = k.delta;
+    if (six_law_spring_idles(p.sensor, state, result, e, delta, time)) continue;
     std::array<double, kSpringDofs> f{};
     bool broken = false;
     if (!six_law_step(p, state, e, delta, dt, result, f, broken)) continue;
@@ -575,8 +633,8 @@ GroupStepResult spring_forces(const ElementTable& table, const ElementGroup& gro
                               const std::vector<SkewAxes>& skew_axes) {
   switch (p.frame) {
     case SpringFrame::Axial: return axial_spring_forces(table, group, p, nodes, state, dt, time);
-    case SpringFrame::Global: return general_spring_forces(table, group, p, nodes, state, dt, skew_axes);
-    case SpringFrame::Beam: return beam_spring_forces(table, group, p, nodes, state, dt);
+    case SpringFrame::Global: return general_spring_forces(table, group, p, nodes, state, dt, time, skew_axes);
+    case SpringFrame::Beam: return beam_spring_forces(table, group, p, nodes, state, dt, time);
   }
   return {};
 }

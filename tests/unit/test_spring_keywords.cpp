@@ -202,6 +202,36 @@ TEST(SpringKeywords, RateEffectsReadTheirScalesAndStep) {
   }
 }
 
+// sens_ID and Isflag (SP-24): the sensor's window resolved onto the spring; Isflag outside 0 to 2, a sensor that does
+// not exist, a sensor on a hardening law, are errors naming the field; Isflag without a sensor a warning.
+TEST(SpringKeywords, SensorSwitchesTheSpring) {
+  const std::string sensor = "/SENSOR/TIME/5\nsensor\n" + R(0.25) + "\n";
+  SpringDeck d;
+  d.line1 = R(2.0) + std::string(30, ' ') + I(5) + I(2);
+  d.extra = sensor;
+  {
+    test::TempDir dir;
+    const SpringSwitch& sw = read_deck(starter(dir, d)).model.properties[0].spring.sensor;
+    EXPECT_EQ(sw.sensor_id, 5);
+    EXPECT_EQ(sw.flag, 2);
+    EXPECT_DOUBLE_EQ(sw.on, 0.25);
+  }
+  d.line1 = R(2.0) + std::string(30, ' ') + I(5) + I(3);
+  EXPECT_NE(error_of(d).find("Isflag"), std::string::npos) << error_of(d);
+  d.line1 = R(2.0) + std::string(30, ' ') + I(6) + I(0);
+  EXPECT_NE(error_of(d).find("sens_ID"), std::string::npos) << error_of(d);
+  d.line1 = R(2.0) + std::string(30, ' ') + I(5) + I(0);
+  d.line3 = I(8) + I(1);  // a hardening law
+  d.extra = sensor + "/FUNCT/8\nyield\n" + R(-1.0) + R(-30.0) + "\n" + R(1.0) + R(30.0) + "\n";
+  EXPECT_NE(error_of(d).find("sens_ID"), std::string::npos) << error_of(d);
+  d = SpringDeck{};
+  d.line1 = R(2.0) + std::string(30, ' ') + I(0) + I(1);
+  test::TempDir dir;
+  std::string warnings;
+  for (const auto& w : read_deck(starter(dir, d)).report.warnings) warnings += w.message;
+  EXPECT_NE(warnings.find("Isflag"), std::string::npos) << warnings;
+}
+
 // A hardening spring's K below its curve's steepest slope unloads at that slope, as the reference runs it (SP-4c),
 // with a warning; a nonlinear elastic spring (H 0) takes the slope for its step only.
 TEST(SpringKeywords, HardeningStiffnessRaisedToTheCurvesSlope) {

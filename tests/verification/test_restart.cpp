@@ -12,7 +12,7 @@
 // (tied_spot_weld), trusses letting go over their last cycles (truss_tower_fails), a frame of beams past yield
 // (beam_frame_plastic), a bolt on an /RBE2 (rbe2_bolt_beam), a mass on an /RBE3 (rbe3_mass_dependent) and an
 // axisymmetric spring's radial law (spring_axi_swinging_mass), pretensioners, one locked (spring_pretension_locks), and
-// a hardening spring's rate effects (spring_rate_hardening).
+// a hardening spring's rate effects (spring_rate_hardening) and sensor-switched springs (spring_sensor_switches).
 #include <gtest/gtest.h>
 #include <hdf5.h>
 
@@ -182,7 +182,9 @@ INSTANTIATE_TEST_SUITE_P(
                       // /PROP/TYPE32: the pretensioners' shortening and phase, one locked before the restart (SP-22)
                       RestartCase{"spring_pretension_locks", kPeerDecks / "spring_pretension_locks" / "SPRELOCK_0000.rad", 1500},
                       // SP-23: the rate of the first cycle after the restart, from the elongations it kept
-                      RestartCase{"spring_rate_hardening", kPeerDecks / "spring_rate_hardening" / "SPRRATE_0000.rad", 700}),
+                      RestartCase{"spring_rate_hardening", kPeerDecks / "spring_rate_hardening" / "SPRRATE_0000.rad", 700},
+                      // SP-24: springs switched on, off and taken at rest anew by sensors, between two switches
+                      RestartCase{"spring_sensor_switches", kPeerDecks / "spring_sensor_switches" / "SPRSENS_0000.rad", 2000}),
     [](const auto& p) { return std::string(p.param.name); });
 
 TEST(Restart, FileOfAnotherModelIsRefusedWithItsCounts) {

@@ -50,6 +50,7 @@ struct SpringGroupParameters {
   SpringPretension pretension;   // TYPE32 (SP-22)
   SpringFailure failure;  // SP-5b
   std::int32_t skew = -1;  // TYPE8: the skew whose axes its laws act in (SP-9b); -1 the global axes
+  SpringSwitch sensor;     // sens_ID, Isflag (SP-24)
 };
 
 // Ileng 1 (eq. SP-21): the parameters of one spring of rest length `length0` [L] > 0 whose property gives them per

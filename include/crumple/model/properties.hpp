@@ -117,6 +117,15 @@ struct SpringPretension {
   double stiffness = 0.0;      // K1 [F/L]; the stroke D1 = F1 / K1
 };
 
+// sens_ID, Isflag (docs/theory/spring.md, SP-24): a spring switched by a /SENSOR/TIME. Isflag 0: off until the first
+// cycle the sensor is on, then on for good; 1: on until then, then gone; 2: on while the sensor is, its rest length
+// taken anew when it comes on (TYPE4).
+struct SpringSwitch {
+  std::int64_t sensor_id = 0;  // 0: always on
+  int flag = 0;                // Isflag
+  double on = 0.0, off = 1e300;  // the sensor's window (resolved) [T]
+};
+
 struct SpringSection {
   double mass = 0.0;     // M, the spring's mass, half at each node [M]; > 0 (the reference refuses 0)
   double inertia = 0.0;  // TYPE8 and TYPE13: its rotational inertia, half at each node [M L^2]
@@ -131,6 +140,7 @@ struct SpringSection {
   // delta / L0 (docs/theory/spring.md, SP-21); each spring's own values follow from its rest length.
   bool per_unit_length = false;
   SpringPretension pretension;  // TYPE32
+  SpringSwitch sensor;          // TYPE4, TYPE8, TYPE13
   SpringFailure failure;  // TYPE8, TYPE13, TYPE25 (TYPE4: Ifail 0 on the elongation)
   int dofs() const { return frame == SpringFrame::Axial ? 1 : kSpringDofs; }
   std::string_view card() const {  // /PROP/<card>

@@ -231,16 +231,26 @@ bool read_unit_length_flag(const Line& line, int column) {
   return ileng == 1;
 }
 
+// sens_ID and Isflag at columns 51-60, 61-70 of line 1 (SP-24): Isflag 0, 1 or 2; without a sensor, a warning.
+void read_spring_switch(const Line& first, DeckContext& context, SpringSection& s) {
+  s.sensor.sensor_id = first.optional_id(51, 10, "sens_ID", IdKind::Other);
+  const std::int64_t flag = first.integer(61, 10, "Isflag");
+  if (flag < 0 || flag > 2)
+    first.fail(61, 10, "Isflag", "0 (on when the sensor comes on), 1 (off then) or 2 (on while the sensor is)");
+  s.sensor.flag = static_cast<int>(flag);
+  if (s.sensor.sensor_id == 0 && flag != 0) {
+    const DeckError at = first.error(61, 10, "Isflag", "");
+    context.note(at.where(), at.keyword(), "Isflag", "acts with a sensor (sens_ID) only; ignored", SkipKind::Unsupported);
+  }
+}
+
 // Line 1 of /PROP/TYPE4: Mass, sens_ID, Isflag, Ileng.
 void read_spring_mass(CardReader& reader, DeckContext& context, SpringSection& s) {
   const Line first = reader.next("Mass, sens_ID, Isflag, Ileng");
   s.per_unit_length = read_unit_length_flag(first, 71);
   s.mass = first.real(1, 20, "Mass", s.per_unit_length ? per_length(dim::mass) : dim::mass);
   if (!(s.mass > 0.0)) first.fail(1, 20, "Mass", "a positive spring mass (the reference refuses a spring without mass)");
-  if (first.optional_id(51, 10, "sens_ID", IdKind::Other) != 0)
-    context.unsupported(first.error(51, 10, "sens_ID", default_only("a spring switched by a sensor is")));
-  spring_default_only(first, context, 61, 10, "Isflag", static_cast<double>(first.integer(61, 10, "Isflag")), 0.0,
-                      "the sensor flag (with a sensor) is");
+  read_spring_switch(first, context, s);
 }
 
 // A law's rate fields as written (SP-23), checked once the whole law is read (resolve_rate_effects): B and D on its
@@ -470,10 +480,7 @@ void read_six_law_spring_line(const Line& first, DeckContext& context, SpringSec
   s.inertia = first.real(21, 20, "Inertia", s.per_unit_length ? per_length(dim::inertia) : dim::inertia);
   if (inertia_required ? !(s.inertia > 0.0) : s.inertia < 0.0)
     first.fail(21, 20, "Inertia", inertia_required ? "a positive rotational inertia" : "a non-negative rotational inertia");
-  if (first.optional_id(51, 10, "sens_ID", IdKind::Other) != 0)
-    context.unsupported(first.error(51, 10, "sens_ID", default_only("a spring switched by a sensor is")));
-  spring_default_only(first, context, 61, 10, "Isflag", static_cast<double>(first.integer(61, 10, "Isflag")), 0.0,
-                      "the sensor flag (with a sensor) is");
+  read_spring_switch(first, context, s);
   const std::int64_t ifail = first.integer(71, 10, "Ifail");
   // The reference runs a general spring's Ifail 2 as 1 (measured); a beam-type spring's other values are unknown.
   const bool general = !inertia_required;
