@@ -240,7 +240,8 @@ Deck read_deck(const std::filesystem::path& starter, const ReadOptions& options)
     if (unit_card && units_read) continue;  // read with /BEGIN
     if (!card.engine && !starter_started) {
       starter_started = true;
-      begin_first = is_card(card, {"BEGIN"});
+      // /BEGIN/0 is /BEGIN in old decks (the reference reads it so: the QA deck RESSORT/prop_type25/input_51).
+      begin_first = is_card(card, {"BEGIN"}) || is_card(card, {"BEGIN", "0"});
       first_starter_card = &card;
     }
 

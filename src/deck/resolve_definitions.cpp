@@ -353,6 +353,8 @@ void resolve_spring_functions(Resolver& r, Property& p, int d) {
   // H 1: the yield force is the curve's in both directions (SP-6), as the reference runs a curve that is odd about 0;
   // the reference's answer to another curve is not Crumple's.
   if (law.hardening != 1) return;
+  // A TYPE25 radial law (SP-20) is a law of the magnitude, never below 0: its curve's negative side is not read.
+  if (p.spring.radial && (d == 1 || d == 2 || d == 4 || d == 5)) return;
   const Function& f = m.functions[static_cast<std::size_t>(law.function)];
   for (double x : f.x)
     if (std::abs(f(-x) + f(x)) > 1e-9 * (std::abs(f(x)) + 1.0)) {

@@ -115,4 +115,25 @@ TEST(Units, UnitErrorsNameTheField) {
   EXPECT_NE(error(unit_card(7, "1e300", "cm", "s")).find("finite"), std::string::npos);
 }
 
+// Before input version 100 (and /BEGIN/0, as old decks write /BEGIN): /UNIT/LENGTH/1, /UNIT/MASS/1, /UNIT/TIME/1 keep
+// /BEGIN's units (the reference's listing of such a deck: input units 1, 1, 1), each a named warning; another code
+// is an error naming it.
+TEST(Units, OldUnitCardsOfCodeOne) {
+  test::TempDir dir;
+  const auto deck = [&](const std::string& units) {
+    return dir.write("U_0000.rad", "/BEGIN/0\nOLD\n" + test::I(90) + test::I(0) + "\n" + units + test::plate_cards() +
+                                       "/END\n");
+  };
+  const Deck d = read_deck(deck("/UNIT/LENGTH/1\n/UNIT/MASS/1\n/UNIT/TIME/1\n"));
+  EXPECT_EQ(d.model.input_version, 90);
+  EXPECT_DOUBLE_EQ(d.model.units.input[1], d.model.units.work[1]);
+  int notes = 0;
+  for (const auto& w : d.report.warnings) notes += w.message.find("code 1") != std::string::npos;
+  EXPECT_EQ(notes, 3);
+  EXPECT_NE(test::first_error(deck("/UNIT/LENGTH/2\n")).find("code"), std::string::npos);
+  EXPECT_NE(test::first_error(dir.write("U_0000.rad", "/BEGIN/7\nX\n" + test::I(2019) + "\n" + test::plate_cards() +
+                                                          "/END\n")).find("/BEGIN"),
+            std::string::npos);
+}
+
 }  // namespace test_units

@@ -23,6 +23,8 @@ bool finite_factors(const UnitSystem& u) {
 
 void read_begin(CardReader& reader, DeckContext& context) {
   if (context.begin_seen) reader.fail("", "a single /BEGIN", "a second /BEGIN");
+  if (reader.card().path.size() > 1 && reader.card().path[1] != "0")
+    reader.fail("keyword", "/BEGIN (or /BEGIN/0, as old decks write it)", in_quotes(reader.card().path[1]));
   context.begin_seen = true;
   Model& model = context.model;
   model.run_name = reader.next("Runname").text(1, 80);
@@ -70,15 +72,31 @@ void read_begin(CardReader& reader, DeckContext& context) {
   reader.finish();
 }
 
+// Before input version 100, /UNIT/LENGTH/code, /UNIT/MASS/code and /UNIT/TIME/code set the input unit of one
+// base quantity, with no data line. Code 1 leaves it as /BEGIN's (measured: the reference's listing of the QA deck
+// RESSORT/prop_type25/input_51, which writes all three with code 1, prints the input unit system 1, 1, 1); the other
+// codes' units are not known to Crumple.
+void read_old_unit(CardReader& reader, DeckContext& context) {
+  const std::vector<std::string>& path = reader.card().path;
+  const bool base = path.size() == 3 && (path[1] == "LENGTH" || path[1] == "MASS" || path[1] == "TIME");
+  if (!base)
+    reader.fail("keyword", "/UNIT/LENGTH/code, /UNIT/MASS/code or /UNIT/TIME/code (the /UNIT card of input versions "
+                "before 100)", in_quotes(reader.card().keyword));
+  if (path[2] != "1")
+    reader.fail("code", "1 (the unit of /BEGIN; the other codes of the /UNIT card of input versions before 100 are "
+                "not supported by Crumple)", in_quotes(path[2]));
+  reader.finish();
+  context.note(reader.card().where, reader.card().keyword, "code",
+               "code 1: the input unit stays /BEGIN's, as the reference reads it", SkipKind::Unsupported);
+}
+
 // /UNIT/unit_ID: title; mass, length, time units in 20-column fields (codes or SI sizes, as in /BEGIN). A blank one
 // is /BEGIN's input unit (measured on the reference: a blank mass read a density in grams under /BEGIN g mm ms).
 // The cards that name it read their values in it, converted to the working units (docs/deck-format.md, "Units").
 // Read right after /BEGIN, whose units it needs.
 void read_unit(CardReader& reader, DeckContext& context) {
+  if (context.model.input_version < 100) return read_old_unit(reader, context);
   refuse_narrow_layout(reader);
-  if (context.model.input_version < 100)
-    reader.fail("Invers", "an input version of 100 or later for /UNIT/unit_ID (earlier versions have another "
-                "/UNIT card, which Crumple does not read)", std::to_string(context.model.input_version));
   const std::int64_t id = object_id(reader, 1);
   if (reader.card().path.size() > 2) reader.fail("keyword", "nothing after the unit id", in_quotes(reader.card().path[2]));
   read_title(reader);
