@@ -211,7 +211,7 @@ TEST(SpringKeywords, SensorSwitchesTheSpring) {
   d.extra = sensor;
   {
     test::TempDir dir;
-    const SpringSwitch& sw = read_deck(starter(dir, d)).model.properties[0].spring.sensor;
+    const SpringSwitch sw = read_deck(starter(dir, d)).model.properties[0].spring.sensor;  // a copy: the deck goes
     EXPECT_EQ(sw.sensor_id, 5);
     EXPECT_EQ(sw.flag, 2);
     EXPECT_DOUBLE_EQ(sw.on, 0.25);
