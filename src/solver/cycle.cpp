@@ -264,8 +264,8 @@ void apply_loads(const Model& m, SolverState& s) {
   gather_rigid_body_forces(s);
 }
 
-// The step grows by at most a tenth a cycle, as the reference's does: once the element that set it is gone, and
-// once nothing bounds it (every element deleted) (docs/theory/time-step.md, T-6, "No stable step").
+// Once nothing bounds the step (every element deleted), it grows by a tenth a cycle, as the reference's does
+// (docs/theory/time-step.md, "No stable step").
 constexpr double kStepGrowthWithoutBound = 1.1;
 
 double choose_time_step(const Model& m, SolverState& s, RunEvents& events, StepBound& bound) {
@@ -304,10 +304,6 @@ double choose_time_step(const Model& m, SolverState& s, RunEvents& events, StepB
     bound.dt = kStepGrowthWithoutBound * s.dt;
     bound.control.source = StepControl::Source::LastStep;
   }
-  // T-6: within an engine deck from its third cycle (its first may follow a cut last step or /DTIX's DTini), and not
-  // for the cycle past the end time that the end state takes on a copy (energy.md, E-3: after a cut last step).
-  if (s.cycle > 1 && s.time < rc.end_time && kStepGrowthWithoutBound * s.dt < bound.dt)
-    bound.dt = kStepGrowthWithoutBound * s.dt;
   // A step of zero (a contact node through its gap, contact.md C-11): the run cannot advance; it stops with an
   // error rather than end short of its end time as if it had reached it.
   if (rc.dt.minimum > 0.0 ? bound.dt < rc.dt.minimum : !(bound.dt > 0.0)) {
