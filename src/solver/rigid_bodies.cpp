@@ -51,19 +51,6 @@ Mat3 rotation_of(const Vec3& phi) {
 
 
 
-// Largest eigenvalue of a symmetric 3x3 matrix (trigonometric form of the characteristic cubic).
-double largest_eigenvalue(const Mat3& a) {
-  const double p1 = a[1] * a[1] + a[2] * a[2] + a[5] * a[5];
-  const double q = (a[0] + a[4] + a[8]) / 3.0;
-  if (p1 == 0.0) return std::max({a[0], a[4], a[8]});
-  const double p2 = (a[0] - q) * (a[0] - q) + (a[4] - q) * (a[4] - q) + (a[8] - q) * (a[8] - q) + 2.0 * p1;
-  const double p = std::sqrt(p2 / 6.0);
-  const Mat3 b{(a[0] - q) / p, a[1] / p, a[2] / p, a[3] / p, (a[4] - q) / p, a[5] / p, a[6] / p, a[7] / p, (a[8] - q) / p};
-  const double det = b[0] * (b[4] * b[8] - b[5] * b[7]) - b[1] * (b[3] * b[8] - b[5] * b[6]) + b[2] * (b[3] * b[7] - b[4] * b[6]);
-  const double phi = std::acos(std::clamp(det / 2.0, -1.0, 1.0)) / 3.0;
-  return q + 2.0 * p * std::cos(phi);
-}
-
 // Adds the inertia of a point mass at r from the reference point: m (|r|^2 1 - r r^T).
 void add_point_inertia(Mat3& I, double mass, Vec3 r) {
   const double rr = dot(r, r);
@@ -139,10 +126,10 @@ void form_body(const RigidBody& rb, const Model& m, SolverState& s, std::int32_t
     const Vec3 h = cross(r, {n.vx[k], n.vy[k], n.vz[k]});
     for (int d = 0; d < 3; ++d) angular[static_cast<std::size_t>(d)] += mk * h[static_cast<std::size_t>(d)];
   }
-  // Ispher 1: the inertia made spherical, its largest principal moment about every axis (RB-0d); the part of
+  // Ispher 1: the inertia made spherical, the mean of its principal moments about every axis (RB-0d); the part of
   // it the nodes do not carry counts as added inertia, so that the kinetic energy stays that of the body.
   if (rb.ispher == 1) {
-    const double spherical = largest_eigenvalue(I);
+    const double spherical = (I[0] + I[4] + I[8]) / 3.0;
     for (std::size_t c = 0; c < 9; ++c) {
       const double target = c % 4 == 0 ? spherical : 0.0;
       b.inertia_added[c] += target - I[c];
