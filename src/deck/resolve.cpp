@@ -120,6 +120,7 @@ void resolve_model(DeckContext& context, std::vector<RunControl>& continued_runs
   resolve_load_references(r);
   resolve_output_references(r, continued_runs);
   if (r.errors.empty()) resolve_rigid_elements(r);  // needs the ties and the walls' node sets
+  if (r.errors.empty()) refuse_joints_off_bodies(r);
   r.throw_if_errors();
   compute_mass(context.model);
   check_mass(r);

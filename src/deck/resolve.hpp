@@ -84,6 +84,7 @@ SensorWindow sensor_window(Resolver& r, std::int64_t sensor_id, const SourceLoca
                            std::string_view field = "sensor_ID");
 void resolve_load_references(Resolver& r);    // loads, imposed motion, added mass, rigid walls and bodies
 void resolve_output_references(Resolver& r, std::vector<RunControl>& continued_runs);
+void refuse_joints_off_bodies(Resolver& r);  // /PROP/TYPE45: each node on a /RBODY of its own (SP-25)
 void resolve_rigid_elements(Resolver& r);  // /RBE2, /RBE3: node sets, conflicts with other kinematic conditions  // interfaces, sections, time histories, run control
 
 }  // namespace crumple::deck

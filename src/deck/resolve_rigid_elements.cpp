@@ -200,3 +200,37 @@ void resolve_rigid_elements(Resolver& r) {
 }
 
 }  // namespace crumple::deck
+
+namespace crumple::deck {
+
+// SP-25: a joint's blocking stiffness follows from the masses and inertias of the two rigid bodies it joins, one per
+// node (the reference's automatic stiffness "from rigid bodies"); a node off every body has none that Crumple takes.
+void refuse_joints_off_bodies(Resolver& r) {
+  const Model& m = r.model;
+  std::vector<std::int32_t> body_of(m.nodes.size(), -1);
+  for (std::size_t b = 0; b < m.rigid_bodies.size(); ++b) {
+    const RigidBody& body = m.rigid_bodies[b];
+    if (body.node_group >= 0)
+      for (std::int32_t node : m.node_groups[static_cast<std::size_t>(body.node_group)].nodes)
+      body_of[static_cast<std::size_t>(node)] = static_cast<std::int32_t>(b);
+    body_of[static_cast<std::size_t>(body.main_node)] = static_cast<std::int32_t>(b);
+  }
+  const ElementTable& table = m.elements[static_cast<int>(ElementKind::Spring)];
+  for (const ElementGroup& group : m.element_groups) {
+    if (group.kind != ElementKind::Spring) continue;
+    const Property& p = m.properties[static_cast<std::size_t>(group.property)];
+    if (!p.spring.joint.on) continue;
+    for (auto e = static_cast<std::size_t>(group.begin); e < static_cast<std::size_t>(group.end); ++e) {
+      const std::int32_t* n = table.nodes_of(e);
+      const std::int32_t a = body_of[static_cast<std::size_t>(n[0])], b = body_of[static_cast<std::size_t>(n[1])];
+      if (a >= 0 && b >= 0 && a != b) continue;
+      r.error(p.where, fmt::format("/PROP/TYPE45/{}", p.user_id), "Kn",
+              "a joint whose two nodes are each on a /RBODY of its own (the automatic blocking stiffness of "
+              "deformable bodies is not supported by Crumple)",
+              fmt::format("/SPRING {} between nodes {} and {}", table.user_id[e],
+                          m.nodes.user_id[static_cast<std::size_t>(n[0])], m.nodes.user_id[static_cast<std::size_t>(n[1])]));
+    }
+  }
+}
+
+}  // namespace crumple::deck

@@ -48,6 +48,9 @@ SpringGroupParameters spring_parameters(const SpringSection& s, const std::vecto
   SpringGroupParameters p;
   p.mass = s.mass, p.inertia = s.inertia, p.frame = s.frame, p.radial = s.radial;
   p.per_unit_length = s.per_unit_length, p.pretension = s.pretension, p.failure = s.failure, p.sensor = s.sensor;
+  p.joint = s.joint;
+  if (p.joint.on)  // SP-25: a joint's step is its bodies' (SpringState::joint), not its laws' on its massless nodes
+    for (SpringDofParameters& d : p.dof) d.step_stiffness = 0.0, d.step_damping = 0.0;
   for (int d = 0; d < s.dofs(); ++d)
     p.dof[static_cast<std::size_t>(d)] = dof_parameters(s.dof[static_cast<std::size_t>(d)], functions);
   return p;
@@ -526,6 +529,64 @@ GroupStepResult general_spring_forces(const ElementTable& table, const ElementGr
 Vec3 velocity(const NodalState& n, std::size_t k) { return {n.vx[k], n.vy[k], n.vz[k]}; }
 Vec3 spin(const NodalState& n, std::size_t k) { return {n.wx[k], n.wy[k], n.wz[k]}; }
 
+// v turned by the rotation vector phi (Rodrigues).
+Vec3 turned(const Vec3& v, const Vec3& phi) {
+  const double angle = norm(phi);
+  if (!(angle > 0.0)) return v;
+  const Vec3 k = scaled(phi, 1.0 / angle);
+  return scaled(v, std::cos(angle)) + scaled(cross(k, v), std::sin(angle)) + scaled(k, dot(k, v) * (1.0 - std::cos(angle)));
+}
+
+// SP-25: the joint's frame turned by the mean of its nodes' rotation increments over the step, made orthonormal again.
+std::array<Vec3, 3> turn_joint_frame(double* frame, const Vec3& mean_turn) {
+  Vec3 x = turned({frame[0], frame[1], frame[2]}, mean_turn), y = turned({frame[3], frame[4], frame[5]}, mean_turn);
+  x = scaled(x, 1.0 / norm(x));
+  y = y - scaled(x, dot(x, y));
+  y = scaled(y, 1.0 / norm(y));
+  const Vec3 z = cross(x, y);
+  const Vec3 axes[3] = {x, y, z};
+  for (std::size_t a = 0; a < 3; ++a) frame[3 * a] = axes[a].x, frame[3 * a + 1] = axes[a].y, frame[3 * a + 2] = axes[a].z;
+  return {x, y, z};
+}
+
+Vec3 in_frame(const std::array<Vec3, 3>& f, const Vec3& v) { return {dot(f[0], v), dot(f[1], v), dot(f[2], v)}; }
+Vec3 from_frame(const std::array<Vec3, 3>& f, double a, double b, double c) {
+  return scaled(f[0], a) + scaled(f[1], b) + scaled(f[2], c);
+}
+
+// /PROP/TYPE45: the joint's six degrees of freedom in its own frame (eq. SP-25): the offset of node 2 from node 1
+// less the rest offset, held by the blocking stiffness and damping the engine took at its first step; the relative
+// rotation, the sum of each step's increment in the frame, held by the free rotations' laws.
+GroupStepResult joint_forces(const ElementTable& table, const ElementGroup& group, const SpringGroupParameters& p,
+                             NodalState& nodes, SpringState& state, double dt) {
+  GroupStepResult result;
+  const bool recording = state.records.on(group.begin);
+  SpringGroupParameters own = p;
+  for (std::int32_t e = group.begin; e < group.end; ++e) {
+    const auto ue = static_cast<std::size_t>(e);
+    if (recording && !(state.deleted[ue] & kElementElsewhere)) state.records.clear(ue);
+    if (state.deleted[ue] & kElementElsewhere) continue;
+    const std::int32_t* n = table.nodes_of(ue);
+    const Vec3 w1 = spin(nodes, static_cast<std::size_t>(n[0])), w2 = spin(nodes, static_cast<std::size_t>(n[1]));
+    const std::array<Vec3, 3> f = turn_joint_frame(&state.joint_frame[9 * ue], scaled(w1 + w2, 0.5 * dt));
+    const Vec3 offset = in_frame(f, node_position(nodes, n[1]) - node_position(nodes, n[0]));
+    const Vec3 turn = in_frame(f, scaled(w2 - w1, dt));
+    const double* rest = &state.rest_offset[3 * ue];
+    const double* last = &state.elongation[kSpringDofs * ue];
+    const std::array<double, kSpringDofs> delta{offset.x - rest[0], offset.y - rest[1], offset.z - rest[2],
+                                                last[3] + turn.x,   last[4] + turn.y,   last[5] + turn.z};
+    const double* blocking = &state.joint[SpringState::kJointValues * ue];
+    for (std::size_t d = 0; d < 3; ++d) own.dof[d].stiffness = blocking[0], own.dof[d].damping = blocking[2];
+    std::array<double, kSpringDofs> force{};
+    bool broken = false;
+    if (!six_law_step(own, state, e, delta, dt, result, force, broken)) continue;
+    const Vec3 on2 = from_frame(f, force[0], force[1], force[2]), moment = from_frame(f, force[3], force[4], force[5]);
+    hand_two_node_load(nodes, state.records, recording, ue, n, on2, scaled(moment, -1.0), moment);
+    close_element(state, result, e, blocking[3], broken);  // its bodies' step on it (SP-25)
+  }
+  return result;
+}
+
 // The beam-type spring's frame at the current positions: X along the nodes; Y the last one turned by the nodes'
 // mean rotation over the step and made normal to X; Z = X x Y (eq. SP-15).
 std::array<Vec3, 3> beam_frame(const Vec3& x_axis, Vec3 y, const Vec3& mean_spin, double dt) {
@@ -633,7 +694,9 @@ GroupStepResult spring_forces(const ElementTable& table, const ElementGroup& gro
                               const std::vector<SkewAxes>& skew_axes) {
   switch (p.frame) {
     case SpringFrame::Axial: return axial_spring_forces(table, group, p, nodes, state, dt, time);
-    case SpringFrame::Global: return general_spring_forces(table, group, p, nodes, state, dt, time, skew_axes);
+    case SpringFrame::Global:
+      if (p.joint.on) return joint_forces(table, group, p, nodes, state, dt);
+      return general_spring_forces(table, group, p, nodes, state, dt, time, skew_axes);
     case SpringFrame::Beam: return beam_spring_forces(table, group, p, nodes, state, dt, time);
   }
   return {};

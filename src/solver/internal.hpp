@@ -46,6 +46,10 @@ void setup_beams(const Model& model, SolverState& state);
 void setup_trusses(const Model& model, SolverState& state);
 // The springs' steps again from the masses SpringState::node_held holds (after a tie changed a node's, TI-12).
 void refresh_spring_steps(const Model& model, SolverState& state);
+// /PROP/TYPE45: each joint's blocking stiffness, damping and step from the bodies it joins at the engine deck's first
+// step `dt` (docs/theory/spring.md, SP-25).
+void resolve_joints(const Model& model, SolverState& state, double dt);
+bool has_joints(const Model& model);
 void setup_rigid_walls(const Model& model, SolverState& state);
 
 // Nodal time step of the cycle with mass scaling (/DT/NODA/CST): adds mass where the nodal step (on the stiffness

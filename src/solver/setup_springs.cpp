@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <vector>
 
+#include <Eigen/Dense>
+
 #include "crumple/core/geometry.hpp"
 #include "crumple/core/vec3.hpp"
 #include "crumple/elements/spring.hpp"
@@ -51,7 +53,67 @@ void setup_spring_steps(const Model& m, SolverState& s) {
   refresh_spring_steps(m, s);
 }
 
+// SP-25: what a joint takes of a rigid body: its mass, its smallest principal inertia, and the joint node's distance
+// from its centre (the main node, which sits there).
+struct JointBody {
+  double mass = 0.0, least_inertia = 0.0, arm = 0.0;
+};
+JointBody joint_body(const SolverState& s, const RigidBodyState& body, std::int32_t node) {
+  Eigen::Matrix3d inertia;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) inertia(i, j) = body.inertia_body[static_cast<std::size_t>(3 * i + j)];
+  const double least = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(inertia, Eigen::EigenvaluesOnly).eigenvalues()(0);
+  return {body.mass, least, norm(node_position(s.nodes, node) - node_position(s.nodes, body.main_node))};
+}
+
 }  // namespace
+
+bool has_joints(const Model& m) {
+  for (const ElementGroup& group : m.element_groups)
+    if (group.kind == ElementKind::Spring && m.properties[static_cast<std::size_t>(group.property)].spring.joint.on)
+      return true;
+  return false;
+}
+
+// SP-25 (measured on the reference's listing of its automatic stiffness): with m the smaller body mass, I the
+// smallest principal inertia of the two bodies and d the larger distance of a joint node from its body's centre,
+// K_t = ScF min(2 m, 0.8 I / d^2) / (4.1 dt^2), K_r = ScF I / (4.1 dt^2); the translations damped at
+// Cr sqrt(K_t m1 m2 / (m1 + m2)). Each body steps on it as a held mass, eq. SP-4.
+void resolve_joints(const Model& m, SolverState& s, double dt) {
+  std::vector<std::int32_t> body_of(s.nodes.size(), -1);
+  for (std::size_t b = 0; b < s.bodies.size(); ++b) {
+    for (std::int32_t node : s.bodies[b].secondary) body_of[static_cast<std::size_t>(node)] = static_cast<std::int32_t>(b);
+    body_of[static_cast<std::size_t>(s.bodies[b].main_node)] = static_cast<std::int32_t>(b);
+  }
+  const ElementTable& table = m.elements[static_cast<int>(ElementKind::Spring)];
+  for (std::size_t g = 0; g < m.element_groups.size(); ++g) {
+    const ElementGroup& group = m.element_groups[g];
+    if (group.kind != ElementKind::Spring || !s.spring_groups[g].joint.on) continue;
+    const SpringJoint& joint = s.spring_groups[g].joint;
+    for (auto e = static_cast<std::size_t>(group.begin); e < static_cast<std::size_t>(group.end); ++e) {
+      const std::int32_t* n = table.nodes_of(e);
+      JointBody b[2];
+      for (int a = 0; a < 2; ++a)
+        b[a] = joint_body(s, s.bodies[static_cast<std::size_t>(body_of[static_cast<std::size_t>(n[a])])], n[a]);
+      const double mass = std::min(b[0].mass, b[1].mass), inertia = std::min(b[0].least_inertia, b[1].least_inertia);
+      const double arm = std::max(b[0].arm, b[1].arm), per_step = joint.stiffness_scale / (4.1 * dt * dt);
+      const double translation = per_step * (arm > 0.0 ? std::min(2.0 * mass, 0.8 * inertia / (arm * arm)) : 2.0 * mass);
+      const double reduced = b[0].mass * b[1].mass / (b[0].mass + b[1].mass);
+      double* v = &s.springs.joint[SpringState::kJointValues * e];
+      v[0] = translation, v[1] = per_step * inertia;
+      v[2] = joint.critical_damping * std::sqrt(translation * reduced);
+      double step = 1e30;
+      const SpringGroupParameters& p = s.spring_groups[g];
+      for (int a = 0; a < 2; ++a) {
+        step = std::min(step, held_mass_step(b[a].mass, v[0], v[2]));
+        for (std::size_t d = 3; d < kSpringDofs; ++d)
+          step = std::min(step, held_mass_step(b[a].least_inertia, p.dof[d].stiffness, p.dof[d].damping));
+      }
+      v[3] = step;
+    }
+  }
+  refresh_spring_steps(m, s);
+}
 
 void refresh_spring_steps(const Model& m, SolverState& s) {
   const ElementTable& table = m.elements[static_cast<int>(ElementKind::Spring)];
@@ -60,9 +122,11 @@ void refresh_spring_steps(const Model& m, SolverState& s) {
     if (group.kind != ElementKind::Spring) continue;
     // A pretensioner steps on its own mass and K0, whatever its nodes carry (SP-22, measured).
     const SpringGroupParameters& p = s.spring_groups[g];
+    // A joint steps on the bodies it joins (SP-25).
     for (auto e = static_cast<std::size_t>(group.begin); e < static_cast<std::size_t>(group.end); ++e)
-      s.springs.nodal_step[e] =
-          p.pretension.on ? spring_critical_step(p) : spring_nodal_step(s.springs, table.nodes_of(e), e);
+      s.springs.nodal_step[e] = p.joint.on         ? s.springs.joint[SpringState::kJointValues * e + 3]
+                                : p.pretension.on ? spring_critical_step(p)
+                                                  : spring_nodal_step(s.springs, table.nodes_of(e), e);
   }
 }
 

@@ -151,6 +151,9 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunObse
   bool ended_on_a_cycle = false;  // the loop's last cycle completed: positions, time and outputs advanced
   const bool body_sensors = rigid_bodies_have_sensors(m);
   const StepBound carried = body_sensors ? sensor_bodies_step(m, step_scale(m.run)) : StepBound{};
+  // SP-25: the joints' stiffness at this engine deck's first step; a resumed run keeps the one its snapshot holds,
+  // so that it ends where the run it resumes would have.
+  bool joints_unresolved = options.resume == nullptr && has_joints(m);
   for (;;) {
     if (body_sensors) switch_rigid_bodies_by_sensors(m, s);
     bool elements_deleted = false;
@@ -170,6 +173,7 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunObse
     apply_loads(m, s);
     dt_next = choose_time_step(m, s, events, bound);
     keep(bound);
+    if (joints_unresolved && !events.stop.stopped()) resolve_joints(m, s, dt_next), joints_unresolved = false;
     warn_step_drop(s, element_step, dt_next, control, events);
     if (events.stop.stopped()) break;
     clock.lap(phases.loads);

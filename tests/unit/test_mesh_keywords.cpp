@@ -28,6 +28,16 @@ TEST(MeshKeywords, PlateDeckReads) {
   EXPECT_NEAR(m.nodal_mass[1], 0.5 * 7800.0 * 1e-3 * 1e-4, 1e-15);
 }
 
+TEST(MeshKeywords, NodeOfIdZeroIsSkippedWithAWarning) {
+  // The reference keeps a /NODE of id 0 (its QA deck of the KJOINT2 joint has one); no card can name it.
+  test::TempDir dir;
+  const Deck d = read_deck(test::write_deck(dir, "/NODE\n" + I(0) + R(5.0) + R(5.0) + R(5.0) + "\n"));
+  EXPECT_EQ(d.model.nodes.size(), 6u);
+  std::string warnings;
+  for (const auto& w : d.report.warnings) warnings += w.message + "\n";
+  EXPECT_NE(warnings.find("a node of id 0"), std::string::npos) << warnings;
+}
+
 TEST(MeshKeywords, ElementsOrderedByPartInGroupsOfAtMost128) {
   test::TempDir dir;
   std::string extra = "/NODE\n";

@@ -541,6 +541,7 @@ TEST(SpringKeywords, OrientationNodeOnlyForBeamTypeSprings) {
   EXPECT_EQ(springs.orientation_node[0], m.index.nodes.at(103));
 }
 
+
 }  // namespace test_spring_keywords
 
 namespace test_spring_keywords {
@@ -568,6 +569,7 @@ TEST(SpringKeywords, AxisymmetricSpringIsABeamTypeSpringWithRadialLaws) {
   EXPECT_DOUBLE_EQ(s.dof[1].delta_max, 0.05);
   EXPECT_DOUBLE_EQ(s.dof[5].delta_max, 0.25);  // the bending's limit, on its magnitude (SP-20)
 }
+
 
 }  // namespace test_spring_keywords
 
@@ -599,6 +601,77 @@ TEST(SpringKeywords, BeamTypeSpringFailureCriteria) {
   EXPECT_DOUBLE_EQ(s.dof[0].rate_n, 1.0);
   EXPECT_DOUBLE_EQ(s.dof[0].alpha, 1.0);
   EXPECT_DOUBLE_EQ(s.dof[0].beta, 3.0);
+}
+
+
+namespace {
+// Two rigid bodies of masses 10 and 2 (their /RBODY masses, Jxx = Jyy = Jzz = 1) and their joint 30 (property 31)
+// between node 1 of body 1 and node 2 of body 2, both at the origin; `line1` and `rotation` replace the property's
+// line 1 and its first free rotation's three lines.
+std::string joint_deck(const std::string& line1, const std::string& rotation, bool node_2_on_body = true) {
+  const std::string free_rotation = R(5.0) + I(0) + R(0.0) + R(0.0) + I(0) + "\n" + R(0.5) + I(0) + "\n" + R(0.0) +
+                                    R(0.0) + I(0) + "\n";
+  std::string s = "/NODE\n" + I(1) + R(0.0) + R(0.0) + R(0.0) + "\n" + I(2) + R(0.0) + R(0.0) + R(0.0) + "\n";
+  s += I(3) + R(0.0) + R(0.0) + R(0.0) + "\n";
+  s += I(5) + R(0.0) + R(0.0) + R(0.0) + "\n" + I(6) + R(0.0) + R(0.0) + R(0.0) + "\n";
+  s += "/SPRING/20\n" + I(30) + I(1) + I(2) + "\n/PART/20\njoint\n" + I(31) + I(0) + "\n";
+  s += "/PROP/TYPE45/31\njoint\n" + line1 + "\n" + rotation + free_rotation + free_rotation;
+  s += "/GRNOD/NODE/8\nbody 1\n" + I(1) + "\n/GRNOD/NODE/9\nbody 2\n" + I(node_2_on_body ? 2 : 3) + "\n";
+  for (int b = 1; b <= 2; ++b)
+    s += "/RBODY/" + std::to_string(b) + "\nbody\n" + I(4 + b) + I(0) + I(0) + I(0) + R(b == 1 ? 10.0 : 2.0) +
+         I(7 + b) + I(0) + I(3) + I(0) + "\n" + R(1.0) + R(1.0) + R(1.0) + "\n" + R(0.0) + R(0.0) + R(0.0) + "\n";
+  return s;
+}
+std::string joint_rotation(const std::string& first, const std::string& second = R(0.0) + I(0),
+                           const std::string& third = R(0.0) + R(0.0) + I(0)) {
+  return first + "\n" + second + "\n" + third + "\n";
+}
+std::filesystem::path joint_starter(const test::TempDir& dir, const std::string& cards) {
+  return dir.write("J_0000.rad", test::begin_card("J") + cards + "/END\n");
+}
+}  // namespace
+
+// /PROP/TYPE45 (docs/theory/spring.md, SP-25): ScF 0 is 1, Cr 0 is 0.05, each free rotation's linear law acts; every
+// option Crumple lacks is an error that names its field, and so is a joint node off every rigid body.
+TEST(SpringKeywords, JointReadsItsDefaultsAndRefusesTheRest) {
+  const std::string plain = joint_rotation(R(3.0) + I(0) + R(0.0) + R(0.0) + I(0), R(0.25) + I(0));
+  {
+    test::TempDir dir;
+    const Model m = read_deck(joint_starter(dir, joint_deck(I(1) + R(0.0) + R(0.0) + R(0.0) + I(0) + I(0) + I(0), plain))).model;
+    const SpringSection& s = m.properties[0].spring;
+    EXPECT_TRUE(s.joint.on);
+    EXPECT_EQ(s.frame, SpringFrame::Global);
+    EXPECT_DOUBLE_EQ(s.joint.stiffness_scale, 1.0);
+    EXPECT_DOUBLE_EQ(s.joint.critical_damping, 0.05);
+    EXPECT_DOUBLE_EQ(s.dof[3].stiffness, 3.0);
+    EXPECT_DOUBLE_EQ(s.dof[3].damping, 0.25);
+    EXPECT_DOUBLE_EQ(s.dof[4].stiffness, 5.0);
+    EXPECT_DOUBLE_EQ(s.dof[0].stiffness, 0.0);  // the blocking stiffness is the engine's (SP-25c)
+    EXPECT_EQ(s.mass, 0.0);
+  }
+  {
+    test::TempDir dir;
+    const Model m = read_deck(joint_starter(dir, joint_deck(I(1) + R(0.0) + R(2.0) + R(0.2) + I(0) + I(0) + I(0), plain))).model;
+    EXPECT_DOUBLE_EQ(m.properties[0].spring.joint.stiffness_scale, 2.0);
+    EXPECT_DOUBLE_EQ(m.properties[0].spring.joint.critical_damping, 0.2);
+  }
+  const auto error = [](const std::string& cards) {
+    test::TempDir dir;
+    return test::first_error(joint_starter(dir, cards));
+  };
+  const std::string line1 = I(1) + R(0.0) + R(0.0) + R(0.0) + I(0) + I(0) + I(0);
+  EXPECT_NE(error(joint_deck(I(2) + R(0.0) + R(0.0) + R(0.0), plain)).find("field Type"), std::string::npos);
+  EXPECT_NE(error(joint_deck(I(1) + R(1e5), plain)).find("field Kn"), std::string::npos);
+  EXPECT_NE(error(joint_deck(I(1) + R(0.0) + R(0.0) + R(0.0) + I(4), plain)).find("field sens_ID"), std::string::npos);
+  EXPECT_NE(error(joint_deck(I(1) + R(0.0) + R(0.0) + R(0.0) + I(0) + I(3), plain)).find("field Skew_ID1"),
+            std::string::npos);
+  EXPECT_NE(error(joint_deck(line1, joint_rotation(R(3.0) + I(7)))).find("field fct_Kr1"), std::string::npos);
+  EXPECT_NE(error(joint_deck(line1, joint_rotation(R(3.0) + I(0) + R(-0.1)))).find("field SA1-"), std::string::npos);
+  EXPECT_NE(error(joint_deck(line1, joint_rotation(R(3.0), R(0.0) + I(7)))).find("field fct_Cr1"), std::string::npos);
+  EXPECT_NE(error(joint_deck(line1, joint_rotation(R(3.0), R(0.0) + I(0), R(0.0) + R(5.0)))).find("field FM1"),
+            std::string::npos);
+  const std::string off_body = error(joint_deck(line1, plain, false));
+  EXPECT_NE(off_body.find("/RBODY of its own"), std::string::npos) << off_body;
 }
 
 }  // namespace test_spring_keywords

@@ -12,7 +12,8 @@
 // (tied_spot_weld), trusses letting go over their last cycles (truss_tower_fails), a frame of beams past yield
 // (beam_frame_plastic), a bolt on an /RBE2 (rbe2_bolt_beam), a mass on an /RBE3 (rbe3_mass_dependent) and an
 // axisymmetric spring's radial law (spring_axi_swinging_mass), pretensioners, one locked (spring_pretension_locks), and
-// a hardening spring's rate effects (spring_rate_hardening) and sensor-switched springs (spring_sensor_switches).
+// a hardening spring's rate effects (spring_rate_hardening), sensor-switched springs (spring_sensor_switches) and
+// joints (joint_free_bodies).
 #include <gtest/gtest.h>
 #include <hdf5.h>
 
@@ -184,7 +185,10 @@ INSTANTIATE_TEST_SUITE_P(
                       // SP-23: the rate of the first cycle after the restart, from the elongations it kept
                       RestartCase{"spring_rate_hardening", kPeerDecks / "spring_rate_hardening" / "SPRRATE_0000.rad", 700},
                       // SP-24: springs switched on, off and taken at rest anew by sensors, between two switches
-                      RestartCase{"spring_sensor_switches", kPeerDecks / "spring_sensor_switches" / "SPRSENS_0000.rad", 2000}),
+                      RestartCase{"spring_sensor_switches", kPeerDecks / "spring_sensor_switches" / "SPRSENS_0000.rad", 2000},
+                      // SP-25: the joint's turned frame and its rotations so far; its stiffness taken anew at the
+                      // resumed run's first step, the same /DTIX step
+                      RestartCase{"joint_free_bodies", kPeerDecks / "joint_free_bodies" / "JFREE_0000.rad", 3000}),
     [](const auto& p) { return std::string(p.param.name); });
 
 TEST(Restart, FileOfAnotherModelIsRefusedWithItsCounts) {

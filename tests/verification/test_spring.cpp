@@ -330,4 +330,40 @@ TEST(Spring, TiedInterfaceForceIsTheWeldsForce) {
   EXPECT_LT(worst, 1e-9 * largest) << "largest weld force " << largest;
 }
 
+
+// A spherical joint (docs/theory/spring.md, SP-25) between a held body of 10 kg and a free one of 2 kg, both of unit
+// inertia, their centres at the joint (d = 0): the automatic blocking stiffness is the mass term 2 m_min / (4.1 dt^2)
+// at the /DTIX step, the damping Cr sqrt(K m1 m2 / (m1 + m2)). The free body, launched at 1 m/s along z, moves as the
+// central-difference oscillator of those K and c: z_(n+1) - 2 z_n + z_(n-1) = -(K z_n + c (z_n - z_(n-1)) / dt) dt^2 / m2
+// at every cycle from the second on (the first step is taken before the joint's stiffness), to round-off.
+TEST(Spring, JointHoldsABodyOnItsAutomaticStiffness) {
+  test::TempDir dir;
+  const double dt = 1e-3, m1 = 10.0, m2 = 2.0, cr = 0.05;
+  std::string d = node_cards({{1, 0.0, 0.0, 0.0}, {2, 0.0, 0.0, 0.0}, {5, 0.0, 0.0, 0.0}, {6, 0.0, 0.0, 0.0}});
+  d += "/SPRING/1\n" + I(30) + I(1) + I(2) + "\n/PART/1\njoint\n" + I(1) + I(0) + "\n";
+  d += "/PROP/TYPE45/1\njoint\n" + I(1) + R(0.0) + R(0.0) + R(cr) + "\n";
+  for (int k = 0; k < 3; ++k) d += R(0.0) + "\n" + R(0.0) + "\n" + R(0.0) + "\n";
+  d += node_group(8, {1}) + node_group(9, {2}) + node_group(3, {5}) + node_group(4, {6});
+  for (int b = 1; b <= 2; ++b)
+    d += "/RBODY/" + std::to_string(b) + "\nbody\n" + I(4 + b) + I(0) + I(0) + I(0) + R(b == 1 ? m1 : m2) + I(7 + b) +
+         I(0) + I(3) + "\n" + R(1.0) + R(1.0) + R(1.0) + "\n" + R(0.0) + R(0.0) + R(0.0) + "\n";
+  d += boundary_condition(1, "111 111", 3) + initial_velocity(1, 0.0, 0.0, 1.0, 4);
+  std::vector<double> z;
+  const RunResult r = run_deck(dir, d, 0.05, 1e-9, [&](const Model& m, const SolverState& s) {
+    z.push_back(s.nodes.z[node_index(m, 6)]);
+  }, "/DTIX\n1e-3 1e-3\n");
+  ASSERT_EQ(r.summary.status, RunStatus::Normal) << r.summary.message;
+  const double k = 2.0 * std::min(m1, m2) / (4.1 * dt * dt), c = cr * std::sqrt(k * m1 * m2 / (m1 + m2));
+  ASSERT_GT(z.size(), 40u);
+  double worst = 0.0, largest = 0.0;
+  for (std::size_t n = 2; n + 1 < z.size(); ++n) {
+    const double expected = -(k * z[n] + c * (z[n] - z[n - 1]) / dt) * dt * dt / m2;
+    worst = std::max(worst, std::abs(z[n + 1] - 2.0 * z[n] + z[n - 1] - expected));
+    largest = std::max(largest, std::abs(z[n]));
+  }
+  std::printf("joint: K %.6g N/m, c %.6g N s/m, largest recurrence residual %.2e of the largest offset %.3e m\n", k, c,
+              worst, largest);
+  EXPECT_LT(worst, 1e-9 * largest);
+}
+
 }  // namespace crumple::verification::test_spring

@@ -51,6 +51,7 @@ struct SpringGroupParameters {
   SpringFailure failure;  // SP-5b
   std::int32_t skew = -1;  // TYPE8: the skew whose axes its laws act in (SP-9b); -1 the global axes
   SpringSwitch sensor;     // sens_ID, Isflag (SP-24)
+  SpringJoint joint;       // TYPE45: its blocking stiffness and damping are each joint's own (SP-25)
 };
 
 // Ileng 1 (eq. SP-21): the parameters of one spring of rest length `length0` [L] > 0 whose property gives them per

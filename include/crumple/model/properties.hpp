@@ -126,6 +126,15 @@ struct SpringSwitch {
   double on = 0.0, off = 1e300;  // the sensor's window (resolved) [T]
 };
 
+// /PROP/TYPE45 (/PROP/KJOINT2): a spherical joint between two rigid bodies (docs/theory/spring.md, SP-25), a
+// general spring of no mass whose translations are blocked by the stiffness the engine computes at its first step
+// from the bodies' masses and inertias (Kn 0), damped at Cr of critical; its rotations free, each its own linear law.
+struct SpringJoint {
+  bool on = false;
+  double stiffness_scale = 1.0;    // ScF (0 or blank: 1)
+  double critical_damping = 0.05;  // Cr (0 or blank: 0.05), of the blocked degrees of freedom only (measured)
+};
+
 struct SpringSection {
   double mass = 0.0;     // M, the spring's mass, half at each node [M]; > 0 (the reference refuses 0)
   double inertia = 0.0;  // TYPE8 and TYPE13: its rotational inertia, half at each node [M L^2]
@@ -142,10 +151,12 @@ struct SpringSection {
   SpringPretension pretension;  // TYPE32
   SpringSwitch sensor;          // TYPE4, TYPE8, TYPE13
   SpringFailure failure;  // TYPE8, TYPE13, TYPE25 (TYPE4: Ifail 0 on the elongation)
+  SpringJoint joint;      // TYPE45
   int dofs() const { return frame == SpringFrame::Axial ? 1 : kSpringDofs; }
   std::string_view card() const {  // /PROP/<card>
     if (radial) return "SPR_AXI";
     if (pretension.on) return "SPR_PRE";
+    if (joint.on) return "KJOINT2";
     return frame == SpringFrame::Axial ? "SPRING" : frame == SpringFrame::Global ? "SPR_GENE" : "SPR_BEAM";
   }
 };

@@ -11,11 +11,15 @@ void read_nodes(CardReader& reader, DeckContext& context) {
   read_unit_id(reader, 1);
   while (auto line = reader.next_nonblank()) {
     const std::int64_t id = line->id(1, 10, "node_ID", IdKind::Node);
-    if (id <= 0) line->fail(1, 10, "node_ID", "a positive node id");
+    if (id < 0) line->fail(1, 10, "node_ID", "a positive node id");
+    const double x = line->real(11, 20, "X", dim::length), y = line->real(31, 20, "Y", dim::length),
+                 z = line->real(51, 20, "Z", dim::length);
+    if (id == 0) {  // the reference keeps it; no card can name it (0 is none everywhere): it would carry nothing
+      context.warn(line->where(), "/NODE", "a node of id 0, which no card can name, is skipped");
+      continue;
+    }
     nodes.user_id.push_back(id);
-    nodes.x.push_back(line->real(11, 20, "X", dim::length));
-    nodes.y.push_back(line->real(31, 20, "Y", dim::length));
-    nodes.z.push_back(line->real(51, 20, "Z", dim::length));
+    nodes.x.push_back(x), nodes.y.push_back(y), nodes.z.push_back(z);
     context.node_where.push_back(line->where());
   }
 }

@@ -712,6 +712,63 @@ void read_pretension_spring_property(CardReader& reader, DeckContext& context) {
   context.model.properties.push_back(std::move(p));
 }
 
+// A joint's free degree of freedom `name` (XX, YY, ZZ): K, fct_K, SA-, SA+, Icomb; C, fct_C; Kf, FM, fct_FM. Its
+// linear stiffness and damping act (SP-25); the functions, stops and friction are refused with the field named.
+void read_joint_free_rotation(CardReader& reader, DeckContext& context, SpringLaw& law, const std::string& axis) {
+  const Line stiffness = reader.next("Kr, fct_Kr, SA-, SA+, Icomb_r");
+  law.stiffness = stiffness.real(1, 20, "Kr" + axis, dim::moment);
+  if (law.stiffness < 0.0) stiffness.fail(1, 20, "Kr" + axis, "a non-negative rotational stiffness");
+  const auto refuse_id = [&context](const Line& line, int column, const std::string& name, std::string_view what) {
+    if (line.optional_id(column, 10, name, IdKind::Other) != 0)
+      context.unsupported(line.error(column, 10, name, default_only(what)));
+  };
+  const auto refuse_real = [&context](const Line& line, int column, const std::string& name, std::string_view what) {
+    if (line.real(column, 20, name, dim::none) != 0.0)
+      context.unsupported(line.error(column, 20, name, default_only(what)));
+  };
+  refuse_id(stiffness, 21, "fct_Kr" + axis, "a joint's moment function is");
+  refuse_real(stiffness, 31, "SA" + axis + "-", "a joint's stop angle is");
+  refuse_real(stiffness, 51, "SA" + axis + "+", "a joint's stop angle is");
+  refuse_id(stiffness, 71, "Icomb_r" + axis, "a joint's combined stop is");
+  const Line damping = reader.next("Cr, fct_Cr");
+  law.damping = damping.real(1, 20, "Cr" + axis, Dimension{1, 2, -1});
+  if (law.damping < 0.0) damping.fail(1, 20, "Cr" + axis, "a non-negative rotational damping");
+  refuse_id(damping, 21, "fct_Cr" + axis, "a joint's damping function is");
+  const Line friction = reader.next("Kfr, FM, fct_FM");
+  refuse_real(friction, 1, "Kfr" + axis, "a joint's stop and friction stiffness is");
+  refuse_real(friction, 21, "FM" + axis, "a joint's friction moment is");
+  refuse_id(friction, 41, "fct_FM" + axis, "a joint's friction function is");
+}
+
+// /PROP/TYPE45 (/PROP/KJOINT2): the joint (docs/theory/spring.md, SP-25). Line 1 Type, Kn, ScF, Cr, sens_ID,
+// Skew_ID1, Skew_ID2; then three lines per free degree of freedom, for the spherical joint (Type 1) the rotations
+// about X, Y and Z. A general spring of no mass in the global axes whose translations the engine blocks.
+void read_joint_property(CardReader& reader, DeckContext& context) {
+  refuse_narrow_layout(reader);
+  Property p = begin_property(reader, PropertyKind::Spring);
+  SpringSection& s = p.spring;
+  s.frame = SpringFrame::Global, s.joint.on = true;
+  const Line first = reader.next("Type, Kn, ScF, Cr, sens_ID, Skew_ID1, Skew_ID2");
+  if (first.integer(1, 10, "Type") != 1)
+    first.fail(1, 10, "Type", "1 (the spherical joint; the other joint types are not supported by Crumple)");
+  if (first.real(11, 20, "Kn", dim::stiffness) != 0.0)
+    context.unsupported(first.error(11, 20, "Kn", default_only("a given blocking stiffness is")));
+  const double scale = first.real(31, 20, "ScF", dim::none);
+  if (scale < 0.0) first.fail(31, 20, "ScF", "a positive scale of the blocking stiffness (0 or blank: 1)");
+  s.joint.stiffness_scale = scale == 0.0 ? 1.0 : scale;
+  const double critical = first.real(51, 20, "Cr", dim::none);
+  if (critical < 0.0) first.fail(51, 20, "Cr", "a non-negative fraction of critical damping (0 or blank: 0.05)");
+  s.joint.critical_damping = critical == 0.0 ? 0.05 : critical;
+  for (const auto& [column, name, what] : {std::tuple{71, "sens_ID", "a joint switched by a sensor is"},
+                                           {81, "Skew_ID1", "a joint's skew is"}, {91, "Skew_ID2", "a joint's skew is"}})
+    if (first.optional_id(column, 10, name, IdKind::Other) != 0)
+      context.unsupported(first.error(column, 10, name, default_only(what)));
+  constexpr const char* kAxes[3] = {"1", "2", "3"};
+  for (std::size_t d = 0; d < 3; ++d) read_joint_free_rotation(reader, context, s.dof[3 + d], kAxes[d]);
+  reader.finish();
+  context.model.properties.push_back(std::move(p));
+}
+
 // /PROP/TYPE2 (/PROP/TRUSS): the truss's initial cross-section and gap (docs/theory/truss.md).
 void read_truss_property(CardReader& reader, DeckContext& context) {
   refuse_narrow_layout(reader);
@@ -780,6 +837,8 @@ void register_property_keywords(KeywordTable& table) {
   table.push_back({"/PROP/SPR_AXI", DeckPart::Starter, read_axisymmetric_spring_property});
   table.push_back({"/PROP/TYPE32", DeckPart::Starter, read_pretension_spring_property});
   table.push_back({"/PROP/SPR_PRE", DeckPart::Starter, read_pretension_spring_property});
+  table.push_back({"/PROP/TYPE45", DeckPart::Starter, read_joint_property});
+  table.push_back({"/PROP/KJOINT2", DeckPart::Starter, read_joint_property});
 }
 
 }  // namespace crumple::deck

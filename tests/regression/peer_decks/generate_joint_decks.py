@@ -1,0 +1,63 @@
+# Generates the peer decks of /PROP/TYPE45 (KJOINT2) spherical joints between two rigid bodies (docs/theory/spring.md,
+# SP-25): each body one brick of steel carried by a /RBODY, the joint a /SPRING between a node of each body; the
+# bodies hold no deformable element, so /DTIX sets the step the joint's automatic stiffness is taken at. Run from the
+# folder that is to hold the decks; each folder's ref.extract is the reference solver's last printed row on its deck
+# (run-or.sh, then or-extract.py).
+#   joint_pendulum: body 1 held by /BCS, body 2 swung about the joint by its initial velocity and /GRAV; free
+#     rotations with stiffness (and one with damping), Cr 0.02; the blocking stiffness set by the inertia term.
+#   joint_free_bodies: two free bodies of different masses (a /RBODY mass on one, Ispher 1 and ICoG 3 on the other)
+#     driven apart and about by their initial velocities, ScF 2, Cr left at its default 0.05; the joint node off
+#     both bodies' centres.
+import os
+I = lambda *v: "".join("%10d" % x for x in v)
+R = lambda *v: "".join("%20.10g" % x for x in v)
+
+
+def brick_nodes(first, x0, x1, h):
+    out, k = "", first
+    for x in (x0, x1):
+        for y, z in ((-h, -h), (h, -h), (h, h), (-h, h)):
+            out += I(k) + R(x, y, z) + "\n"
+            k += 1
+    return out
+
+
+def rbody(rid, main, group, ispher=0, mass=0.0, icog=0):
+    return ("/RBODY/%d\nbody %d\n" % (rid, rid) + I(main, 0, 0, ispher) + R(mass) + I(group, 0, icog, 0) + "\n"
+            + R(0, 0, 0) + "\n" + R(0, 0, 0) + "\n" + I(0, 0) + "\n")
+
+
+def rotation(k, c=0.0):
+    return R(k) + I(0) + R(0, 0) + I(0) + "\n" + R(c) + I(0) + "\n" + R(0, 0) + I(0) + "\n"
+
+
+def deck(name, run, joint_at, second, scale, critical, rotations, bodies, loads, end, dt):
+    s = "/BEGIN\n%s\n      2019         0\n%20s%20s%20s\n%20s%20s%20s\n" % (run, 'kg', 'm', 's', 'kg', 'm', 's')
+    s += "/MAT/ELAST/1\nsteel\n" + R(7800) + "\n" + R(2.1e11, 0.3) + "\n"
+    s += "/NODE\n" + I(1) + R(*joint_at) + "\n" + I(2) + R(*joint_at) + "\n" + I(5) + R(-0.15, 0, 0) + "\n"
+    s += I(6) + R(*second) + "\n" + brick_nodes(11, -0.2, -0.1, 0.05) + brick_nodes(21, 0.1, 0.3, 0.05)
+    s += "/PART/1\njoint\n" + I(1, 0) + "\n/SPRING/1\n" + I(30, 1, 2) + "\n"
+    s += "/PART/2\nbodies\n" + I(2, 1) + "\n/BRICK/2\n" + I(10, *range(11, 19)) + "\n" + I(20, *range(21, 29)) + "\n"
+    s += "/PROP/SOLID/2\nbricks\n" + I(0) + "\n" + R(0) + "\n" + R(0) + "\n"
+    s += "/PROP/TYPE45/1\njoint\n" + I(1) + R(0, scale, critical) + I(0, 0, 0) + "\n"
+    for k, c in rotations:
+        s += rotation(k, c)
+    s += "/GRNOD/NODE/8\nbody 1\n" + I(1, *range(11, 19)) + "\n/GRNOD/NODE/9\nbody 2\n" + I(2, *range(21, 29)) + "\n"
+    s += bodies + loads
+    s += "/TH/SPRING/1\njoint\nDEF       \n" + I(30) + "\n/TH/RBODY/2\nbodies\nDEF       \n" + I(1, 2) + "\n/END\n"
+    os.makedirs(name, exist_ok=True)
+    open(os.path.join(name, run + "_0000.rad"), "w").write(s)
+    open(os.path.join(name, run + "_0001.rad"), "w").write(
+        "/RUN/%s/1\n%g\n/TFILE\n%g\n/PRINT/-200\n/DTIX\n%g %g\n" % (run, end, end / 200, dt, dt))
+
+
+deck("joint_pendulum", "JPEND", (0, 0, 0), (0.2, 0, 0), 0, 0.02, ((10, 0), (20, 0.5), (30, 0)),
+     rbody(1, 5, 8) + rbody(2, 6, 9) + "/GRNOD/NODE/3\nheld\n" + I(5) + "\n/BCS/1\nheld\n   111 111" + I(0, 3) + "\n",
+     "/GRNOD/NODE/4\nswung\n" + I(6) + "\n/INIVEL/TRA/1\nswing\n" + R(0, 1.0, 2.0) + I(4, 0) + "\n"
+     + "/FUNCT/7\none\n" + R(0, 1) + "\n" + R(100, 1) + "\n/GRAV/1\ngravity\n" + I(7) + "%10s" % "Z" + I(0, 0, 0)
+     + " " * 10 + R(0, -9.81) + "\n", 0.5, 1e-4)
+deck("joint_free_bodies", "JFREE", (0.02, 0.01, 0), (0.0, 0, 0), 2, 0, ((0, 0), (0, 0), (50, 0)),
+     rbody(1, 5, 8, mass=200.0) + rbody(2, 6, 9, ispher=1, icog=3),
+     "/GRNOD/NODE/3\nfirst\n" + I(5) + "\n/GRNOD/NODE/4\nsecond\n" + I(6) + "\n"
+     + "/INIVEL/TRA/1\nfirst\n" + R(-1.0, 0.5, 0) + I(3, 0) + "\n/INIVEL/TRA/2\nsecond\n" + R(1.5, 0, -1.0) + I(4, 0) + "\n"
+     + "/INIVEL/ROT/3\nsecond spins\n" + R(0, 0, 2.0) + I(4, 0) + "\n", 0.3, 5e-5)
