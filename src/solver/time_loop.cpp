@@ -111,6 +111,39 @@ bool end_state_energies(const Model& m, const SolverState& s, Exchange* exchange
   return true;
 }
 
+// E-3b (docs/theory/energy.md): a printed row of cycle n as the reference's row at t^n, taken in the cycle that
+// computes the forces at x^n once its velocities are integrated: the elements' energies at x^n, the kinetic energy of
+// the velocity at t^n between the half steps around it (weighted as E-3's), and the work and contact energy to t^n,
+// between `before` (this cycle's start) and the loop's. The loop's state is left as it was.
+EnergyBalanceState energies_at_cycle(const Model& m, SolverState& s, const solver::VelocityScratch& scratch,
+                                     const std::vector<RigidBodyState>& bodies_before,
+                                     const EnergyBalanceState& before, double dt_average) {
+  const double w = s.cycle + s.cycles_done == 0 ? 0.0 : 0.5 * s.dt / dt_average;
+  auto at_cycle = [w](double before_value, double after) { return before_value + w * (after - before_value); };
+  NodalState& n = s.nodes;
+  const std::array<std::vector<double>*, 6> v{&n.vx, &n.vy, &n.vz, &n.wx, &n.wy, &n.wz};
+  std::array<std::vector<double>, 6> integrated;
+  for (std::size_t d = 0; d < 6; ++d) {
+    integrated[d] = *v[d];
+    for (std::size_t k = 0; k < n.size(); ++k) (*v[d])[k] = at_cycle(scratch.before[d][k], integrated[d][k]);
+  }
+  std::vector<RigidBodyState> bodies_integrated = s.bodies;
+  for (std::size_t b = 0; b < s.bodies.size(); ++b)
+    for (std::size_t i = 0; i < 3; ++i) {
+      s.bodies[b].velocity[i] = at_cycle(bodies_before[b].velocity[i], bodies_integrated[b].velocity[i]);
+      s.bodies[b].omega[i] = at_cycle(bodies_before[b].omega[i], bodies_integrated[b].omega[i]);
+    }
+  const EnergyBalanceState loop = s.energy;
+  solver::update_energies(m, s);
+  EnergyBalanceState row = s.energy;
+  row.external_work = at_cycle(before.external_work, loop.external_work);
+  row.contact = at_cycle(before.contact, loop.contact);
+  s.energy = loop;
+  for (std::size_t d = 0; d < 6; ++d) *v[d] = std::move(integrated[d]);
+  s.bodies = std::move(bodies_integrated);
+  return row;
+}
+
 }  // namespace
 
 RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunObserver& observer, SolverState& s,
@@ -154,7 +187,15 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunObse
   // SP-25: the joints' stiffness at this engine deck's first step; a resumed run keeps the one its snapshot holds,
   // so that it ends where the run it resumes would have.
   bool joints_unresolved = options.resume == nullptr && has_joints(m);
+  // E-3b: the listing's row of a cycle is printed in that cycle (not at the start's, which observer.start printed).
+  const long long start_cycle = s.cycle;
+  double row_dt = s.dt;  // the step that led to the row's time, and what set it
+  StepControl row_control;
+  std::vector<RigidBodyState> bodies_before;
   for (;;) {
+    const bool row_now = s.cycle != start_cycle && s.cycle % schedule.print_every == 0;
+    const EnergyBalanceState energy_before = s.energy;
+    if (row_now) bodies_before = s.bodies;
     if (body_sensors) switch_rigid_bodies_by_sensors(m, s);
     bool elements_deleted = false;
     StepBound bound = compute_element_forces(m, s, events, elements_deleted, options.exchange);
@@ -188,6 +229,13 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunObse
     integrate(s, scratch, dt_average, selective);
     apply_constraints(m, s, scratch, dt_average, dt_next);
     record_step_outputs(m, s, scratch, dt_average, dt_next);
+    if (row_now) {
+      const EnergyBalanceState loop_energy = s.energy;
+      s.energy = energies_at_cycle(m, s, scratch, bodies_before, energy_before, dt_average);
+      observer.row(s, row_dt, row_control);
+      s.energy = loop_energy;
+    }
+    row_dt = dt_next, row_control = control;
     advance_positions(s, dt_next);
     if (!m.skews.empty()) update_skew_axes(m, s);  // SK-3: the loads, conditions and histories of the new positions
     clock.lap(phases.update);
@@ -198,7 +246,7 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunObse
     // shows the progress line with the last one taken.
     if (due.energies() || (show_progress && !s.domain.several())) update_energies(m, s);
     if (due.energies()) {
-      if (due.print && !due.finished) observer.row(s, dt_next, control);  // the last row after the loop (E-3)
+      // A printed row: in the next cycle (E-3b); the last row after the loop (E-3).
       check_run_limits(m, s, events);
       if (!events.pending.empty()) observer.events(events);
       if (events.stop.stopped()) break;
