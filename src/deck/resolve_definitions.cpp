@@ -326,6 +326,16 @@ void move_functions(Resolver& r) {
   }
 }
 
+// A pretensioner's functions f1 and f2 (docs/theory/spring.md, SP-22b), by their ids.
+void resolve_pretension_functions(Resolver& r, Property& p) {
+  SpringPretension& pre = p.spring.pretension;
+  const auto find = [&](std::int64_t id, std::string_view field) {
+    return r.find_optional(r.model.index.functions, id, p.where, keyword_of(p), std::string(field), "function");
+  };
+  pre.stroke_function = find(pre.stroke_function_id, "fct_ID1");
+  pre.time_function = find(pre.time_function_id, "fct_ID2");
+}
+
 // A spring law's functions (docs/theory/spring.md): the force or yield curve, H 4's lower curve and the rate
 // functions g and h (SP-23), by their ids.
 void resolve_spring_functions(Resolver& r, Property& p, int d) {
@@ -404,8 +414,10 @@ void resolve_definitions(Resolver& r) {
   check_shell_formulations(r);
   check_line_element_materials(r);
   for (Property& p : m.properties)
-    if (p.kind == PropertyKind::Spring)
+    if (p.kind == PropertyKind::Spring) {
       for (int d = 0; d < p.spring.dofs(); ++d) resolve_spring_functions(r, p, d);
+      if (p.spring.pretension.on) resolve_pretension_functions(r, p);
+    }
   for (Material& mat : m.materials) {
     if (mat.law != MaterialLaw::Tabulated) continue;
     const std::string keyword = fmt::format("/MAT/PLAS_TAB/{}", mat.user_id);

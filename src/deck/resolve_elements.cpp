@@ -21,10 +21,11 @@ std::int32_t orientation_node(Resolver& r, ElementKind kind, const RawElements& 
   const Model& m = r.model;
   const std::string keyword = fmt::format("{}/{}", describe(kind).card, raw.part_id[e]);
   const std::int32_t property = m.parts[static_cast<std::size_t>(part)].property;
-  if (kind == ElementKind::Spring && m.properties[static_cast<std::size_t>(property)].spring.frame != SpringFrame::Beam) {
+  const SpringSection& spring = m.properties[static_cast<std::size_t>(property)].spring;
+  if (kind == ElementKind::Spring && spring.frame != SpringFrame::Beam && spring.joint.frame_nodes() == 0) {
     r.context.unsupported(DeckError(raw.orientation_where[e], keyword, "node_ID3",
-                                    "blank (a third node orients /PROP/TYPE13 and TYPE25 springs only; on another type it is not "
-                                    "supported by Crumple)",
+                                    "blank (a third node orients /PROP/TYPE13 and TYPE25 springs and revolute joints only; on "
+                                    "another type it is not supported by Crumple)",
                                     std::to_string(id)));
     return -1;
   }

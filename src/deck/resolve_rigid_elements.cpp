@@ -222,6 +222,13 @@ void refuse_joints_off_bodies(Resolver& r) {
     if (!p.spring.joint.on) continue;
     for (auto e = static_cast<std::size_t>(group.begin); e < static_cast<std::size_t>(group.end); ++e) {
       const std::int32_t* n = table.nodes_of(e);
+      if (p.spring.joint.frame_nodes() > 0) {  // the revolute joint's X: from node 1 to node_ID3 (SP-25f)
+        const std::int32_t third = table.orientation_node.empty() ? -1 : table.orientation_node[e];
+        if (third < 0 || !(norm(m.nodes.position(third) - m.nodes.position(n[0])) > 0.0))
+          r.error(p.where, fmt::format("/PROP/TYPE45/{}", p.user_id), "node_ID3",
+                  "on the joint's /SPRING card a third node away from its first, which sets the revolute joint's axis",
+                  fmt::format("/SPRING {}", table.user_id[e]));
+      }
       const std::int32_t a = body_of[static_cast<std::size_t>(n[0])], b = body_of[static_cast<std::size_t>(n[1])];
       if (a >= 0 && b >= 0 && a != b) continue;
       r.error(p.where, fmt::format("/PROP/TYPE45/{}", p.user_id), "Kn",

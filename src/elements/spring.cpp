@@ -49,6 +49,8 @@ SpringGroupParameters spring_parameters(const SpringSection& s, const std::vecto
   p.mass = s.mass, p.inertia = s.inertia, p.frame = s.frame, p.radial = s.radial;
   p.per_unit_length = s.per_unit_length, p.pretension = s.pretension, p.failure = s.failure, p.sensor = s.sensor;
   p.joint = s.joint;
+  if (s.pretension.stroke_function >= 0) p.pretension_stroke = &functions[static_cast<std::size_t>(s.pretension.stroke_function)];
+  if (s.pretension.time_function >= 0) p.pretension_time = &functions[static_cast<std::size_t>(s.pretension.time_function)];
   if (p.joint.on)  // SP-25: a joint's step is its bodies' (SpringState::joint), not its laws' on its massless nodes
     for (SpringDofParameters& d : p.dof) d.step_stiffness = 0.0, d.step_damping = 0.0;
   for (int d = 0; d < s.dofs(); ++d)
@@ -70,6 +72,41 @@ SpringGroupParameters spring_of_length(const SpringGroupParameters& p, double le
     if (limits && d.delta_max < 1e29) d.delta_max *= length0;
   }
   return q;
+}
+
+// SP-22c (measured on the reference's internal energy at t = 0, 48 probes): with f1, the area under S f1 over
+// [max(u_lo, x_first), 0] in f1's own abscissa, its segments (split at f1's points) counted where f1 >= 0 at both
+// ends, over Sd, plus (S f1(u_lo))^2 / (2 K0) when u_lo is within f1 and its lowest segment counted; u_lo = -D1 Sd,
+// or without D1 f1's first point where f1 <= 0 there (else nothing); S = Sf g0, g0 f2 at its first point (1 without
+// f2). With f2 alone, (Sf g0)^2 / (2 K0). Linear mode: |E1|.
+double pretension_stored_energy(const SpringGroupParameters& p) {
+  const SpringPretension& pre = p.pretension;
+  if (!pre.by_functions()) return std::abs(pre.energy);
+  const double k0 = p.dof[0].stiffness;
+  const double g0 = p.pretension_time != nullptr ? p.pretension_time->y.front() : 1.0;
+  const double scale = pre.force_scale * g0;
+  if (p.pretension_stroke == nullptr) return scale * scale / (2.0 * k0);
+  const Function& f = *p.pretension_stroke;
+  const double first = f.x.front();
+  double lower = 0.0;
+  if (pre.stroke != 0.0) lower = -pre.stroke * pre.stroke_scale;
+  else if (f(first) <= 0.0) lower = first;
+  else return 0.0;
+  std::vector<double> at{std::max(lower, first)};
+  for (double x : f.x)
+    if (x > at.front() && x < 0.0) at.push_back(x);
+  at.push_back(0.0);
+  double area = 0.0;
+  bool lowest_counted = false;
+  for (std::size_t i = 0; i + 1 < at.size(); ++i) {
+    const double a = f(at[i]), b = f(at[i + 1]);
+    if (!(a >= 0.0 && b >= 0.0) || !(at[i + 1] > at[i])) continue;
+    area += 0.5 * (a + b) * (at[i + 1] - at[i]);
+    if (i == 0) lowest_counted = true;
+  }
+  double energy = scale * area / pre.stroke_scale;
+  if (lower >= first && lowest_counted) energy += (scale * f(lower)) * (scale * f(lower)) / (2.0 * k0);
+  return energy;
 }
 
 SpringStepStiffness spring_step_stiffness(const SpringGroupParameters& p, double length) {
@@ -276,10 +313,29 @@ bool outside(const SpringDofParameters& p, double delta) { return delta < p.delt
 // since the sensor came on.
 constexpr double kBeforeSensor = 0.0, kPretensioning = 1.0, kLocked = 2.0;
 
-// SP-22: an elastic K0 spring whose force, while the sensor is on and the pretension F1 - K1 delta is positive,
-// is at least that pretension; with Ilock 2 it stays elastic once it has held more. Its work as SP-3.
-double pretension_force(const SpringPretension& pre, const SpringDofParameters& law, LawHistory h, double delta,
-                        double time, double& work) {
+// SP-22, SP-22b: the pretension at shortening `shortening` and time `time`, and whether it holds the spring (positive,
+// and in function mode within the stroke D1, when one is given).
+struct Pretension {
+  double force = 0.0;
+  bool live = false;
+};
+Pretension pretension_at(const SpringGroupParameters& p, double shortening, double time) {
+  const SpringPretension& pre = p.pretension;
+  if (!pre.by_functions()) {
+    const double force = pre.force - pre.stiffness * shortening;
+    return {force, force > 0.0};
+  }
+  double force = pre.force_scale;
+  if (p.pretension_stroke != nullptr) force *= (*p.pretension_stroke)(-shortening / pre.stroke_scale);
+  if (p.pretension_time != nullptr) force *= (*p.pretension_time)((time - pre.activation_time) / pre.time_scale);
+  return {force, force > 0.0 && (pre.stroke == 0.0 || shortening <= pre.stroke)};
+}
+
+// SP-22: an elastic K0 spring whose force, while the sensor is on and the pretension is live, is at least that
+// pretension; with Ilock 2 it stays elastic once it has held more. Its work as SP-3.
+double pretension_force(const SpringGroupParameters& p, LawHistory h, double delta, double time, double& work) {
+  const SpringPretension& pre = p.pretension;
+  const SpringDofParameters& law = p.dof[0];
   const double increment = delta - h.elongation;
   const double elastic = h.force + law.stiffness * increment;
   double& shortening = h.plastic_a;
@@ -290,9 +346,9 @@ double pretension_force(const SpringPretension& pre, const SpringDofParameters& 
   double force = elastic;
   if (phase == kPretensioning) {
     shortening -= increment;
-    const double pretension = pre.force - pre.stiffness * shortening;
-    if (pretension > 0.0 && elastic > pretension && pre.lock) phase = kLocked;
-    if (pretension > 0.0 && elastic <= pretension) force = pretension;
+    const Pretension pretension = pretension_at(p, shortening, time);
+    if (pretension.live && elastic > pretension.force && pre.lock) phase = kLocked;
+    if (pretension.live && elastic <= pretension.force) force = pretension.force;
   }
   work += 0.5 * (h.force + force) * increment;
   h.force = force, h.elastic = force, h.elongation = delta;
@@ -383,7 +439,7 @@ GroupStepResult axial_spring_forces(const ElementTable& table, const ElementGrou
     }
     double work = 0.0;
     const double force = p.pretension.on
-                             ? pretension_force(p.pretension, p.dof[0], slot_history(state, slot), elongation, time, work)
+                             ? pretension_force(p, slot_history(state, slot), elongation, time, work)
                              : law_force(p.dof[0], slot_history(state, slot), elongation, dt, work, state.length0[ue]);
     state.internal_energy[ue] += work;
     result.internal_energy += work;
@@ -555,8 +611,8 @@ Vec3 from_frame(const std::array<Vec3, 3>& f, double a, double b, double c) {
 }
 
 // /PROP/TYPE45: the joint's six degrees of freedom in its own frame (eq. SP-25): the offset of node 2 from node 1
-// less the rest offset, held by the blocking stiffness and damping the engine took at its first step; the relative
-// rotation, the sum of each step's increment in the frame, held by the free rotations' laws.
+// less the rest offset and the relative rotation, the sum of each step's increment in the frame; the blocked ones
+// held by the stiffness and damping the engine took at its first step, the free ones by their own laws.
 GroupStepResult joint_forces(const ElementTable& table, const ElementGroup& group, const SpringGroupParameters& p,
                              NodalState& nodes, SpringState& state, double dt) {
   GroupStepResult result;
@@ -576,13 +632,14 @@ GroupStepResult joint_forces(const ElementTable& table, const ElementGroup& grou
     const std::array<double, kSpringDofs> delta{offset.x - rest[0], offset.y - rest[1], offset.z - rest[2],
                                                 last[3] + turn.x,   last[4] + turn.y,   last[5] + turn.z};
     const double* blocking = &state.joint[SpringState::kJointValues * ue];
-    for (std::size_t d = 0; d < 3; ++d) own.dof[d].stiffness = blocking[0], own.dof[d].damping = blocking[2];
+    for (std::size_t d = 0; d < kSpringDofs; ++d)
+      if (!p.joint.free(d)) own.dof[d].stiffness = blocking[d < 3 ? 0 : 1], own.dof[d].damping = blocking[d < 3 ? 2 : 3];
     std::array<double, kSpringDofs> force{};
     bool broken = false;
     if (!six_law_step(own, state, e, delta, dt, result, force, broken)) continue;
     const Vec3 on2 = from_frame(f, force[0], force[1], force[2]), moment = from_frame(f, force[3], force[4], force[5]);
     hand_two_node_load(nodes, state.records, recording, ue, n, on2, scaled(moment, -1.0), moment);
-    close_element(state, result, e, blocking[3], broken);  // its bodies' step on it (SP-25)
+    close_element(state, result, e, blocking[4], broken);  // its bodies' step on it (SP-25)
   }
   return result;
 }

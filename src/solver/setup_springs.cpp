@@ -28,6 +28,27 @@ Vec3 reference_y(const Model& m, const ElementGroup& group, std::size_t e) {
   return skew_axes(m.skews[static_cast<std::size_t>(section.skew)], m.nodes.x, m.nodes.y, m.nodes.z).axis[1];
 }
 
+// SP-25f: a joint's frame at rest, the global axes, or the revolute joint's from its /SPRING card's third node (the
+// reference's starter listing, 22 directions: X from node 1 to it; Y = X x e_x where X's largest component is z, else
+// e_z x X; Z = X x Y); returns the rest offset of node 2 from node 1 in it.
+Vec3 joint_frame_at_rest(const Model& m, std::size_t e, SpringState& st) {
+  const ElementTable& table = m.elements[static_cast<int>(ElementKind::Spring)];
+  const std::int32_t* n = table.nodes_of(e);
+  std::array<Vec3, 3> f{Vec3{1.0, 0.0, 0.0}, Vec3{0.0, 1.0, 0.0}, Vec3{0.0, 0.0, 1.0}};
+  if (!table.orientation_node.empty() && table.orientation_node[e] >= 0) {
+    const Vec3 along = m.nodes.position(table.orientation_node[e]) - m.nodes.position(n[0]);
+    const Vec3 x = scaled(along, 1.0 / norm(along));
+    const bool z_largest = std::abs(x.z) >= std::abs(x.x) && std::abs(x.z) >= std::abs(x.y);
+    const Vec3 y = z_largest ? cross(x, Vec3{1.0, 0.0, 0.0}) : cross(Vec3{0.0, 0.0, 1.0}, x);
+    f = {x, scaled(y, 1.0 / norm(y)), Vec3{}};
+    f[2] = cross(f[0], f[1]);
+  }
+  double* frame = &st.joint_frame[9 * e];
+  for (std::size_t a = 0; a < 3; ++a) frame[3 * a] = f[a].x, frame[3 * a + 1] = f[a].y, frame[3 * a + 2] = f[a].z;
+  const Vec3 offset = m.nodes.position(n[1]) - m.nodes.position(n[0]);
+  return {dot(f[0], offset), dot(f[1], offset), dot(f[2], offset)};
+}
+
 // SP-19: a spring's step is its nodes', each node's whole mass and inertia held by every spring on it, their
 // stiffnesses and dampings added (measured: a spring between nodes of 10 kg added mass steps as those nodes, 3.3 times
 // its own step; springs of three types on the same nodes step as their nodes' sums).
@@ -56,14 +77,14 @@ void setup_spring_steps(const Model& m, SolverState& s) {
 // SP-25: what a joint takes of a rigid body: its mass, its smallest principal inertia, and the joint node's distance
 // from its centre (the main node, which sits there).
 struct JointBody {
-  double mass = 0.0, least_inertia = 0.0, arm = 0.0;
+  double mass = 0.0, least_inertia = 0.0, mean_inertia = 0.0, arm = 0.0;
 };
 JointBody joint_body(const SolverState& s, const RigidBodyState& body, std::int32_t node) {
   Eigen::Matrix3d inertia;
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) inertia(i, j) = body.inertia_body[static_cast<std::size_t>(3 * i + j)];
   const double least = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(inertia, Eigen::EigenvaluesOnly).eigenvalues()(0);
-  return {body.mass, least, norm(node_position(s.nodes, node) - node_position(s.nodes, body.main_node))};
+  return {body.mass, least, inertia.trace() / 3.0, norm(node_position(s.nodes, node) - node_position(s.nodes, body.main_node))};
 }
 
 }  // namespace
@@ -75,10 +96,11 @@ bool has_joints(const Model& m) {
   return false;
 }
 
-// SP-25 (measured on the reference's listing of its automatic stiffness): with m the smaller body mass, I the
-// smallest principal inertia of the two bodies and d the larger distance of a joint node from its body's centre,
-// K_t = ScF min(2 m, 0.8 I / d^2) / (4.1 dt^2), K_r = ScF I / (4.1 dt^2); the translations damped at
-// Cr sqrt(K_t m1 m2 / (m1 + m2)). Each body steps on it as a held mass, eq. SP-4.
+// SP-25c to SP-25e (measured on the reference's listing of its automatic stiffness and the decay of its joints):
+// with m the smaller body mass, I the smallest principal inertia of the two bodies and d the larger distance of a
+// joint node from its body's centre, K_t = ScF min(2 m, 0.8 I / d^2) / (4.1 dt^2), K_r = ScF I / (4.1 dt^2); the
+// translations damped at Cr sqrt(K_t m1 m2 / (m1 + m2)), the rotations at Cr sqrt(K_r J1 J2 / (J1 + J2)), J a body's
+// mean principal inertia. Each body steps on them as a held mass and inertia, eq. SP-4.
 void resolve_joints(const Model& m, SolverState& s, double dt) {
   std::vector<std::int32_t> body_of(s.nodes.size(), -1);
   for (std::size_t b = 0; b < s.bodies.size(); ++b) {
@@ -99,17 +121,20 @@ void resolve_joints(const Model& m, SolverState& s, double dt) {
       const double arm = std::max(b[0].arm, b[1].arm), per_step = joint.stiffness_scale / (4.1 * dt * dt);
       const double translation = per_step * (arm > 0.0 ? std::min(2.0 * mass, 0.8 * inertia / (arm * arm)) : 2.0 * mass);
       const double reduced = b[0].mass * b[1].mass / (b[0].mass + b[1].mass);
+      const double reduced_inertia = b[0].mean_inertia * b[1].mean_inertia / (b[0].mean_inertia + b[1].mean_inertia);
       double* v = &s.springs.joint[SpringState::kJointValues * e];
       v[0] = translation, v[1] = per_step * inertia;
-      v[2] = joint.critical_damping * std::sqrt(translation * reduced);
+      v[2] = joint.critical_damping * std::sqrt(v[0] * reduced);
+      v[3] = joint.critical_damping * std::sqrt(v[1] * reduced_inertia);
       double step = 1e30;
       const SpringGroupParameters& p = s.spring_groups[g];
       for (int a = 0; a < 2; ++a) {
         step = std::min(step, held_mass_step(b[a].mass, v[0], v[2]));
         for (std::size_t d = 3; d < kSpringDofs; ++d)
-          step = std::min(step, held_mass_step(b[a].least_inertia, p.dof[d].stiffness, p.dof[d].damping));
+          step = std::min(step, joint.free(d) ? held_mass_step(b[a].least_inertia, p.dof[d].stiffness, p.dof[d].damping)
+                                              : held_mass_step(b[a].least_inertia, v[1], v[3]));
       }
-      v[3] = step;
+      v[4] = step;
     }
   }
   refresh_spring_steps(m, s);
@@ -124,7 +149,7 @@ void refresh_spring_steps(const Model& m, SolverState& s) {
     const SpringGroupParameters& p = s.spring_groups[g];
     // A joint steps on the bodies it joins (SP-25).
     for (auto e = static_cast<std::size_t>(group.begin); e < static_cast<std::size_t>(group.end); ++e)
-      s.springs.nodal_step[e] = p.joint.on         ? s.springs.joint[SpringState::kJointValues * e + 3]
+      s.springs.nodal_step[e] = p.joint.on         ? s.springs.joint[SpringState::kJointValues * e + 4]
                                 : p.pretension.on ? spring_critical_step(p)
                                                   : spring_nodal_step(s.springs, table.nodes_of(e), e);
   }
@@ -153,7 +178,7 @@ void setup_springs(const Model& m, SolverState& s) {
       st.length0[ue] = element_measure(m.nodes, ElementKind::Spring, n);
       const SpringGroupParameters p = spring_of_length(group_p, st.length0[ue]);
       const Vec3 offset = m.nodes.position(n[1]) - m.nodes.position(n[0]);
-      const Vec3 rest = to_skew(axes, offset);
+      const Vec3 rest = group_p.joint.on ? joint_frame_at_rest(m, ue, st) : to_skew(axes, offset);
       st.rest_offset[3 * ue] = rest.x, st.rest_offset[3 * ue + 1] = rest.y, st.rest_offset[3 * ue + 2] = rest.z;
       if (p.frame == SpringFrame::Beam && st.length0[ue] > 0.0) {  // SP-15: its Y at rest
         const Vec3 y = geometry::rest_frame_y(scaled(offset, 1.0 / st.length0[ue]), reference_y(m, group, ue));
@@ -163,7 +188,7 @@ void setup_springs(const Model& m, SolverState& s) {
       // The stiffness it gives each node in the nodal steps (SP-4a): a general spring's stiffest translation.
       st.step_stiffness[ue] = spring_step_stiffness(p, st.length0[ue]).translation;
       for (int a = 0; a < 2; ++a) s.nodes.inertia[static_cast<std::size_t>(n[a])] += 0.5 * p.inertia;  // half each
-      if (p.pretension.on) st.internal_energy[ue] = std::abs(p.pretension.energy);  // SP-22: |E1| from t = 0
+      if (p.pretension.on) st.internal_energy[ue] = pretension_stored_energy(p);  // SP-22, SP-22c: from t = 0
     }
   }
   setup_spring_steps(m, s);

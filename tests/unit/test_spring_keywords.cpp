@@ -373,8 +373,8 @@ TEST(SpringKeywords, InputPerUnitLengthScalesByTheRestLength) {
 }
 
 // /PROP/SPR_PRE (SP-22): F1, D1, E1, K1 resolved from the two given, as the reference's starter echoes them (F1 100
-// and D1 0.1, or D1 and K1, or E1 and K1: F1 100, D1 0.1, E1 5, K1 1000); more than two, a force function, a sensor
-// that turns off are errors naming the field; the step is the 1-D spring's of M and K0.
+// and D1 0.1, or D1 and K1, or E1 and K1: F1 100, D1 0.1, E1 5, K1 1000); more than two, an unknown force function,
+// a sensor that turns off are errors naming the field; the step is the 1-D spring's of M and K0.
 TEST(SpringKeywords, PretensionerResolvesItsForceStrokeEnergyAndStiffness) {
   auto deck = [](const std::string& line2, const std::string& line3 = "", const std::string& sensor_off = "") {
     std::string s = "/NODE\n" + I(101) + R(0.0) + R(0.0) + R(0.0) + "\n" + I(102) + R(1.0) + R(0.0) + R(0.0) + "\n";
@@ -401,9 +401,51 @@ TEST(SpringKeywords, PretensionerResolvesItsForceStrokeEnergyAndStiffness) {
     return test::first_error(dir.write("T_0000.rad", test::begin_card("T", version) + d + "/END\n"));
   };
   EXPECT_NE(error(deck(R(1e5) + R(100.0) + R(0.1) + R(5.0))).find("F1, D1, E1, K1"), std::string::npos);
-  EXPECT_NE(error(deck(R(1e5) + R(100.0), I(5))).find("fct_ID1"), std::string::npos);
+  EXPECT_NE(error(deck(R(1e5) + R(100.0), I(5))).find("fct_ID1"), std::string::npos);  // no /FUNCT/5
   EXPECT_NE(error(deck(R(1e5) + R(100.0), "", "\n" + R(0.5)), 2023).find("sens_ID"), std::string::npos);
   EXPECT_NE(error(deck(R(0.0) + R(100.0))).find("K0"), std::string::npos);
+}
+
+// /PROP/SPR_PRE in function mode (SP-22b, SP-22c): the functions and their scales read, D1 the stroke, F1, E1 and K1
+// warnings; the energy stored from t = 0 as the reference's starter takes it (its probes e_fb_D0.04: 3.85556,
+// e_fb_sd2: 2.25, m_f2_100: 0.05, m_f1f2: 450).
+TEST(SpringKeywords, PretensionerInFunctionModeStoresTheReferencesEnergy) {
+  // f1 (-1, -950) (-0.06, 0) (-0.03, 100) (0, 100) (1, 100), the reference probes' "fb"; f2 (0, 100) (1, 100).
+  std::string functions = "/FUNCT/71\nf1\n";
+  for (const auto& [x, y] : {std::pair{-1.0, -950.0}, {-0.06, 0.0}, {-0.03, 100.0}, {0.0, 100.0}, {1.0, 100.0}})
+    functions += R(x) + R(y) + "\n";
+  functions += "/FUNCT/72\nf2\n" + R(0.0) + R(100.0) + "\n" + R(1.0) + R(100.0) + "\n";
+  auto energy = [&](const std::string& line2, const std::string& line3, std::string* warnings = nullptr) {
+    std::string s = "/NODE\n" + I(101) + R(0.0) + R(0.0) + R(0.0) + "\n" + I(102) + R(1.0) + R(0.0) + R(0.0) + "\n";
+    s += "/SPRING/20\n" + I(7) + I(101) + I(102) + "\n/PART/20\npretensioner\n" + I(30) + I(0) + "\n";
+    s += "/PROP/SPR_PRE/30\npretensioner\n" + R(0.001) + "\n" + line2 + "\n" + line3 + "\n" + functions;
+    test::TempDir dir;
+    const Deck d = read_deck(dir.write("T_0000.rad", test::begin_card("T") + s + "/END\n"));
+    if (warnings != nullptr)
+      for (const auto& w : d.report.warnings) *warnings += w.message + "\n";
+    return pretension_stored_energy(spring_parameters(d.model.properties[0].spring, d.model.functions));
+  };
+  std::string warnings;
+  // D1 0.04: the area over [-0.04, 0], 3.8333, and (f1(-0.04))^2 / (2 K0) = 66.667^2 / 2e5
+  EXPECT_NEAR(energy(R(1e5) + R(100.0) + R(0.04) + R(5.0), I(71), &warnings), 3.85556, 1e-5);
+  for (const char* field : {"field F1", "field E1"}) EXPECT_NE(warnings.find(field), std::string::npos) << warnings;
+  // no D1, f1 <= 0 at its first point: from there, its negative segment left out, no extra term; Scale_d 2 divides
+  EXPECT_NEAR(energy(R(1e5), I(71) + I(0) + std::string(20, ' ') + R(0.0) + R(2.0)), 2.25, 1e-9);
+  EXPECT_NEAR(energy(R(1e5), I(0) + I(72)), 100.0 * 100.0 / 2e5, 1e-12);
+  EXPECT_NEAR(energy(R(1e5), I(71) + I(72)), 450.0, 1e-9);  // S = f2's first ordinate 100 times the area 4.5
+  test::TempDir dir;
+  const std::string s = "/NODE\n" + I(101) + R(0.0) + R(0.0) + R(0.0) + "\n" + I(102) + R(1.0) + R(0.0) + R(0.0) +
+                        "\n/SPRING/20\n" + I(7) + I(101) + I(102) + "\n/PART/20\np\n" + I(30) + I(0) +
+                        "\n/PROP/SPR_PRE/30\np\n" + R(0.001) + "\n" + R(1e5) + R(0.0) + R(-0.3) + "\n" + I(71) + I(72) +
+                        std::string(20, ' ') + R(2.0) + R(0.5) + R(3.0) + "\n" + functions;
+  const SpringPretension& p = read_deck(dir.write("T_0000.rad", test::begin_card("T") + s + "/END\n")).model.properties[0].spring.pretension;
+  EXPECT_TRUE(p.by_functions());
+  EXPECT_DOUBLE_EQ(p.stroke, 0.3);
+  EXPECT_DOUBLE_EQ(p.time_scale, 2.0);
+  EXPECT_DOUBLE_EQ(p.stroke_scale, 0.5);
+  EXPECT_DOUBLE_EQ(p.force_scale, 3.0);
+  EXPECT_EQ(p.stroke_function, 0);
+  EXPECT_EQ(p.time_function, 1);
 }
 
 TEST(SpringKeywords, GeneralSpringRefusalsNameTheirField) {
@@ -660,7 +702,7 @@ TEST(SpringKeywords, JointReadsItsDefaultsAndRefusesTheRest) {
     return test::first_error(joint_starter(dir, cards));
   };
   const std::string line1 = I(1) + R(0.0) + R(0.0) + R(0.0) + I(0) + I(0) + I(0);
-  EXPECT_NE(error(joint_deck(I(2) + R(0.0) + R(0.0) + R(0.0), plain)).find("field Type"), std::string::npos);
+  EXPECT_NE(error(joint_deck(I(3) + R(0.0) + R(0.0) + R(0.0), plain)).find("field Type"), std::string::npos);
   EXPECT_NE(error(joint_deck(I(1) + R(1e5), plain)).find("field Kn"), std::string::npos);
   EXPECT_NE(error(joint_deck(I(1) + R(0.0) + R(0.0) + R(0.0) + I(4), plain)).find("field sens_ID"), std::string::npos);
   EXPECT_NE(error(joint_deck(I(1) + R(0.0) + R(0.0) + R(0.0) + I(0) + I(3), plain)).find("field Skew_ID1"),
@@ -672,6 +714,39 @@ TEST(SpringKeywords, JointReadsItsDefaultsAndRefusesTheRest) {
             std::string::npos);
   const std::string off_body = error(joint_deck(line1, plain, false));
   EXPECT_NE(off_body.find("/RBODY of its own"), std::string::npos) << off_body;
+}
+
+
+// /PROP/TYPE45 Type 2 (SP-25, SP-25f): one free rotation's three lines; the /SPRING card's third node sets the axis,
+// and a revolute joint without it is an error that names node_ID3.
+TEST(SpringKeywords, RevoluteJointReadsItsAxisNode) {
+  auto deck = [](bool axis_node) {
+    std::string s = "/NODE\n";
+    for (const auto& [id, z] : {std::pair{1, 0.0}, {2, 0.0}, {3, 1.0}, {5, 0.0}, {6, 0.0}})
+      s += I(id) + R(0.0) + R(0.0) + R(z) + "\n";
+    s += "/SPRING/20\n" + I(30) + I(1) + I(2) + (axis_node ? I(3) : "") + "\n/PART/20\njoint\n" + I(31) + I(0) + "\n";
+    s += "/PROP/TYPE45/31\nhinge\n" + I(2) + R(0.0) + R(0.0) + R(0.0) + "\n" + R(7.0) + I(0) + "\n" + R(0.3) + I(0) +
+         "\n" + R(0.0) + "\n";
+    s += "/GRNOD/NODE/8\nbody 1\n" + I(1) + "\n/GRNOD/NODE/9\nbody 2\n" + I(2) + "\n";
+    for (int b = 1; b <= 2; ++b)
+      s += "/RBODY/" + std::to_string(b) + "\nbody\n" + I(4 + b) + I(0) + I(0) + I(0) + R(1.0) + I(7 + b) + I(0) + I(3) +
+           "\n" + R(1.0) + R(1.0) + R(1.0) + "\n" + R(0.0) + R(0.0) + R(0.0) + "\n";
+    return test::begin_card("J") + s + "/END\n";
+  };
+  test::TempDir dir;
+  const Model m = read_deck(dir.write("J_0000.rad", deck(true))).model;
+  const SpringSection& s = m.properties[0].spring;
+  EXPECT_EQ(s.joint.type, 2);
+  EXPECT_TRUE(s.joint.free(3));
+  EXPECT_FALSE(s.joint.free(4));
+  EXPECT_DOUBLE_EQ(s.dof[3].stiffness, 7.0);
+  EXPECT_DOUBLE_EQ(s.dof[3].damping, 0.3);
+  const ElementTable& springs = m.elements[static_cast<int>(ElementKind::Spring)];
+  ASSERT_FALSE(springs.orientation_node.empty());
+  EXPECT_EQ(m.nodes.user_id[static_cast<std::size_t>(springs.orientation_node[0])], 3);
+  test::TempDir other;
+  const std::string error = test::first_error(other.write("J_0000.rad", deck(false)));
+  EXPECT_NE(error.find("node_ID3"), std::string::npos) << error;
 }
 
 }  // namespace test_spring_keywords

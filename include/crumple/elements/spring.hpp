@@ -48,6 +48,8 @@ struct SpringGroupParameters {
   bool radial = false;  // TYPE25: shear and bending on the radial magnitude (SP-20)
   bool per_unit_length = false;  // Ileng 1: each spring's values follow from its rest length (SP-21)
   SpringPretension pretension;   // TYPE32 (SP-22)
+  const Function* pretension_stroke = nullptr;  // TYPE32's f1 and f2 (SP-22b); none: 1
+  const Function* pretension_time = nullptr;
   SpringFailure failure;  // SP-5b
   std::int32_t skew = -1;  // TYPE8: the skew whose axes its laws act in (SP-9b); -1 the global axes
   SpringSwitch sensor;     // sens_ID, Isflag (SP-24)
@@ -86,6 +88,9 @@ inline double spring_rate_force(const SpringDofParameters& p, double rate) {
 // length at rest, for H 8).
 double spring_elastic_force(const SpringDofParameters& p, double delta, double before, double force_before,
                             double& a, double& b, double length0 = 0.0);
+
+// SP-22, SP-22c: the energy a pretensioner stores from t = 0 (its internal energy at the start) [E].
+double pretension_stored_energy(const SpringGroupParameters& p);
 
 // The group parameters of a spring section (`functions`: the model's).
 SpringGroupParameters spring_parameters(const SpringSection& s, const std::vector<Function>& functions);

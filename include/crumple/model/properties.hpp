@@ -115,6 +115,13 @@ struct SpringPretension {
   double force = 0.0;          // F1 [F]
   double energy = 0.0;         // E1 [E]: the spring's internal energy at t = 0 is |E1| (measured)
   double stiffness = 0.0;      // K1 [F/L]; the stroke D1 = F1 / K1
+  // Function mode (fct_ID1, fct_ID2; SP-22b): the pretension Sf f1(-delta / Sd) f2((t - Tdelay) / St), a function
+  // not given counting as 1; F1, E1 and K1 unused, D1 the stroke (0: none).
+  std::int64_t stroke_function_id = 0, time_function_id = 0;
+  std::int32_t stroke_function = -1, time_function = -1;  // dense indices (model build)
+  double stroke_scale = 1.0, time_scale = 1.0, force_scale = 1.0;  // Sd [L], St [T], Sf [F] (0 or blank: 1)
+  double stroke = 0.0;  // |D1| [L]
+  bool by_functions() const { return stroke_function_id != 0 || time_function_id != 0; }
 };
 
 // sens_ID, Isflag (docs/theory/spring.md, SP-24): a spring switched by a /SENSOR/TIME. Isflag 0: off until the first
@@ -126,13 +133,19 @@ struct SpringSwitch {
   double on = 0.0, off = 1e300;  // the sensor's window (resolved) [T]
 };
 
-// /PROP/TYPE45 (/PROP/KJOINT2): a spherical joint between two rigid bodies (docs/theory/spring.md, SP-25), a
-// general spring of no mass whose translations are blocked by the stiffness the engine computes at its first step
-// from the bodies' masses and inertias (Kn 0), damped at Cr of critical; its rotations free, each its own linear law.
+// /PROP/TYPE45 (/PROP/KJOINT2): a spherical or revolute joint between two rigid bodies (docs/theory/spring.md,
+// SP-25), a general spring of no mass whose blocked degrees of freedom are held by the stiffness the engine computes
+// at its first step from the bodies' masses and inertias (Kn 0), damped at Cr of critical; its free rotations each
+// their own linear law.
 struct SpringJoint {
   bool on = false;
+  int type = 1;                    // Type: 1 spherical (the rotations free), 2 revolute (the rotation about X free)
   double stiffness_scale = 1.0;    // ScF (0 or blank: 1)
   double critical_damping = 0.05;  // Cr (0 or blank: 0.05), of the blocked degrees of freedom only (measured)
+  // Degree of freedom d (0-2 the translations, 3-5 the rotations in the joint's frame) is free: its own law acts.
+  bool free(std::size_t d) const { return d >= 3 && (type == 1 || d == 3); }
+  // The /SPRING card's nodes beyond its two that set the joint's frame: the revolute joint's X (node_ID3).
+  int frame_nodes() const { return type == 2 ? 1 : 0; }
 };
 
 struct SpringSection {

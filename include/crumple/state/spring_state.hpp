@@ -39,10 +39,10 @@ struct SpringState : ElementKindState {  // no integration points: points and ep
   // reads (SP-5b) [E].
   std::vector<double> law_energy;
   // /PROP/TYPE45, kJointValues per spring (SP-25): the blocking stiffness of the translations [F/L] and of the
-  // rotations [F L/rad], the translations' damping [F T/L] and the joint's step [T], from the bodies it joins at
+  // rotations [F L/rad], their dampings [F T/L], [F L T/rad], and the joint's step [T], from the bodies it joins at
   // each engine deck's first step (0 before the run's first: its offset is 0 then). In the restart: a resumed run
   // keeps them (taken anew, the bodies' arms would differ in their last digits from the run it resumes).
-  static constexpr std::size_t kJointValues = 4;
+  static constexpr std::size_t kJointValues = 5;
   std::vector<double> joint;
   // /PROP/TYPE45, 9 per spring: the joint's frame, its X, Y and Z axes (global components), turned each step by the
   // mean of its two nodes' rotation increments (SP-25); the global axes at t = 0.
@@ -55,7 +55,7 @@ struct SpringState : ElementKindState {  // no integration points: points and ep
     joint.assign(kJointValues * n, 0.0);
     joint_frame.assign(9 * n, 0.0);
     for (std::size_t e = 0; e < n; ++e) {
-      joint[kJointValues * e + 3] = 1e30;  // no step before the first
+      joint[kJointValues * e + 4] = 1e30;  // no step before the first
       joint_frame[9 * e] = joint_frame[9 * e + 4] = joint_frame[9 * e + 8] = 1.0;
     }
     for (auto* v : {&elongation, &force, &elastic_force, &plastic_a, &plastic_b, &law_energy})

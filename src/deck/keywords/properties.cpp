@@ -671,6 +671,26 @@ void resolve_pretension(const Line& line, double stroke, SpringPretension& p) {
   else if (e != 0.0) f = std::sqrt(2.0 * e * k);
 }
 
+// Line 3 of /PROP/TYPE32 (SP-22b): fct_ID1 (the pretension of the elongation), fct_ID2 (of the time since the
+// sensor's Tdelay), their abscissa scales Scale_t, Scale_d and the force scale Scale_f (0 or blank: 1); without
+// either function the scales act on nothing (a warning, as in the reference).
+void read_pretension_functions(const Line& third, const CardReader& reader, DeckContext& context, SpringPretension& pre) {
+  pre.stroke_function_id = third.optional_id(1, 10, "fct_ID1", IdKind::Other);
+  pre.time_function_id = third.optional_id(11, 10, "fct_ID2", IdKind::Other);
+  const auto scale = [&](int column, const char* name, Dimension d) {
+    const double value = third.real(column, 20, name, d);
+    if (value < 0.0) third.fail(column, 20, name, "a positive scale (0 or blank: 1)");
+    if (value != 0.0 && value != reader.units().factor(d) && !pre.by_functions())
+      context.note(third.where(), reader.card().keyword, name,
+                   "the scale of a pretension function; without one it does nothing, as in the reference",
+                   SkipKind::Unsupported);
+    return value == 0.0 ? reader.units().factor(d) : value;
+  };
+  pre.time_scale = scale(41, "Scale_t", dim::time);
+  pre.stroke_scale = scale(61, "Scale_d", dim::length);
+  pre.force_scale = scale(81, "Scale_f", dim::force);
+}
+
 // /PROP/TYPE32 (/PROP/SPR_PRE): the pretensioner (docs/theory/spring.md, SP-22). Line 1 M, sens_ID, Ilock; line 2
 // K0, F1, D1, E1, K1; line 3 the force functions of the stroke and of time and their scales (columns measured on
 // the reference's starter echo, input versions 100 to 2019).
@@ -694,19 +714,16 @@ void read_pretension_spring_property(CardReader& reader, DeckContext& context) {
   const double stroke = second.real(41, 20, "D1", dim::length);
   pre.energy = second.real(61, 20, "E1", dim::moment);
   pre.stiffness = second.real(81, 20, "K1", dim::stiffness);
-  resolve_pretension(second, stroke, pre);
-  if (reader.has_data()) {
-    const Line third = reader.next("fct_ID1, fct_ID2, Ascale_2, Ascale_1, Fscale_F");
-    for (const auto& [column, name] : {std::pair{1, "fct_ID1"}, {11, "fct_ID2"}})
-      if (third.optional_id(column, 10, name, IdKind::Other) != 0)
-        context.unsupported(third.error(column, 10, name, default_only("a pretension force function is")));
-    for (const auto& [column, name] : {std::pair{41, "Ascale_2"}, {61, "Ascale_1"}, {81, "Fscale_F"}}) {
-      const double scale = third.real(column, 20, name, dim::none);
-      if (scale != 0.0 && scale != 1.0)  // measured: each scales its function only
-        context.note(third.where(), reader.card().keyword, name,
-                     "the scale of a pretension function; without one it does nothing, as in the reference",
-                     SkipKind::Unsupported);
-    }
+  if (reader.has_data()) read_pretension_functions(reader.next("fct_ID1, fct_ID2, Scale_t, Scale_d, Scale_f"), reader,
+                                                   context, pre);
+  if (!pre.by_functions()) {
+    resolve_pretension(second, stroke, pre);
+  } else {  // SP-22b: D1 the stroke; F1, E1 and K1 act on nothing (measured: any of them changes no force)
+    pre.stroke = std::abs(stroke);
+    for (const auto& [column, name, value] : {std::tuple{21, "F1", pre.force}, {61, "E1", pre.energy}, {81, "K1", pre.stiffness}})
+      if (value != 0.0)
+        context.note(second.where(), reader.card().keyword, name,
+                     "acts only without the pretension functions; ignored, as by the reference", SkipKind::Unsupported);
   }
   reader.finish();
   context.model.properties.push_back(std::move(p));
@@ -741,16 +758,18 @@ void read_joint_free_rotation(CardReader& reader, DeckContext& context, SpringLa
 }
 
 // /PROP/TYPE45 (/PROP/KJOINT2): the joint (docs/theory/spring.md, SP-25). Line 1 Type, Kn, ScF, Cr, sens_ID,
-// Skew_ID1, Skew_ID2; then three lines per free degree of freedom, for the spherical joint (Type 1) the rotations
-// about X, Y and Z. A general spring of no mass in the global axes whose translations the engine blocks.
+// Skew_ID1, Skew_ID2; then three lines per free degree of freedom: the spherical joint's (Type 1) rotations about
+// X, Y and Z, the revolute joint's (Type 2) about X. A general spring of no mass whose other degrees of freedom the
+// engine blocks.
 void read_joint_property(CardReader& reader, DeckContext& context) {
   refuse_narrow_layout(reader);
   Property p = begin_property(reader, PropertyKind::Spring);
   SpringSection& s = p.spring;
   s.frame = SpringFrame::Global, s.joint.on = true;
   const Line first = reader.next("Type, Kn, ScF, Cr, sens_ID, Skew_ID1, Skew_ID2");
-  if (first.integer(1, 10, "Type") != 1)
-    first.fail(1, 10, "Type", "1 (the spherical joint; the other joint types are not supported by Crumple)");
+  s.joint.type = static_cast<int>(first.integer(1, 10, "Type"));
+  if (s.joint.type != 1 && s.joint.type != 2)
+    first.fail(1, 10, "Type", "1 (spherical) or 2 (revolute; the other joint types are not supported by Crumple)");
   if (first.real(11, 20, "Kn", dim::stiffness) != 0.0)
     context.unsupported(first.error(11, 20, "Kn", default_only("a given blocking stiffness is")));
   const double scale = first.real(31, 20, "ScF", dim::none);
@@ -764,7 +783,8 @@ void read_joint_property(CardReader& reader, DeckContext& context) {
     if (first.optional_id(column, 10, name, IdKind::Other) != 0)
       context.unsupported(first.error(column, 10, name, default_only(what)));
   constexpr const char* kAxes[3] = {"1", "2", "3"};
-  for (std::size_t d = 0; d < 3; ++d) read_joint_free_rotation(reader, context, s.dof[3 + d], kAxes[d]);
+  for (std::size_t d = 0; d < 3; ++d)  // a line group per free rotation, numbered in its order
+    if (s.joint.free(3 + d)) read_joint_free_rotation(reader, context, s.dof[3 + d], kAxes[d]);
   reader.finish();
   context.model.properties.push_back(std::move(p));
 }

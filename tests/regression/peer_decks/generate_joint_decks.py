@@ -8,6 +8,9 @@
 #   joint_free_bodies: two free bodies of different masses (a /RBODY mass on one, Ispher 1 and ICoG 3 on the other)
 #     driven apart and about by their initial velocities, ScF 2, Cr left at its default 0.05; the joint node off
 #     both bodies' centres.
+#   joint_revolute: the pendulum's bodies on a revolute joint (Type 2) whose axis, set by the /SPRING card's third
+#     node, is tilted out of the global axes; the swung body also spun across the axis, so that the blocked rotations
+#     ring on their automatic stiffness and damping while the free one turns on its law.
 import os
 I = lambda *v: "".join("%10d" % x for x in v)
 R = lambda *v: "".join("%20.10g" % x for x in v)
@@ -31,15 +34,17 @@ def rotation(k, c=0.0):
     return R(k) + I(0) + R(0, 0) + I(0) + "\n" + R(c) + I(0) + "\n" + R(0, 0) + I(0) + "\n"
 
 
-def deck(name, run, joint_at, second, scale, critical, rotations, bodies, loads, end, dt):
+def deck(name, run, joint_at, second, scale, critical, rotations, bodies, loads, end, dt, joint_type=1, axis_node=None):
     s = "/BEGIN\n%s\n      2019         0\n%20s%20s%20s\n%20s%20s%20s\n" % (run, 'kg', 'm', 's', 'kg', 'm', 's')
     s += "/MAT/ELAST/1\nsteel\n" + R(7800) + "\n" + R(2.1e11, 0.3) + "\n"
     s += "/NODE\n" + I(1) + R(*joint_at) + "\n" + I(2) + R(*joint_at) + "\n" + I(5) + R(-0.15, 0, 0) + "\n"
+    if axis_node:
+        s += I(3) + R(*axis_node) + "\n"
     s += I(6) + R(*second) + "\n" + brick_nodes(11, -0.2, -0.1, 0.05) + brick_nodes(21, 0.1, 0.3, 0.05)
-    s += "/PART/1\njoint\n" + I(1, 0) + "\n/SPRING/1\n" + I(30, 1, 2) + "\n"
+    s += "/PART/1\njoint\n" + I(1, 0) + "\n/SPRING/1\n" + I(30, 1, 2, *((3,) if axis_node else ())) + "\n"
     s += "/PART/2\nbodies\n" + I(2, 1) + "\n/BRICK/2\n" + I(10, *range(11, 19)) + "\n" + I(20, *range(21, 29)) + "\n"
     s += "/PROP/SOLID/2\nbricks\n" + I(0) + "\n" + R(0) + "\n" + R(0) + "\n"
-    s += "/PROP/TYPE45/1\njoint\n" + I(1) + R(0, scale, critical) + I(0, 0, 0) + "\n"
+    s += "/PROP/TYPE45/1\njoint\n" + I(joint_type) + R(0, scale, critical) + I(0, 0, 0) + "\n"
     for k, c in rotations:
         s += rotation(k, c)
     s += "/GRNOD/NODE/8\nbody 1\n" + I(1, *range(11, 19)) + "\n/GRNOD/NODE/9\nbody 2\n" + I(2, *range(21, 29)) + "\n"
@@ -61,3 +66,9 @@ deck("joint_free_bodies", "JFREE", (0.02, 0.01, 0), (0.0, 0, 0), 2, 0, ((0, 0), 
      "/GRNOD/NODE/3\nfirst\n" + I(5) + "\n/GRNOD/NODE/4\nsecond\n" + I(6) + "\n"
      + "/INIVEL/TRA/1\nfirst\n" + R(-1.0, 0.5, 0) + I(3, 0) + "\n/INIVEL/TRA/2\nsecond\n" + R(1.5, 0, -1.0) + I(4, 0) + "\n"
      + "/INIVEL/ROT/3\nsecond spins\n" + R(0, 0, 2.0) + I(4, 0) + "\n", 0.3, 5e-5)
+deck("joint_revolute", "JREV", (0, 0, 0), (0.2, 0, 0), 0, 0.03, ((15, 0.2),),
+     rbody(1, 5, 8) + rbody(2, 6, 9) + "/GRNOD/NODE/3\nheld\n" + I(5) + "\n/BCS/1\nheld\n   111 111" + I(0, 3) + "\n",
+     "/GRNOD/NODE/4\nswung\n" + I(6) + "\n/INIVEL/TRA/1\nswing\n" + R(0, 1.0, 2.0) + I(4, 0) + "\n"
+     + "/INIVEL/ROT/2\nacross\n" + R(0, 3.0, 0) + I(4, 0) + "\n"
+     + "/FUNCT/7\none\n" + R(0, 1) + "\n" + R(100, 1) + "\n/GRAV/1\ngravity\n" + I(7) + "%10s" % "Z" + I(0, 0, 0)
+     + " " * 10 + R(0, -9.81) + "\n", 0.3, 1e-4, joint_type=2, axis_node=(0.3, 0.1, 1.0))

@@ -6,17 +6,20 @@
 #     spring locks), in and out again; a third spring without a sensor, given E1 and K1, pulls from the start.
 #   spring_pretension_cycles: a pretensioner given F1 and E1 on a free 1 kg node, the sensor at 0.005 s: the floor
 #     pulls the node in over its stroke, then the node rings on K0; beside it one given D1 and K1, Ilock 2.
+#   spring_pretension_functions: the locks deck's drive on three pretensioners in function mode (SP-22b, SP-22c): the
+#     pretension of the elongation fct_ID1 with a stroke D1 and Scale_d 2; of the time fct_ID2 with Scale_t 2; both,
+#     with Scale_f 2 and Ilock 2 (F1 and E1 given, which function mode ignores).
 import os
 I = lambda *v: "".join("%10d" % x for x in v)
 R = lambda *v: "".join("%20.10g" % x for x in v)
 
 
-def pretensioner(pid, sensor, ilock, k0, f1=0.0, d1=0.0, e1=0.0, k1=0.0):
+def pretensioner(pid, sensor, ilock, k0, f1=0.0, d1=0.0, e1=0.0, k1=0.0, functions=(0, 0), scales=(0, 0, 0)):
     return ("/PROP/SPR_PRE/%d\npretensioner %d\n" % (pid, pid) + R(0.001) + " " * 30 + I(sensor, ilock) + "\n"
-            + R(k0, f1, d1, e1, k1) + "\n" + I(0, 0) + " " * 20 + R(0, 0, 0) + "\n")
+            + R(k0, f1, d1, e1, k1) + "\n" + I(*functions) + " " * 20 + R(*scales) + "\n")
 
 
-def deck(name, run, props, drive, end, mass=0.0, every=20):
+def deck(name, run, props, drive, end, mass=0.0, every=20, functions=""):
     s = "/BEGIN\n%s\n      2019         0\n%20s%20s%20s\n%20s%20s%20s\n" % (run, 'kg', 'm', 's', 'kg', 'm', 's')
     n = len(props)
     s += "/NODE\n" + "".join(I(10 * k + 1) + R(0, k, 0) + "\n" + I(10 * k + 2) + R(1, k, 0) + "\n" for k in range(n))
@@ -32,6 +35,7 @@ def deck(name, run, props, drive, end, mass=0.0, every=20):
     if drive[1]:
         s += "/FUNCT/90\ndrive\n" + "".join(R(t, v) + "\n" for t, v in drive[1])
         s += "/IMPVEL/1\ndrive\n" + I(90) + "%10s" % "X" + I(0, 0, 2) + "\n" + R(1, 1, 0, 0) + "\n"
+    s += functions
     s += "/TH/SPRING/1\nsprings\nDEF\n" + "".join(I(k + 1) + "\n" for k in range(n)) + "/END\n"
     os.makedirs(name, exist_ok=True)
     open(os.path.join(name, run + "_0000.rad"), "w").write(s)
@@ -45,3 +49,9 @@ deck("spring_pretension_locks", "SPRELOCK",
       pretensioner(3, 0, 0, 1e5, e1=5, k1=1000)], (0.01, cycles), 0.25)
 deck("spring_pretension_cycles", "SPRECYC",
      [pretensioner(1, 1, 0, 1e5, f1=1000, e1=50), pretensioner(2, 1, 2, 1e5, d1=0.05, k1=2000)], (0.005, None), 0.3, mass=1.0, every=1)
+deck("spring_pretension_functions", "SPREFCT",
+     [pretensioner(1, 1, 0, 1e5, d1=0.12, functions=(71, 0), scales=(0, 2, 0)),
+      pretensioner(2, 1, 0, 1e5, functions=(0, 72), scales=(2, 0, 0)),
+      pretensioner(3, 1, 2, 1e5, f1=50, e1=3, functions=(71, 72), scales=(0, 0, 2))], (0.01, cycles), 0.25,
+     functions="/FUNCT/71\nof the elongation\n" + R(-0.2, 0) + "\n" + R(-0.05, 60) + "\n" + R(0, 100) + "\n" + R(0.2, 300) + "\n"
+     + "/FUNCT/72\nof the time\n" + R(0, 20) + "\n" + R(0.02, 100) + "\n" + R(0.2, 40) + "\n")
