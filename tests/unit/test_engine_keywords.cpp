@@ -63,6 +63,17 @@ std::string rigid_body() {
 
 }  // namespace
 
+// /TH/VERS/n of old engine decks (the reference QA deck LOIS/LOI27 has /TH/VERS/41): the version of a file Crumple
+// does not write, a named output-only warning; a version that is no positive integer is an error.
+TEST(EngineKeywords, TimeHistoryVersionIsOutputOnly) {
+  test::TempDir dir;
+  const Deck d = read_deck(test::write_deck(dir, "", kRun + "/TH/VERS/41\n"));
+  std::string warnings;
+  for (const auto& w : d.report.warnings) warnings += w.message + "\n";
+  EXPECT_TRUE(contains(warnings, "time-history file's version")) << warnings;
+  EXPECT_TRUE(contains(error_of(kRun + "/TH/VERS/x\n"), "/TH/VERS"));
+}
+
 TEST(EngineKeywords, QaEngineDeckReads) {
   test::TempDir dir;
   const Deck d = read_deck(test::write_deck(dir, "", kQaEngine));

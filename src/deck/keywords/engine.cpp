@@ -309,6 +309,17 @@ void read_anim_gzip(CardReader& reader, DeckContext& context) {
   output_only(reader, context, "Crumple writes its frames to NAME.h5 (HDF5), not gzipped animation files");
 }
 
+// /TH/VERS/n (engine, old decks): the version of the Radioss time-history file the engine writes; Crumple writes its
+// histories to NAME.h5 whatever it says.
+void read_th_version(CardReader& reader, DeckContext& context) {
+  path_at_most(reader, 3);
+  const auto version = path_integer(reader, 2, "n");
+  if (version && (*version <= 0 || *version > 100000))
+    reader.fail("n", "a time-history file version (a positive integer)", std::to_string(*version));
+  reader.finish();
+  output_only(reader, context, "the time-history file's version; Crumple writes its histories to NAME.h5 (HDF5)");
+}
+
 void read_anim_version(CardReader& reader, DeckContext& context) {
   path_at_most(reader, 3);
   const auto version = path_integer(reader, 2, "n");
@@ -595,6 +606,7 @@ void register_engine_keywords(KeywordTable& table) {
   table.push_back({"/ANIM/TENS", E, [](CardReader& r, DeckContext& c) { read_anim_tensor(r, c, 2, kAllKinds); }});
   table.push_back({"/ANIM/MASS", E, read_anim_mass});
   table.push_back({"/ANIM/GZIP", E, read_anim_gzip});
+  table.push_back({"/TH/VERS", E, read_th_version});
   table.push_back({"/ANIM/VERS", E, read_anim_version});
   table.push_back({"/ANIM", E, read_anim_other});
   table.push_back({"/DT", E, read_dt});
