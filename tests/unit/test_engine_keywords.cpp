@@ -322,6 +322,14 @@ TEST(EngineKeywords, VelocityLinkErrorsNameTheField) {
   }
 }
 
+// /RUN/name without its run number (the reference QA deck INTERF/INT_7/fpenmax) is this engine deck's run.
+TEST(EngineKeywords, RunWithoutItsNumberIsThisDecksRun) {
+  const RunControl run = run_of("/RUN/TEST\n1e-3\n");
+  EXPECT_TRUE(run.present);
+  EXPECT_EQ(run.run_number, 1);
+  EXPECT_DOUBLE_EQ(run.end_time, 1e-3);
+}
+
 TEST(EngineKeywords, RunNameDifferentFromBeginIsAWarning) {
   test::TempDir dir;
   const Deck d = read_deck(test::write_deck(dir, "", "/RUN/OTHER/1\n1e-3\n"));
@@ -337,7 +345,6 @@ TEST(EngineKeywords, MalformedCardsAreErrorsNamingTheField) {
       {"/RUN/TEST/1\n", "field Tstop"},
       {"/RUN/TEST/1\n1e-3 2e-3\n", "at most 1 value"},
       {"/RUN/TEST/2\n1e-3\n", "field run_number"},
-      {"/RUN/TEST\n1e-3\n", "field run_number"},
       {"/RUN/TEST/1/J\n1e-3\n", "restart letter"},
       {kRun + kRun, "a single /RUN"},
       {kRun + "/DT\n1.5\n", "field DTsca"},

@@ -126,14 +126,14 @@ void read_run(CardReader& reader, DeckContext& context) {
   run.run_name = written_part(card, 1);
   if (run.run_name.empty() || parse_integer(run.run_name))
     reader.fail("Runname", "/RUN/Runname/run_number with a run name", in_quotes(card.keyword));
-  const auto number = path_integer(reader, 2, "run_number");
-  if (!number) reader.fail("run_number", "/RUN/Runname/1 (the run number)", "none");
   // Run k is the engine deck NAME_000k.rad: a continued run carries on from the run before (the restart letter
-  // would start from a restart file, which Crumple does not read).
-  if (*number != context.engine_deck)
+  // would start from a restart file, which Crumple does not read). Left out (/RUN/name, the reference QA deck
+  // INTERF/INT_7/fpenmax), it is this deck's, as the reference runs it.
+  const auto number = path_integer(reader, 2, "run_number").value_or(context.engine_deck);
+  if (number != context.engine_deck)
     reader.fail("run_number", fmt::format("{} (the number of this engine deck, NAME_{:04d}.rad)", context.engine_deck,
                                           context.engine_deck),
-                fmt::format("{}", *number));
+                fmt::format("{}", number));
   if (card.path.size() > 3)
     reader.fail("restart letter", "nothing (restart files are not read)", in_quotes(card.path[3]));
   const Line line = required_line(reader, "Tstop");
