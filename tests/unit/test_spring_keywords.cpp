@@ -438,7 +438,8 @@ TEST(SpringKeywords, PretensionerInFunctionModeStoresTheReferencesEnergy) {
                         "\n/SPRING/20\n" + I(7) + I(101) + I(102) + "\n/PART/20\np\n" + I(30) + I(0) +
                         "\n/PROP/SPR_PRE/30\np\n" + R(0.001) + "\n" + R(1e5) + R(0.0) + R(-0.3) + "\n" + I(71) + I(72) +
                         std::string(20, ' ') + R(2.0) + R(0.5) + R(3.0) + "\n" + functions;
-  const SpringPretension& p = read_deck(dir.write("T_0000.rad", test::begin_card("T") + s + "/END\n")).model.properties[0].spring.pretension;
+  const Deck d = read_deck(dir.write("T_0000.rad", test::begin_card("T") + s + "/END\n"));
+  const SpringPretension& p = d.model.properties[0].spring.pretension;
   EXPECT_TRUE(p.by_functions());
   EXPECT_DOUBLE_EQ(p.stroke, 0.3);
   EXPECT_DOUBLE_EQ(p.time_scale, 2.0);
