@@ -182,6 +182,22 @@ TEST(LoadKeywords, ImpdispConvertsUnits) {
   EXPECT_DOUBLE_EQ(v.scale_y, 1e3);    // blank: 1 rad/ms
 }
 
+// grnod_ID 0 on /IMPVEL and /IMPDISP names no node: the card acts on nothing, as the reference runs it (measured: the
+// same energies as without it), with a warning that names the field.
+TEST(LoadKeywords, ImposedMotionOnNoGroupActsOnNothing) {
+  for (const char* keyword : {"/IMPVEL/4", "/IMPDISP/5"}) {
+    std::string card = imposed(keyword, "X", R(0.0) + R(1.0));
+    const std::string group = I(10);
+    card.replace(card.find(group, card.find("imposed")), group.size(), I(0));
+    test::TempDir dir;
+    const Deck d = read_deck(test::write_deck(dir, card));
+    EXPECT_TRUE(d.model.imposed.empty()) << keyword;
+    std::string warnings;
+    for (const auto& w : d.report.warnings) warnings += w.message + "\n";
+    EXPECT_NE(warnings.find("grnod_ID"), std::string::npos) << warnings;
+  }
+}
+
 TEST(LoadKeywords, ImpvelBadDirectionNamesDir) {
   test::TempDir dir;
   const std::string e = error_of(dir, imposed("/IMPVEL/4", "W", ""));

@@ -161,7 +161,9 @@ void read_imposed_motion(CardReader& reader, DeckContext& context, ImposedKind k
   im.dof = read_direction(line, true);
   im.skew_id = line.optional_id(21, 10, "skew_ID");
   im.sensor_id = line.optional_id(31, 10, "sensor_ID");
-  im.node_group_id = required_id(line, 41, "grnod_ID", "node group");
+  // grnod_ID 0 names no node: the card acts on nothing, as the reference runs it (measured: a deck with such an
+  // /IMPVEL and /IMPDISP gives the same energies as without them; generated decks leave such cards).
+  im.node_group_id = line.optional_id(41, 10, "grnod_ID");
   if (kind == ImposedKind::Velocity) {
     im.frame_id = line.optional_id(51, 10, "frame_ID");
     if (im.frame_id != 0 && im.skew_id != 0)
@@ -190,6 +192,11 @@ void read_imposed_motion(CardReader& reader, DeckContext& context, ImposedKind k
     if (im.t_stop < im.t_start) scales.fail(61, 20, "Tstop", "a stop time not before Tstart (0 or blank: never)");
   }
   reader.finish();
+  if (im.node_group_id == 0) {
+    context.note(line.where(), reader.card().keyword, "grnod_ID", "0: the card acts on no node, as in the reference",
+                 SkipKind::Unsupported);
+    return;
+  }
   context.model.imposed.push_back(std::move(im));
 }
 
