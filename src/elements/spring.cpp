@@ -51,10 +51,10 @@ SpringGroupParameters spring_parameters(const SpringSection& s, const std::vecto
   p.joint = s.joint;
   if (s.pretension.stroke_function >= 0) p.pretension_stroke = &functions[static_cast<std::size_t>(s.pretension.stroke_function)];
   if (s.pretension.time_function >= 0) p.pretension_time = &functions[static_cast<std::size_t>(s.pretension.time_function)];
-  if (p.joint.on)  // SP-25: a joint's step is its bodies' (SpringState::joint), not its laws' on its massless nodes
-    for (SpringDofParameters& d : p.dof) d.step_stiffness = 0.0, d.step_damping = 0.0;
   for (int d = 0; d < s.dofs(); ++d)
     p.dof[static_cast<std::size_t>(d)] = dof_parameters(s.dof[static_cast<std::size_t>(d)], functions);
+  if (p.joint.on)  // SP-25: a joint's step is its bodies' (SpringState::joint), not its laws' on its massless nodes
+    for (SpringDofParameters& d : p.dof) d.step_stiffness = 0.0, d.step_damping = 0.0;
   return p;
 }
 

@@ -92,12 +92,12 @@ std::pair<double, double> kinetic_energy(SolverState& s, bool whole_model) {
       const Vec3 S = b.first_moment;
       const Vec3 moment{R[0] * S.x + R[1] * S.y + R[2] * S.z, R[3] * S.x + R[4] * S.y + R[5] * S.z,
                         R[6] * S.x + R[7] * S.y + R[8] * S.z};
-      translational -= dot(b.velocity, cross(b.omega, moment));
+      const Vec3 turning = cross(b.omega, moment);
+      translational -= dot(b.velocity, turning);
       // and the secondary nodes' mass centre turning about the body's centre, 1/2 |w x R S|^2 / M, is spin: the
       // reference's translational column is 1/2 M V^2 of the centre (RB-7; measured with ICoG 3, a body spun about
       // its main node away from its nodes' mass centre: K-ENERGY T 0).
       if (b.mass > 0.0) {
-        const Vec3 turning = cross(b.omega, moment);
         const double centre_spin = 0.5 * dot(turning, turning) / b.mass;
         translational -= centre_spin, rotational += centre_spin;
       }

@@ -66,10 +66,37 @@ void write_first_frame(const Model& m, const SolverState& s, RunObserver& observ
   solver::advance_schedule(m, s, written, schedule);
 }
 
-// E-3 (docs/theory/energy.md): the energies of the state the run ends at, as the reference's last row gives them:
-// the elements' at the final positions x^N, the kinetic energy of the velocity at t^N, between the half steps
-// around it, and the work to t^N (that share of the next cycle's). The next cycle is taken on a copy of the state,
-// so that a restart and the next engine deck go on from the loop's state; false when a phase of that cycle stops.
+// E-3, E-3b (docs/theory/energy.md): the reference's row at t^n from a state whose forces were computed at x^n and
+// whose velocities were just integrated: the elements' energies at x^n, the kinetic energy of v^n between the half
+// steps around t^n (`scratch.before` and `bodies_before` the one before), v^n = v^(n-1/2) + w (v^(n+1/2) - v^(n-1/2))
+// with w the weight of the last half step in dt^n (1/2 at a constant step; a last step cut to the end time weighs
+// less; 0 in a run's first cycle), and the work and contact energy to t^n likewise from `before`. Leaves the state's
+// velocities at t^n.
+EnergyBalanceState energies_at_cycle_time(const Model& m, SolverState& s, const solver::VelocityScratch& scratch,
+                                          const std::vector<RigidBodyState>& bodies_before,
+                                          const EnergyBalanceState& before, double dt_average) {
+  const double w = s.cycle + s.cycles_done == 0 ? 0.0 : 0.5 * s.dt / dt_average;
+  auto at_cycle = [w](double before_value, double after) { return before_value + w * (after - before_value); };
+  NodalState& n = s.nodes;
+  const std::array<std::vector<double>*, 6> v{&n.vx, &n.vy, &n.vz, &n.wx, &n.wy, &n.wz};
+  for (std::size_t d = 0; d < 6; ++d)
+    for (std::size_t k = 0; k < n.size(); ++k) (*v[d])[k] = at_cycle(scratch.before[d][k], (*v[d])[k]);
+  for (std::size_t b = 0; b < s.bodies.size(); ++b)
+    for (std::size_t i = 0; i < 3; ++i) {
+      s.bodies[b].velocity[i] = at_cycle(bodies_before[b].velocity[i], s.bodies[b].velocity[i]);
+      s.bodies[b].omega[i] = at_cycle(bodies_before[b].omega[i], s.bodies[b].omega[i]);
+    }
+  const EnergyBalanceState loop = s.energy;
+  solver::update_energies(m, s);
+  EnergyBalanceState row = s.energy;
+  row.external_work = at_cycle(before.external_work, loop.external_work);
+  row.contact = at_cycle(before.contact, loop.contact);
+  return row;
+}
+
+// E-3: the energies of the state the run ends at, as the reference's last row gives them: the next cycle is taken on
+// a copy of the state, so that a restart and the next engine deck go on from the loop's state, and its energies at
+// t^N read as E-3b's; false when a phase of that cycle stops.
 bool end_state_energies(const Model& m, const SolverState& s, Exchange* exchange, bool selective,
                         EnergyBalanceState& end) {
   using namespace solver;
@@ -91,53 +118,22 @@ bool end_state_energies(const Model& m, const SolverState& s, Exchange* exchange
   const std::vector<RigidBodyState> bodies_before = next.bodies;
   integrate(next, scratch, dt_average, selective);
   apply_constraints(m, next, scratch, dt_average, dt_next);
-  // v^N between v^(N-1/2) and v^(N+1/2) at t^N, the weight of the last half step in dt^N (1/2 at a constant step;
-  // the last step cut to the end time weighs less), and the work to t^N likewise.
-  const double w = next.cycle + next.cycles_done == 0 ? 0.0 : 0.5 * next.dt / dt_average;
-  auto at_end = [w](double before, double after) { return before + w * (after - before); };
-  NodalState& n = next.nodes;
-  std::array<std::vector<double>*, 6> v{&n.vx, &n.vy, &n.vz, &n.wx, &n.wy, &n.wz};
-  for (std::size_t d = 0; d < 6; ++d)
-    for (std::size_t k = 0; k < n.size(); ++k) (*v[d])[k] = at_end(scratch.before[d][k], (*v[d])[k]);
-  for (std::size_t b = 0; b < next.bodies.size(); ++b)
-    for (std::size_t i = 0; i < 3; ++i) {
-      next.bodies[b].velocity[i] = at_end(bodies_before[b].velocity[i], next.bodies[b].velocity[i]);
-      next.bodies[b].omega[i] = at_end(bodies_before[b].omega[i], next.bodies[b].omega[i]);
-    }
-  update_energies(m, next);
-  end = next.energy;
-  end.external_work = at_end(s.energy.external_work, next.energy.external_work);
-  end.contact = at_end(s.energy.contact, next.energy.contact);
+  end = energies_at_cycle_time(m, next, scratch, bodies_before, s.energy, dt_average);
   return true;
 }
 
-// E-3b (docs/theory/energy.md): a printed row of cycle n as the reference's row at t^n, taken in the cycle that
-// computes the forces at x^n once its velocities are integrated: the elements' energies at x^n, the kinetic energy of
-// the velocity at t^n between the half steps around it (weighted as E-3's), and the work and contact energy to t^n,
-// between `before` (this cycle's start) and the loop's. The loop's state is left as it was.
+// E-3b: a printed row of cycle n, taken in the cycle that computes the forces at x^n once its velocities are
+// integrated; the loop's state is left as it was.
 EnergyBalanceState energies_at_cycle(const Model& m, SolverState& s, const solver::VelocityScratch& scratch,
                                      const std::vector<RigidBodyState>& bodies_before,
                                      const EnergyBalanceState& before, double dt_average) {
-  const double w = s.cycle + s.cycles_done == 0 ? 0.0 : 0.5 * s.dt / dt_average;
-  auto at_cycle = [w](double before_value, double after) { return before_value + w * (after - before_value); };
   NodalState& n = s.nodes;
   const std::array<std::vector<double>*, 6> v{&n.vx, &n.vy, &n.vz, &n.wx, &n.wy, &n.wz};
   std::array<std::vector<double>, 6> integrated;
-  for (std::size_t d = 0; d < 6; ++d) {
-    integrated[d] = *v[d];
-    for (std::size_t k = 0; k < n.size(); ++k) (*v[d])[k] = at_cycle(scratch.before[d][k], integrated[d][k]);
-  }
+  for (std::size_t d = 0; d < 6; ++d) integrated[d] = *v[d];
   std::vector<RigidBodyState> bodies_integrated = s.bodies;
-  for (std::size_t b = 0; b < s.bodies.size(); ++b)
-    for (std::size_t i = 0; i < 3; ++i) {
-      s.bodies[b].velocity[i] = at_cycle(bodies_before[b].velocity[i], bodies_integrated[b].velocity[i]);
-      s.bodies[b].omega[i] = at_cycle(bodies_before[b].omega[i], bodies_integrated[b].omega[i]);
-    }
   const EnergyBalanceState loop = s.energy;
-  solver::update_energies(m, s);
-  EnergyBalanceState row = s.energy;
-  row.external_work = at_cycle(before.external_work, loop.external_work);
-  row.contact = at_cycle(before.contact, loop.contact);
+  const EnergyBalanceState row = energies_at_cycle_time(m, s, scratch, bodies_before, before, dt_average);
   s.energy = loop;
   for (std::size_t d = 0; d < 6; ++d) *v[d] = std::move(integrated[d]);
   s.bodies = std::move(bodies_integrated);
@@ -191,11 +187,11 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunObse
   const long long start_cycle = s.cycle;
   double row_dt = s.dt;  // the step that led to the row's time, and what set it
   StepControl row_control;
+  EnergyBalanceState energy_before;  // at the start of a cycle whose row is printed
   std::vector<RigidBodyState> bodies_before;
   for (;;) {
     const bool row_now = s.cycle != start_cycle && s.cycle % schedule.print_every == 0;
-    const EnergyBalanceState energy_before = s.energy;
-    if (row_now) bodies_before = s.bodies;
+    if (row_now) energy_before = s.energy, bodies_before = s.bodies;
     if (body_sensors) switch_rigid_bodies_by_sensors(m, s);
     bool elements_deleted = false;
     StepBound bound = compute_element_forces(m, s, events, elements_deleted, options.exchange);
