@@ -83,14 +83,27 @@ double value_at_time(const std::vector<double>& t, const std::vector<double>& y,
 ListingCycles read_listing_cycles(const std::filesystem::path& listing) {
   std::ifstream in(listing);
   if (!in) throw std::runtime_error("cannot read the listing " + listing.string());
-  const std::regex row(R"(^\s*(\d+)\s+([-+0-9.eE]+)\s)");
+  const std::regex row(R"(^\s*(\d+)\s+([-+0-9.eE]+)\s+([-+0-9.eE]+)?)");
+  const std::regex energies(R"(%\s+([-+0-9.eEnaif]+)\s+([-+0-9.eEnaif]+)\s+([-+0-9.eEnaif]+))");
+  const auto number = [](const std::string& text) {
+    try {
+      return std::stod(text);
+    } catch (const std::exception&) {
+      return std::nan("");
+    }
+  };
   ListingCycles rows;
-  std::smatch m;
+  std::smatch m, e;
   for (std::string line; std::getline(in, line);) {
     if (!std::regex_search(line, m, row)) continue;
     const double cycle = std::stod(m[1]), time = std::stod(m[2]);
-    if (!rows.cycle.empty() && cycle < rows.cycle.back()) rows.time.clear(), rows.cycle.clear();
-    if (rows.time.empty() || time > rows.time.back()) rows.time.push_back(time), rows.cycle.push_back(cycle);
+    if (!rows.cycle.empty() && cycle < rows.cycle.back()) rows = ListingCycles{};
+    if (!rows.time.empty() && time <= rows.time.back()) continue;
+    rows.time.push_back(time), rows.cycle.push_back(cycle);
+    rows.dt.push_back(m[3].matched ? number(m[3]) : std::nan(""));
+    const bool has = std::regex_search(line, e, energies);
+    rows.internal.push_back(has ? number(e[1]) : std::nan(""));
+    rows.kinetic.push_back(has ? number(e[2]) + number(e[3]) : std::nan(""));
   }
   return rows;
 }
@@ -108,6 +121,9 @@ RunPoint read_run_point(const std::filesystem::path& output_directory, const std
   p.kinetic = value_at_time(t, kinetic, time);
   const ListingCycles listing = read_listing_cycles(output_directory / (name + ".out"));
   p.cycles = value_at_time(listing.time, listing.cycle, time);
+  if (!listing.time.empty() && std::isfinite(listing.internal.back()) && std::isfinite(listing.kinetic.back()) &&
+      time >= listing.time.back() - 0.5 * (std::isfinite(listing.dt.back()) ? listing.dt.back() : 0.0))
+    p.internal = listing.internal.back(), p.kinetic = listing.kinetic.back();
   return p;
 }
 

@@ -311,7 +311,8 @@ double choose_time_step(const Model& m, SolverState& s, RunEvents& events, StepB
     events.stop.dt = bound.dt, events.stop.minimum = rc.dt.minimum, events.stop.control = bound.control;
     return bound.dt;
   }
-  return s.time + bound.dt > rc.end_time ? std::max(rc.end_time - s.time, 0.0) : bound.dt;
+  // T-0: no step is cut to land on the end time; a run that starts at or past it takes none.
+  return s.time >= rc.end_time ? 0.0 : bound.dt;
 }
 
 void solve_accelerations(const Model& m, SolverState& s, RunEvents& events, double dt_average, double dt_next) {

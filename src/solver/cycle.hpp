@@ -75,8 +75,8 @@ void compute_contact_forces(const Model& model, SolverState& state, RunEvents& e
 // 2. External forces at t^n; rigid bodies gather their nodes' forces.
 void apply_loads(const Model& model, SolverState& state);
 
-// 3. dt^(n+1/2): the elements' and contact's bound, or the nodal step with mass scaling; cut to land on the end
-// time. Records a stop in `events` when the step is below the minimum or nothing bounds it.
+// 3. dt^(n+1/2): the elements' and contact's bound, or the nodal step with mass scaling; never cut to land on the
+// end time (T-0), 0 at or past it. Records a stop in `events` when the step is below the minimum or nothing bounds it.
 double choose_time_step(const Model& model, SolverState& state, RunEvents& events, StepBound& bound);
 
 // 3b. Selective mass scaling (/DT/AMS): the elements' added mass from their steps and the accelerations of

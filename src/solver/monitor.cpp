@@ -72,7 +72,8 @@ OutputSchedule::OutputSchedule(const RunControl& rc, double time, long long max)
     : next_frame(std::numeric_limits<double>::infinity()),
       next_history(std::numeric_limits<double>::infinity()),
       print_every(rc.print_every != 0 ? std::llabs(rc.print_every) : 100),
-      max_cycles(max) {
+      max_cycles(max),
+      last_frame_cycle(std::numeric_limits<long long>::min() / 2) {
   if (rc.anim_interval > 0.0)
     next_frame = time > rc.anim_start ? next_output_time(time, rc.anim_start, rc.anim_interval) : rc.anim_start;
   if (rc.history_interval > 0.0) next_history = time > 0.0 ? next_output_time(time, 0.0, rc.history_interval) : 0.0;
@@ -88,18 +89,30 @@ void keep_requested_results(const RunControl& rc, SolverState& s) {
 }
 
 bool frame_due(const SolverState& s, const OutputSchedule& schedule) {
-  return s.time >= schedule.next_frame * (1.0 - 1e-12);
+  return s.time >= schedule.next_frame;
 }
 
 bool MonitorDue::energies() const { return print || frame || history || cycle % 64 == 0; }
 
+// T-0 (docs/theory/time-loop.md, "The end of a run"): the run's last state is the last one whose time does not
+// pass the end time (no step is cut to land on it), unless frames are written and the last was 100 cycles or more
+// before the next: then the next cycle, past the end time, is the last, and its frame is the run's end frame.
+static bool run_ends_here(const RunControl& rc, const SolverState& s, const OutputSchedule& schedule, bool frame_now,
+                   double dt_next) {
+  if (s.time >= rc.end_time) return true;
+  if (!(s.time + dt_next > rc.end_time)) return false;
+  const long long next_cycle = s.cycles_done + s.cycle + 1;
+  const long long last_frame = frame_now ? next_cycle - 1 : schedule.last_frame_cycle;
+  return !(rc.anim_interval > 0.0 && next_cycle - last_frame >= kEndFrameCycles);
+}
+
 MonitorDue outputs_due(const Model& m, const SolverState& s, const OutputSchedule& schedule, double dt_next) {
   MonitorDue due{};
   due.cycle = s.cycle;
-  due.finished = s.time >= m.run.end_time * (1.0 - 1e-12) || dt_next <= 0.0 ||
+  due.frame = frame_due(s, schedule);
+  due.finished = run_ends_here(m.run, s, schedule, due.frame, dt_next) || dt_next <= 0.0 ||
                  (schedule.max_cycles >= 0 && s.cycle >= schedule.max_cycles);
   due.print = s.cycle % schedule.print_every == 0 || due.finished;
-  due.frame = frame_due(s, schedule);
   due.history = s.time >= schedule.next_history * (1.0 - 1e-12);
   return due;
 }
@@ -188,6 +201,7 @@ bool stop_requested(const std::atomic<int>* request, SolverState& s, RunEvents& 
 void advance_schedule(const Model& m, const SolverState& s, const MonitorDue& due, OutputSchedule& schedule) {
   const RunControl& rc = m.run;
   if (due.frame) schedule.next_frame = next_output_time(s.time, rc.anim_start, rc.anim_interval);
+  if (due.frame) schedule.last_frame_cycle = s.cycles_done + s.cycle;
   if (due.history && !rc.history_every_cycle())
     schedule.next_history = next_output_time(s.time, 0.0, rc.history_interval);
 }

@@ -22,10 +22,14 @@ void record_step_outputs(const Model& model, SolverState& state, const VelocityS
 void keep_requested_results(const RunControl& run, SolverState& state);
 
 // 7. Monitor: which outputs are due after a cycle, the energies they need, and the /STOP limits.
+// T-0: a run with frames goes one cycle past its end time, for its end frame, when its last frame is this many
+// cycles or more before that cycle (measured on the reference: a last frame 99 cycles before it does not, 100 and more do).
+inline constexpr long long kEndFrameCycles = 100;
 struct OutputSchedule {
   double next_frame, next_history;  // /ANIM/DT and /TFILE times [T] (infinite: none)
   long long print_every;            // listing row every |/PRINT| cycles (default 100)
   long long max_cycles;             // stop after this many cycles (-1: no limit)
+  long long last_frame_cycle;       // the run's cycle of the last frame written (the cycles before it: none)
   // The first outputs of a run that starts at `time` (0, or where a continued run takes over).
   OutputSchedule(const RunControl& run, double time, long long max_cycles);
 };

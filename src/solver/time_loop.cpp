@@ -36,6 +36,7 @@ void write_snapshot(RunObserver& observer, SolverState& s, const SolverOptions& 
   ResumeMarks marks;
   marks.engine_deck = options.engine_deck;
   marks.next_frame = schedule.next_frame, marks.next_history = schedule.next_history;
+  marks.last_frame_cycle = schedule.last_frame_cycle;
   marks.deleted_below_minimum_step = events.deleted_below_minimum_step;
   marks.switched_to_small_strain = events.switched_to_small_strain;
   marks.deleted_inverted = events.deleted_inverted;
@@ -48,6 +49,7 @@ void write_snapshot(RunObserver& observer, SolverState& s, const SolverOptions& 
 // A resumed run's monitor carries on from the snapshot's marks: the same output times, no warning twice.
 void resume_monitor(const ResumeMarks& marks, RunEvents& events, solver::OutputSchedule& schedule) {
   schedule.next_frame = marks.next_frame, schedule.next_history = marks.next_history;
+  schedule.last_frame_cycle = marks.last_frame_cycle;
   events.deleted_below_minimum_step = marks.deleted_below_minimum_step;
   events.switched_to_small_strain = marks.switched_to_small_strain;
   events.deleted_inverted = marks.deleted_inverted;
@@ -66,11 +68,22 @@ void write_first_frame(const Model& m, const SolverState& s, RunObserver& observ
   solver::advance_schedule(m, s, written, schedule);
 }
 
+// A /TFILE row of the state, with the velocity change of the cycle that led to it (accelerations, reactions).
+void write_history_row(SolverState& s, solver::VelocityScratch& scratch, double dt_average, double dt_next,
+                       RunObserver& observer, const SolverOptions& options) {
+  share_section_records(s, options.exchange);  // /TH/SECTIO, several domains: the sections' element loads
+  VelocityChange change;
+  for (std::size_t d = 0; d < 6; ++d) change.before[d] = &scratch.before[d], change.free[d] = &scratch.free[d];
+  change.dt = dt_average;
+  observer.history(s, dt_next, change);
+  if (options.on_history_row) options.on_history_row(s);
+}
+
 // E-3, E-3b (docs/theory/energy.md): the reference's row at t^n from a state whose forces were computed at x^n and
 // whose velocities were just integrated: the elements' energies at x^n, the kinetic energy of v^n between the half
 // steps around t^n (`scratch.before` and `bodies_before` the one before), v^n = v^(n-1/2) + w (v^(n+1/2) - v^(n-1/2))
-// with w the weight of the last half step in dt^n (1/2 at a constant step; a last step cut to the end time weighs
-// less; 0 in a run's first cycle), and the work and contact energy to t^n likewise from `before`. Leaves the state's
+// with w the weight of the last half step in dt^n (1/2 at a constant step; the share of the step before at a changing
+// one; 0 in a run's first cycle), and the work and contact energy to t^n likewise from `before`. Leaves the state's
 // velocities at t^n.
 EnergyBalanceState energies_at_cycle_time(const Model& m, SolverState& s, const solver::VelocityScratch& scratch,
                                           const std::vector<RigidBodyState>& bodies_before,
@@ -189,6 +202,8 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunObse
   StepControl row_control;
   EnergyBalanceState energy_before;  // at the start of a cycle whose row is printed
   std::vector<RigidBodyState> bodies_before;
+  long long last_history_cycle = -1;  // the cycle of the last history row, and the mean step of the last cycle
+  double last_dt_average = 0.0;
   for (;;) {
     const bool row_now = s.cycle != start_cycle && s.cycle % schedule.print_every == 0;
     if (row_now) energy_before = s.energy, bodies_before = s.bodies;
@@ -254,13 +269,10 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunObse
     }
     if (due.frame) observer.frame(s);
     if (due.history) {
-      share_section_records(s, options.exchange);  // /TH/SECTIO, several domains: the sections' element loads
-      VelocityChange change;
-      for (std::size_t d = 0; d < 6; ++d) change.before[d] = &scratch.before[d], change.free[d] = &scratch.free[d];
-      change.dt = dt_average;
-      observer.history(s, dt_next, change);
-      if (options.on_history_row) options.on_history_row(s);
+      write_history_row(s, scratch, dt_average, dt_next, observer, options);
+      last_history_cycle = s.cycle;
     }
+    last_dt_average = dt_average;
     advance_schedule(m, s, due, schedule);
     if (restart_now) write_snapshot(observer, s, options, events, schedule);
     if (show_progress) observer.progress(s, dt_next, control);
@@ -279,6 +291,9 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunObse
   const bool resumable = !events.stop.stopped() || events.stop.requested() || events.stop.is_limit();
   // The last row and the summary show the end state's energies (E-3); the loop's go on into a restart and the next
   // engine deck.
+  // The histories end on the state the run ends at (T-0), also off the /TFILE grid: a row as every other.
+  if (ended_on_a_cycle && std::isfinite(schedule.next_history) && last_history_cycle != s.cycle)
+    write_history_row(s, scratch, last_dt_average, dt_next, observer, options);
   const EnergyBalanceState loop_energy = s.energy;
   EnergyBalanceState end;
   const bool end_state = ended_on_a_cycle && resumable && end_state_energies(m, s, options.exchange, selective, end);

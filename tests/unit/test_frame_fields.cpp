@@ -351,11 +351,12 @@ TEST(FrameFields, FramesStartAtTimeZeroAndEndAtTheEndTimeOffTheGrid) {
   const double t1 = h5.attribute<double>(frame(1), "time"), t2 = h5.attribute<double>(frame(2), "time");
   EXPECT_TRUE(t1 >= 4e-4 && t1 < 4.1e-4) << t1;
   EXPECT_TRUE(t2 >= 8e-4 && t2 < 8.1e-4) << t2;
-  EXPECT_DOUBLE_EQ(h5.attribute<double>(frame(3), "time"), 1e-3);
-  EXPECT_DOUBLE_EQ(summary.time, 1e-3);
+  // The run ends within a step of its end time (T-0: no step is cut to land on it), and its frame is that state.
+  EXPECT_LT(std::abs(summary.time - 1e-3), summary.dt) << summary.time;
+  EXPECT_EQ(h5.attribute<double>(frame(3), "time"), summary.time);
   EXPECT_EQ(h5.attribute<std::int64_t>(frame(3), "cycle"), summary.cycles);
-  // The plate flies at 1 m/s: at the end it has moved 1 mm.
-  EXPECT_NEAR(h5.doubles(frame(3) + "/displacement")[2], 1e-3, 1e-12);
+  // The plate flies at 1 m/s: at the end it has moved 1 m/s times the end state's time.
+  EXPECT_NEAR(h5.doubles(frame(3) + "/displacement")[2], summary.time, 1e-12);
 }
 
 // On the grid, the end time's frame is the one the last cycle wrote: it is not written twice.
@@ -365,7 +366,8 @@ TEST(FrameFields, AnEndTimeOnTheGridIsWrittenOnce) {
   const ResultsReader h5(dir.path() / "TEST.h5");
   ASSERT_EQ(frame_count(h5), 3u);
   EXPECT_EQ(h5.attribute<double>(frame(0), "time"), 0.0);
-  EXPECT_DOUBLE_EQ(h5.attribute<double>(frame(2), "time"), 1e-3);
+  EXPECT_GE(h5.attribute<double>(frame(2), "time"), 1e-3);  // T-0: its last frame 100 cycles back, one past the end
+  EXPECT_EQ(h5.attribute<double>(frame(2), "time"), summary.time);
   EXPECT_EQ(h5.attribute<std::int64_t>(frame(2), "cycle"), summary.cycles);
   EXPECT_LT(h5.attribute<std::int64_t>(frame(1), "cycle"), summary.cycles);
 }
@@ -378,7 +380,7 @@ TEST(FrameFields, FramesStartAtTstart) {
   ASSERT_EQ(frame_count(h5), 3u);
   const double t0 = h5.attribute<double>(frame(0), "time");
   EXPECT_TRUE(t0 >= 3e-4 && t0 < 3.1e-4) << t0;
-  EXPECT_DOUBLE_EQ(h5.attribute<double>(frame(2), "time"), 1e-3);
+  EXPECT_GE(h5.attribute<double>(frame(2), "time"), 1e-3);  // T-0: the end frame, one cycle past the end time
 }
 
 // A run's recorded nodal results: the external force is the gravity load m g, and every node, free of

@@ -189,11 +189,13 @@ TEST(RunListing, StopRequestEndsTheRunAtTheEndOfTheCycle) {
             asked_at);  // not written twice
 }
 
-TEST(RunListing, StopRequestOnTheLastCycleLeavesANormalRun) {
+// A stop asked while the run writes its end state (its last history row, T-0) leaves it a normal run.
+TEST(RunListing, StopRequestAtTheEndStateLeavesANormalRun) {
   test::TempDir dir;
   std::atomic<int> stop{0};
-  const PlateRun run = run_plate(dir, "/RUN/TEST/1\n1e-4\n/TFILE\n1e-4\n", [&](const SolverState& s) {
-    if (s.time >= 1e-4 * (1.0 - 1e-12)) stop.store(SIGINT);
+  // A history row every cycle; the end state is the one whose next step would pass the end time (T-0).
+  const PlateRun run = run_plate(dir, "/RUN/TEST/1\n1e-4\n/TFILE\n1e-12\n", [&](const SolverState& s) {
+    if (s.time + s.dt > 1e-4) stop.store(SIGINT);
   }, &stop);
   ASSERT_NE(stop.load(), 0);
   EXPECT_EQ(run.summary.status, RunStatus::Normal) << run.summary.message;

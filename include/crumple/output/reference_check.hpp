@@ -54,13 +54,17 @@ ReferencePoint read_reference(const std::filesystem::path& file);
 double value_at_time(const std::vector<double>& t, const std::vector<double>& y, double time);
 
 // Time and cycle of the rows of the last energy table of a listing NAME.out (a continued run's tables start again
-// from cycle 0); rows of equal time keep the first.
+// from cycle 0); rows of equal time keep the first. Each row's step, internal energy and kinetic energy
+// (translational + rotational) where the row has them (NaN where not).
 struct ListingCycles {
   std::vector<double> time, cycle;
+  std::vector<double> dt, internal, kinetic;
 };
 ListingCycles read_listing_cycles(const std::filesystem::path& listing);
 
-// A run's values at the reference's time, from DIR/NAME.h5 (histories) and DIR/NAME.out (cycles).
+// A run's values at the reference's time, from DIR/NAME.h5 (histories) and DIR/NAME.out (cycles); at the run's end
+// (the reference's time within half a step of the listing's last row, or past it) the energies are that row's, the
+// end state's (docs/theory/energy.md, E-3; time-loop.md, T-0), where the histories hold the loop's.
 struct RunPoint {
   double history_end = 0.0;  // the last history time (NaN without rows)
   double internal = 0.0;

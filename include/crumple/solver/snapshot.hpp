@@ -23,6 +23,7 @@ struct ResumeMarks {
   int engine_deck = 1;  // 1 for NAME_0001.rad, 2 for NAME_0002.rad, ...
   double next_frame = std::numeric_limits<double>::infinity();    // [T]
   double next_history = std::numeric_limits<double>::infinity();  // [T]
+  long long last_frame_cycle = std::numeric_limits<long long>::min() / 2;  // the run's cycle of its last frame
   long long deleted_below_minimum_step = 0;
   long long switched_to_small_strain = 0;
   long long deleted_inverted = 0;
@@ -179,7 +180,7 @@ void visit_state(V& v, SolverState& s, ResumeMarks& marks) {
         {"external_work_at_start", &e.external_work_at_start}})
     v(std::string("energy/") + name, *field);
   v("marks/engine_deck", marks.engine_deck), v("marks/next_frame", marks.next_frame);
-  v("marks/next_history", marks.next_history);
+  v("marks/next_history", marks.next_history), v("marks/last_frame_cycle", marks.last_frame_cycle);
   v("marks/deleted_below_minimum_step", marks.deleted_below_minimum_step);
   v("marks/switched_to_small_strain", marks.switched_to_small_strain);
   v("marks/deleted_inverted", marks.deleted_inverted);
