@@ -370,8 +370,6 @@ void resolve_spring_switch(Resolver& r, Property& p) {
   };
   if (p.spring.radial)  // measured: the reference's inactive TYPE25 pushes with -10 times its force
     return refuse("sens_ID", "a sensor on /PROP/TYPE25 is");
-  if (sw.flag == 2 && p.spring.frame != SpringFrame::Axial)
-    return refuse("Isflag", "Isflag 2 (the six laws' rest taken anew) is");
   if (sw.flag == 2 && p.spring.per_unit_length) return refuse("Isflag", "Isflag 2 with Ileng 1 is");
   for (int d = 0; d < p.spring.dofs(); ++d)
     if (p.spring.dof[static_cast<std::size_t>(d)].hardening != 0)

@@ -384,13 +384,31 @@ void switch_off(SpringState& state, GroupStepResult& result, std::size_t ue) {
   ++result.failed;
 }
 
+// SP-24b: Isflag 2, the six laws' rest taken anew as the spring comes on: each deformation counts from the last idle
+// cycle's, so that its first is the cycle's increment; the measures kept whole move their rest by as much (a general
+// spring's offsets, a beam-type spring's length; one whose nodes meet at rest keeps its distance as its measure).
+void take_rest_anew(SpringState& state, std::size_t ue, SpringFrame frame, std::array<double, kSpringDofs>& delta) {
+  const std::size_t slot = kSpringDofs * ue;
+  for (std::size_t d = 0; d < kSpringDofs; ++d) {
+    const double before = state.elongation[slot + d];
+    if (frame == SpringFrame::Global && d < 3) state.rest_offset[3 * ue + d] += before;
+    if (frame == SpringFrame::Beam && d == 0) {
+      if (!(state.length0[ue] > 0.0)) continue;
+      state.length0[ue] += before;
+    }
+    delta[d] -= before;
+    state.elongation[slot + d] = 0.0;
+  }
+}
+
 // SP-24: a general or beam-type spring's switch this cycle; true while it is idle (no force, its elongations
 // followed, its step not the run's), false when its laws act (or, switched off, do their last work).
-bool six_law_spring_idles(const SpringSwitch& sw, SpringState& state, GroupStepResult& result, std::int32_t e,
-                          const std::array<double, kSpringDofs>& delta, double time) {
+bool six_law_spring_idles(const SpringSwitch& sw, SpringFrame frame, SpringState& state, GroupStepResult& result,
+                          std::int32_t e, std::array<double, kSpringDofs>& delta, double time) {
   const auto ue = static_cast<std::size_t>(e), slot = kSpringDofs * ue;
   const SwitchStep step = state.deleted[ue] ? SwitchStep::Acting : switch_step(sw, state.plastic_b[slot], time);
   if (step == SwitchStep::GoesOff) switch_off(state, result, ue);
+  if (step == SwitchStep::ComesOn && sw.flag == 2) take_rest_anew(state, ue, frame, delta);
   if (step != SwitchStep::Idle) return false;
   for (std::size_t d = 0; d < kSpringDofs; ++d)
     state.elongation[slot + d] = delta[d], state.force[slot + d] = state.elastic_force[slot + d] = 0.0;
@@ -569,8 +587,8 @@ GroupStepResult general_spring_forces(const ElementTable& table, const ElementGr
     if (recording && !(state.deleted[ue] & kElementElsewhere)) state.records.clear(ue);
     if (state.deleted[ue] & kElementElsewhere) continue;
     const std::int32_t* n = table.nodes_of(ue);
-    const std::array<double, kSpringDofs> delta = general_elongations(nodes, state, ue, n, dt, axes);
-    if (six_law_spring_idles(p.sensor, state, result, e, delta, time)) continue;
+    std::array<double, kSpringDofs> delta = general_elongations(nodes, state, ue, n, dt, axes);
+    if (six_law_spring_idles(p.sensor, SpringFrame::Global, state, result, e, delta, time)) continue;
     std::array<double, kSpringDofs> f{};
     bool broken = false;
     if (!six_law_step(p, state, e, delta, dt, result, f, broken)) continue;
@@ -725,10 +743,10 @@ GroupStepResult beam_spring_forces(const ElementTable& table, const ElementGroup
       const Vec3 y = geometry::rest_frame_y(scaled(axis, 1.0 / length), {0.0, 1.0, 0.0});
       y0[0] = y.x, y0[1] = y.y, y0[2] = y.z;
     }
-    const BeamKinematics k = !(length > 0.0) ? coincident_beam_kinematics(nodes, state, ue, n, dt)
-                                             : beam_kinematics(nodes, state, ue, n, dt, axis, length);
-    const std::array<double, kSpringDofs>& delta = k.delta;
-    if (six_law_spring_idles(p.sensor, state, result, e, delta, time)) continue;
+    BeamKinematics k = !(length > 0.0) ? coincident_beam_kinematics(nodes, state, ue, n, dt)
+                                       : beam_kinematics(nodes, state, ue, n, dt, axis, length);
+    std::array<double, kSpringDofs>& delta = k.delta;
+    if (six_law_spring_idles(p.sensor, SpringFrame::Beam, state, result, e, delta, time)) continue;
     std::array<double, kSpringDofs> f{};
     bool broken = false;
     if (!six_law_step(p, state, e, delta, dt, result, f, broken)) continue;

@@ -5,6 +5,8 @@
 #   spring_sensor_switches: /PROP/TYPE4 with Isflag 0 (on at 0.3 s, for good, its rest the length at t = 0), 1 (gone
 #   at 0.3 s) and 2 (on from 0.2 s to 0.6 s, its rest the length it had when it came on); /PROP/TYPE8 with Isflag 0
 #   and /PROP/TYPE13 with Isflag 1, all dofs acting.
+#   spring_sensor_rest_anew: /PROP/TYPE8 and /PROP/TYPE13 with Isflag 2 (on from 0.2 s to 0.6 s, each of their six
+#   laws' rest the deformation it had when it came on, SP-24b), beside the TYPE4 of Isflag 2 and 0.
 import os
 I = lambda *v: "".join("%10d" % x for x in v)
 R = lambda *v: "".join("%20.10g" % x for x in v)
@@ -24,11 +26,9 @@ def prop6(pid, card, sensor, flag):
     return s + (I(0) + R(0) + "\n" if card == "TYPE8" else R(0, 0, 0) + I(0) + "\n")
 
 
-def deck(name, run):
+def deck(name, run, props):
     s = "/BEGIN\n%s\n      2023         0\n%20s%20s%20s\n%20s%20s%20s\n" % (run, 'kg', 'm', 's', 'kg', 'm', 's')
     s += "/NODE\n" + "".join(I(2 * i + 1) + R(0, i, 0) + "\n" + I(2 * i + 2) + R(0.5, i, 0) + "\n" for i in range(6))
-    props = [prop4(1, 1, 0), prop4(2, 1, 1), prop4(3, 2, 2), prop6(4, "TYPE8", 1, 0), prop6(5, "TYPE13", 1, 1),
-             prop4(6, 0, 0, mass=0.001)]
     for i, p in enumerate(props):
         s += "/SPRING/%d\n" % (i + 1) + I(i + 1, 2 * i + 1, 2 * i + 2) + "\n/PART/%d\npart\n" % (i + 1) + I(i + 1, 0) + "\n" + p
     s += "/SENSOR/TIME/1\non at 0.3\n" + R(0.3) + "\n" + R(0.0) + "\n"
@@ -43,4 +43,7 @@ def deck(name, run):
     open(os.path.join(name, run + "_0001.rad"), "w").write("/RUN/%s/1\n0.9\n/TFILE\n0.01\n/PRINT/-1\n/DT\n0.9 0\n" % run)  # every cycle: the last row at the end
 
 
-deck("spring_sensor_switches", "SPRSENS")
+deck("spring_sensor_switches", "SPRSENS", [prop4(1, 1, 0), prop4(2, 1, 1), prop4(3, 2, 2), prop6(4, "TYPE8", 1, 0),
+                                          prop6(5, "TYPE13", 1, 1), prop4(6, 0, 0, mass=0.001)])
+deck("spring_sensor_rest_anew", "SPRANEW", [prop4(1, 1, 0), prop6(2, "TYPE8", 2, 2), prop4(3, 2, 2),
+                                            prop6(4, "TYPE8", 1, 0), prop6(5, "TYPE13", 2, 2), prop4(6, 0, 0, mass=0.001)])
