@@ -63,7 +63,9 @@ SpringGroupParameters spring_of_length(const SpringGroupParameters& p, double le
   if (!p.per_unit_length) return q;
   q.per_unit_length = false, q.mass *= length0, q.inertia *= length0;
   q.failure.translation_rate *= length0, q.failure.rotation_rate *= length0;
-  const bool limits = p.frame == SpringFrame::Beam && p.failure.measure == SpringFailureMeasure::Elongation;
+  // A beam-type spring's elongation limits are strains; a 1-D or TYPE25 spring's stay lengths (measured).
+  const bool limits =
+      p.frame == SpringFrame::Beam && !p.radial && p.failure.measure == SpringFailureMeasure::Elongation;
   for (SpringDofParameters& d : q.dof) {
     d.stiffness /= length0, d.damping /= length0, d.step_stiffness /= length0, d.abscissa_scale *= length0;
     d.log_rate_reference *= length0, d.rate_scale *= length0;  // SP-23 on the strain rate

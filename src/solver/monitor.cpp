@@ -97,8 +97,8 @@ bool MonitorDue::energies() const { return print || frame || history || cycle % 
 // T-0 (docs/theory/time-loop.md, "The end of a run"): the run's last state is the last one whose time does not
 // pass the end time (no step is cut to land on it), unless frames are written and the last was 100 cycles or more
 // before the next: then the next cycle, past the end time, is the last, and its frame is the run's end frame.
-static bool run_ends_here(const RunControl& rc, const SolverState& s, const OutputSchedule& schedule, bool frame_now,
-                   double dt_next) {
+static bool run_ends_here(const RunControl& rc, const SolverState& s, const OutputSchedule& schedule,
+                          bool frame_now, double dt_next) {
   if (s.time >= rc.end_time) return true;
   if (!(s.time + dt_next > rc.end_time)) return false;
   const long long next_cycle = s.cycles_done + s.cycle + 1;

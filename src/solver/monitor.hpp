@@ -23,7 +23,7 @@ void keep_requested_results(const RunControl& run, SolverState& state);
 
 // 7. Monitor: which outputs are due after a cycle, the energies they need, and the /STOP limits.
 // T-0: a run with frames goes one cycle past its end time, for its end frame, when its last frame is this many
-// cycles or more before that cycle (measured on the reference: a last frame 99 cycles before it does not, 100 and more do).
+// cycles or more before that cycle (measured on the reference: a last frame 99 cycles before it does not, 100 do).
 inline constexpr long long kEndFrameCycles = 100;
 struct OutputSchedule {
   double next_frame, next_history;  // /ANIM/DT and /TFILE times [T] (infinite: none)

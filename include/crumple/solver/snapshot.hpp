@@ -80,7 +80,8 @@ void visit_bricks(V& v, const std::string& at, BrickState& b) {
 template <class V>
 void visit_springs(V& v, const std::string& at, SpringState& sp) {
   for (auto [name, field] :
-       {std::pair{"length0", &sp.length0}, {"rest_offset", &sp.rest_offset}, {"frame_y", &sp.frame_y}, {"elongation", &sp.elongation}, {"force", &sp.force},
+       {std::pair{"length0", &sp.length0}, {"rest_offset", &sp.rest_offset}, {"frame_y", &sp.frame_y},
+        {"elongation", &sp.elongation}, {"force", &sp.force},
         {"elastic_force", &sp.elastic_force}, {"plastic_a", &sp.plastic_a}, {"plastic_b", &sp.plastic_b},
         {"radial_law", &sp.radial_law}, {"law_energy", &sp.law_energy}, {"joint", &sp.joint}, {"joint_frame", &sp.joint_frame}, {"internal_energy", &sp.internal_energy}, {"hourglass_energy", &sp.hourglass_energy},
         {"critical_dt", &sp.critical_dt}, {"mass", &sp.mass}})

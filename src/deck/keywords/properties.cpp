@@ -223,8 +223,8 @@ struct SpringLawNames {
   }
 };
 
-// Ileng (TYPE4 and TYPE13): 0, or 1 for the input per unit length (SP-21), which changes the dimensions of the mass,
-// inertia, stiffnesses and dampings, read after it.
+// Ileng (TYPE4, TYPE13 and TYPE25): 0, or 1 for the input per unit length (SP-21), which changes the dimensions of
+// the mass, inertia, stiffnesses and dampings, read after it.
 bool read_unit_length_flag(const Line& line, int column) {
   const std::int64_t ileng = line.integer(column, 10, "Ileng");
   if (ileng != 0 && ileng != 1) line.fail(column, 10, "Ileng", "0 (the values as given) or 1 (per unit length)");
@@ -615,11 +615,6 @@ void read_axisymmetric_spring_property(CardReader& reader, DeckContext& context)
   p.spring.frame = SpringFrame::Beam;
   p.spring.radial = true;
   read_beam_spring_mass(reader, context, p.spring);
-  if (p.spring.per_unit_length) {  // SP-21 measured on TYPE4 and TYPE13 only
-    context.unsupported(DeckError(p.where, reader.card().keyword, "Ileng",
-                                  default_only("the input per unit length (on /PROP/TYPE25) is"), "1"));
-    p.spring.per_unit_length = false;
-  }
   if (p.spring.failure.rate_effect) {  // measured on TYPE13 only
     context.unsupported(DeckError(p.where, reader.card().keyword, "Ifail2",
                                   default_only("a failure criterion other than the elongation's (on /PROP/TYPE25) is"),
@@ -630,6 +625,7 @@ void read_axisymmetric_spring_property(CardReader& reader, DeckContext& context)
   for (int d = 0; d < 4; ++d) {
     SpringLawNames names(d + 1, 3);
     names.axisymmetric = true;
+    if (p.spring.per_unit_length) names.per_unit_length(false);  // SP-21: its elongation limits stay lengths
     SpringLaw& law = p.spring.dof[kSlot[d]];
     RateFields rate;
     read_spring_stiffness(reader, law, names, rate);

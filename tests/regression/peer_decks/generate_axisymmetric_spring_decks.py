@@ -10,6 +10,9 @@
 #   spring_axi_circling: node 2 taken round a circle of 0.01 m about the axis at 0.2 m/s, the shear a nonlinear
 #     elastic law with C = 20: the dashpot acts on the radial rate only, so on the circle it does nothing
 #     (measured: the reference's tangential force is 0 there).
+#   spring_axi_unit_length: a spring of 0.5 m given per unit length (Ileng 1, SP-21), pulled at 0.03 m/s and sheared
+#     at 0.1 m/s for 0.06 s: its stiffnesses K / L0, its shear curve of the strain, and its tension limit delta_max =
+#     0.002 m a length (read as a strain, 0.001 m, it would break the spring near 0.033 s; the reference's holds).
 import math
 import os
 I = lambda *v: "".join("%10d" % x for x in v)
@@ -22,8 +25,8 @@ def law(k, c=0.0, fct=0, h=0, dmax=0.0):  # one law's three lines in TYPE25's la
     return R(k, c, 1, 0, 0) + "\n" + I(fct, h, 0, 0) + R(0, 0, dmax) + "\n" + R(1, 0) + I(0) + R(0) + "\n"
 
 
-def axi(tension, shear, torsion, bending):
-    return ("/PROP/TYPE25/1\naxisymmetric spring\n" + R(0.01, 0.001) + I(0, 0, 0, 0, 0, 0) + "\n" + tension + shear +
+def axi(tension, shear, torsion, bending, ileng=0):
+    return ("/PROP/TYPE25/1\naxisymmetric spring\n" + R(0.01, 0.001) + I(0, 0, 0, 0, ileng, 0) + "\n" + tension + shear +
             torsion + bending + R(0, 0) + "\n")
 
 
@@ -34,9 +37,9 @@ def functions(extra=()):
     return s
 
 
-def deck(name, run, prop, free, end, extra="", funcs=()):
+def deck(name, run, prop, free, end, extra="", funcs=(), length=1.0):
     s = "/BEGIN\n%s\n      2019         0\n%20s%20s%20s\n%20s%20s%20s\n" % (run, 'kg', 'm', 's', 'kg', 'm', 's')
-    s += "/NODE\n" + I(1) + R(0, 0, 0) + "\n" + I(2) + R(1, 0, 0) + "\n/SPRING/1\n" + I(1, 1, 2) + "\n"
+    s += "/NODE\n" + I(1) + R(0, 0, 0) + "\n" + I(2) + R(length, 0, 0) + "\n/SPRING/1\n" + I(1, 1, 2) + "\n"
     s += "/PART/1\nspring\n" + I(1, 0) + "\n" + prop + functions(funcs)
     s += "/GRNOD/NODE/1\nheld\n" + I(1) + "\n/BCS/1\nheld\n   111 111" + I(0, 1) + "\n"
     s += "/GRNOD/NODE/2\nend\n" + I(2) + "\n/BCS/2\nend\n   " + free + I(0, 2) + "\n" + extra
@@ -59,3 +62,5 @@ fy = [(0, 1.0), (t0, 1.0)] + [(t0 + 1e-4 + k * 0.0025, -math.sin(om * k * 0.0025
 fz = [(0, 0.0), (t0, 0.0)] + [(t0 + 1e-4 + k * 0.0025, math.cos(om * k * 0.0025)) for k in range(400)]
 deck("spring_axi_circling", "AXICIRC", axi(law(1e4), law(2000, 20.0, 1), law(30), law(40)), "100 111", 0.4,
      impvel(1, "Y", 11, 0.2) + impvel(2, "Z", 12, 0.2), [(11, fy), (12, fz)])
+deck("spring_axi_unit_length", "AXILENG", axi(law(1e4, 0, 0, 0, 0.002), law(2000, 0, 1), law(30), law(40), ileng=1),
+     "000 111", 0.06, impvel(1, "X", 99, 0.03) + impvel(2, "Y", 99, 0.1), length=0.5)
