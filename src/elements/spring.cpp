@@ -49,8 +49,11 @@ SpringGroupParameters spring_parameters(const SpringSection& s, const std::vecto
   p.mass = s.mass, p.inertia = s.inertia, p.frame = s.frame, p.radial = s.radial;
   p.per_unit_length = s.per_unit_length, p.pretension = s.pretension, p.failure = s.failure, p.sensor = s.sensor;
   p.joint = s.joint;
-  if (s.pretension.stroke_function >= 0) p.pretension_stroke = &functions[static_cast<std::size_t>(s.pretension.stroke_function)];
-  if (s.pretension.time_function >= 0) p.pretension_time = &functions[static_cast<std::size_t>(s.pretension.time_function)];
+  const auto function = [&functions](std::int32_t k) {
+    return k >= 0 ? &functions[static_cast<std::size_t>(k)] : nullptr;
+  };
+  p.pretension_stroke = function(s.pretension.stroke_function);
+  p.pretension_time = function(s.pretension.time_function);
   for (int d = 0; d < s.dofs(); ++d)
     p.dof[static_cast<std::size_t>(d)] = dof_parameters(s.dof[static_cast<std::size_t>(d)], functions);
   if (p.joint.on)  // SP-25: a joint's step is its bodies' (SpringState::joint), not its laws' on its massless nodes
@@ -653,7 +656,8 @@ GroupStepResult joint_forces(const ElementTable& table, const ElementGroup& grou
                                                 last[3] + turn.x,   last[4] + turn.y,   last[5] + turn.z};
     const double* blocking = &state.joint[SpringState::kJointValues * ue];
     for (std::size_t d = 0; d < kSpringDofs; ++d)
-      if (!p.joint.free(d)) own.dof[d].stiffness = blocking[d < 3 ? 0 : 1], own.dof[d].damping = blocking[d < 3 ? 2 : 3];
+      if (!p.joint.free(d))  // the translations' stiffness and damping, or the rotations'
+        own.dof[d].stiffness = blocking[d < 3 ? 0 : 1], own.dof[d].damping = blocking[d < 3 ? 2 : 3];
     std::array<double, kSpringDofs> force{};
     bool broken = false;
     if (!six_law_step(own, state, e, delta, dt, result, force, broken)) continue;

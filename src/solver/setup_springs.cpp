@@ -84,7 +84,8 @@ JointBody joint_body(const SolverState& s, const RigidBodyState& body, std::int3
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) inertia(i, j) = body.inertia_body[static_cast<std::size_t>(3 * i + j)];
   const double least = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(inertia, Eigen::EigenvaluesOnly).eigenvalues()(0);
-  return {body.mass, least, inertia.trace() / 3.0, norm(node_position(s.nodes, node) - node_position(s.nodes, body.main_node))};
+  const double arm = norm(node_position(s.nodes, node) - node_position(s.nodes, body.main_node));
+  return {body.mass, least, inertia.trace() / 3.0, arm};
 }
 
 }  // namespace
@@ -119,7 +120,8 @@ void resolve_joints(const Model& m, SolverState& s, double dt) {
         b[a] = joint_body(s, s.bodies[static_cast<std::size_t>(body_of[static_cast<std::size_t>(n[a])])], n[a]);
       const double mass = std::min(b[0].mass, b[1].mass), inertia = std::min(b[0].least_inertia, b[1].least_inertia);
       const double arm = std::max(b[0].arm, b[1].arm), per_step = joint.stiffness_scale / (4.1 * dt * dt);
-      const double translation = per_step * (arm > 0.0 ? std::min(2.0 * mass, 0.8 * inertia / (arm * arm)) : 2.0 * mass);
+      const double held = arm > 0.0 ? std::min(2.0 * mass, 0.8 * inertia / (arm * arm)) : 2.0 * mass;
+      const double translation = per_step * held;
       const double reduced = b[0].mass * b[1].mass / (b[0].mass + b[1].mass);
       const double reduced_inertia = b[0].mean_inertia * b[1].mean_inertia / (b[0].mean_inertia + b[1].mean_inertia);
       double* v = &s.springs.joint[SpringState::kJointValues * e];

@@ -289,11 +289,11 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunObse
   // A snapshot at the end with /RFILE, and always when the run was asked to stop (it can go on from there); never
   // after a failure (NaN, inverted element), whose state is not worth resuming.
   const bool resumable = !events.stop.stopped() || events.stop.requested() || events.stop.is_limit();
-  // The last row and the summary show the end state's energies (E-3); the loop's go on into a restart and the next
-  // engine deck.
   // The histories end on the state the run ends at (T-0), also off the /TFILE grid: a row as every other.
   if (ended_on_a_cycle && std::isfinite(schedule.next_history) && last_history_cycle != s.cycle)
     write_history_row(s, scratch, last_dt_average, dt_next, observer, options);
+  // The last row and the summary show the end state's energies (E-3); the loop's go on into a restart and the next
+  // engine deck.
   const EnergyBalanceState loop_energy = s.energy;
   EnergyBalanceState end;
   const bool end_state = ended_on_a_cycle && resumable && end_state_energies(m, s, options.exchange, selective, end);

@@ -11,9 +11,9 @@ namespace crumple {
 
 struct SpringState : ElementKindState {  // no integration points: points and eps_p stay empty
   // Per element (index in the Spring ElementTable).
-  std::vector<double> length0;         // length at t = 0 [L]
+  std::vector<double> length0;         // length at t = 0, moved by an Isflag 2 switch (SP-24, SP-24b) [L]
   std::vector<double> rest_offset;     // 3 per spring: x2 - x1 at t = 0, the general spring's rest (SP-9), moved by an
-                                       // Isflag 2 switch (SP-24b; a beam-type spring's axial rest in the first) [L]
+                                       // Isflag 2 switch (SP-24b) [L]
   std::vector<double> frame_y;         // 3 per spring: a beam-type spring's Y axis, turning with it (SP-15)
   std::vector<double> step_stiffness;  // the stiffness of its step, which it gives each node in the nodal steps [F/L]
   std::vector<double> nodal_step;      // its step: its nodes' masses held by every spring on them (SP-19) [T]
