@@ -15,7 +15,7 @@ struct Scene {
   Model model;
   NodalState nodes;
   ContactState contact;
-  ElementTable table{ElementKind::Shell4, {}, {}, {}, {}, {}, {}};
+  ElementTable table = empty_element_tables()[static_cast<std::size_t>(ElementKind::Shell4)];
   ElementGroup group{ElementKind::Shell4, 0, 0, 0, 0, 0};
   ShellState state;
   ShellGroupParameters p;

@@ -13,7 +13,7 @@ namespace {
 using namespace crumple;
 
 struct Plate {
-  ElementTable table{ElementKind::Shell4, {}, {}, {}, {}, {}, {}};
+  ElementTable table = empty_element_tables()[static_cast<std::size_t>(ElementKind::Shell4)];
   ElementGroup group{ElementKind::Shell4, 0, 0, 0, 0, 0};
   NodalState nodes;
   ShellState state;

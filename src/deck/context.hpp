@@ -23,6 +23,7 @@ struct RawElements {
   std::vector<double> thickness;       // shells: the card's own thickness [L], 0 = the part's or property's
   std::vector<std::int64_t> orientation_node_id;  // springs, beams: node_ID3, the orientation node (0: none)
   std::vector<SourceLocation> orientation_where;
+  std::vector<std::int64_t> plane_node_id;  // springs: node_ID4, a joint's second frame node (0: none)
   std::vector<double> orientation_vector;  // beams: Vx Vy Vz, 3 per beam
 };
 

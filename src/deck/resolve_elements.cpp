@@ -13,23 +13,29 @@
 namespace crumple::deck {
 namespace {
 
-// node_ID3: a beam's orientation node (docs/theory/beam.md, BM-0) or a beam-type spring's (docs/theory/spring.md,
-// SP-15); the other spring types take none.
-std::int32_t orientation_node(Resolver& r, ElementKind kind, const RawElements& raw, std::size_t e, std::int32_t part) {
-  const std::int64_t id = raw.orientation_node_id[e];
+// node_ID3: a beam's orientation node (docs/theory/beam.md, BM-0), a beam-type spring's (docs/theory/spring.md,
+// SP-15) or a joint's axis (SP-25f); node_ID4 (`second`): a joint's second frame node. The other spring types take
+// neither.
+std::int32_t orientation_node(Resolver& r, ElementKind kind, const RawElements& raw, std::size_t e, std::int32_t part,
+                              bool second = false) {
+  const std::int64_t id = second ? raw.plane_node_id[e] : raw.orientation_node_id[e];
   if (id == 0) return -1;
   const Model& m = r.model;
   const std::string keyword = fmt::format("{}/{}", describe(kind).card, raw.part_id[e]);
+  const std::string field = second ? "node_ID4" : "node_ID3";
   const std::int32_t property = m.parts[static_cast<std::size_t>(part)].property;
   const SpringSection& spring = m.properties[static_cast<std::size_t>(property)].spring;
-  if (kind == ElementKind::Spring && spring.frame != SpringFrame::Beam && spring.joint.frame_nodes() == 0) {
-    r.context.unsupported(DeckError(raw.orientation_where[e], keyword, "node_ID3",
-                                    "blank (a third node orients /PROP/TYPE13 and TYPE25 springs and revolute joints only; on "
-                                    "another type it is not supported by Crumple)",
-                                    std::to_string(id)));
+  const bool takes = spring.joint.on || (!second && spring.frame == SpringFrame::Beam);
+  if (kind == ElementKind::Spring && !takes) {
+    const std::string expected =
+        second ? "blank (a fourth node sets the frame of /PROP/TYPE45 joints only; on another type it is not "
+                 "supported by Crumple)"
+               : "blank (a third node orients /PROP/TYPE13 and TYPE25 springs and /PROP/TYPE45 joints only; on "
+                 "another type it is not supported by Crumple)";
+    r.context.unsupported(DeckError(raw.orientation_where[e], keyword, field, expected, std::to_string(id)));
     return -1;
   }
-  return r.find(m.index.nodes, id, raw.orientation_where[e], keyword, "node_ID3", "node");
+  return r.find(m.index.nodes, id, raw.orientation_where[e], keyword, field, "node");
 }
 
 // A beam's vector Vx Vy Vz along the beam orients nothing: the reference warns (its warning 3090) and takes its
@@ -187,6 +193,9 @@ void resolve_kind(Resolver& r, ElementKind kind) {
   const bool oriented = std::any_of(raw.orientation_node_id.begin(), raw.orientation_node_id.end(),
                                     [](std::int64_t id) { return id != 0; });
   table.orientation_node.assign(oriented ? count : 0, -1);
+  const bool planed =
+      std::any_of(raw.plane_node_id.begin(), raw.plane_node_id.end(), [](std::int64_t id) { return id != 0; });
+  table.plane_node.assign(planed ? count : 0, -1);
   table.orientation_vector.assign(raw.orientation_vector.empty() ? 0 : 3 * count, 0.0);
   IdMap& index = m.index.elements[static_cast<int>(kind)];
   index.reserve(count);
@@ -196,6 +205,7 @@ void resolve_kind(Resolver& r, ElementKind kind) {
     table.part[i] = part[e];
     if (own_thickness) table.thickness[i] = raw.thickness[e];
     if (oriented) table.orientation_node[i] = orientation_node(r, kind, raw, e, part[e]);
+    if (planed) table.plane_node[i] = orientation_node(r, kind, raw, e, part[e], true);
     if (!raw.orientation_vector.empty()) std::copy_n(&raw.orientation_vector[3 * e], 3, &table.orientation_vector[3 * i]);
     std::copy_n(&connectivity[e * static_cast<std::size_t>(n)], n, &table.connectivity[i * static_cast<std::size_t>(n)]);
     index.emplace(raw.user_id[e], static_cast<std::int32_t>(i));

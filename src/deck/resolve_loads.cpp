@@ -359,6 +359,17 @@ std::string rigid_wall_keyword(const RigidWall& w) {
   return fmt::format("/RWALL/{}/{}", rigid_wall_shape_name(w.shape), w.user_id);
 }
 
+// A joint's Skew_ID1 (docs/theory/spring.md, SP-25f): a fixed skew, whose axes at rest set the joint's frame; a moving
+// one is refused (what the reference's frame does after it was not measured).
+void resolve_joint_skew(Resolver& r, Property& p) {
+  SpringJoint& joint = p.spring.joint;
+  const std::string kw = fmt::format("/PROP/TYPE45/{}", p.user_id);
+  joint.skew = r.find(r.model.index.skews, joint.skew_id, p.where, kw, "Skew_ID1", "skew");
+  if (joint.skew >= 0 && r.model.skews[static_cast<std::size_t>(joint.skew)].kind != SkewKind::Fixed)
+    r.context.unsupported(DeckError(p.where, kw, "Skew_ID1", default_only("a joint's moving skew is"),
+                                    std::to_string(joint.skew_id)));
+}
+
 // A spring switched by a sensor (docs/theory/spring.md, SP-24): the sensor's window, and what is measured only.
 void resolve_spring_switch(Resolver& r, Property& p) {
   SpringSwitch& sw = p.spring.sensor;
@@ -383,6 +394,8 @@ void resolve_load_references(Resolver& r) {
     if (p.kind == PropertyKind::Spring && p.spring.skew_id != 0)
       p.spring.skew = r.find(r.model.index.skews, p.spring.skew_id, p.where,
                              fmt::format("/PROP/{}/{}", p.spring.card(), p.user_id), "skew_ID", "skew");
+  for (Property& p : r.model.properties)  // a joint's frame (docs/theory/spring.md, SP-25f)
+    if (p.kind == PropertyKind::Spring && p.spring.joint.skew_id != 0) resolve_joint_skew(r, p);
   r.index(m.sensors, m.index.sensors, "/SENSOR");
   for (Property& p : r.model.properties)
     if (p.kind == PropertyKind::Spring && p.spring.sensor.sensor_id != 0) resolve_spring_switch(r, p);

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <vector>
 
 #include "resolve.hpp"
 
@@ -203,6 +204,45 @@ void resolve_rigid_elements(Resolver& r) {
 
 namespace crumple::deck {
 
+namespace {
+
+// SP-25f: a joint's frame nodes, node_ID3 away from its first node where its type needs it or it is given, and
+// node_ID4 off the line of the two where the universal or the free joint needs it or it is given; a Skew_ID1 beside
+// node_ID3 is named once per property (`skew_noted`).
+void check_joint_frame_nodes(Resolver& r, const Property& p, const ElementTable& table, std::size_t e,
+                             char& skew_noted) {
+  const Model& m = r.model;
+  const std::int32_t* n = table.nodes_of(e);
+  const std::int32_t third = table.orientation_node.empty() ? -1 : table.orientation_node[e];
+  const std::int32_t fourth = table.plane_node.empty() ? -1 : table.plane_node[e];
+  const int needs = p.spring.joint.frame_nodes();
+  const std::string keyword = fmt::format("/PROP/TYPE45/{}", p.user_id);
+  const std::string spring = fmt::format("/SPRING {}", table.user_id[e]);
+  const auto from_first = [&](std::int32_t k) { return m.nodes.position(k) - m.nodes.position(n[0]); };
+  if ((needs >= 1 || third >= 0 || fourth >= 0) && (third < 0 || !(norm(from_first(third)) > 0.0))) {
+    r.error(p.where, keyword, "node_ID3",
+            "on the joint's /SPRING card a third node away from its first, which sets the joint's frame (every type "
+            "but 1 and 8 needs it, or a Skew_ID1)",
+            spring);
+    return;
+  }
+  if (third >= 0 && p.spring.joint.skew_id != 0 && !skew_noted) {
+    skew_noted = 1;
+    r.context.note(p.where, keyword, "Skew_ID1",
+                   "sets the frame only where the /SPRING card gives no node_ID3; ignored, as by the reference",
+                   SkipKind::Unsupported);
+  }
+  if (needs < 2 && fourth < 0) return;
+  const Vec3 axis = from_first(third), plane = fourth < 0 ? Vec3{} : from_first(fourth);
+  if (fourth < 0 || !(norm(cross(axis, plane)) > 1e-9 * norm(axis) * norm(plane)))
+    r.error(p.where, keyword, "node_ID4",
+            "on the joint's /SPRING card a fourth node off the line of its first and third, which with them sets the "
+            "joint's frame (Type 5 and 9 need it)",
+            spring);
+}
+
+}  // namespace
+
 // SP-25: a joint's blocking stiffness follows from the masses and inertias of the two rigid bodies it joins, one per
 // node (the reference's automatic stiffness "from rigid bodies"); a node off every body has none that Crumple takes.
 void refuse_joints_off_bodies(Resolver& r) {
@@ -216,19 +256,14 @@ void refuse_joints_off_bodies(Resolver& r) {
     body_of[static_cast<std::size_t>(body.main_node)] = static_cast<std::int32_t>(b);
   }
   const ElementTable& table = m.elements[static_cast<int>(ElementKind::Spring)];
+  std::vector<char> skew_noted(m.properties.size(), 0);
   for (const ElementGroup& group : m.element_groups) {
     if (group.kind != ElementKind::Spring) continue;
     const Property& p = m.properties[static_cast<std::size_t>(group.property)];
     if (!p.spring.joint.on) continue;
     for (auto e = static_cast<std::size_t>(group.begin); e < static_cast<std::size_t>(group.end); ++e) {
       const std::int32_t* n = table.nodes_of(e);
-      if (p.spring.joint.frame_nodes() > 0) {  // the revolute joint's X: from node 1 to node_ID3 (SP-25f)
-        const std::int32_t third = table.orientation_node.empty() ? -1 : table.orientation_node[e];
-        if (third < 0 || !(norm(m.nodes.position(third) - m.nodes.position(n[0])) > 0.0))
-          r.error(p.where, fmt::format("/PROP/TYPE45/{}", p.user_id), "node_ID3",
-                  "on the joint's /SPRING card a third node away from its first, which sets the revolute joint's axis",
-                  fmt::format("/SPRING {}", table.user_id[e]));
-      }
+      check_joint_frame_nodes(r, p, table, e, skew_noted[static_cast<std::size_t>(group.property)]);
       const std::int32_t a = body_of[static_cast<std::size_t>(n[0])], b = body_of[static_cast<std::size_t>(n[1])];
       if (a >= 0 && b >= 0 && a != b) continue;
       r.error(p.where, fmt::format("/PROP/TYPE45/{}", p.user_id), "Kn",

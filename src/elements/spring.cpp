@@ -628,6 +628,20 @@ std::array<Vec3, 3> turn_joint_frame(double* frame, const Vec3& mean_turn) {
   return {x, y, z};
 }
 
+// SP-25f: the universal joint's frame, its Y turned with body 1 (node 1) and its Z with body 2, X = Y x Z, each kept
+// normal to X; the frame the joint acts in is (X, Y, X x Y). The storage keeps Z as body 2 turned it.
+std::array<Vec3, 3> turn_universal_frame(double* frame, const Vec3& turn1, const Vec3& turn2) {
+  const auto unit = [](const Vec3& v) { return scaled(v, 1.0 / norm(v)); };
+  Vec3 y = turned({frame[3], frame[4], frame[5]}, turn1), z = turned({frame[6], frame[7], frame[8]}, turn2);
+  const Vec3 x = unit(cross(y, z));
+  y = unit(y - scaled(x, dot(x, y)));
+  z = unit(z - scaled(x, dot(x, z)));
+  const Vec3 kept[3] = {x, y, z};
+  for (std::size_t a = 0; a < 3; ++a)
+    frame[3 * a] = kept[a].x, frame[3 * a + 1] = kept[a].y, frame[3 * a + 2] = kept[a].z;
+  return {x, y, cross(x, y)};
+}
+
 Vec3 in_frame(const std::array<Vec3, 3>& f, const Vec3& v) { return {dot(f[0], v), dot(f[1], v), dot(f[2], v)}; }
 Vec3 from_frame(const std::array<Vec3, 3>& f, double a, double b, double c) {
   return scaled(f[0], a) + scaled(f[1], b) + scaled(f[2], c);
@@ -647,7 +661,9 @@ GroupStepResult joint_forces(const ElementTable& table, const ElementGroup& grou
     if (state.deleted[ue] & kElementElsewhere) continue;
     const std::int32_t* n = table.nodes_of(ue);
     const Vec3 w1 = spin(nodes, static_cast<std::size_t>(n[0])), w2 = spin(nodes, static_cast<std::size_t>(n[1]));
-    const std::array<Vec3, 3> f = turn_joint_frame(&state.joint_frame[9 * ue], scaled(w1 + w2, 0.5 * dt));
+    double* frame = &state.joint_frame[9 * ue];
+    const std::array<Vec3, 3> f = p.joint.type == 5 ? turn_universal_frame(frame, scaled(w1, dt), scaled(w2, dt))
+                                                    : turn_joint_frame(frame, scaled(w1 + w2, 0.5 * dt));
     const Vec3 offset = in_frame(f, node_position(nodes, n[1]) - node_position(nodes, n[0]));
     const Vec3 turn = in_frame(f, scaled(w2 - w1, dt));
     const double* rest = &state.rest_offset[3 * ue];
@@ -662,7 +678,9 @@ GroupStepResult joint_forces(const ElementTable& table, const ElementGroup& grou
     bool broken = false;
     if (!six_law_step(own, state, e, delta, dt, result, force, broken)) continue;
     const Vec3 on2 = from_frame(f, force[0], force[1], force[2]), moment = from_frame(f, force[3], force[4], force[5]);
-    hand_two_node_load(nodes, state.records, recording, ue, n, on2, scaled(moment, -1.0), moment);
+    // SP-25h: the pair's couple (x1 - x2) x F, half on each node, as the work of the turning frame asks.
+    const Vec3 half_couple = scaled(cross(node_position(nodes, n[0]) - node_position(nodes, n[1]), on2), 0.5);
+    hand_two_node_load(nodes, state.records, recording, ue, n, on2, half_couple - moment, half_couple + moment);
     close_element(state, result, e, blocking[4], broken);  // its bodies' step on it (SP-25)
   }
   return result;

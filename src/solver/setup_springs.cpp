@@ -28,23 +28,34 @@ Vec3 reference_y(const Model& m, const ElementGroup& group, std::size_t e) {
   return skew_axes(m.skews[static_cast<std::size_t>(section.skew)], m.nodes.x, m.nodes.y, m.nodes.z).axis[1];
 }
 
-// SP-25f: a joint's frame at rest, the global axes, or the revolute joint's from its /SPRING card's third node (the
-// reference's starter listing, 22 directions: X from node 1 to it; Y = X x e_x where X's largest component is z, else
-// e_z x X; Z = X x Y); returns the rest offset of node 2 from node 1 in it.
-Vec3 joint_frame_at_rest(const Model& m, std::size_t e, SpringState& st) {
+// SP-25f: a joint's frame at rest (the reference's starter listing): the global axes; given node_ID3 alone, X from
+// node 1 to it, Y = X x e_x where X's largest component is z, else e_z x X, Z = X x Y; given node_ID4 too, a along
+// node_ID3, b towards node_ID4 normal to a, and (X, Y, Z) = (a, b, a x b), the universal joint's (a x b, a, b); given
+// neither but a Skew_ID1, its axes at rest. Returns the rest offset of node 2 from node 1 in it.
+Vec3 joint_frame_at_rest(const Model& m, std::size_t e, const SpringJoint& joint, SpringState& st) {
   const ElementTable& table = m.elements[static_cast<int>(ElementKind::Spring)];
   const std::int32_t* n = table.nodes_of(e);
+  const std::int32_t third = table.orientation_node.empty() ? -1 : table.orientation_node[e];
+  const std::int32_t fourth = table.plane_node.empty() ? -1 : table.plane_node[e];
   std::array<Vec3, 3> f{Vec3{1.0, 0.0, 0.0}, Vec3{0.0, 1.0, 0.0}, Vec3{0.0, 0.0, 1.0}};
-  if (!table.orientation_node.empty() && table.orientation_node[e] >= 0) {
-    const Vec3 along = m.nodes.position(table.orientation_node[e]) - m.nodes.position(n[0]);
-    const Vec3 x = scaled(along, 1.0 / norm(along));
-    const bool z_largest = std::abs(x.z) >= std::abs(x.x) && std::abs(x.z) >= std::abs(x.y);
-    const Vec3 y = z_largest ? cross(x, Vec3{1.0, 0.0, 0.0}) : cross(Vec3{0.0, 0.0, 1.0}, x);
-    f = {x, scaled(y, 1.0 / norm(y)), Vec3{}};
-    f[2] = cross(f[0], f[1]);
+  const auto unit = [](const Vec3& v) { return scaled(v, 1.0 / norm(v)); };
+  if (third >= 0) {
+    const Vec3 a = unit(m.nodes.position(third) - m.nodes.position(n[0]));
+    Vec3 b;
+    if (fourth >= 0) {
+      const Vec3 towards = m.nodes.position(fourth) - m.nodes.position(n[0]);
+      b = unit(towards - scaled(a, dot(a, towards)));
+    } else {
+      const bool z_largest = std::abs(a.z) >= std::abs(a.x) && std::abs(a.z) >= std::abs(a.y);
+      b = unit(z_largest ? cross(a, Vec3{1.0, 0.0, 0.0}) : cross(Vec3{0.0, 0.0, 1.0}, a));
+    }
+    f = joint.type == 5 ? std::array<Vec3, 3>{cross(a, b), a, b} : std::array<Vec3, 3>{a, b, cross(a, b)};
+  } else if (joint.skew >= 0) {
+    const SkewAxes skew = skew_axes(m.skews[static_cast<std::size_t>(joint.skew)], m.nodes.x, m.nodes.y, m.nodes.z);
+    f = {skew.axis[0], skew.axis[1], skew.axis[2]};
   }
   double* frame = &st.joint_frame[9 * e];
-  for (std::size_t a = 0; a < 3; ++a) frame[3 * a] = f[a].x, frame[3 * a + 1] = f[a].y, frame[3 * a + 2] = f[a].z;
+  for (std::size_t k = 0; k < 3; ++k) frame[3 * k] = f[k].x, frame[3 * k + 1] = f[k].y, frame[3 * k + 2] = f[k].z;
   const Vec3 offset = m.nodes.position(n[1]) - m.nodes.position(n[0]);
   return {dot(f[0], offset), dot(f[1], offset), dot(f[2], offset)};
 }
@@ -130,12 +141,13 @@ void resolve_joints(const Model& m, SolverState& s, double dt) {
       v[3] = joint.critical_damping * std::sqrt(v[1] * reduced_inertia);
       double step = 1e30;
       const SpringGroupParameters& p = s.spring_groups[g];
-      for (int a = 0; a < 2; ++a) {
-        step = std::min(step, held_mass_step(b[a].mass, v[0], v[2]));
-        for (std::size_t d = 3; d < kSpringDofs; ++d)
-          step = std::min(step, joint.free(d) ? held_mass_step(b[a].least_inertia, p.dof[d].stiffness, p.dof[d].damping)
-                                              : held_mass_step(b[a].least_inertia, v[1], v[3]));
-      }
+      for (int a = 0; a < 2; ++a)  // each body held by each degree of freedom, a mass or its smallest moment
+        for (std::size_t d = 0; d < p.dof.size(); ++d) {
+          const bool rotation = d >= 3;
+          const double held_by = rotation ? b[a].least_inertia : b[a].mass;
+          step = std::min(step, joint.free(d) ? held_mass_step(held_by, p.dof[d].stiffness, p.dof[d].damping)
+                                              : held_mass_step(held_by, v[rotation ? 1 : 0], v[rotation ? 3 : 2]));
+        }
       v[4] = step;
     }
   }
@@ -180,7 +192,7 @@ void setup_springs(const Model& m, SolverState& s) {
       st.length0[ue] = element_measure(m.nodes, ElementKind::Spring, n);
       const SpringGroupParameters p = spring_of_length(group_p, st.length0[ue]);
       const Vec3 offset = m.nodes.position(n[1]) - m.nodes.position(n[0]);
-      const Vec3 rest = group_p.joint.on ? joint_frame_at_rest(m, ue, st) : to_skew(axes, offset);
+      const Vec3 rest = group_p.joint.on ? joint_frame_at_rest(m, ue, group_p.joint, st) : to_skew(axes, offset);
       st.rest_offset[3 * ue] = rest.x, st.rest_offset[3 * ue + 1] = rest.y, st.rest_offset[3 * ue + 2] = rest.z;
       if (p.frame == SpringFrame::Beam && st.length0[ue] > 0.0) {  // SP-15: its Y at rest
         const Vec3 y = geometry::rest_frame_y(scaled(offset, 1.0 / st.length0[ue]), reference_y(m, group, ue));

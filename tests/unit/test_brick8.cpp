@@ -115,7 +115,7 @@ class Bricks {
     return brick8_forces(table, group, p, nodes, state, dt);
   }
 
-  ElementTable table{ElementKind::Brick8, {}, {}, {}, {}, {}, {}};
+  ElementTable table = empty_element_tables()[static_cast<std::size_t>(ElementKind::Brick8)];
   ElementGroup group{};
   NodalState nodes;
   BrickState state;

@@ -2,8 +2,12 @@
 // defaults, units, and the errors that name the field of an option Crumple lacks.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <tuple>
+#include <utility>
+#include <vector>
 
 #include "crumple/elements/critical_step.hpp"
 #include "crumple/elements/spring.hpp"
@@ -703,10 +707,16 @@ TEST(SpringKeywords, JointReadsItsDefaultsAndRefusesTheRest) {
     return test::first_error(joint_starter(dir, cards));
   };
   const std::string line1 = I(1) + R(0.0) + R(0.0) + R(0.0) + I(0) + I(0) + I(0);
-  EXPECT_NE(error(joint_deck(I(3) + R(0.0) + R(0.0) + R(0.0), plain)).find("field Type"), std::string::npos);
+  EXPECT_NE(error(joint_deck(I(0) + R(0.0) + R(0.0) + R(0.0), plain)).find("field Type"), std::string::npos);
+  EXPECT_NE(error(joint_deck(I(10) + R(0.0) + R(0.0) + R(0.0), plain)).find("field Type"), std::string::npos);
   EXPECT_NE(error(joint_deck(I(1) + R(1e5), plain)).find("field Kn"), std::string::npos);
   EXPECT_NE(error(joint_deck(I(1) + R(0.0) + R(0.0) + R(0.0) + I(4), plain)).find("field sens_ID"), std::string::npos);
   EXPECT_NE(error(joint_deck(I(1) + R(0.0) + R(0.0) + R(0.0) + I(0) + I(3), plain)).find("field Skew_ID1"),
+            std::string::npos);  // no such skew
+  const std::string moving = "/SKEW/MOV/3\nmoving\n" + I(1) + I(5) + I(6) + "\n";
+  EXPECT_NE(error(joint_deck(I(1) + R(0.0) + R(0.0) + R(0.0) + I(0) + I(3), plain) + moving).find("field Skew_ID1"),
+            std::string::npos);  // a moving skew
+  EXPECT_NE(error(joint_deck(I(1) + R(0.0) + R(0.0) + R(0.0) + I(0) + I(0) + I(3), plain) + moving).find("field Skew_ID2"),
             std::string::npos);
   EXPECT_NE(error(joint_deck(line1, joint_rotation(R(3.0) + I(7)))).find("field fct_Kr1"), std::string::npos);
   EXPECT_NE(error(joint_deck(line1, joint_rotation(R(3.0) + I(0) + R(-0.1)))).find("field SA1-"), std::string::npos);
@@ -748,6 +758,65 @@ TEST(SpringKeywords, RevoluteJointReadsItsAxisNode) {
   test::TempDir other;
   const std::string error = test::first_error(other.write("J_0000.rad", deck(false)));
   EXPECT_NE(error.find("node_ID3"), std::string::npos) << error;
+}
+
+// /PROP/TYPE45 Types 3 to 9 (SP-25g): the free translations' line groups come first, in the order of their axes, then
+// the free rotations'; each is named as the manual names it (Kt1, SD2-, FF3; Kr1), and the rigid joint has none. The
+// universal joint's fourth node (SP-25f) must be given, off the line of the first and third.
+TEST(SpringKeywords, JointTypesReadTheirFreeDegreesOfFreedom) {
+  const auto group = [](double k, double c) {
+    return R(k) + I(0) + R(0.0) + R(0.0) + I(0) + "\n" + R(c) + I(0) + "\n" + R(0.0) + R(0.0) + I(0) + "\n";
+  };
+  // node_ID4 `fourth` (0: none) at (0, 1, 0), or node 7 on the line of nodes 1 and 3
+  const auto deck = [](int type, const std::string& groups, int fourth = 4) {
+    std::string s = "/NODE\n";
+    for (const auto& [id, y, z] : {std::tuple{1, 0.0, 0.0}, {2, 0.0, 0.0}, {3, 0.0, 1.0}, {4, 1.0, 0.0}, {5, 0.0, 0.0},
+                                   {6, 0.0, 0.0}, {7, 0.0, 2.0}})
+      s += I(id) + R(0.0) + R(y) + R(z) + "\n";
+    s += "/SPRING/20\n" + I(30) + I(1) + I(2) + I(3) + I(fourth) + "\n/PART/20\njoint\n" + I(31) + I(0) + "\n";
+    s += "/PROP/TYPE45/31\njoint\n" + I(type) + R(0.0) + R(0.0) + R(0.0) + "\n" + groups;
+    s += "/GRNOD/NODE/8\nbody 1\n" + I(1) + "\n/GRNOD/NODE/9\nbody 2\n" + I(2) + "\n";
+    for (int b = 1; b <= 2; ++b)
+      s += "/RBODY/" + std::to_string(b) + "\nbody\n" + I(4 + b) + I(0) + I(0) + I(0) + R(1.0) + I(7 + b) + I(0) + I(3) +
+           "\n" + R(1.0) + R(1.0) + R(1.0) + "\n" + R(0.0) + R(0.0) + R(0.0) + "\n";
+    return test::begin_card("J") + s + "/END\n";
+  };
+  // type, its free degrees of freedom in the order of their line groups
+  const std::vector<std::pair<int, std::vector<std::size_t>>> types{
+      {3, {0, 3}}, {4, {1, 2, 3}}, {5, {4, 5}}, {6, {0}}, {7, {1, 2}}, {8, {}}, {9, {0, 1, 2, 3, 4, 5}}};
+  for (const auto& [type, free] : types) {
+    std::string groups;
+    for (std::size_t k = 0; k < free.size(); ++k) groups += group(100.0 * static_cast<double>(k + 1), 0.5 * static_cast<double>(k + 1));
+    test::TempDir dir;
+    const SpringSection s = read_deck(dir.write("J_0000.rad", deck(type, groups))).model.properties[0].spring;
+    for (std::size_t d = 0; d < 6; ++d) {
+      const auto at = std::find(free.begin(), free.end(), d);
+      EXPECT_EQ(s.joint.free(d), at != free.end()) << "type " << type << " dof " << d;
+      const double k = at == free.end() ? 0.0 : 100.0 * static_cast<double>(at - free.begin() + 1);
+      EXPECT_DOUBLE_EQ(s.dof[d].stiffness, k) << "type " << type << " dof " << d;
+      EXPECT_DOUBLE_EQ(s.dof[d].damping, k / 200.0) << "type " << type << " dof " << d;
+    }
+  }
+  {  // a card that ends after line 1: the free ones without stiffness or damping, as the reference reads it
+    test::TempDir dir;
+    const SpringSection s = read_deck(dir.write("J_0000.rad", deck(3, ""))).model.properties[0].spring;
+    EXPECT_TRUE(s.joint.free(0));
+    EXPECT_DOUBLE_EQ(s.dof[0].stiffness, 0.0);
+    EXPECT_DOUBLE_EQ(s.dof[3].damping, 0.0);
+  }
+  const auto error = [&deck](int type, const std::string& groups, int fourth = 4) {
+    test::TempDir dir;
+    return test::first_error(dir.write("J_0000.rad", deck(type, groups, fourth)));
+  };
+  const std::string two = group(1.0, 0.0) + group(1.0, 0.0);
+  EXPECT_NE(error(5, two, 0).find("node_ID4"), std::string::npos);  // the universal joint needs its fourth node
+  EXPECT_NE(error(5, two, 7).find("node_ID4"), std::string::npos);  // off the line of the first and third
+  const std::string stop = R(1.0) + I(0) + R(-0.1) + "\n" + R(0.0) + I(0) + "\n" + R(0.0) + I(0) + "\n";
+  EXPECT_NE(error(6, stop).find("field SD1-"), std::string::npos);
+  const std::string friction = R(1.0) + "\n" + R(0.0) + "\n" + R(0.0) + R(4.0) + "\n";
+  EXPECT_NE(error(7, friction + group(1.0, 0.0)).find("field FF2"), std::string::npos);
+  EXPECT_NE(error(3, group(-1.0, 0.0) + group(1.0, 0.0)).find("field Kt1"), std::string::npos);
+  EXPECT_NE(error(4, group(1.0, 0.0)).find("truncated"), std::string::npos);  // groups given, but not all
 }
 
 }  // namespace test_spring_keywords

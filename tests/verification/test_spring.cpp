@@ -4,10 +4,12 @@
 // y(t) = (v0 / wd) exp(-alpha t / 2) sin(wd t), wd = sqrt(w^2 - alpha^2 / 4).
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
 #include <tuple>
+#include <vector>
 
 #include "verification_support.hpp"
 
@@ -364,6 +366,48 @@ TEST(Spring, JointHoldsABodyOnItsAutomaticStiffness) {
   std::printf("joint: K %.6g N/m, c %.6g N s/m, largest recurrence residual %.2e of the largest offset %.3e m\n", k, c,
               worst, largest);
   EXPECT_LT(worst, 1e-9 * largest);
+}
+
+// SP-25f: a joint's frame at rest from its /SPRING card's third and fourth nodes, against the reference's starter
+// listing ("LOCAL SKEW (VECTORS)", 7 digits) for node 1 at the origin, node_ID3 at (0.3, 0.1, 1) and node_ID4 at
+// (0.2, 1, 0.3): the revolute joint on its third node alone; the free and the cylindrical joint on both, (a, b, a x b)
+// with a along node_ID3 and b towards node_ID4; the universal joint on both, (a x b, a, b); the revolute joint on its
+// Skew_ID1 alone, the skew's axes.
+TEST(Spring, JointFrameAtRestIsTheReferences) {
+  const std::array<double, 9> axis_alone{0.2860388, 0.0953463, 0.9534626, 0.0, 0.9950372, -0.0995037,
+                                         -0.9582180, 0.0284619, 0.2846192};
+  const std::array<double, 9> plane{0.2860388, 0.0953463, 0.9534626, 0.0769846, 0.9895340, -0.1220488,
+                                    -0.9551205, 0.1083126, 0.2757049};
+  const std::array<double, 9> universal{-0.9551205, 0.1083126, 0.2757049, 0.2860388, 0.0953463, 0.9534626,
+                                        0.0769846, 0.9895340, -0.1220488};
+  // a /SKEW/FIX of Y' (1, 1, 0) and Z' towards (-1, 1, 0.2), the revolute joint's Skew_ID1 without node_ID3
+  const std::array<double, 9> skew{0.0990148, -0.0990148, 0.9901475, 0.7071068, 0.7071068, 0.0,
+                                   -0.7001400, 0.7001400, 0.1400280};
+  // type, frame nodes given (0: a skew, 1: node_ID3, 2: node_ID3 and node_ID4), the reference's frame
+  const std::vector<std::tuple<int, int, std::array<double, 9>>> cases{
+      {2, 1, axis_alone}, {9, 2, plane}, {3, 2, plane}, {5, 2, universal}, {2, 0, skew}};
+  for (const auto& [type, nodes, expected] : cases) {
+    test::TempDir dir;
+    std::string d = node_cards({{1, 0.0, 0.0, 0.0}, {2, 0.0, 0.0, 0.0}, {3, 0.3, 0.1, 1.0}, {4, 0.2, 1.0, 0.3},
+                                {5, 0.0, 0.0, 0.0}, {6, 0.0, 0.0, 0.0}});
+    d += "/SPRING/1\n" + I(30) + I(1) + I(2) + (nodes >= 1 ? I(3) : "") + (nodes == 2 ? I(4) : "") +
+         "\n/PART/1\njoint\n" + I(1) + I(0) + "\n";
+    // its free degrees of freedom without laws (SP-25g)
+    d += "/PROP/TYPE45/1\njoint\n" + I(type) + R(0.0) + R(0.0) + R(0.0) + I(0) + I(nodes == 0 ? 7 : 0) + "\n";
+    d += "/SKEW/FIX/7\nskew\n" + R(0.0) + R(0.0) + R(0.0) + "\n" + R(1.0) + R(1.0) + R(0.0) + "\n" + R(-1.0) + R(1.0) +
+         R(0.2) + "\n";
+    d += node_group(8, {1}) + node_group(9, {2});
+    for (int b = 1; b <= 2; ++b)
+      d += "/RBODY/" + std::to_string(b) + "\nbody\n" + I(4 + b) + I(0) + I(0) + I(0) + R(1.0) + I(7 + b) + I(0) +
+           I(3) + "\n" + R(1.0) + R(1.0) + R(1.0) + "\n" + R(0.0) + R(0.0) + R(0.0) + "\n";
+    std::vector<double> frame;
+    const RunResult r = run_deck(dir, d, 2e-3, 1e-9, [&](const Model&, const SolverState& s) {
+      if (frame.empty()) frame.assign(s.springs.joint_frame.begin(), s.springs.joint_frame.begin() + 9);
+    }, "/DTIX\n1e-3 1e-3\n");
+    ASSERT_EQ(r.summary.status, RunStatus::Normal) << r.summary.message;
+    ASSERT_EQ(frame.size(), 9u);
+    for (std::size_t k = 0; k < 9; ++k) EXPECT_NEAR(frame[k], expected[k], 6e-8) << "type " << type << " component " << k;
+  }
 }
 
 }  // namespace crumple::verification::test_spring

@@ -73,6 +73,9 @@ struct ElementTable {
   // Springs and beams: a beam-type spring's or a beam's orientation node, its Y at rest towards it (dense index,
   // -1: none); else empty.
   std::vector<std::int32_t> orientation_node;
+  // Joints: node_ID4, which with node_ID3 sets the plane of the joint's frame (docs/theory/spring.md, SP-25f; dense
+  // index, -1: none); empty when no element has one.
+  std::vector<std::int32_t> plane_node;
   std::vector<double> orientation_vector;  // beams: 3 per beam, the card's Vx Vy Vz (used without a node); else empty
   std::size_t size() const { return user_id.size(); }
   const std::int32_t* nodes_of(std::size_t element) const {

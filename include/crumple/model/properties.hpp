@@ -133,19 +133,29 @@ struct SpringSwitch {
   double on = 0.0, off = 1e300;  // the sensor's window (resolved) [T]
 };
 
-// /PROP/TYPE45 (/PROP/KJOINT2): a spherical or revolute joint between two rigid bodies (docs/theory/spring.md,
-// SP-25), a general spring of no mass whose blocked degrees of freedom are held by the stiffness the engine computes
-// at its first step from the bodies' masses and inertias (Kn 0), damped at Cr of critical; its free rotations each
-// their own linear law.
+// /PROP/TYPE45 (/PROP/KJOINT2): a joint between two rigid bodies (docs/theory/spring.md, SP-25), a general spring of
+// no mass whose blocked degrees of freedom are held by the stiffness the engine computes at its first step from the
+// bodies' masses and inertias (Kn 0), damped at Cr of critical; its free ones each their own linear law.
 struct SpringJoint {
   bool on = false;
-  int type = 1;                    // Type: 1 spherical (the rotations free), 2 revolute (the rotation about X free)
+  int type = 1;                    // Type 1 to 9 (SP-25g: which degrees of freedom each leaves free)
   double stiffness_scale = 1.0;    // ScF (0 or blank: 1)
   double critical_damping = 0.05;  // Cr (0 or blank: 0.05), of the blocked degrees of freedom only (measured)
-  // Degree of freedom d (0-2 the translations, 3-5 the rotations in the joint's frame) is free: its own law acts.
-  bool free(std::size_t d) const { return d >= 3 && (type == 1 || d == 3); }
-  // The /SPRING card's nodes beyond its two that set the joint's frame: the revolute joint's X (node_ID3).
-  int frame_nodes() const { return type == 2 ? 1 : 0; }
+  std::int64_t skew_id = 0;        // Skew_ID1: a /SKEW/FIX that sets the frame where node_ID3 is not given (SP-25f)
+  std::int32_t skew = -1;          // its dense index (model build)
+  // Degree of freedom d (0-2 the translations, 3-5 the rotations in the joint's frame) is free: its own law acts
+  // (SP-25g, one bit per degree of freedom and type: 1 spherical, 2 revolute, 3 cylindrical, 4 planar, 5 universal,
+  // 6 translational, 7 Oldham, 8 rigid, 9 free).
+  bool free(std::size_t d) const { return (kFreeDofs[static_cast<std::size_t>(type)] >> d) & 1u; }
+  // The /SPRING card's nodes that set the joint's frame without a skew (SP-25f): node_ID3 for every type but the
+  // spherical and the rigid, node_ID4 as well for the universal and the free joint.
+  int frame_nodes() const {
+    if (skew_id != 0) return 0;
+    return type == 5 || type == 9 ? 2 : type == 1 || type == 8 ? 0 : 1;
+  }
+  static constexpr unsigned kFreeDofs[10] = {0, 0b111000, 0b001000, 0b001001, 0b001110, 0b110000, 0b000001, 0b000110, 0,
+                                             0b111111};
+  static bool supported(int type) { return type >= 1 && type <= 9; }
 };
 
 struct SpringSection {

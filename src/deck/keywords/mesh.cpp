@@ -32,12 +32,13 @@ void read_shell_extras(const Line& line, int after, RawElements& raw, DeckContex
   raw.thickness.push_back(thick);
 }
 void read_no_extras(const Line&, int, RawElements&, DeckContext&) {}
-// Springs: node_ID3 (a beam-type spring's orientation node), node_ID4 to node_ID6 (the multi-node springs' nodes),
-// then Skew_ID (columns 91-100).
+// Springs: node_ID3 (a beam-type spring's orientation node, a joint's axis), node_ID4 (a joint's second frame node),
+// node_ID5 and node_ID6 (the multi-node springs' nodes), then Skew_ID (columns 91-100).
 void read_spring_extras(const Line& line, int after, RawElements& raw, DeckContext& context) {
   raw.orientation_node_id.push_back(line.optional_id(after, 10, "node_ID3", IdKind::Node));
   raw.orientation_where.push_back(line.where());
-  for (int k = 1; k < 4; ++k)
+  raw.plane_node_id.push_back(line.optional_id(after + 10, 10, "node_ID4", IdKind::Node));
+  for (int k = 2; k < 4; ++k)
     if (line.optional_id(after + 10 * k, 10, fmt::format("node_ID{}", k + 3), IdKind::Node) != 0)
       context.unsupported(line.error(after + 10 * k, 10, fmt::format("node_ID{}", k + 3),
                                      default_only("a spring of more than three nodes is")));

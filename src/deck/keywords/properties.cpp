@@ -725,38 +725,41 @@ void read_pretension_spring_property(CardReader& reader, DeckContext& context) {
   context.model.properties.push_back(std::move(p));
 }
 
-// A joint's free degree of freedom `name` (XX, YY, ZZ): K, fct_K, SA-, SA+, Icomb; C, fct_C; Kf, FM, fct_FM. Its
-// linear stiffness and damping act (SP-25); the functions, stops and friction are refused with the field named.
-void read_joint_free_rotation(CardReader& reader, DeckContext& context, SpringLaw& law, const std::string& axis) {
-  const Line stiffness = reader.next("Kr, fct_Kr, SA-, SA+, Icomb_r");
-  law.stiffness = stiffness.real(1, 20, "Kr" + axis, dim::moment);
-  if (law.stiffness < 0.0) stiffness.fail(1, 20, "Kr" + axis, "a non-negative rotational stiffness");
-  const auto refuse_id = [&context](const Line& line, int column, const std::string& name, std::string_view what) {
+// A joint's free degree of freedom (SP-25g), its three lines: K, fct_K, S-, S+, Icomb; C, fct_C; Kf, F, fct_F, named
+// as the manual names them for a translation (Kt1, SD1-, FF1, ...) or a rotation (Kr1, SA1-, FM1, ...) about `axis`.
+// Its linear stiffness and damping act (SP-25); the functions, stops and friction are refused with the field named.
+void read_joint_free_dof(CardReader& reader, DeckContext& context, SpringLaw& law, bool rotation,
+                         const std::string& axis) {
+  const std::string t = rotation ? "r" : "t", stop = rotation ? "SA" : "SD", push = rotation ? "FM" : "FF";
+  const std::string_view what = rotation ? "rotational" : "translational";
+  const Line stiffness = reader.next("K, fct_K, S-, S+, Icomb");
+  law.stiffness = stiffness.real(1, 20, "K" + t + axis, rotation ? dim::moment : dim::stiffness);
+  if (law.stiffness < 0.0) stiffness.fail(1, 20, "K" + t + axis, fmt::format("a non-negative {} stiffness", what));
+  const auto refuse_id = [&context](const Line& line, int column, const std::string& name, std::string_view field) {
     if (line.optional_id(column, 10, name, IdKind::Other) != 0)
-      context.unsupported(line.error(column, 10, name, default_only(what)));
+      context.unsupported(line.error(column, 10, name, default_only(field)));
   };
-  const auto refuse_real = [&context](const Line& line, int column, const std::string& name, std::string_view what) {
+  const auto refuse_real = [&context](const Line& line, int column, const std::string& name, std::string_view field) {
     if (line.real(column, 20, name, dim::none) != 0.0)
-      context.unsupported(line.error(column, 20, name, default_only(what)));
+      context.unsupported(line.error(column, 20, name, default_only(field)));
   };
-  refuse_id(stiffness, 21, "fct_Kr" + axis, "a joint's moment function is");
-  refuse_real(stiffness, 31, "SA" + axis + "-", "a joint's stop angle is");
-  refuse_real(stiffness, 51, "SA" + axis + "+", "a joint's stop angle is");
-  refuse_id(stiffness, 71, "Icomb_r" + axis, "a joint's combined stop is");
-  const Line damping = reader.next("Cr, fct_Cr");
-  law.damping = damping.real(1, 20, "Cr" + axis, Dimension{1, 2, -1});
-  if (law.damping < 0.0) damping.fail(1, 20, "Cr" + axis, "a non-negative rotational damping");
-  refuse_id(damping, 21, "fct_Cr" + axis, "a joint's damping function is");
-  const Line friction = reader.next("Kfr, FM, fct_FM");
-  refuse_real(friction, 1, "Kfr" + axis, "a joint's stop and friction stiffness is");
-  refuse_real(friction, 21, "FM" + axis, "a joint's friction moment is");
-  refuse_id(friction, 41, "fct_FM" + axis, "a joint's friction function is");
+  refuse_id(stiffness, 21, "fct_K" + t + axis, "a joint's stiffness function is");
+  refuse_real(stiffness, 31, stop + axis + "-", "a joint's stop is");
+  refuse_real(stiffness, 51, stop + axis + "+", "a joint's stop is");
+  refuse_id(stiffness, 71, "Icomb_" + t + axis, "a joint's combined stop is");
+  const Line damping = reader.next("C, fct_C");
+  law.damping = damping.real(1, 20, "C" + t + axis, rotation ? Dimension{1, 2, -1} : Dimension{1, 0, -1});
+  if (law.damping < 0.0) damping.fail(1, 20, "C" + t + axis, fmt::format("a non-negative {} damping", what));
+  refuse_id(damping, 21, "fct_C" + t + axis, "a joint's damping function is");
+  const Line friction = reader.next("Kf, F, fct_F");
+  refuse_real(friction, 1, "Kf" + t + axis, "a joint's stop and friction stiffness is");
+  refuse_real(friction, 21, push + axis, "a joint's friction is");
+  refuse_id(friction, 41, "fct_" + push + axis, "a joint's friction function is");
 }
 
 // /PROP/TYPE45 (/PROP/KJOINT2): the joint (docs/theory/spring.md, SP-25). Line 1 Type, Kn, ScF, Cr, sens_ID,
-// Skew_ID1, Skew_ID2; then three lines per free degree of freedom: the spherical joint's (Type 1) rotations about
-// X, Y and Z, the revolute joint's (Type 2) about X. A general spring of no mass whose other degrees of freedom the
-// engine blocks.
+// Skew_ID1, Skew_ID2; then three lines per free degree of freedom (SP-25g), the translations' first, each group in
+// the order of its axes. A general spring of no mass whose other degrees of freedom the engine blocks.
 void read_joint_property(CardReader& reader, DeckContext& context) {
   refuse_narrow_layout(reader);
   Property p = begin_property(reader, PropertyKind::Spring);
@@ -764,8 +767,10 @@ void read_joint_property(CardReader& reader, DeckContext& context) {
   s.frame = SpringFrame::Global, s.joint.on = true;
   const Line first = reader.next("Type, Kn, ScF, Cr, sens_ID, Skew_ID1, Skew_ID2");
   s.joint.type = static_cast<int>(first.integer(1, 10, "Type"));
-  if (s.joint.type != 1 && s.joint.type != 2)
-    first.fail(1, 10, "Type", "1 (spherical) or 2 (revolute; the other joint types are not supported by Crumple)");
+  if (!SpringJoint::supported(s.joint.type))
+    first.fail(1, 10, "Type",
+               "1 to 9 (spherical, revolute, cylindrical, planar, universal, translational, Oldham, rigid, free; the "
+               "reference refuses any other, its error 938)");
   if (first.real(11, 20, "Kn", dim::stiffness) != 0.0)
     context.unsupported(first.error(11, 20, "Kn", default_only("a given blocking stiffness is")));
   const double scale = first.real(31, 20, "ScF", dim::none);
@@ -774,13 +779,18 @@ void read_joint_property(CardReader& reader, DeckContext& context) {
   const double critical = first.real(51, 20, "Cr", dim::none);
   if (critical < 0.0) first.fail(51, 20, "Cr", "a non-negative fraction of critical damping (0 or blank: 0.05)");
   s.joint.critical_damping = critical == 0.0 ? 0.05 : critical;
-  for (const auto& [column, name, what] : {std::tuple{71, "sens_ID", "a joint switched by a sensor is"},
-                                           {81, "Skew_ID1", "a joint's skew is"}, {91, "Skew_ID2", "a joint's skew is"}})
+  s.joint.skew_id = first.optional_id(81, 10, "Skew_ID1", IdKind::Other);  // the frame's (SP-25f)
+  for (const auto& [column, name, what] :
+       {std::tuple{71, "sens_ID", "a joint switched by a sensor is"},
+        {91, "Skew_ID2", "a joint's second skew (which the reference checks against the first) is"}})
     if (first.optional_id(column, 10, name, IdKind::Other) != 0)
       context.unsupported(first.error(column, 10, name, default_only(what)));
   constexpr const char* kAxes[3] = {"1", "2", "3"};
-  for (std::size_t d = 0; d < 3; ++d)  // a line group per free rotation, numbered in its order
-    if (s.joint.free(3 + d)) read_joint_free_rotation(reader, context, s.dof[3 + d], kAxes[d]);
+  // A line group per free degree of freedom, numbered by its axis; a card that ends after line 1 leaves every free
+  // one without stiffness or damping (the reference's layout makes the groups optional; measured on a Type 3).
+  const bool groups = reader.has_data();
+  for (std::size_t d = 0; d < s.dof.size() && groups; ++d)
+    if (s.joint.free(d)) read_joint_free_dof(reader, context, s.dof[d], d >= 3, kAxes[d % 3]);
   reader.finish();
   context.model.properties.push_back(std::move(p));
 }
