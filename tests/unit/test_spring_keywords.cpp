@@ -617,6 +617,36 @@ TEST(SpringKeywords, AxisymmetricSpringIsABeamTypeSpringWithRadialLaws) {
   EXPECT_DOUBLE_EQ(s.dof[5].delta_max, 0.25);  // the bending's limit, on its magnitude (SP-20)
 }
 
+// /PROP/TYPE25 with Ifail2 (SP-5b): its limits read as moments with Ifail2 2, Vo and Wo, and the four failure lines
+// (tension, shear, torsion, bending) on TYPE13's slots, the radial ones on both of theirs.
+TEST(SpringKeywords, AxisymmetricSpringFailureLinesFollowItsFourLaws) {
+  auto law = [](double k, double delta_max) {
+    return R(k) + R(0.0) + R(1.0) + R(0.0) + R(0.0) + "\n" + I(0) + I(0) + I(0) + I(0) + R(1.0) + R(0.0) +
+           R(delta_max) + "\n" + R(1.0) + R(0.0) + I(0) + R(0.0) + "\n";
+  };
+  std::string cards = "/NODE\n" + I(1) + R(0.0) + R(0.0) + R(0.0) + "\n" + I(2) + R(1.0) + R(0.0) + R(0.0) +
+                      "\n/SPRING/20\n" + I(7) + I(1) + I(2) + "\n/PART/20\nspring\n" + I(30) + I(0) +
+                      "\n/PROP/TYPE25/30\naxi\n" + R(0.01) + R(0.001) + I(0) + I(0) + I(0) + I(0) + I(0) + I(2) + "\n";
+  cards += law(1e4, 100.0) + law(2000.0, 50.0) + law(30.0, 0.0) + law(40.0, 6.0);
+  cards += R(0.5) + R(4.0) + "\n";
+  for (int d = 1; d <= 4; ++d) cards += R(0.1 * d) + R(d) + R(0.0) + R(0.0) + "\n";
+  test::TempDir dir;
+  const Model m = read_deck(dir.write("T_0000.rad", test::begin_card("T") + cards + "/END\n")).model;
+  const SpringSection& s = m.properties[0].spring;
+  EXPECT_EQ(s.failure.measure, SpringFailureMeasure::Force);
+  EXPECT_TRUE(s.failure.rate_effect);
+  EXPECT_DOUBLE_EQ(s.failure.translation_rate, 0.5);
+  EXPECT_DOUBLE_EQ(s.failure.rotation_rate, 4.0);
+  const std::array<double, 6> c{0.1, 0.2, 0.2, 0.3, 0.4, 0.4}, n{1.0, 2.0, 2.0, 3.0, 4.0, 4.0};
+  for (std::size_t d = 0; d < 6; ++d) {
+    EXPECT_DOUBLE_EQ(s.dof[d].rate_c, c[d]) << d;
+    EXPECT_DOUBLE_EQ(s.dof[d].rate_n, n[d]) << d;
+    EXPECT_DOUBLE_EQ(s.dof[d].alpha, 1.0) << d;
+    EXPECT_DOUBLE_EQ(s.dof[d].beta, 2.0) << d;
+  }
+  EXPECT_DOUBLE_EQ(s.dof[5].delta_max, 6.0);  // the bending's limit, a moment
+}
+
 
 }  // namespace test_spring_keywords
 

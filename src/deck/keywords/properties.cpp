@@ -570,9 +570,9 @@ void read_failure_rates(const Line& line, SpringFailure& f) {
 }
 
 // A failure line of a degree of freedom (SP-5b): c (in the limit's unit), n, alpha, beta; they act with Ifail2 >= 1
-// only (measured), where 0 or blank is n 1, alpha 1, beta 2.
-void read_failure_line(const Line& line, const SpringSection& s, SpringLaw& law, int dof) {
-  SpringLawNames names(dof);
+// only (measured), where 0 or blank is n 1, alpha 1, beta 2. `first_rotation` as SpringLawNames's.
+void read_failure_line(const Line& line, const SpringSection& s, SpringLaw& law, int dof, int first_rotation = 4) {
+  SpringLawNames names(dof, first_rotation);
   set_limit_dimension(names, s.failure.measure);
   const std::string i = std::to_string(dof);
   const double c = line.real(1, 20, "c" + i, names.limit), n = line.real(21, 20, "n" + i, dim::none);
@@ -608,23 +608,19 @@ void read_beam_spring_property(CardReader& reader, DeckContext& context) {
 // /PROP/TYPE25 (/PROP/SPR_AXI): the beam-type spring whose shear and bending are each one law of the radial magnitude
 // (docs/theory/spring.md, SP-20). Line 1 as TYPE13's; four laws (tension, shear, torsion, bending) in TYPE25's layout,
 // held as TYPE13's six with shear Y = Z and bending Y = Z; the rate line (Vo, Wo) and four lines c, n, alpha, beta
-// (Ifail2 only), each optional (measured: the reference reads them so, not as its manual's four lines c, n).
+// (Ifail2 >= 1 only, SP-5b), each optional (measured: the reference reads them so, not as its manual's four lines c,
+// n).
 void read_axisymmetric_spring_property(CardReader& reader, DeckContext& context) {
   refuse_narrow_layout(reader);
   Property p = begin_property(reader, PropertyKind::Spring);
   p.spring.frame = SpringFrame::Beam;
   p.spring.radial = true;
   read_beam_spring_mass(reader, context, p.spring);
-  if (p.spring.failure.rate_effect) {  // measured on TYPE13 only
-    context.unsupported(DeckError(p.where, reader.card().keyword, "Ifail2",
-                                  default_only("a failure criterion other than the elongation's (on /PROP/TYPE25) is"),
-                                  "non-zero"));
-    p.spring.failure = {p.spring.failure.combined};
-  }
   constexpr std::size_t kSlot[4] = {0, 1, 3, 4};  // tension, shear, torsion, bending in TYPE13's order
   for (int d = 0; d < 4; ++d) {
     SpringLawNames names(d + 1, 3);
     names.axisymmetric = true;
+    set_limit_dimension(names, p.spring.failure.measure);
     if (p.spring.per_unit_length) names.per_unit_length(false);  // SP-21: its elongation limits stay lengths
     SpringLaw& law = p.spring.dof[kSlot[d]];
     RateFields rate;
@@ -632,16 +628,10 @@ void read_axisymmetric_spring_property(CardReader& reader, DeckContext& context)
     read_spring_law(reader, context, law, names, rate);
     resolve_rate_effects(rate, law, reader, context, names);
   }
+  if (reader.has_data()) read_failure_rates(reader.next("Vo, Wo"), p.spring.failure);
+  for (int d = 0; d < 4 && reader.has_data(); ++d)  // SP-5b on the radial magnitudes and their rates (measured)
+    read_failure_line(*reader.next_nonblank(), p.spring, p.spring.dof[kSlot[d]], d + 1, 3);
   p.spring.dof[2] = p.spring.dof[1], p.spring.dof[5] = p.spring.dof[4];
-  if (reader.has_data()) {
-    const Line rate = reader.next("Vo, Wo");
-    rate.real(1, 20, "Vo", dim::velocity), rate.real(21, 20, "Wo", dim::angular_velocity);  // rate effects only
-  }
-  for (int d = 0; d < 4 && reader.has_data(); ++d) {
-    const Line failure = *reader.next_nonblank();
-    for (const auto& [column, name] : {std::pair{1, "c"}, {21, "n"}, {41, "alpha"}, {61, "beta"}})
-      failure.real(column, 20, name, dim::none);  // read to check them; they act with Ifail2 only (refused)
-  }
   reader.finish();
   context.model.properties.push_back(std::move(p));
 }

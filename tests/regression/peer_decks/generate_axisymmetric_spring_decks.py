@@ -13,6 +13,11 @@
 #   spring_axi_unit_length: a spring of 0.5 m given per unit length (Ileng 1, SP-21), pulled at 0.03 m/s and sheared
 #     at 0.1 m/s for 0.06 s: its stiffnesses K / L0, its shear curve of the strain, and its tension limit delta_max =
 #     0.002 m a length (read as a strain, 0.001 m, it would break the spring near 0.033 s; the reference's holds).
+#   spring_axi_fail_rate, spring_axi_fail_moment, spring_axi_fail_energy: spring_axi_bending_breaks with Ifail2 1, 2
+#     and 3 (SP-5b): the bending's limit 0.25 rad, 6 N m or 0.8 J raised by c |rate| / Wo, the rate the magnitude's
+#     (2 rad/s): it breaks at 0.35 rad (0.175 s), 7 N m (0.154 s) or 1 J (0.116 s).
+#   spring_axi_fail_shear_rate: node 2 driven across at (0.06, 0.08) m/s, the shear's limit 0.01 m raised by
+#     0.004 (0.1 / 0.05): it breaks at 0.018 m (0.18 s).
 import math
 import os
 I = lambda *v: "".join("%10d" % x for x in v)
@@ -25,9 +30,11 @@ def law(k, c=0.0, fct=0, h=0, dmax=0.0):  # one law's three lines in TYPE25's la
     return R(k, c, 1, 0, 0) + "\n" + I(fct, h, 0, 0) + R(0, 0, dmax) + "\n" + R(1, 0) + I(0) + R(0) + "\n"
 
 
-def axi(tension, shear, torsion, bending, ileng=0):
-    return ("/PROP/TYPE25/1\naxisymmetric spring\n" + R(0.01, 0.001) + I(0, 0, 0, 0, ileng, 0) + "\n" + tension + shear +
-            torsion + bending + R(0, 0) + "\n")
+def axi(tension, shear, torsion, bending, ileng=0, ifail2=0, rates=(0, 0), failure=()):
+    """The property; `failure`: its four lines c, n, alpha, beta (tension, shear, torsion, bending), after Vo, Wo."""
+    s = ("/PROP/TYPE25/1\naxisymmetric spring\n" + R(0.01, 0.001) + I(0, 0, 0, 0, ileng, ifail2) + "\n" + tension +
+         shear + torsion + bending + R(*rates) + "\n")
+    return s + "".join(R(*line) + "\n" for line in failure)
 
 
 def functions(extra=()):
@@ -53,14 +60,27 @@ def impvel(k, dirn, fid, scale):
     return "/IMPVEL/%d\ndrive\n" % k + I(fid) + "%10s" % dirn + I(0, 0, 2, 0, 0) + "\n" + R(1.0, scale, 0, 1e30) + "\n"
 
 
-deck("spring_axi_swinging_mass", "AXISWING", axi(law(1e4), law(2000, 5.0, 1), law(30), law(40)), "100 111", 0.4,
-     "/ADMAS/0/1\nmass\n" + R(2.0) + I(2) + "\n/INIVEL/TRA/1\nlaunch\n" + R(0, 0.3, 0.4) + I(2) + "\n")
-deck("spring_axi_bending_breaks", "AXIBEND", axi(law(1e4), law(2000), law(30), law(50, 0, 4, 0, 0.25)), "111 100",
-     0.2, impvel(1, "YY", 99, 1.2) + impvel(2, "ZZ", 99, 1.6))
-om, t0 = 20.0, 0.05
-fy = [(0, 1.0), (t0, 1.0)] + [(t0 + 1e-4 + k * 0.0025, -math.sin(om * k * 0.0025)) for k in range(400)]
-fz = [(0, 0.0), (t0, 0.0)] + [(t0 + 1e-4 + k * 0.0025, math.cos(om * k * 0.0025)) for k in range(400)]
-deck("spring_axi_circling", "AXICIRC", axi(law(1e4), law(2000, 20.0, 1), law(30), law(40)), "100 111", 0.4,
-     impvel(1, "Y", 11, 0.2) + impvel(2, "Z", 12, 0.2), [(11, fy), (12, fz)])
-deck("spring_axi_unit_length", "AXILENG", axi(law(1e4, 0, 0, 0, 0.002), law(2000, 0, 1), law(30), law(40), ileng=1),
-     "000 111", 0.06, impvel(1, "X", 99, 0.03) + impvel(2, "Y", 99, 0.1), length=0.5)
+if __name__ == "__main__":
+    deck("spring_axi_swinging_mass", "AXISWING", axi(law(1e4), law(2000, 5.0, 1), law(30), law(40)), "100 111", 0.4,
+         "/ADMAS/0/1\nmass\n" + R(2.0) + I(2) + "\n/INIVEL/TRA/1\nlaunch\n" + R(0, 0.3, 0.4) + I(2) + "\n")
+    deck("spring_axi_bending_breaks", "AXIBEND", axi(law(1e4), law(2000), law(30), law(50, 0, 4, 0, 0.25)), "111 100",
+         0.2, impvel(1, "YY", 99, 1.2) + impvel(2, "ZZ", 99, 1.6))
+    om, t0 = 20.0, 0.05
+    fy = [(0, 1.0), (t0, 1.0)] + [(t0 + 1e-4 + k * 0.0025, -math.sin(om * k * 0.0025)) for k in range(400)]
+    fz = [(0, 0.0), (t0, 0.0)] + [(t0 + 1e-4 + k * 0.0025, math.cos(om * k * 0.0025)) for k in range(400)]
+    deck("spring_axi_circling", "AXICIRC", axi(law(1e4), law(2000, 20.0, 1), law(30), law(40)), "100 111", 0.4,
+         impvel(1, "Y", 11, 0.2) + impvel(2, "Z", 12, 0.2), [(11, fy), (12, fz)])
+    deck("spring_axi_unit_length", "AXILENG", axi(law(1e4, 0, 0, 0, 0.002), law(2000, 0, 1), law(30), law(40), ileng=1),
+         "000 111", 0.06, impvel(1, "X", 99, 0.03) + impvel(2, "Y", 99, 0.1), length=0.5)
+    # SP-5b on the radial laws (Ifail2 >= 1): the bending limit raised by c (|rate| / Wo)^n, the rate the magnitude's
+    # (2 rad/s), read as a rotation, a moment or an energy; the shear's by its radial rate (0.1 m/s) over Vo.
+    none = (0, 0, 0, 0)
+    turned = impvel(1, "YY", 99, 1.2) + impvel(2, "ZZ", 99, 1.6)
+    for name, ifail2, limit, c in (("spring_axi_fail_rate", 1, 0.25, 0.05), ("spring_axi_fail_moment", 2, 6.0, 0.5),
+                                   ("spring_axi_fail_energy", 3, 0.8, 0.1)):
+        deck(name, "AXIF%d" % ifail2, axi(law(1e4), law(2000), law(30), law(50, 0, 4, 0, limit), ifail2=ifail2,
+                                          rates=(0, 1.0), failure=(none, none, none, (c, 1, 0, 0))), "111 100", 0.25,
+             turned)
+    deck("spring_axi_fail_shear_rate", "AXIFS", axi(law(1e4), law(2000, 0, 1, 0, 0.01), law(30), law(40), ifail2=1,
+                                                     rates=(0.05, 0), failure=(none, (0.004, 1, 0, 0), none, none)),
+         "100 111", 0.25, impvel(1, "Y", 99, 0.06) + impvel(2, "Z", 99, 0.08))
