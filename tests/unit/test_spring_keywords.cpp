@@ -739,7 +739,13 @@ TEST(SpringKeywords, JointReadsItsDefaultsAndRefusesTheRest) {
   const std::string line1 = I(1) + R(0.0) + R(0.0) + R(0.0) + I(0) + I(0) + I(0);
   EXPECT_NE(error(joint_deck(I(0) + R(0.0) + R(0.0) + R(0.0), plain)).find("field Type"), std::string::npos);
   EXPECT_NE(error(joint_deck(I(10) + R(0.0) + R(0.0) + R(0.0), plain)).find("field Type"), std::string::npos);
-  EXPECT_NE(error(joint_deck(I(1) + R(1e5), plain)).find("field Kn"), std::string::npos);
+  EXPECT_NE(error(joint_deck(I(1) + R(-1.0), plain)).find("field Kn"), std::string::npos);
+  {  // a given Kn: ScF blank is 10 (SP-25i)
+    test::TempDir dir;
+    const SpringSection s = read_deck(joint_starter(dir, joint_deck(I(1) + R(1e5), plain))).model.properties[0].spring;
+    EXPECT_DOUBLE_EQ(s.joint.blocking_stiffness, 1e5);
+    EXPECT_DOUBLE_EQ(s.joint.stiffness_scale, 10.0);
+  }
   EXPECT_NE(error(joint_deck(I(1) + R(0.0) + R(0.0) + R(0.0) + I(4), plain)).find("field sens_ID"), std::string::npos);
   EXPECT_NE(error(joint_deck(I(1) + R(0.0) + R(0.0) + R(0.0) + I(0) + I(3), plain)).find("field Skew_ID1"),
             std::string::npos);  // no such skew

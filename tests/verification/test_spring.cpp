@@ -410,4 +410,41 @@ TEST(Spring, JointFrameAtRestIsTheReferences) {
   }
 }
 
+// SP-25i: a given Kn holds the translations, ScF Kn the rotations (ScF blank: 10); above the automatic stiffness at
+// the first step (here 2 m_min / (4.1 dt^2) = 9.756e5 N/m and I / (4.1 dt^2) = 2.439e5 N m/rad) the run stops at once
+// with an error that names Kn.
+TEST(Spring, JointGivenStiffnessActsUpToTheAutomaticOne) {
+  const auto deck = [](double kn) {
+    std::string d = node_cards({{1, 0.0, 0.0, 0.0}, {2, 0.0, 0.0, 0.0}, {5, 0.0, 0.0, 0.0}, {6, 0.0, 0.0, 0.0}});
+    d += "/SPRING/1\n" + I(30) + I(1) + I(2) + "\n/PART/1\njoint\n" + I(1) + I(0) + "\n";
+    d += "/PROP/TYPE45/1\njoint\n" + I(1) + R(kn) + "\n";
+    d += node_group(8, {1}) + node_group(9, {2}) + node_group(3, {5}) + node_group(4, {6});
+    for (int b = 1; b <= 2; ++b)
+      d += "/RBODY/" + std::to_string(b) + "\nbody\n" + I(4 + b) + I(0) + I(0) + I(0) + R(b == 1 ? 10.0 : 2.0) +
+           I(7 + b) + I(0) + I(3) + "\n" + R(1.0) + R(1.0) + R(1.0) + "\n" + R(0.0) + R(0.0) + R(0.0) + "\n";
+    return d + boundary_condition(1, "111 111", 3) + initial_velocity(1, 0.0, 0.0, 1.0, 4);
+  };
+  {
+    test::TempDir dir;
+    std::vector<double> held;
+    const RunResult r = run_deck(dir, deck(2e4), 0.01, 1e-9, [&](const Model&, const SolverState& s) {
+      held.assign(s.springs.joint.begin(), s.springs.joint.begin() + 2);
+    }, "/DTIX\n1e-3 1e-3\n");
+    ASSERT_EQ(r.summary.status, RunStatus::Normal) << r.summary.message;
+    ASSERT_EQ(held.size(), 2u);
+    EXPECT_DOUBLE_EQ(held[0], 2e4);
+    EXPECT_DOUBLE_EQ(held[1], 2e5);
+  }
+  test::TempDir dir;
+  std::string stop;
+  try {
+    const RunResult r = run_deck(dir, deck(3e4), 0.01, 1e-9, {}, "/DTIX\n1e-3 1e-3\n");  // its rotations' 3e5 > 2.439e5
+    EXPECT_NE(r.summary.status, RunStatus::Normal);
+    stop = r.summary.message;
+  } catch (const DeckError& e) {
+    stop = e.what();
+  }
+  EXPECT_NE(stop.find("field Kn"), std::string::npos) << stop;
+}
+
 }  // namespace crumple::verification::test_spring

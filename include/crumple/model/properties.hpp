@@ -139,7 +139,8 @@ struct SpringSwitch {
 struct SpringJoint {
   bool on = false;
   int type = 1;                    // Type 1 to 9 (SP-25g: which degrees of freedom each leaves free)
-  double stiffness_scale = 1.0;    // ScF (0 or blank: 1)
+  double blocking_stiffness = 0.0;  // Kn [F/L]: 0 the automatic stiffness of SP-25c, d; given, SP-25i
+  double stiffness_scale = 1.0;     // ScF (0 or blank: 1, or 10 with a given Kn, where it scales the rotations' only)
   double critical_damping = 0.05;  // Cr (0 or blank: 0.05), of the blocked degrees of freedom only (measured)
   std::int64_t skew_id = 0;        // Skew_ID1: a /SKEW/FIX that sets the frame where node_ID3 is not given (SP-25f)
   std::int32_t skew = -1;          // its dense index (model build)

@@ -761,11 +761,13 @@ void read_joint_property(CardReader& reader, DeckContext& context) {
     first.fail(1, 10, "Type",
                "1 to 9 (spherical, revolute, cylindrical, planar, universal, translational, Oldham, rigid, free; the "
                "reference refuses any other, its error 938)");
-  if (first.real(11, 20, "Kn", dim::stiffness) != 0.0)
-    context.unsupported(first.error(11, 20, "Kn", default_only("a given blocking stiffness is")));
+  s.joint.blocking_stiffness = first.real(11, 20, "Kn", dim::stiffness);
+  if (s.joint.blocking_stiffness < 0.0)
+    first.fail(11, 20, "Kn", "a non-negative blocking stiffness (0 or blank: the automatic one)");
   const double scale = first.real(31, 20, "ScF", dim::none);
-  if (scale < 0.0) first.fail(31, 20, "ScF", "a positive scale of the blocking stiffness (0 or blank: 1)");
-  s.joint.stiffness_scale = scale == 0.0 ? 1.0 : scale;
+  if (scale < 0.0)
+    first.fail(31, 20, "ScF", "a positive scale of the blocking stiffness (0 or blank: 1, or 10 with a given Kn)");
+  s.joint.stiffness_scale = scale != 0.0 ? scale : s.joint.blocking_stiffness > 0.0 ? 10.0 : 1.0;
   const double critical = first.real(51, 20, "Cr", dim::none);
   if (critical < 0.0) first.fail(51, 20, "Cr", "a non-negative fraction of critical damping (0 or blank: 0.05)");
   s.joint.critical_damping = critical == 0.0 ? 0.05 : critical;

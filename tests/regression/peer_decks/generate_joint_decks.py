@@ -19,6 +19,8 @@
 #   joint_universal, joint_free: the same bodies and motion on the joints of Type 5 and 9, whose frame the /SPRING
 #     card's third and fourth nodes set (SP-25f).
 #   joint_cylindrical_skew: the cylindrical joint whose frame a /SKEW/FIX sets (Skew_ID1, no third node; SP-25f).
+#   joint_revolute_given_kn, joint_revolute_given_kn_scf: the revolute joint of joint_revolute's motion with a given
+#     blocking stiffness Kn (5e4 N/m, ScF blank: 10; 1e5 N/m, ScF 2; SP-25i).
 import os
 I = lambda *v: "".join("%10d" % x for x in v)
 R = lambda *v: "".join("%20.10g" % x for x in v)
@@ -43,7 +45,7 @@ def free_dof(k, c=0.0):  # a free degree of freedom's three lines: K, fct_K, S-,
 
 
 def deck(name, run, joint_at, second, scale, critical, rotations, bodies, loads, end, dt, joint_type=1, axis_node=None,
-         translations=(), plane_node=None, skew=None):
+         translations=(), plane_node=None, skew=None, kn=0.0):
     s = "/BEGIN\n%s\n      2019         0\n%20s%20s%20s\n%20s%20s%20s\n" % (run, 'kg', 'm', 's', 'kg', 'm', 's')
     s += "/MAT/ELAST/1\nsteel\n" + R(7800) + "\n" + R(2.1e11, 0.3) + "\n"
     s += "/NODE\n" + I(1) + R(*joint_at) + "\n" + I(2) + R(*joint_at) + "\n" + I(5) + R(-0.15, 0, 0) + "\n"
@@ -55,7 +57,7 @@ def deck(name, run, joint_at, second, scale, critical, rotations, bodies, loads,
     s += "/PART/1\njoint\n" + I(1, 0) + "\n/SPRING/1\n" + I(30, 1, 2, *((3,) if axis_node else ()), *((4,) if plane_node else ())) + "\n"
     s += "/PART/2\nbodies\n" + I(2, 1) + "\n/BRICK/2\n" + I(10, *range(11, 19)) + "\n" + I(20, *range(21, 29)) + "\n"
     s += "/PROP/SOLID/2\nbricks\n" + I(0) + "\n" + R(0) + "\n" + R(0) + "\n"
-    s += "/PROP/TYPE45/1\njoint\n" + I(joint_type) + R(0, scale, critical) + I(0, 7 if skew else 0, 0) + "\n"
+    s += "/PROP/TYPE45/1\njoint\n" + I(joint_type) + R(kn, scale, critical) + I(0, 7 if skew else 0, 0) + "\n"
     for k, c in tuple(translations) + tuple(rotations):  # the free translations' lines first, then the rotations'
         s += free_dof(k, c)
     s += "/GRNOD/NODE/8\nbody 1\n" + I(1, *range(11, 19)) + "\n/GRNOD/NODE/9\nbody 2\n" + I(2, *range(21, 29)) + "\n"
@@ -103,3 +105,7 @@ if __name__ == "__main__":
              axis_node=None if name.endswith("_skew") else (0.3, 0.1, 1.0), translations=translations,
              plane_node=(0.2, 1.0, 0.3) if joint_type in (5, 9) else None,
              skew=((1, 1, 0), (-1, 1, 0.2)) if name.endswith("_skew") else None)
+    # SP-25i: a given Kn, the rotations' stiffness ScF Kn (ScF blank: 10); joint_revolute's bodies and motion.
+    for name, run, kn, scale in (("joint_revolute_given_kn", "JRKN", 5e4, 0), ("joint_revolute_given_kn_scf", "JRKS", 1e5, 2)):
+        deck(name, run, (0, 0, 0), (0.2, 0, 0), scale, 0.03, ((15, 0.2),), held, swung, 0.3, 1e-4, joint_type=2,
+             axis_node=(0.3, 0.1, 1.0), kn=kn)
