@@ -662,7 +662,7 @@ GroupStepResult joint_forces(const ElementTable& table, const ElementGroup& grou
     const std::int32_t* n = table.nodes_of(ue);
     const Vec3 w1 = spin(nodes, static_cast<std::size_t>(n[0])), w2 = spin(nodes, static_cast<std::size_t>(n[1]));
     double* frame = &state.joint_frame[9 * ue];
-    const std::array<Vec3, 3> f = p.joint.type == 5 ? turn_universal_frame(frame, scaled(w1, dt), scaled(w2, dt))
+    const std::array<Vec3, 3> f = p.joint.universal() ? turn_universal_frame(frame, scaled(w1, dt), scaled(w2, dt))
                                                     : turn_joint_frame(frame, scaled(w1 + w2, 0.5 * dt));
     const Vec3 offset = in_frame(f, node_position(nodes, n[1]) - node_position(nodes, n[0]));
     const Vec3 turn = in_frame(f, scaled(w2 - w1, dt));

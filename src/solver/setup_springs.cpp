@@ -51,7 +51,7 @@ Vec3 joint_frame_at_rest(const Model& m, std::size_t e, const SpringJoint& joint
       const bool z_largest = std::abs(a.z) >= std::abs(a.x) && std::abs(a.z) >= std::abs(a.y);
       b = unit(z_largest ? cross(a, Vec3{1.0, 0.0, 0.0}) : cross(Vec3{0.0, 0.0, 1.0}, a));
     }
-    f = joint.type == 5 ? std::array<Vec3, 3>{cross(a, b), a, b} : std::array<Vec3, 3>{a, b, cross(a, b)};
+    f = joint.universal() ? std::array<Vec3, 3>{cross(a, b), a, b} : std::array<Vec3, 3>{a, b, cross(a, b)};
   } else if (joint.skew >= 0) {
     const SkewAxes skew = skew_axes(m.skews[static_cast<std::size_t>(joint.skew)], m.nodes.x, m.nodes.y, m.nodes.z);
     f = {skew.axis[0], skew.axis[1], skew.axis[2]};

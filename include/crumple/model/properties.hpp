@@ -152,8 +152,10 @@ struct SpringJoint {
   // spherical and the rigid, node_ID4 as well for the universal and the free joint.
   int frame_nodes() const {
     if (skew_id != 0) return 0;
-    return type == 5 || type == 9 ? 2 : type == 1 || type == 8 ? 0 : 1;
+    return universal() || type == 9 ? 2 : type == 1 || type == 8 ? 0 : 1;
   }
+  // The universal joint (Type 5): its frame's Y is body 1's, its Z body 2's (SP-25f).
+  bool universal() const { return type == 5; }
   static constexpr unsigned kFreeDofs[10] = {0, 0b111000, 0b001000, 0b001001, 0b001110, 0b110000, 0b000001, 0b000110, 0,
                                              0b111111};
   static bool supported(int type) { return type >= 1 && type <= 9; }
