@@ -90,6 +90,8 @@ void print_check_report(const Deck& deck, std::ostream& out) {
   fmt::print(out, "  files read            {}\n", join(deck.report.files));
   fmt::print(out, "  units                 input (kg, m, s) x [{:g}, {:g}, {:g}], working x [{:g}, {:g}, {:g}]\n",
              m.units.input[0], m.units.input[1], m.units.input[2], m.units.work[0], m.units.work[1], m.units.work[2]);
+  const UnitNames units = unit_names(m.units.work);
+  fmt::print(out, "  working units         {}\n", describe(units));
   fmt::print(out, "Counts\n");
   fmt::print(out, "  nodes                 {}\n", m.nodes.size());
   for (const ElementKindDescription& kind : kElementKindTable)
@@ -127,26 +129,27 @@ void print_check_report(const Deck& deck, std::ostream& out) {
   fmt::print(out, "  time histories        {}\n", m.histories.size());
   fmt::print(out, "  sections              {}\n", m.sections.size());
   fmt::print(out, "Mass\n");
-  fmt::print(out, "  total mass            {:.6g}\n", m.total_mass());
-  fmt::print(out, "  element mass          {:.6g}\n", m.element_mass);
-  fmt::print(out, "  added mass            {:.6g} (/ADMAS, /RBODY)\n", m.added_mass);
+  fmt::print(out, "  total mass            {:.6g} {}\n", m.total_mass(), units.mass);
+  fmt::print(out, "  element mass          {:.6g} {}\n", m.element_mass, units.mass);
+  // The deck's own point masses, not the mass scaling adds during a run (the listing's MASS ADDED).
+  fmt::print(out, "  point masses          {:.6g} {} (/ADMAS, /RBODY MASS)\n", m.added_mass, units.mass);
   const BoundingBox box = bounding_box(m.nodes);
   fmt::print(out, "Bounding box\n");
-  fmt::print(out, "  min                   {:.6g} {:.6g} {:.6g}\n", box.min[0], box.min[1], box.min[2]);
-  fmt::print(out, "  max                   {:.6g} {:.6g} {:.6g}\n", box.max[0], box.max[1], box.max[2]);
+  fmt::print(out, "  min                   {:.6g} {:.6g} {:.6g} {}\n", box.min[0], box.min[1], box.min[2], units.length);
+  fmt::print(out, "  max                   {:.6g} {:.6g} {:.6g} {}\n", box.max[0], box.max[1], box.max[2], units.length);
   fmt::print(out, "Time step\n");
   const ControllingElement dt = smallest_element_time_step(m);
   if (dt.time_step > 0.0) {
     const double scale = m.run.dt.scale > 0.0 ? m.run.dt.scale : 0.9;
-    fmt::print(out, "  smallest element step {:.6g} ({} {} in part {})\n", dt.time_step, element_kind_name(dt.kind),
-               dt.element_user_id, dt.part_user_id);
-    fmt::print(out, "  scaled step           {:.6g} (scale {:g})\n", dt.time_step * scale, scale);
+    fmt::print(out, "  smallest element step {:.6g} {} ({} {} in part {})\n", dt.time_step, units.time,
+               element_kind_name(dt.kind), dt.element_user_id, dt.part_user_id);
+    fmt::print(out, "  scaled step           {:.6g} {} (scale {:g})\n", dt.time_step * scale, units.time, scale);
   } else {
     fmt::print(out, "  smallest element step none (no elements)\n");
   }
   print_resolved(m, out);
   if (m.run.present)
-    fmt::print(out, "Run\n  end time              {:g}\n", m.run.end_time);
+    fmt::print(out, "Run\n  end time              {:g} {}\n", m.run.end_time, units.time);
   fmt::print(out, "Keywords\n");
   fmt::print(out, "  read                  {}\n", join(deck.report.keywords_read));
   fmt::print(out, "  accepted, no effect   {}\n", join(deck.report.accepted_without_effect));

@@ -4,6 +4,11 @@
 #include <atomic>
 #include <csignal>
 
+#include <filesystem>
+#include <iosfwd>
+#include <vector>
+
+#include "crumple/core/deck_error.hpp"
 #include "crumple/output/progress.hpp"
 
 namespace crumple::app {
@@ -11,6 +16,11 @@ namespace crumple::app {
 // Progress on stdout: rewritten in place once a second on a terminal, a plain line every 5 s otherwise (a log
 // file, a pipe, a batch job); off with --quiet.
 ProgressOptions stdout_progress(bool quiet);
+
+// The deck's warnings on the console, each once: the same message on several cards of one keyword (the same
+// option on /PROP/SHELL/1, 2 and 3) is one line naming the others and their count; files under the starter deck's
+// folder (`deck`) are named relative to it. The listing and the summary keep every warning as read.
+void print_warnings(const std::vector<DeckWarning>& warnings, const std::filesystem::path& deck, std::ostream& out);
 
 // While it lives, SIGINT and SIGTERM set request() to the signal's number instead of ending the process. The
 // handlers are installed once (SA_RESETHAND): a second signal of the same kind ends the process at once, the

@@ -61,7 +61,11 @@ int main(int argc, char** argv) {
                   "change is listed (docs/performance.md)")
       ->check(CLI::IsMember({"draft", "standard", "fine"}));
   run->add_option("--restart", run_options.restart,
-                  "Resume from a restart file (NAME.rst, written with /RFILE or when a run is stopped)");
+                  "Resume from a restart file (NAME.rst, written with /RFILE or when a run is stopped); the "
+                  "folder's NAME.h5 and NAME.out are continued, not replaced");
+  run->add_flag("--overwrite", run_options.overwrite,
+                "With --restart: replace the folder's NAME.h5 and NAME.out by the resumed run's instead of "
+                "continuing them");
 
   app::RegressOptions regress_options;
   CLI::App* regress = cli.add_subcommand(
@@ -84,6 +88,14 @@ int main(int argc, char** argv) {
   plot->add_option("RESULTS", plot_options.results, "Results file NAME.h5")->required();
   plot->add_option("-o,--output", plot_options.output_directory, "Folder for the PNGs (default: beside NAME.h5)");
   plot->add_option("--select", plot_options.select, "Also plot the /history/th columns whose label contains PATTERN")
+      ->expected(1, -1);
+  app::CompareOptions compare_options;
+  CLI::App* compare = cli.add_subcommand(
+      "compare", "Runs of one model side by side: a table of cycles, wall time, internal energy, wall forces and "
+                 "node displacements against the first run, and their histories overlaid (PNGs)");
+  compare->add_option("RESULTS", compare_options.results, "Two or more results files NAME.h5")->required()->expected(2, -1);
+  compare->add_option("-o,--output", compare_options.output_directory, "Folder for the PNGs (default: beside the first)");
+  compare->add_option("--nodes", compare_options.nodes, "Also compare these nodes' final displacements (deck ids)")
       ->expected(1, -1);
   run->add_flag("-q,--quiet", quiet,
                 "No progress on the console (by default a line updated once a second on a terminal, otherwise "
@@ -124,6 +136,7 @@ int main(int argc, char** argv) {
     }
     if (regress->parsed()) return app::regress(regress_options, std::cout, std::cerr);
     if (plot->parsed()) return app::plot_results(plot_options);
+    if (compare->parsed()) return app::compare_results(compare_options);
     if (th->parsed()) return app::run_th(th_options, std::cout, std::cerr);
     run_options.deck = deck_path;
     run_options.skip_unknown = skip_unknown;

@@ -20,4 +20,13 @@ std::string plot_python();
 // Runs the plot script; returns the process exit code (0, or 2 with the script's message on stderr).
 int plot_results(const PlotOptions& options);
 
+// `crumple compare A.h5 B.h5 [...] [-o DIR] [--nodes ID...]`: runs of one model side by side, a table and
+// overlaid histories (the same script; README, "Trading speed for accuracy").
+struct CompareOptions {
+  std::vector<std::filesystem::path> results;  // two or more NAME.h5
+  std::filesystem::path output_directory;      // empty: beside the first
+  std::vector<long long> nodes;                // --nodes: deck ids whose final displacement the table compares
+};
+int compare_results(const CompareOptions& options);
+
 }  // namespace crumple::app

@@ -68,7 +68,7 @@ namespace {
 // What became of one case.
 struct Outcome {
   bool passed = false;
-  std::string kind = "not run";  // pass, mismatch, timeout, crash, run failed, no results
+  std::string kind = "not run";  // pass, mismatch, unsupported, bad input, timeout, crash, run failed, no results
   std::string message;           // the numbers, or what went wrong
   std::string console;           // the run's last console lines
   std::optional<Comparison> comparison;
@@ -93,12 +93,28 @@ std::string run_name(const fs::path& output) {
   throw std::runtime_error("no NAME.summary.json in " + output.string());
 }
 
-const char* failure_kind(const ChildResult& r) {
+// The run's first error line on its console (a deck error names the file, line, keyword and field), or "".
+std::string first_error(const fs::path& console) {
+  std::ifstream in(console);
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind("error: ", 0) == 0 || line.rfind("crumple: ", 0) == 0) return line;
+  return {};
+}
+
+// What kind of failure a run that did not end normally is: a deck Crumple refuses for a keyword or option it
+// lacks ("unsupported", counted apart from wrong answers), other bad input, a timeout, a crash, a failed run.
+std::string failure_kind(const ChildResult& r, const std::string& error) {
   switch (r.end) {
     case ChildResult::End::TimedOut: return "timeout";
     case ChildResult::End::Signalled: return "crash";
-    default: return "run failed";
+    default: break;
   }
+  if (r.end == ChildResult::End::Exited && r.code == kExitBadInput)
+    return error.find("not supported by Crumple") != std::string::npos ||
+                   error.find("unknown keyword") != std::string::npos
+               ? "unsupported"
+               : "bad input";
+  return "run failed";
 }
 
 Outcome evaluate(const RegressCase& c, const ChildResult& r, const fs::path& output, double timeout) {
@@ -106,8 +122,9 @@ Outcome evaluate(const RegressCase& c, const ChildResult& r, const fs::path& out
   o.seconds = r.seconds;
   o.console = console_tail(output / "console.txt", 12);
   if (r.end != ChildResult::End::Exited || r.code != 0) {
-    o.kind = failure_kind(r);
-    o.message = "crumple run: " + describe(r, timeout);
+    const std::string error = first_error(output / "console.txt");
+    o.kind = failure_kind(r, error);
+    o.message = "crumple run: " + describe(r, timeout) + (error.empty() ? "" : ": " + error);
     return o;
   }
   try {
@@ -141,12 +158,14 @@ std::string verdict(const Outcome& o) {
 void print_table(const std::vector<RegressCase>& cases, const std::vector<Outcome>& outcomes, std::ostream& out) {
   std::size_t width = 4;
   for (const RegressCase& c : cases) width = std::max(width, c.name.size());
-  fmt::print(out, "\n{:<{}}  {:>11} {:>11} {:>8} {:>8} {:>13} {:>8}  {:>7}  {}\n", "deck", width, "IE crumple",
-             "IE ref", "IE diff", "KE diff", "cycles", "diff", "seconds", "verdict");
+  // IE diff: % of the reference's internal energy (or of its floor share of the scale); KE diff: % of the scale;
+  // cycles: Crumple's against the reference's at its time.
+  fmt::print(out, "\n{:<{}}  {:>11} {:>11} {:>8} {:>8} {:>13} {:>11}  {:>7}  {}\n", "deck", width, "IE crumple",
+             "IE ref", "IE diff", "KE diff", "cycles cr/ref", "cycles diff", "seconds", "verdict");
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const Outcome& o = outcomes[i];
     if (!o.comparison) {
-      fmt::print(out, "{:<{}}  {:>11} {:>11} {:>8} {:>8} {:>13} {:>8}  {:>7.1f}  {}\n", cases[i].name, width, "-",
+      fmt::print(out, "{:<{}}  {:>11} {:>11} {:>8} {:>8} {:>13} {:>11}  {:>7.1f}  {}\n", cases[i].name, width, "-",
                  "-", "-", "-", "-", "-", o.seconds, verdict(o));
       continue;
     }
@@ -154,7 +173,7 @@ void print_table(const std::vector<RegressCase>& cases, const std::vector<Outcom
     // IE diff in % of the quantity its tolerance is a share of: max(|ref|, floor x scale).
     const double internal_base =
         std::max(std::abs(c.internal.reference), cases[i].tolerances.internal_floor * c.scale);
-    fmt::print(out, "{:<{}}  {:>11.5g} {:>11.5g} {:>+6.1f} % {:>+6.1f} % {:>13} {:>+6.1f} %  {:>7.1f}  {}\n",
+    fmt::print(out, "{:<{}}  {:>11.5g} {:>11.5g} {:>+6.1f} % {:>+6.1f} % {:>13} {:>+9.1f} %  {:>7.1f}  {}\n",
                cases[i].name, width, c.internal.run, c.internal.reference,
                100.0 * c.internal.difference() / internal_base, 100.0 * c.kinetic.difference() / c.scale,
                fmt::format("{:.0f}/{:.0f}", c.cycles.run, c.cycles.reference),
@@ -224,7 +243,12 @@ std::vector<Outcome> run_cases(const RegressOptions& options, const std::vector<
 int report(const std::vector<RegressCase>& cases, const std::vector<Outcome>& outcomes, double seconds,
            const fs::path& work, const RegressOptions& options, std::ostream& out, std::ostream& err) {
   const auto failed = std::count_if(outcomes.begin(), outcomes.end(), [](const Outcome& o) { return !o.passed; });
-  fmt::print(out, "\n{} passed, {} failed ({:.1f} s)\n", cases.size() - static_cast<std::size_t>(failed), failed,
+  const auto unsupported =
+      std::count_if(outcomes.begin(), outcomes.end(), [](const Outcome& o) { return o.kind == "unsupported"; });
+  fmt::print(out, "\n{} passed, {} failed{} ({:.1f} s)\n", cases.size() - static_cast<std::size_t>(failed), failed,
+             unsupported > 0 ? fmt::format(" ({} wrong or failed, {} refused as unsupported)", failed - unsupported,
+                                           unsupported)
+                             : std::string(),
              seconds);
   for (std::size_t i = 0; i < cases.size(); ++i)
     if (!outcomes[i].passed) fmt::print(out, "  {}: {}\n", cases[i].name, outcomes[i].message);

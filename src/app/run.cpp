@@ -61,9 +61,12 @@ RunSummary run_engine_decks(Deck& deck, const SimulationOptions& options, std::o
   // Domain 0 writes the run (or the only domain); the others report to no one.
   std::optional<RunRecorder> recorder;
   QuietObserver quiet;
-  if (domain == nullptr || domain->index == 0)
+  if (domain == nullptr || domain->index == 0) {
+    RunStart run{options.deck, options.approximations, options.progress, options.accuracy, std::nullopt};
+    if (marks && !options.overwrite_results) run.continue_from = state.time;
     recorder.emplace(m, options.output_directory, options.name.empty() ? m.run_name : options.name,
-                     options.write_results, RunStart{options.deck, options.approximations, options.progress, options.accuracy}, &console);
+                     options.write_results, std::move(run), &console);
+  }
   RunObserver& observer = recorder ? static_cast<RunObserver&>(*recorder) : quiet;
   RunSummary summary;
   for (int k = start; k <= static_cast<int>(controls.size()); ++k) {
@@ -120,6 +123,7 @@ int run_deck_as(const RunOptions& options, Deck& deck, std::ostream& out, std::o
   solver.deck = options.deck;
   solver.progress = options.progress;
   solver.notes = notes;
+  solver.overwrite_results = options.overwrite;
   const StopOnSignals signals;
   solver.stop_request = &signals.request();
   solver.exchange = ranks != nullptr ? &ranks->exchange : nullptr;
@@ -149,7 +153,7 @@ Deck read_run_deck(const RunOptions& options, std::ostream& err, std::vector<std
   read.skip_unknown = options.skip_unknown;
   read.require_engine = true;
   Deck deck = read_deck(options.deck, read);
-  for (const auto& w : deck.report.warnings) fmt::print(err, "warning: {}\n", w.text());
+  print_warnings(deck.report.warnings, options.deck, err);
   std::vector<RunControl*> runs{&deck.model.run};
   for (RunControl& r : deck.continued_runs) runs.push_back(&r);
   preset_changes = apply_accuracy_preset(options.accuracy, deck.model, runs);

@@ -14,6 +14,7 @@ struct RunOptions {
   std::filesystem::path output_directory = ".";
   bool skip_unknown = false;
   std::filesystem::path restart;  // --restart FILE: resume the snapshot of a NAME.rst (empty: start at t = 0)
+  bool overwrite = false;         // --overwrite: a resumed run replaces the folder's results, not continues them
   ProgressOptions progress;  // console progress (console.hpp: stdout_progress)
   AccuracyPreset accuracy = AccuracyPreset::Standard;  // --accuracy (accuracy.hpp)
 };

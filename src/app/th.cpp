@@ -19,7 +19,11 @@ struct Channel {
   std::size_t series, column;
 };
 
-std::string with_unit(const HistoryColumn& c) { return c.unit.empty() ? c.label : fmt::format("{} [{}]", c.label, c.unit); }
+// "NODE_2/6/DX [mm]": the label and the unit's name in the file's working units (none when dimensionless).
+std::string with_unit(const HistoryFile& file, const HistoryColumn& c) {
+  const std::string unit = file.unit_of(c);
+  return unit.empty() ? c.label : fmt::format("{} [{}]", c.label, unit);
+}
 
 bool selected(const HistoryColumn& c, const std::vector<std::string>& patterns) {
   if (patterns.empty()) return true;
@@ -49,7 +53,8 @@ void list(const std::filesystem::path& path, const HistoryFile& file, const std:
   const auto& series = file.series();
   const std::vector<double> time = file.values(0);
   fmt::print(out, "{}: {} history rows", path.filename().string(), file.rows());
-  if (!time.empty()) fmt::print(out, ", time {:.6g} to {:.6g}", time.front(), time.back());
+  if (!time.empty())
+    fmt::print(out, ", time {:.6g} to {:.6g} {}", time.front(), time.back(), file.unit_of(series[0].columns[0]));
   fmt::print(out, "\n");
   std::size_t shown = series.size();
   for (const Channel& ch : chosen) {
@@ -60,7 +65,7 @@ void list(const std::filesystem::path& path, const HistoryFile& file, const std:
       else fmt::print(out, "{}  {} {}  \"{}\"  {}  {} columns\n", s.path, s.kind, s.id, s.title, s.keyword, s.columns.size());
     }
     const HistoryColumn& c = s.columns[ch.column];
-    fmt::print(out, "  {}{}\n", with_unit(c), c.object_title.empty() ? "" : fmt::format("  ({})", c.object_title));
+    fmt::print(out, "  {}{}\n", with_unit(file, c), c.object_title.empty() ? "" : fmt::format("  ({})", c.object_title));
   }
 }
 
@@ -70,8 +75,8 @@ void write_csv(const HistoryFile& file, const std::vector<Channel>& chosen, std:
   values[0] = file.values(0);
   for (const Channel& ch : chosen)
     if (values[ch.series].empty()) values[ch.series] = file.values(ch.series);
-  fmt::print(out, "{}", with_unit(series[0].columns[0]));
-  for (const Channel& ch : chosen) fmt::print(out, ",{}", with_unit(series[ch.series].columns[ch.column]));
+  fmt::print(out, "{}", with_unit(file, series[0].columns[0]));
+  for (const Channel& ch : chosen) fmt::print(out, ",{}", with_unit(file, series[ch.series].columns[ch.column]));
   fmt::print(out, "\n");
   for (std::size_t r = 0; r < file.rows(); ++r) {  // shortest decimal forms that read back to the same doubles
     fmt::print(out, "{}", values[0][r]);

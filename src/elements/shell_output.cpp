@@ -32,4 +32,22 @@ ShellElementOutput shell_element_output(const ShellGroupParameters& p, const She
   return out;
 }
 
+std::array<double, 6> shell_stress_in_global_axes(const Vec3* x, int nodes, const double (&local)[3]) {
+  shell_section::Frame f;
+  bool framed = false;
+  if (nodes == 4) {
+    const Vec3 quad[4] = {x[0], x[1], x[2], x[3]};
+    framed = shell_section::corotational_frame<4>(quad, f);
+  } else {
+    const Vec3 triangle[3] = {x[0], x[1], x[2]};
+    framed = shell_section::corotational_frame<3>(triangle, f);
+  }
+  if (!framed) return {};
+  const double a[3] = {f.e1.x, f.e1.y, f.e1.z}, b[3] = {f.e2.x, f.e2.y, f.e2.z};
+  const auto component = [&](int i, int j) {
+    return local[0] * a[i] * a[j] + local[1] * b[i] * b[j] + local[2] * (a[i] * b[j] + b[i] * a[j]);
+  };
+  return {component(0, 0), component(1, 1), component(2, 2), component(0, 1), component(1, 2), component(2, 0)};
+}
+
 }  // namespace crumple

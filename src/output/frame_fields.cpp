@@ -9,6 +9,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "crumple/elements/shell4.hpp"
 #include "crumple/state/element_status.hpp"
 
 namespace crumple {
@@ -46,7 +47,10 @@ void add_nodal_fields(FieldSink& out, const Model& m, const SolverState& s) {
   const std::size_t n = m.nodes.size();
   const NodalState& ns = s.nodes;
   const FrameRequests& want = m.run.anim;
-  std::vector<double> u = interleave(ns.x, ns.y, ns.z, n, "nodal coordinates");
+  std::vector<double> x = interleave(ns.x, ns.y, ns.z, n, "nodal coordinates");
+  std::vector<double> u = x;
+  // The deformed shape: NAME.xdmf makes it the frame's geometry, so that ParaView draws it with no filter.
+  out.push_back(field(kFrameCoordinates, -1, 3, std::move(x)));
   for (std::size_t i = 0; i < n; ++i)
     u[3 * i] -= m.nodes.x[i], u[3 * i + 1] -= m.nodes.y[i], u[3 * i + 2] -= m.nodes.z[i];
   out.push_back(field("displacement", -1, 3, std::move(u)));
@@ -206,10 +210,24 @@ void check_shells(const Model& m, ElementKind kind, const ShellState& s, std::si
   }
 }
 
-std::vector<double> row(const std::vector<ShellValues>& values, Stress3 ShellValues::*member) {
-  std::vector<double> out(3 * values.size());
-  for (std::size_t e = 0; e < values.size(); ++e)
-    for (std::size_t d = 0; d < 3; ++d) out[3 * e + d] = (values[e].*member)[d];
+// One stress of each element (a member of ShellValues, in its co-rotational frame) as a symmetric tensor in the
+// global axes at the state's node positions, 6 per element.
+std::vector<double> global_tensors(const std::vector<ShellValues>& values, Stress3 ShellValues::*member,
+                                   const ElementTable& table, const NodalState& nodes) {
+  const int per_element = nodes_per_element(table.kind);
+  std::vector<double> out(6 * values.size());
+  for (std::size_t e = 0; e < values.size(); ++e) {
+    Vec3 x[4];
+    const std::int32_t* element_nodes = table.nodes_of(e);
+    for (int a = 0; a < per_element; ++a) {
+      const auto i = static_cast<std::size_t>(element_nodes[a]);
+      x[a] = Vec3{nodes.x[i], nodes.y[i], nodes.z[i]};
+    }
+    const Stress3& s = values[e].*member;
+    const double local[3] = {s[0], s[1], s[2]};
+    const std::array<double, 6> global = shell_stress_in_global_axes(x, per_element, local);
+    std::copy(global.begin(), global.end(), out.begin() + static_cast<std::ptrdiff_t>(6 * e));
+  }
   return out;
 }
 
@@ -234,20 +252,22 @@ void add_shell_fields(FieldSink& out, const Model& m, const SolverState& state, 
   }
   const int k = static_cast<int>(kind);
   const FrameRequests& want = m.run.anim;
-  out.push_back(field("stress", k, 3, row(values, &ShellValues::membrane)));
+  const ElementTable& table = m.elements[static_cast<std::size_t>(kind)];
+  const auto tensor = [&](Stress3 ShellValues::*member) { return global_tensors(values, member, table, state.nodes); };
+  out.push_back(field("stress", k, 6, tensor(&ShellValues::membrane)));
   std::vector<double> eps(n), vm(n), pressure(n);
   for (std::size_t e = 0; e < n; ++e) {
     eps[e] = values[e].plastic_strain, vm[e] = values[e].von_mises;
     pressure[e] = -(values[e].membrane[0] + values[e].membrane[1]) / 3.0;  // plane stress: szz = 0
   }
+  out.push_back(field("von_mises", k, 1, std::move(vm)));
   out.push_back(field("plastic_strain", k, 1, std::move(eps)));
   out.push_back(field("thickness", k, 1, s.thickness));
-  if (want.von_mises) out.push_back(field("von_mises", k, 1, std::move(vm)));
   if (want.pressure) out.push_back(field("pressure", k, 1, std::move(pressure)));
-  if (want.bending_stress) out.push_back(field("bending_stress", k, 3, row(values, &ShellValues::bending)));
+  if (want.bending_stress) out.push_back(field("bending_stress", k, 6, tensor(&ShellValues::bending)));
   if (want.surface_stress) {
-    out.push_back(field("stress_upper", k, 3, row(values, &ShellValues::upper)));
-    out.push_back(field("stress_lower", k, 3, row(values, &ShellValues::lower)));
+    out.push_back(field("stress_upper", k, 6, tensor(&ShellValues::upper)));
+    out.push_back(field("stress_lower", k, 6, tensor(&ShellValues::lower)));
   }
   add_element_scalars(out, want, k, n, s.internal_energy, s.mass, s.hourglass_energy, s.critical_dt);
   add_status_fields(out, kind, s.deleted);
@@ -306,10 +326,9 @@ void add_brick_fields(FieldSink& out, const Model& m, const SolverState& state) 
     vm[e] = von_mises(&stress[6 * e]);
     pressure[e] = -(stress[6 * e] + stress[6 * e + 1] + stress[6 * e + 2]) / 3.0;
   }
-  // Not "stress": ParaView colours a field across the grids of a frame, and the shells' stress has 3 components.
-  out.push_back(field("stress_tensor", k, 6, std::move(stress)));
+  out.push_back(field("stress", k, 6, std::move(stress)));
+  out.push_back(field("von_mises", k, 1, std::move(vm)));
   out.push_back(field("plastic_strain", k, 1, std::move(eps)));
-  if (want.von_mises) out.push_back(field("von_mises", k, 1, std::move(vm)));
   if (want.pressure) out.push_back(field("pressure", k, 1, std::move(pressure)));
   add_element_scalars(out, want, k, n, b.internal_energy, b.mass, b.hourglass_energy, b.critical_dt);
   add_status_fields(out, ElementKind::Brick8, b.deleted);

@@ -15,6 +15,10 @@ namespace crumple {
 // cells out of what it draws, so a deleted element disappears from the animation.
 inline constexpr std::uint8_t kHiddenCell = 32;
 
+// The nodal field of every frame that holds the nodes' current positions: NAME.xdmf's geometry of the frame, not
+// one of its attributes.
+inline constexpr const char* kFrameCoordinates = "coordinates";
+
 struct FrameField {
   std::string name;                 // dataset name, also the attribute name in ParaView
   int kind = -1;                    // the ElementKind of a cell field, -1 for a nodal field

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace crumple::hdf5 {
 
@@ -63,6 +64,24 @@ class QuietErrors {
 // The most specific description on the current HDF5 error stack ("No such file or directory" rather than
 // "unable to create file"), or an empty string. Clears the stack.
 std::string last_error();
+
+// Reading back what a results file holds (the history reader, and the writer continuing a file).
+bool has_attribute(hid_t object, const char* name);
+Handle open_attribute(hid_t object, const char* name);
+std::size_t attribute_size(const Handle& attr);  // its number of values
+// A numeric attribute's values (scalar or 1-D) read as `memory_type`; empty when the object has none.
+template <class T>
+std::vector<T> numbers(hid_t object, const char* name, hid_t memory_type) {
+  if (!has_attribute(object, name)) return {};
+  const Handle attr = open_attribute(object, name);
+  std::vector<T> out(attribute_size(attr));
+  if (!out.empty() && H5Aread(attr.get(), memory_type, out.data()) < 0) return {};
+  return out;
+}
+// The names of a group's members, in creation order when the file tracks it, else by name.
+std::vector<std::string> members(hid_t group);
+// The dimensions of a dataset, slowest first.
+std::vector<hsize_t> shape(hid_t set);
 
 // Memory and file types of the element types written.
 template <class T>

@@ -498,7 +498,8 @@ HistoryChannels::HistoryChannels(const Model& model) : model_(model) {
     for (std::int32_t e = group.begin; e < group.end; ++e)
       element_group_[static_cast<std::size_t>(group.kind)][static_cast<std::size_t>(e)] = static_cast<std::int32_t>(g);
   }
-  if (needs_parts_) split_nodes_by_part(), gather_subsets();
+  split_nodes_by_part();  // the run's part table needs it too
+  if (needs_parts_) gather_subsets();
 }
 
 void HistoryChannels::add_request(const TimeHistoryRequest& th) {
@@ -614,6 +615,15 @@ HistoryChannels::PartSums HistoryChannels::part_sums(const SolverState& s) const
     }
   }
   return sums;
+}
+
+std::vector<PartResult> HistoryChannels::part_results(const SolverState& s) const {
+  const PartSums sums = part_sums(s);
+  std::vector<PartResult> out;
+  for (std::size_t p = 0; p < model_.parts.size(); ++p)
+    out.push_back({model_.parts[p].user_id, model_.parts[p].title, sums.mass[p], sums.ie[p], sums.ke[p] + sums.rke[p],
+                   sums.he[p]});
+  return out;
 }
 
 void HistoryChannels::evaluate(const SolverState& s, const VelocityChange& change,

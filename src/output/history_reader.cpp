@@ -5,29 +5,26 @@
 
 #include <stdexcept>
 
+#include "crumple/core/units.hpp"
 #include "hdf5_support.hpp"
 
 namespace crumple {
 namespace {
 
+using hdf5::attribute_size;
 using hdf5::Handle;
+using hdf5::has_attribute;
+using hdf5::members;
+using hdf5::numbers;
+using hdf5::open_attribute;
 using hdf5::QuietErrors;
+using hdf5::shape;
 
 Handle string_type() {
   Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
   H5Tset_size(type.get(), H5T_VARIABLE);
   H5Tset_cset(type.get(), H5T_CSET_UTF8);
   return type;
-}
-
-bool has_attribute(hid_t object, const char* name) { return H5Aexists(object, name) > 0; }
-
-Handle open_attribute(hid_t object, const char* name) { return {H5Aopen(object, name, H5P_DEFAULT), H5Aclose}; }
-
-std::size_t attribute_size(const Handle& attr) {
-  Handle space(H5Aget_space(attr.get()), H5Sclose);
-  const hssize_t n = H5Sget_simple_extent_npoints(space.get());
-  return n > 0 ? static_cast<std::size_t>(n) : 0;
 }
 
 // A variable-length string attribute, scalar or 1-D; empty when the object has none.
@@ -48,42 +45,6 @@ std::vector<std::string> strings(hid_t object, const char* name) {
 std::string string_of(hid_t object, const char* name) {
   const std::vector<std::string> s = strings(object, name);
   return s.empty() ? std::string() : s.front();
-}
-
-template <class T>
-std::vector<T> numbers(hid_t object, const char* name, hid_t memory_type) {
-  if (!has_attribute(object, name)) return {};
-  const Handle attr = open_attribute(object, name);
-  std::vector<T> out(attribute_size(attr));
-  if (!out.empty() && H5Aread(attr.get(), memory_type, out.data()) < 0) return {};
-  return out;
-}
-
-// The names of a group's members, in creation order when the file tracks it, else by name.
-std::vector<std::string> members(hid_t group) {
-  H5G_info_t info;
-  if (H5Gget_info(group, &info) < 0) return {};
-  for (H5_index_t index : {H5_INDEX_CRT_ORDER, H5_INDEX_NAME}) {
-    std::vector<std::string> names;
-    for (hsize_t i = 0; i < info.nlinks; ++i) {
-      const ssize_t size = H5Lget_name_by_idx(group, ".", index, H5_ITER_INC, i, nullptr, 0, H5P_DEFAULT);
-      if (size < 0) break;
-      std::string name(static_cast<std::size_t>(size) + 1, '\0');
-      H5Lget_name_by_idx(group, ".", index, H5_ITER_INC, i, name.data(), name.size(), H5P_DEFAULT);
-      name.resize(static_cast<std::size_t>(size));
-      names.push_back(std::move(name));
-    }
-    if (names.size() == info.nlinks) return names;
-    H5Eclear2(H5E_DEFAULT);
-  }
-  return {};
-}
-
-std::vector<hsize_t> shape(hid_t set) {
-  Handle space(H5Dget_space(set), H5Sclose);
-  std::vector<hsize_t> dims(static_cast<std::size_t>(std::max(0, H5Sget_simple_extent_ndims(space.get()))));
-  H5Sget_simple_extent_dims(space.get(), dims.data(), nullptr);
-  return dims;
 }
 
 // The columns of a dataset from its attributes; a file without them gets labels made from the dataset's name.
@@ -117,6 +78,7 @@ struct HistoryFile::Impl {
   Handle file;
   std::size_t rows = 0;
   std::vector<HistorySeries> series;
+  std::optional<UnitNames> units;
 
   [[noreturn]] void fail(const std::string& what) const {
     const std::string detail = hdf5::last_error();
@@ -155,11 +117,17 @@ struct HistoryFile::Impl {
     add(history.get(), "time", "/history/time", "global");
     for (const std::string& name : members(history.get()))
       if (name != "time" && name != "th") add(history.get(), name, "/history/" + name, "global");
-    if (H5Lexists(history.get(), "th", H5P_DEFAULT) <= 0) return;
-    Handle th = open_group("/history/th");
-    for (const std::string& name : members(th.get())) {
-      Handle set(H5Dopen2(th.get(), name.c_str(), H5P_DEFAULT), H5Dclose);
-      add(th.get(), name, "/history/th/" + name, set.valid() ? string_of(set.get(), "kind") : "");
+    if (H5Lexists(history.get(), "th", H5P_DEFAULT) > 0) {
+      Handle th = open_group("/history/th");
+      for (const std::string& name : members(th.get())) {
+        Handle set(H5Dopen2(th.get(), name.c_str(), H5P_DEFAULT), H5Dclose);
+        add(th.get(), name, "/history/th/" + name, set.valid() ? string_of(set.get(), "kind") : "");
+      }
+    }
+    const auto si = numbers<double>(file.get(), "working_units_si", H5T_NATIVE_DOUBLE);
+    if (si.size() == 3) {
+      const double work[3] = {si[0], si[1], si[2]};
+      units = unit_names(work);
     }
   }
 };
@@ -176,6 +144,10 @@ HistoryFile::HistoryFile(const std::filesystem::path& path) : impl_(std::make_un
 HistoryFile::~HistoryFile() = default;
 
 std::size_t HistoryFile::rows() const { return impl_->rows; }
+
+std::string HistoryFile::unit_of(const HistoryColumn& column) const {
+  return impl_->units ? unit_name(column.unit, *impl_->units) : column.unit;
+}
 
 const std::vector<HistorySeries>& HistoryFile::series() const { return impl_->series; }
 

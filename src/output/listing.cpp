@@ -6,7 +6,8 @@
 
 namespace crumple {
 
-Listing::Listing(const std::filesystem::path& path) : out_(path) {
+Listing::Listing(const std::filesystem::path& path, bool append)
+    : out_(path, append ? std::ios::out | std::ios::app : std::ios::out) {
   if (!out_) throw std::runtime_error("cannot write the listing " + path.string());
 }
 

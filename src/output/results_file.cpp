@@ -4,6 +4,7 @@
 #include "crumple/output/results_file.hpp"
 
 #include "crumple/model/history_variables.hpp"
+#include "crumple/output/restart_file.hpp"
 #include "crumple/state/element_status.hpp"
 #include "frame_fields.hpp"
 #include "hdf5_support.hpp"
@@ -16,6 +17,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <fstream>
+#include <limits>
 #include <stdexcept>
 #include <string_view>
 #include <system_error>
@@ -155,6 +157,9 @@ struct ResultsFile::Impl {
   std::array<std::vector<HistoryColumn>, kWide> wide_columns;  // their labels, written when the first row fits them
   double work_si[3] = {1.0, 1.0, 1.0};             // SI size of the working units
   std::vector<std::vector<double>> pending;        // rows not yet appended, row-major, one per series
+  // A continued file (a resumed run): the last history row it held; a row at or before it is not written again.
+  double last_row_time = -std::numeric_limits<double>::infinity();
+  bool continued = false;
   std::size_t pending_rows = 0;
 
   [[noreturn]] void fail(const std::string& what) const {
@@ -318,6 +323,7 @@ struct ResultsFile::Impl {
       create_series(series[s]);
       const GlobalSeries& g = kGlobalSeries[s];
       string_attribute(series[s].dataset.get(), "unit", g.unit);
+      string_attribute(series[s].dataset.get(), "unit_name", unit_name(g.unit, unit_names(work_si)));
       attribute(series[s].dataset.get(), "si_scale", si_factor(g.dimension, work_si));
       string_attribute(series[s].dataset.get(), "label", g.name);
     }
@@ -342,19 +348,23 @@ struct ResultsFile::Impl {
     column_attributes(set, d.columns);
   }
 
-  // Per column: object_ids, object_titles, variables, units, si_scale, labels.
+  // Per column: object_ids, object_titles, variables, units (dimension letters), unit_names (their names in the
+  // working units), si_scale, labels.
   void column_attributes(hid_t set, const std::vector<HistoryColumn>& columns) const {
     std::vector<std::int64_t> ids;
-    std::vector<std::string> titles, variables, units, labels;
+    std::vector<std::string> titles, variables, units, names, labels;
     std::vector<double> scales;
+    const UnitNames working = unit_names(work_si);
     for (const HistoryColumn& c : columns) {
       ids.push_back(c.object_id), titles.push_back(c.object_title), variables.push_back(c.variable);
       units.push_back(c.unit), labels.push_back(c.label), scales.push_back(c.si_scale);
+      names.push_back(unit_name(c.unit, working));
     }
     array_attribute(set, "object_ids", ids);
     string_array_attribute(set, "object_titles", titles);
     string_array_attribute(set, "variables", variables);
     string_array_attribute(set, "units", units);
+    string_array_attribute(set, "unit_names", names);
     array_attribute(set, "si_scale", scales);
     string_array_attribute(set, "labels", labels);
   }
@@ -416,6 +426,7 @@ struct ResultsFile::Impl {
   }
 
   void append_history(const HistoryRow& row) {
+    if (row.time <= last_row_time) return;  // a continued file holds it already
     const std::array<const std::vector<double>*, kWide> wide{&row.rigid_wall_force, &row.node_values,
                                                              &row.rigid_body_values, &row.interface_values};
     if (!widths_known) {
@@ -471,6 +482,7 @@ struct ResultsFile::Impl {
   // at a time; a state that does not fit the mesh leaves no frame (the group written so far is removed).
   void write_frame(double time, long long cycle, const Model& model, const SolverState& state) {
     check_state(model);
+    if (continued && !frames.empty() && time <= frames.back().time) return;  // held already
     Frame f{fmt::format("{:04}", frames.size()), time, cycle, {}};
     Handle frames_group(check(H5Gopen2(file.get(), "frames", H5P_DEFAULT), "cannot open /frames"), H5Gclose);
     {
@@ -515,6 +527,125 @@ struct ResultsFile::Impl {
     write_xdmf();
   }
 
+  // ---- continuing a file: a run resumed from a restart appends to the results it continues ----
+  // (docs/output-format.md, "Restart"). What the file holds up to the resumed state's time `from` stays; a frame or
+  // a history row at or before the last one held is not written again.
+
+  [[noreturn]] void cannot_continue(const std::string& why) const {
+    throw RestartError(fmt::format("cannot continue the results file {}: {}. Write the resumed run to another folder "
+                                   "(-o), or pass --overwrite to replace the file",
+                                   path.string(), why));
+  }
+
+  // The rows of dataset `at`, or -1 when there is none.
+  long long rows_of(const std::string& at) const {
+    if (H5Lexists(file.get(), at.c_str(), H5P_DEFAULT) <= 0) return -1;
+    Handle set(H5Dopen2(file.get(), at.c_str(), H5P_DEFAULT), H5Dclose);
+    const std::vector<hsize_t> dims = set.valid() ? hdf5::shape(set.get()) : std::vector<hsize_t>{};
+    return dims.empty() ? -1 : static_cast<long long>(dims[0]);
+  }
+
+  void check_same_mesh(const Model& model) {
+    if (!hdf5::has_attribute(file.get(), "format")) cannot_continue("it is not a Crumple results file");
+    nodes = model.nodes.size();
+    if (rows_of("/mesh/node_ids") != static_cast<long long>(nodes))
+      cannot_continue(fmt::format("its mesh has {} nodes, the model {}", rows_of("/mesh/node_ids"), nodes));
+    for (const ElementKindDescription& k : kElementKindTable) {
+      const std::size_t n = model.elements[static_cast<std::size_t>(k.kind)].size();
+      const long long held = std::max(0LL, rows_of("/mesh/" + std::string(k.mesh_group) + "/ids"));
+      if (held != static_cast<long long>(n))
+        cannot_continue(fmt::format("its mesh has {} {} elements, the model {}", held, k.mesh_group, n));
+      elements[static_cast<std::size_t>(k.kind)] = n;
+    }
+    element_groups = model.element_groups.size();
+    for (const Part& p : model.parts) part_table.emplace_back(p.user_id, p.title);
+  }
+
+  // The fields of a frame group as written (nodal datasets, then per kind its subgroup's), the ghost flags last.
+  std::vector<FieldEntry> fields_held(hid_t frame) const {
+    std::vector<FieldEntry> nodal, cells;
+    const auto add = [](std::vector<FieldEntry>& to, hid_t location, const std::string& name, int kind) {
+      Handle set(H5Dopen2(location, name.c_str(), H5P_DEFAULT), H5Dclose);
+      if (!set.valid()) return;
+      const std::vector<hsize_t> dims = hdf5::shape(set.get());
+      Handle type(H5Dget_type(set.get()), H5Tclose);
+      to.push_back({name, kind, dims.size() == 2 ? static_cast<std::size_t>(dims[1]) : 1,
+                    H5Tget_size(type.get()) == 1});
+    };
+    for (const std::string& name : hdf5::members(frame)) {
+      const ElementKindDescription* k = nullptr;
+      for (const ElementKindDescription& d : kElementKindTable)
+        if (name == d.mesh_group) k = &d;
+      if (k == nullptr) {
+        add(nodal, frame, name, -1);
+        continue;
+      }
+      Handle group(H5Gopen2(frame, name.c_str(), H5P_DEFAULT), H5Gclose);
+      std::vector<FieldEntry> kind_fields;
+      for (const std::string& field : hdf5::members(group.get()))
+        add(kind_fields, group.get(), field, static_cast<int>(k->kind));
+      std::stable_partition(kind_fields.begin(), kind_fields.end(),
+                            [](const FieldEntry& f) { return f.name != "vtkGhostType"; });
+      cells.insert(cells.end(), kind_fields.begin(), kind_fields.end());
+    }
+    nodal.insert(nodal.end(), cells.begin(), cells.end());
+    return nodal;
+  }
+
+  void read_frames_held(double from) {
+    Handle frames_group(H5Gopen2(file.get(), "frames", H5P_DEFAULT), H5Gclose);
+    if (!frames_group.valid()) cannot_continue("it has no /frames");
+    std::vector<std::string> names = hdf5::members(frames_group.get());
+    std::sort(names.begin(), names.end(), [](const std::string& a, const std::string& b) {
+      return a.size() != b.size() ? a.size() < b.size() : a < b;  // 0000 ... 9999, 10000: as integers
+    });
+    for (const std::string& name : names) {
+      Handle frame(H5Gopen2(frames_group.get(), name.c_str(), H5P_DEFAULT), H5Gclose);
+      const auto time = hdf5::numbers<double>(frame.get(), "time", H5T_NATIVE_DOUBLE);
+      const auto cycle = hdf5::numbers<std::int64_t>(frame.get(), "cycle", H5T_NATIVE_INT64);
+      if (time.size() != 1 || cycle.size() != 1) cannot_continue("frame " + name + " has no time or cycle");
+      if (time[0] > from)
+        cannot_continue(fmt::format("it holds a frame at t = {:.6g}, past the restart's t = {:.6g}", time[0], from));
+      frames.push_back({name, time[0], static_cast<long long>(cycle[0]), fields_held(frame.get())});
+    }
+  }
+
+  // Opens the history datasets as create_history makes them; the rows held end at or before `from`.
+  void open_history_held(const Model& model, double from) {
+    for (int i = 0; i < 3; ++i) work_si[i] = model.units.work[i];
+    series.resize(kGlobal + th.size());
+    pending.resize(series.size());
+    for (std::size_t s = 0; s < series.size(); ++s) {
+      Series& ser = series[s];
+      ser.path = s < kGlobal ? std::string("/history/") + kGlobalSeries[s].name : "/history/th/" + th[s - kGlobal].name;
+      ser.two_d = s >= kScalars;
+      if (rows_of(ser.path) < 0) cannot_continue("it has no " + ser.path + " as the deck's histories need");
+      ser.dataset = Handle(H5Dopen2(file.get(), ser.path.c_str(), H5P_DEFAULT), H5Dclose);
+      const std::vector<hsize_t> dims = hdf5::shape(ser.dataset.get());
+      ser.columns = ser.two_d && dims.size() == 2 ? dims[1] : 0;
+      if (s >= kGlobal && ser.columns != th[s - kGlobal].columns.size())
+        cannot_continue(fmt::format("its {} has {} columns, the deck's {}", ser.path, ser.columns,
+                                    th[s - kGlobal].columns.size()));
+    }
+    for (std::size_t w = 0; w < kWide; ++w) widths[w] = series[kScalars + w].columns;
+    widths_known = true;  // created by the run that wrote the file, at its first row or at its close
+    wide_columns = {global_columns("rigid_wall_force", model.rigid_walls, kWallColumns, work_si), {},
+                    global_columns("rigid_body_values", model.rigid_bodies, kBodyColumns, work_si),
+                    global_columns("interface_values", model.type7_interfaces, kInterfaceColumns, work_si)};
+    const std::vector<double> times = read_column("/history/time");
+    if (!times.empty()) last_row_time = times.back();
+    if (last_row_time > from)
+      cannot_continue(fmt::format("its histories run to t = {:.6g}, past the restart's t = {:.6g}", last_row_time, from));
+  }
+
+  std::vector<double> read_column(const std::string& at) const {
+    Handle set(H5Dopen2(file.get(), at.c_str(), H5P_DEFAULT), H5Dclose);
+    std::vector<double> out(static_cast<std::size_t>(std::max(0LL, rows_of(at))));
+    if (!out.empty())
+      check_status(H5Dread(set.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data()), "cannot read " + at);
+    return out;
+  }
+
   // ---- XDMF ----
   template <class T>
   std::string item(const std::string& dims, const std::string& h5_path) const {
@@ -526,6 +657,17 @@ struct ResultsFile::Impl {
   // order of a symmetric tensor): XDMF's Tensor6 is read in another order by each of ParaView's readers.
   static const char* attribute_type(std::size_t width) {
     return width == 1 ? "Scalar" : width == 3 ? "Vector" : "Matrix";
+  }
+
+  // The nodes' positions of an instant: the frame's deformed ones, so that ParaView shows the deformed shape with
+  // no filter (the mesh's initial ones without a frame, or in a file written before frames held them).
+  std::string xdmf_geometry(const Frame* frame, const std::string& in) const {
+    std::string at = "/mesh/coordinates";
+    if (frame != nullptr)
+      for (const FieldEntry& field : frame->fields)
+        if (field.name == kFrameCoordinates) at = "/frames/" + frame->name + "/" + field.name;
+    return fmt::format("{}<Geometry GeometryType=\"XYZ\">\n{}  {}\n{}</Geometry>\n", in, in,
+                       item<double>(fmt::format("{} 3", nodes), at), in);
   }
 
   static void attribute_xml(std::string& x, const std::string& in, const std::string& name, const char* type,
@@ -540,6 +682,7 @@ struct ResultsFile::Impl {
   void xdmf_fields(std::string& x, const Frame& frame, const ElementKindDescription* kind,
                    const std::string& in) const {
     for (const FieldEntry& field : frame.fields) {
+      if (field.name == kFrameCoordinates) continue;  // the geometry (xdmf_geometry)
       const bool cell = field.kind >= 0;
       if (cell && (kind == nullptr || field.kind != static_cast<int>(kind->kind))) continue;
       const std::string at =
@@ -563,8 +706,7 @@ struct ResultsFile::Impl {
                      "</Topology>\n",
                      in, k.xdmf_topology, n, npe, in,
                      item<std::int32_t>(fmt::format("{} {}", n, npe), mesh + "/connectivity"), in);
-    x += fmt::format("{}<Geometry GeometryType=\"XYZ\">\n{}  {}\n{}</Geometry>\n", in, in,
-                     item<double>(fmt::format("{} 3", nodes), "/mesh/coordinates"), in);
+    x += xdmf_geometry(frame, in);
     attribute_xml(x, in, "node_id", "Scalar", "Node", item<std::int64_t>(std::to_string(nodes), "/mesh/node_ids"));
     attribute_xml(x, in, "element_id", "Scalar", "Cell", item<std::int64_t>(std::to_string(n), mesh + "/ids"));
     attribute_xml(x, in, "part_id", "Scalar", "Cell", item<std::int64_t>(std::to_string(n), mesh + "/part_id"));
@@ -579,8 +721,7 @@ struct ResultsFile::Impl {
     if (frame != nullptr) x += fmt::format("{}<Time Value=\"{:.17g}\"/>\n", in, frame->time);
     x += fmt::format("{}<Topology TopologyType=\"Polyvertex\" NumberOfElements=\"{}\" NodesPerElement=\"1\"/>\n", in,
                      nodes);
-    x += fmt::format("{}<Geometry GeometryType=\"XYZ\">\n{}  {}\n{}</Geometry>\n", in, in,
-                     item<double>(fmt::format("{} 3", nodes), "/mesh/coordinates"), in);
+    x += xdmf_geometry(frame, in);
     if (frame != nullptr) xdmf_fields(x, *frame, nullptr, in);
     x += indent + "</Grid>\n";
   }
@@ -656,7 +797,8 @@ struct ResultsFile::Impl {
   }
 };
 
-ResultsFile::ResultsFile(const std::filesystem::path& path, const Model& model, std::vector<HistoryDataset> histories)
+ResultsFile::ResultsFile(const std::filesystem::path& path, const Model& model, std::vector<HistoryDataset> histories,
+                         std::optional<double> continue_from)
     : impl_(std::make_unique<Impl>()) {
   QuietErrors quiet;
   Impl& d = *impl_;
@@ -670,6 +812,18 @@ ResultsFile::ResultsFile(const std::filesystem::path& path, const Model& model, 
   // The 1.8 object format stores large attributes densely: the column labels of a history with many columns do not
   // fit the 64 KiB object header of the earliest format.
   d.check_status(H5Pset_libver_bounds(fapl.get(), H5F_LIBVER_V18, H5F_LIBVER_LATEST), "property list");
+  d.th = std::move(histories);
+  if (continue_from && std::filesystem::exists(path)) {
+    d.file = Handle(H5Fopen(path.c_str(), H5F_ACC_RDWR, fapl.get()), H5Fclose);
+    if (!d.file.valid()) d.cannot_continue("it cannot be opened for writing (" + hdf5::last_error() + ")");
+    d.open = true;
+    d.continued = true;
+    d.check_same_mesh(model);
+    d.read_frames_held(*continue_from);
+    d.open_history_held(model, *continue_from);
+    d.write_xdmf();
+    return;
+  }
   d.file = Handle(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl.get()), H5Fclose);
   if (!d.file.valid()) {
     const std::string detail = hdf5::last_error();
@@ -683,9 +837,11 @@ ResultsFile::ResultsFile(const std::filesystem::path& path, const Model& model, 
   d.string_attribute(root, "title", model.title);
   d.array_attribute(root, "working_units_si",
                     std::vector<double>{model.units.work[0], model.units.work[1], model.units.work[2]});
+  const UnitNames names = unit_names(model.units.work);
+  d.string_array_attribute(root, "working_unit_names",
+                           {names.mass, names.length, names.time, names.force, names.energy, names.stress});
   d.write_mesh(model);
   d.group(root, "frames");
-  d.th = std::move(histories);
   d.create_history(model);
   d.check_status(H5Fflush(root, H5F_SCOPE_GLOBAL), "cannot flush");
   d.write_xdmf();

@@ -9,7 +9,7 @@ RunSummary run_simulation(const Model& m, const SimulationOptions& options, std:
   std::vector<std::string> notes;
   SolverState s = initial_state(m, notes);
   RunRecorder recorder(m, options.output_directory, options.name.empty() ? m.run_name : options.name,
-                       options.write_results, {options.deck, options.approximations, options.progress, options.accuracy}, &console);
+                       options.write_results, {options.deck, options.approximations, options.progress, options.accuracy, std::nullopt}, &console);
   RunSummary summary = run_engine_deck(m, options, recorder, s, notes);
   recorder.close(s, summary.status != RunStatus::Normal);
   return summary;

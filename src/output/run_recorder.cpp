@@ -161,8 +161,12 @@ std::string describe(const RunEvent& e, const Model& m) {
 RunRecorder::RunRecorder(const Model& model, const std::filesystem::path& directory, const std::string& name,
                          bool write_results, RunStart run, std::ostream* console)
     : model_(model), directory_(directory), name_(name), console_(console), run_(std::move(run)),
-      listing_(directory / (name + ".out")), channels_(model), progress_clock_(run_.progress) {
-  if (write_results) results_.emplace(directory / (name + ".h5"), model, channels_.datasets());
+      listing_(directory / (name + ".out"), run_.continue_from.has_value()), channels_(model),
+      progress_clock_(run_.progress) {
+  if (write_results) results_.emplace(directory / (name + ".h5"), model, channels_.datasets(), run_.continue_from);
+  if (run_.continue_from)
+    listing_.line(fmt::format("RESUMED at t = {:.6g}: the results of the run before continue above and in {}.h5",
+                              *run_.continue_from, name));
 }
 
 void RunRecorder::start(const SolverState& s, const std::vector<std::string>& notes) {
@@ -186,12 +190,18 @@ void RunRecorder::header(const RunStart& run) {
   if (!run.deck.empty()) listing_.line("DECK " + run.deck.string());
   listing_.line(fmt::format("WORKING UNITS (SI size of one unit): mass {:g} kg  length {:g} m  time {:g} s",
                             m.units.work[0], m.units.work[1], m.units.work[2]));
+  // The names of the units every number of this listing is in (times, energies, masses, forces).
+  listing_.line("UNITS " + describe(unit_names(m.units.work)));
   std::string kinds;
   for (const ElementKindDescription& kind : kElementKindTable)
     kinds += fmt::format("  {} {}", kind.counted, count(kind.kind));
   listing_.line(fmt::format("nodes {}{}  element groups {}  parts {}  interfaces {}  rigid bodies {}  rigid walls {}",
                             m.nodes.size(), kinds, m.element_groups.size(), m.parts.size(), m.type7_interfaces.size(),
                             m.rigid_bodies.size(), m.rigid_walls.size()));
+  // Two masses apart: the deck's point masses are in TOTAL MASS from the start; MASS ADDED is what step control adds.
+  listing_.line(fmt::format("POINT MASSES (/ADMAS, /RBODY MASS) {:.6g}, in TOTAL MASS; MASS ADDED: the mass added by "
+                            "mass scaling (/DT/NODA/CST, /DT/INTER/CST) and spot-weld ties during the run",
+                            m.added_mass));
   listing_.line("ACCURACY PRESET " + run.accuracy);
   listing_.line(std::string("PRECISION ") + kPrecision);
   if (!run.approximations.empty()) listing_.line("OPTIONS SKIPPED OR APPROXIMATED:");
@@ -260,8 +270,21 @@ void RunRecorder::progress(const SolverState& s, double dt, const StepControl& c
 void RunRecorder::frame(const SolverState& s) {
   const long long cycle = s.cycles_done + s.cycle;
   if (!results_ || cycle == last_frame_cycle_) return;
+  const std::size_t before = results_->frames();
   results_->write_frame(s.time, s.cycle, model_, s);
   last_frame_cycle_ = cycle;
+  if (results_->frames() > before)  // a continued file does not take a frame it holds already
+    listing_.line(fmt::format("CYCLE {} TIME {:.4e}: FRAME {:04} WRITTEN TO {}.h5", s.cycle, s.time, before, name_));
+}
+
+// The parts at the end of the run, as /TH/PART gives them, in the deck's units. Each line starts with PART, so
+// that no reader of the listing takes it for a row of the energy table.
+void RunRecorder::part_table(const std::vector<PartResult>& parts) {
+  const UnitNames units = unit_names(model_.units.work);
+  listing_.line(fmt::format("PARTS AT THE END (mass {}, energies {}):", units.mass, units.energy));
+  for (const PartResult& p : parts)
+    listing_.line(fmt::format("PART {:<10} MASS {:.5e}  INTERNAL {:.5e}  KINETIC {:.5e}  HOURGLASS {:.5e}  {}", p.id,
+                              p.mass, p.internal, p.kinetic, p.hourglass, p.title));
 }
 
 void RunRecorder::console_line(const std::string& text) {
@@ -335,6 +358,8 @@ RunSummary RunRecorder::finish(const SolverState& s, const RunEvents& events, co
                               r.elastic_energy, r.damping_work, r.friction_work, r.released, r.added_mass,
                               r.added_mass_energy));
   }
+  const std::vector<PartResult> parts = channels_.part_results(s);
+  part_table(parts);
   listing_.line(fmt::format("TOTAL NUMBER OF CYCLES {}   ELAPSED {:.3f} s", s.cycle, wall));
   const double cycle_time = phases.elements + phases.contact + phases.loads + phases.update + phases.output;
   auto share = [&](double t) { return cycle_time > 0.0 ? 100.0 * t / cycle_time : 0.0; };
@@ -347,6 +372,7 @@ RunSummary RunRecorder::finish(const SolverState& s, const RunEvents& events, co
   RunSummary summary = summarize_run(model_, name_, s, events, phases, dt, wall);
   summary.approximations = run_.approximations;
   summary.accuracy = run_.accuracy;
+  summary.parts = parts;
   return summary;
 }
 

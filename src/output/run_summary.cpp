@@ -53,6 +53,20 @@ std::string file_array(const std::vector<DeckFile>& files) {
   return out + "\n  ]";
 }
 
+// [{"id": 1, "title": ..., "mass": ..., "internal": ..., "kinetic": ..., "hourglass": ...}, ...]
+std::string part_array(const std::vector<PartResult>& parts) {
+  if (parts.empty()) return "[]";
+  std::string out = "[";
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    const PartResult& p = parts[k];
+    out += fmt::format("{}\n    {{\"id\": {}, \"title\": \"{}\", \"mass\": {}, \"internal\": {}, \"kinetic\": {}, "
+                       "\"hourglass\": {}}}",
+                       k == 0 ? "" : ",", p.id, escaped(p.title), number(p.mass), number(p.internal), number(p.kinetic),
+                       number(p.hourglass));
+  }
+  return out + "\n  ]";
+}
+
 }  // namespace
 
 std::vector<DeckFile> describe_deck_files(const std::vector<std::string>& paths) {
@@ -101,13 +115,13 @@ std::string to_json(const RunSummary& s) {
       "  \"profile\": {{\n    \"elements\": {},\n    \"contact\": {},\n    \"contact_passes\": {},\n"
       "    \"contact_sort\": {},\n    \"contact_sorts\": {},\n"
       "    \"loads\": {},\n    \"update\": {},\n    \"output\": {}\n  }},\n  \"ranks\": {},\n  \"precision\": \"{}\",\n"
-      "  \"deleted_elements\": {},\n  \"status\": \"{}\",\n  \"message\": \"{}\",\n  \"accuracy\": \"{}\",\n  \"approximations\": {}\n}}\n",
+      "  \"deleted_elements\": {},\n  \"parts\": {},\n  \"status\": \"{}\",\n  \"message\": \"{}\",\n  \"accuracy\": \"{}\",\n  \"approximations\": {}\n}}\n",
       escaped(s.name), escaped(s.crumple_version), escaped(s.commit), escaped(s.date), file_array(s.deck_files), s.cycles, s.cycles_total, s.engine_decks, number(s.time), number(s.dt), number(e.internal), number(e.kinetic_translational),
       number(e.kinetic_rotational), number(e.contact), number(e.hourglass), number(e.external_work), number(e.total),
       number(e.error_percent), number(s.mass_total), number(s.mass_added), s.selective_solves, s.selective_iterations,
       s.selective_iterations_max, number(s.wall_seconds),
       number(s.element_cycles_per_second), number(s.phases.elements), number(s.phases.contact),
-      s.phases.contact_passes, number(s.phases.contact_sort), s.phases.contact_sorts, number(s.phases.loads), number(s.phases.update), number(s.phases.output), s.ranks, escaped(s.precision), s.deleted_elements, status_name(s.status), escaped(s.message),
+      s.phases.contact_passes, number(s.phases.contact_sort), s.phases.contact_sorts, number(s.phases.loads), number(s.phases.update), number(s.phases.output), s.ranks, escaped(s.precision), s.deleted_elements, part_array(s.parts), status_name(s.status), escaped(s.message),
       escaped(s.accuracy), string_array(s.approximations));
 }
 

@@ -106,6 +106,10 @@ static bool run_ends_here(const RunControl& rc, const SolverState& s, const Outp
   return !(rc.anim_interval > 0.0 && next_cycle - last_frame >= kEndFrameCycles);
 }
 
+bool resumed_at_the_end(const Model& m, const SolverState& s, const OutputSchedule& schedule) {
+  return run_ends_here(m.run, s, schedule, false, s.dt);
+}
+
 MonitorDue outputs_due(const Model& m, const SolverState& s, const OutputSchedule& schedule, double dt_next) {
   MonitorDue due{};
   due.cycle = s.cycle;

@@ -39,6 +39,9 @@ struct MonitorDue {
   long long cycle;
 };
 MonitorDue outputs_due(const Model& model, const SolverState& state, const OutputSchedule& schedule, double dt_next);
+// Whether a resumed state is the end of its engine deck already (T-0 decided it there, with the step it took
+// next): a run resumed from the snapshot of its own end has no cycle left to run.
+bool resumed_at_the_end(const Model& model, const SolverState& state, const OutputSchedule& schedule);
 // A field frame is due at the state's time (also before the first cycle: the frame at t = 0).
 bool frame_due(const SolverState& state, const OutputSchedule& schedule);
 // The balance's energies, when it is checked: kinetic energies of v^(n+1/2), and the internal and hourglass

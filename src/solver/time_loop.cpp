@@ -204,7 +204,9 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunObse
   std::vector<RigidBodyState> bodies_before;
   long long last_history_cycle = -1;  // the cycle of the last history row, and the mean step of the last cycle
   double last_dt_average = 0.0;
-  for (;;) {
+  // Resumed from the snapshot of its own end: no cycle past it (T-0), nothing written twice.
+  const bool nothing_left = options.resume != nullptr && resumed_at_the_end(m, s, schedule);
+  while (!nothing_left) {
     const bool row_now = s.cycle != start_cycle && s.cycle % schedule.print_every == 0;
     if (row_now) energy_before = s.energy, bodies_before = s.bodies;
     if (body_sensors) switch_rigid_bodies_by_sensors(m, s);
@@ -296,7 +298,8 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunObse
   // engine deck.
   const EnergyBalanceState loop_energy = s.energy;
   EnergyBalanceState end;
-  const bool end_state = ended_on_a_cycle && resumable && end_state_energies(m, s, options.exchange, selective, end);
+  const bool end_state =
+      (ended_on_a_cycle || nothing_left) && resumable && end_state_energies(m, s, options.exchange, selective, end);
   if (end_state) s.energy = end;
   observer.row(s, dt_next, control);  // the cycle the run ended at
   s.energy = loop_energy;

@@ -10,12 +10,16 @@ Run with ParaView's Python (under a virtual display where there is none):
 For each of ParaView's three XDMF readers it opens NAME.xdmf and steps through every frame. At each frame it
 checks against NAME.h5, read with h5py:
   - the frame times, the node and element counts of every element kind;
-  - every dataset of the frame is an array in ParaView with the same values (so the same range), and every
+  - the points ParaView draws are the frame's deformed positions (`coordinates`, the initial ones plus the
+    displacement), opened as a user opens the file, with no filter;
+  - every other dataset of the frame is an array in ParaView with the same values (so the same range), and every
     array ParaView shows comes from the file; the ids and part ids of the mesh too;
+  - the stress of every element kind that has one is offered as a symmetric tensor (6 components, XX YY ZZ XY
+    YZ XZ), beside its von Mises scalar;
   - the deleted elements are VTK ghost cells (vtkGhostType HIDDENCELL) and ParaView does not draw them: the
     cells of the rendered surface are the shells that are not deleted and the outer faces of the bricks that
     are not deleted.
-Then it saves a picture of the last frame, deformed, coloured by FIELD (default plastic_strain; part_id is
+Then it saves a picture of the last frame as the file opens (deformed, no filter), coloured by FIELD (default plastic_strain; part_id is
 coloured by part, with the part titles of the file in the legend). Exit code 0 when all agrees, 1 otherwise.
 """
 import argparse
@@ -29,6 +33,8 @@ from paraview import simple as pv
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
 HIDDEN_CELL = 32  # vtkDataSetAttributes::HIDDENCELL
+GEOMETRY = "coordinates"  # the frame's node positions: the grid's points, not one of its arrays
+TENSOR_COMPONENTS = ("XX", "YY", "ZZ", "XY", "YZ", "XZ")  # how ParaView names a symmetric tensor's components
 KIND_OF_CELL = {9: "shell4", 5: "shell3", 12: "brick8"}  # VTK_QUAD, VTK_TRIANGLE, VTK_HEXAHEDRON
 MESH_ARRAYS = {"element_id": "ids", "part_id": "part_id"}
 BRICK_FACES = ((0, 3, 2, 1), (4, 5, 6, 7), (0, 1, 5, 4), (1, 2, 6, 5), (2, 3, 7, 6), (3, 0, 4, 7))
@@ -94,7 +100,7 @@ def compare_arrays(where, attributes, h5, frame, kind, cell):
                   f"{where}: range of {name} {ranges} differs from NAME.h5 ({low}, {high})")
     group = h5[f"frames/{frame}/{kind}"] if cell else h5[f"frames/{frame}"]
     for name, item in group.items():
-        if isinstance(item, h5py.Dataset):
+        if isinstance(item, h5py.Dataset) and name != GEOMETRY:
             check(name in seen, f"{where}: NAME.h5 holds {name}, which ParaView does not show")
     return seen
 
@@ -105,6 +111,14 @@ def check_grid(where, grid, h5, frame):
         return None
     check(grid.GetNumberOfCells() == h5[f"mesh/{kind}/ids"].shape[0], f"{where}: {kind} cell count")
     check(grid.GetNumberOfPoints() == h5["mesh/node_ids"].shape[0], f"{where}: point count")
+    if not check(GEOMETRY in h5[f"frames/{frame}"], f"{where}: NAME.h5's frame holds no deformed positions"):
+        return kind
+    points = vtk_to_numpy(grid.GetPoints().GetData())
+    deformed = h5[f"frames/{frame}/{GEOMETRY}"][:]
+    check(np.array_equal(points, deformed), f"{where}: the points drawn are not the frame's deformed positions")
+    check(np.allclose(deformed, h5["mesh/coordinates"][:] + h5[f"frames/{frame}/displacement"][:], rtol=0,
+                      atol=1e-9 * max(1.0, float(np.abs(deformed).max()))),
+          f"{where}: the frame's positions are not the initial ones plus the displacement")
     compare_arrays(f"{where} {kind} cells", grid.GetCellData(), h5, frame, kind, True)
     compare_arrays(f"{where} {kind} nodes", grid.GetPointData(), h5, frame, kind, False)
     part_ids = set(h5["mesh/parts/ids"][:].tolist())
@@ -155,12 +169,35 @@ def check_reader(reader_name, xdmf, h5):
         drawn = shown.GetRepresentedDataInformation().GetNumberOfCells()
         check(drawn == drawn_cells(h5, frame),
               f"{where}: ParaView draws {drawn} cells, the live elements make {drawn_cells(h5, frame)}")
+    check_last_frame_as_opened(reader_name, reader, h5, frames[-1], expected_times[-1])
     present = {k for k in ("shell4", "shell3", "brick8") if k in h5["mesh"]}
     check(kinds == present, f"{reader_name}: grids {sorted(k for k in kinds if k)} against {sorted(present)}")
     pv.Delete(shown)
     pv.Delete(view)
     pv.Delete(reader)
     return len(frames)
+
+
+def check_last_frame_as_opened(reader_name, reader, h5, frame, time):
+    """What a user sees on opening the file, with no filter: the last frame's bounds are its deformed ones, and
+    the stress is offered as a symmetric tensor beside its von Mises scalar."""
+    reader.UpdatePipeline(time)
+    where = f"{reader_name} last frame (t = {time:.6g})"
+    if not check(GEOMETRY in h5[f"frames/{frame}"], f"{where}: NAME.h5's frame holds no deformed positions"):
+        return
+    deformed = h5[f"frames/{frame}/{GEOMETRY}"][:]
+    expected = np.ravel(np.column_stack([deformed.min(axis=0), deformed.max(axis=0)]))
+    shown = np.array(reader.GetDataInformation().GetBounds())
+    check(np.allclose(shown, expected, rtol=0, atol=1e-9 * max(1.0, float(np.abs(expected).max()))),
+          f"{where}: ParaView's bounds {shown} are not the deformed shape's {expected}")
+    kinds = [k for k in ("shell4", "shell3", "brick8") if f"frames/{frame}/{k}/stress" in h5]
+    if not kinds:
+        return
+    stress = reader.CellData["stress"]
+    if check(stress is not None, f"{where}: ParaView offers no cell array stress"):
+        names = tuple(stress.GetComponentName(c) for c in range(stress.GetNumberOfComponents()))
+        check(names == TENSOR_COMPONENTS, f"{where}: stress is offered with components {names}, not a tensor's")
+    check(reader.CellData["von_mises"] is not None, f"{where}: ParaView offers no von_mises beside the stress")
 
 
 def part_annotations(h5):
@@ -174,14 +211,13 @@ def part_annotations(h5):
 def save_picture(xdmf, h5, picture, field, title):
     reader = pv.Xdmf3ReaderS(FileName=[xdmf])
     last = float(h5["frames"][frame_names(h5)[-1]].attrs["time"])
-    shape = pv.WarpByVector(Input=reader, Vectors=["POINTS", "displacement"], ScaleFactor=1.0)
     view = pv.CreateView("RenderView")
     view.ViewSize = [1200, 800]
     view.OrientationAxesVisibility = 0
     view.UseColorPaletteForBackground = 0
     view.Background = [1.0, 1.0, 1.0]
     view.ViewTime = last
-    shown = pv.Show(shape, view)
+    shown = pv.Show(reader, view)
     shown.SetRepresentationType("Surface With Edges")
     shown.EdgeColor = [0.2, 0.2, 0.2]
     pv.ColorBy(shown, ("CELLS", field))

@@ -252,13 +252,43 @@ TEST(EngineKeywords, AnimRequestsSetTheirFrameFieldsOrNameWhatIsNotWritten) {
       {"/ANIM/SHELL/EPSP/UPPER", "result EPSP per layer or point is not written"},
       {"/ANIM/VECT/FREAC", "result FREAC is not written by Crumple (its frames hold VEL DISP CONT ACC FINT FEXT VROT)"},
       {"/ANIM/NODA/DT", "result DT is not written by Crumple (its frames hold DMAS)"},
-      {"/ANIM/BEAM/EPSP", "animation request not written by Crumple"}};
+      {"/ANIM/BEAM/EPSP", "output-only card (/ANIM/BEAM): not written by Crumple"}};
   for (const auto& [keyword, text] : missing)
     EXPECT_TRUE(contains(warned[keyword], text)) << keyword << ": " << warned[keyword];
   EXPECT_EQ(warned.size(), std::size(missing));
   // A tensor card needs its tensor's name; /ANIM/MASS takes nothing after it.
   EXPECT_TRUE(contains(error_of(kRun + "/ANIM/SHELL/TENS\n"), "field restype"));
   EXPECT_TRUE(contains(error_of(kRun + "/ANIM/MASS/2\n"), "nothing after /ANIM/MASS"));
+}
+
+// A typo in an /ANIM request is an error naming the nearest option, one test per class: the request (/ANIM/TD), an
+// element, shell, vector or nodal result, a result per point, a tensor; a real option Crumple does not write stays
+// a named warning (above); --skip-unknown runs anyway.
+TEST(EngineKeywords, AnimTyposAreErrorsWithTheNearestOption) {
+  const std::pair<const char*, const char*> typos[] = {
+      {"/ANIM/TD\n0 1e-3\n", "unknown keyword '/ANIM/TD'"},
+      {"/ANIM/ELEM/VONMM\n", "'VONMM', which is no result of /ANIM/ELEM"},
+      {"/ANIM/SHELL/EPSPP\n", "(nearest: EPSP)"},
+      {"/ANIM/BRICK/HOURGG\n", "(nearest: HOURG)"},
+      {"/ANIM/VECT/DIPS\n", "(nearest: DISP)"},
+      {"/ANIM/NODA/DMASS\n", "(nearest: DMAS)"},
+      {"/ANIM/SHELL/EPPS/UPPER\n", "(nearest: EPSP)"},
+      {"/ANIM/BRICK/TENS/STRES\n", "(nearest: STRESS)"},
+  };
+  for (const auto& [card, text] : typos) {
+    const std::string error = error_of(kRun + card);
+    EXPECT_TRUE(contains(error, text)) << card << ": " << error;
+  }
+  EXPECT_TRUE(contains(error_of(kRun + "/ANIM/TD\n0 1e-3\n"), "/ANIM/DT")) << "the nearest keyword";
+  // --skip-unknown: the run goes on without it, with a warning that names it.
+  test::TempDir dir;
+  ReadOptions skip;
+  skip.skip_unknown = true;
+  const Deck d = read_deck(test::write_deck(dir, "", kRun + "/ANIM/ELEM/VONMM\n"), skip);
+  EXPECT_FALSE(d.model.run.anim.von_mises);
+  bool named = false;
+  for (const SkippedOption& o : d.report.skipped_options) named = named || contains(o.text(), "VONMM");
+  EXPECT_TRUE(named);
 }
 
 // Physics limits of /STOP that the solver does not implement are errors naming the value.

@@ -4,12 +4,15 @@
 // an end time off the /ANIM/DT grid, and the recorded nodal forces and accelerations of a real run.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <utility>
 #include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "crumple/elements/shell4.hpp"
 #include "crumple/output/results_file.hpp"
 #include "crumple/output/results_reader.hpp"
 #include "crumple/output/run_recorder.hpp"
@@ -62,6 +65,10 @@ std::string last_grid(const std::string& xdmf, const std::string& name) {
   const auto at = xdmf.rfind("<Grid Name=\"" + name + "\"");
   return at == std::string::npos ? std::string() : xdmf.substr(at, xdmf.find("</Grid>", at) - at);
 }
+
+// Where a plate shell's sxx, syy, sxy land in its global tensor (sxx syy szz sxy syz szx): the test plate lies in
+// the global xy plane with its first side along x, so its frame is the global one.
+constexpr std::size_t kPlateComponent[3] = {0, 1, 3};
 
 double plane_von_mises(double sx, double sy, double sxy) { return std::sqrt(sx * sx + sy * sy - sx * sy + 3 * sxy * sxy); }
 
@@ -161,15 +168,18 @@ TEST(FrameFields, EveryRequestedShellFieldIsComputedFromThePoints) {
     const std::vector<double>* comps[3] = {&s.sxx, &s.syy, &s.sxy};
     for (std::size_t d = 0; d < 3; ++d) {
       const auto& c = *comps[d];
-      EXPECT_NEAR(stress[3 * e + d], 0.25 * c[k] + 0.5 * c[k + 1] + 0.25 * c[k + 2], 1e-9) << e << d;
-      EXPECT_NEAR(bending[3 * e + d], 0.5 * (c[k + 2] - c[k]), 1e-9) << e << d;
-      EXPECT_EQ(upper[3 * e + d], c[k + 2]);
-      EXPECT_EQ(lower[3 * e + d], c[k]);
+      const std::size_t at = 6 * e + kPlateComponent[d];
+      EXPECT_NEAR(stress[at], 0.25 * c[k] + 0.5 * c[k + 1] + 0.25 * c[k + 2], 1e-9) << e << d;
+      EXPECT_NEAR(bending[at], 0.5 * (c[k + 2] - c[k]), 1e-9) << e << d;
+      EXPECT_EQ(upper[at], c[k + 2]);
+      EXPECT_EQ(lower[at], c[k]);
     }
+    for (const auto* tensor : {&stress, &bending, &upper, &lower})
+      for (std::size_t d : {2, 4, 5}) EXPECT_EQ((*tensor)[6 * e + d], 0.0) << e << d;  // szz syz szx: plane stress
     double largest = 0.0;
     for (std::size_t j = 0; j < 3; ++j) largest = std::max(largest, plane_von_mises(s.sxx[k + j], s.syy[k + j], s.sxy[k + j]));
     EXPECT_DOUBLE_EQ(vm[e], largest);
-    EXPECT_NEAR(pressure[e], -(stress[3 * e] + stress[3 * e + 1]) / 3.0, 1e-9);
+    EXPECT_NEAR(pressure[e], -(stress[6 * e] + stress[6 * e + 1]) / 3.0, 1e-9);
     EXPECT_DOUBLE_EQ(h5.doubles(f + "plastic_strain")[e], 0.03 + 0.1 * static_cast<double>(e));
   }
   EXPECT_DOUBLE_EQ(h5.doubles(f + "energy_density")[1], 4.0 / s.mass[1]);
@@ -182,18 +192,36 @@ TEST(FrameFields, EveryRequestedShellFieldIsComputedFromThePoints) {
   // The "N = 0" triangle: surfaces are membrane +- its kept bending stress; von Mises the larger of the two.
   const std::string t = "/frames/0000/shell3/";
   const auto m3 = h5.doubles(t + "stress");
-  const std::vector<double> kept{5e5, -1e5, 2e5};
-  EXPECT_EQ(h5.doubles(t + "bending_stress"), kept);
+  const std::vector<double> kept{5e5, -1e5, 0.0, 2e5, 0.0, 0.0};
+  const auto bending3 = h5.doubles(t + "bending_stress");
+  ASSERT_EQ(bending3.size(), kept.size());
+  for (std::size_t d = 0; d < 6; ++d) EXPECT_NEAR(bending3[d], kept[d], 1e-9) << d;  // its frame: e1 = x to 1 ulp
   const auto up3 = h5.doubles(t + "stress_upper"), low3 = h5.doubles(t + "stress_lower");
-  for (std::size_t d = 0; d < 3; ++d) {
-    EXPECT_DOUBLE_EQ(up3[d], m3[d] + kept[d]);
-    EXPECT_DOUBLE_EQ(low3[d], m3[d] - kept[d]);
+  for (std::size_t d = 0; d < 6; ++d) {
+    EXPECT_NEAR(up3[d], m3[d] + kept[d], 1e-9);
+    EXPECT_NEAR(low3[d], m3[d] - kept[d], 1e-9);
   }
-  EXPECT_DOUBLE_EQ(h5.doubles(t + "von_mises")[0], std::max(plane_von_mises(up3[0], up3[1], up3[2]),
-                                                           plane_von_mises(low3[0], low3[1], low3[2])));
+  EXPECT_DOUBLE_EQ(h5.doubles(t + "von_mises")[0], std::max(plane_von_mises(up3[0], up3[1], up3[3]),
+                                                           plane_von_mises(low3[0], low3[1], low3[3])));
   EXPECT_DOUBLE_EQ(h5.doubles(t + "energy_density")[0], 1.0 / w.state.shells3.mass[0]);
   EXPECT_EQ(h5.bytes(t + "deleted"), (std::vector<std::uint8_t>{0}));  // in a rigid body: not deleted
   EXPECT_EQ(h5.bytes(t + "vtkGhostType"), (std::vector<std::uint8_t>{0}));
+}
+
+// A shell's stress in its co-rotational frame (e1 along its first sides, e3 its normal) as a tensor in the global
+// axes: a square in a plane at 45 degrees, e1 = y, e2 = (x + z) / sqrt 2. sigma = 3 e1 e1 + 5 e2 e2 + 2 (e1 e2 +
+// e2 e1): xx = zz = zx = 2.5, yy = 3, xy = yz = sqrt 2; the triangle of three of its corners has the same frame.
+TEST(FrameFields, AShellStressIsATensorInTheGlobalAxes) {
+  const Vec3 square[4] = {{0, 0, 0}, {0, 1, 0}, {1, 1, 1}, {1, 0, 1}}, triangle[3] = {square[0], square[1], square[3]};
+  const double local[3] = {3.0, 5.0, 2.0};
+  const double r2 = std::sqrt(2.0);
+  for (const auto& [x, n] : {std::pair{square, 4}, std::pair{triangle, 3}}) {
+    const std::array<double, 6> s = shell_stress_in_global_axes(x, n, local);
+    const std::array<double, 6> expected{2.5, 3.0, 2.5, r2, r2, 2.5};  // xx yy zz xy yz zx
+    for (std::size_t d = 0; d < 6; ++d) EXPECT_NEAR(s[d], expected[d], 1e-14) << n << " nodes, component " << d;
+  }
+  const Vec3 line[3] = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}};  // no normal: no frame, no stress shown
+  EXPECT_EQ(shell_stress_in_global_axes(line, 3, local), (std::array<double, 6>{}));
 }
 
 TEST(FrameFields, EveryRequestedBrickFieldIsComputedFromThePoints) {
@@ -201,8 +229,8 @@ TEST(FrameFields, EveryRequestedBrickFieldIsComputedFromThePoints) {
   write_every_field(w);
   const ResultsReader h5(w.h5);
   const std::string f = "/frames/0000/brick8/";
-  EXPECT_EQ(h5.shape(f + "stress_tensor"), (std::vector<std::size_t>{1, 6}));
-  EXPECT_EQ(h5.doubles(f + "stress_tensor"), (std::vector<double>{1e6, 2e6, -3e6, 4e5, 5e5, 6e5}));  // sxx syy szz sxy syz szx
+  EXPECT_EQ(h5.shape(f + "stress"), (std::vector<std::size_t>{1, 6}));
+  EXPECT_EQ(h5.doubles(f + "stress"), (std::vector<double>{1e6, 2e6, -3e6, 4e5, 5e5, 6e5}));  // sxx syy szz sxy syz szx
   // sqrt(((sx-sy)^2 + (sy-sz)^2 + (sz-sx)^2) / 2 + 3 (sxy^2 + syz^2 + szx^2)) = sqrt(21 + 2.31) MPa
   EXPECT_NEAR(h5.doubles(f + "von_mises")[0], std::sqrt(23.31) * 1e6, 1e-6);
   EXPECT_NEAR(h5.doubles(f + "pressure")[0], 0.0, 1e-9);  // -(1 + 2 - 3) / 3 MPa
@@ -243,12 +271,23 @@ TEST(FrameFields, XdmfDescribesEveryFieldOnItsGridWithTheGhostFlagsLast) {
   write_every_field(w);
   const std::string xdmf = read_text(w.dir.path() / "TEST.xdmf");
   const std::string bricks = last_grid(xdmf, "brick8"), shells = last_grid(xdmf, "shell4");
-  EXPECT_NE(bricks.find("Name=\"stress_tensor\" AttributeType=\"Matrix\" Center=\"Cell\""), std::string::npos) << bricks;
+  EXPECT_NE(bricks.find("Name=\"stress\" AttributeType=\"Matrix\" Center=\"Cell\""), std::string::npos) << bricks;
   EXPECT_NE(bricks.find("Dimensions=\"1 6\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">TEST.h5:/frames/0000/"
-                        "brick8/stress_tensor"),
+                        "brick8/stress"),
             std::string::npos);
-  EXPECT_NE(shells.find("Name=\"bending_stress\" AttributeType=\"Vector\" Center=\"Cell\""), std::string::npos);
+  // Shell stresses are tensors too (6 components: ParaView names them XX YY ZZ XY YZ XZ, not a vector's X Y Z).
+  EXPECT_NE(shells.find("Name=\"stress\" AttributeType=\"Matrix\" Center=\"Cell\""), std::string::npos) << shells;
+  EXPECT_NE(shells.find("Name=\"bending_stress\" AttributeType=\"Matrix\" Center=\"Cell\""), std::string::npos);
+  EXPECT_NE(shells.find("Dimensions=\"2 6\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">TEST.h5:/frames/0000/"
+                        "shell4/stress"),
+            std::string::npos)
+      << shells;
   for (const std::string* grid : {&bricks, &shells}) {
+    // The geometry is the frame's deformed positions, not an attribute: ParaView draws the deformed shape.
+    EXPECT_NE(grid->find("<Geometry GeometryType=\"XYZ\">\n"), std::string::npos) << *grid;
+    EXPECT_NE(grid->find("Format=\"HDF\">TEST.h5:/frames/0000/coordinates</DataItem>\n"), std::string::npos);
+    EXPECT_EQ(grid->find("/mesh/coordinates"), std::string::npos);
+    EXPECT_EQ(grid->find("Name=\"coordinates\""), std::string::npos);
     EXPECT_NE(grid->find("Name=\"acceleration\" AttributeType=\"Vector\" Center=\"Node\""), std::string::npos);
     EXPECT_NE(grid->find("Name=\"added_mass\" AttributeType=\"Scalar\" Center=\"Node\""), std::string::npos);
     EXPECT_NE(grid->find("Name=\"energy_density\" AttributeType=\"Scalar\" Center=\"Cell\""), std::string::npos);
@@ -270,13 +309,14 @@ TEST(FrameFields, FieldsNobodyAskedForAreNotWritten) {
     file.write_frame(0.0, 0, m, s);
   }
   const ResultsReader h5(dir.path() / "TEST.h5");
-  for (const char* every : {"displacement", "velocity", "shell4/stress", "shell4/plastic_strain", "shell4/thickness",
-                            "shell4/deleted", "shell4/vtkGhostType", "brick8/stress_tensor", "brick8/plastic_strain",
-                            "brick8/deleted", "brick8/vtkGhostType"})
+  for (const char* every : {"coordinates", "displacement", "velocity", "shell4/stress", "shell4/von_mises",
+                            "shell4/plastic_strain", "shell4/thickness", "shell4/deleted", "shell4/vtkGhostType",
+                            "brick8/stress", "brick8/von_mises", "brick8/plastic_strain", "brick8/deleted",
+                            "brick8/vtkGhostType"})
     EXPECT_TRUE(h5.exists(std::string("/frames/0000/") + every)) << every;
   for (const char* asked : {"contact_force", "acceleration", "internal_force", "external_force", "angular_velocity",
-                            "mass", "added_mass", "shell4/von_mises", "shell4/bending_stress", "shell4/stress_upper",
-                            "shell4/energy_density", "brick8/von_mises", "brick8/pressure", "brick8/time_step"})
+                            "mass", "added_mass", "shell4/bending_stress", "shell4/stress_upper",
+                            "shell4/energy_density", "brick8/pressure", "brick8/time_step"})
     EXPECT_FALSE(h5.exists(std::string("/frames/0000/") + asked)) << asked;
 }
 

@@ -52,7 +52,7 @@ TEST(KeywordCatalog, ListHoldsBothDeckPartsWithMultiPartForms) {
   EXPECT_EQ(found({"MAT", "LAW36", "3"}, DeckPart::Starter), "/MAT/LAW36");
   EXPECT_EQ(found({"MAT", "PLAS_TAB", "3"}, DeckPart::Starter), "/MAT/PLAS_TAB");
   EXPECT_EQ(found({"ANIM", "VERS", "44"}, DeckPart::Starter), "/ANIM/VERS");
-  EXPECT_EQ(found({"ANIM", "SHELL", "TENS", "STRESS"}, DeckPart::Engine), "/ANIM");
+  EXPECT_EQ(found({"ANIM", "SHELL", "TENS", "STRESS"}, DeckPart::Engine), "/ANIM/SHELL");
   EXPECT_EQ(found({"DT", "NODA", "CST"}, DeckPart::Engine), "/DT");
   EXPECT_EQ(found({"DTIX"}, DeckPart::Engine), "/DTIX");
   EXPECT_EQ(found({"DTIX"}, DeckPart::Starter), "");  // an engine keyword only

@@ -3,6 +3,8 @@
 #include <hdf5.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -10,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "crumple/elements/shell4.hpp"
 #include "crumple/output/results_file.hpp"
 #include "crumple/output/history_reader.hpp"
 #include "crumple/output/results_reader.hpp"
@@ -118,6 +121,27 @@ std::filesystem::path write_standard(const test::TempDir& dir, const Model& m) {
   return path;
 }
 
+// What a frame holds for a shell4 element of local stress `local` (sxx syy sxy): the tensor in the global axes at
+// the frame's positions (shell_stress_in_global_axes, checked on its own in test_frame_fields.cpp).
+std::array<double, 6> global_stress(const ResultsReader& h5, const std::string& frame, std::size_t element,
+                                    const double (&local)[3]) {
+  const auto x = h5.doubles(frame + "/coordinates");
+  const auto connectivity = h5.ints("/mesh/shell4/connectivity");
+  Vec3 corners[4];
+  for (std::size_t a = 0; a < 4; ++a) {
+    const auto i = static_cast<std::size_t>(connectivity[4 * element + a]);
+    corners[a] = Vec3{x[3 * i], x[3 * i + 1], x[3 * i + 2]};
+  }
+  return shell_stress_in_global_axes(corners, 4, local);
+}
+
+void expect_stress(const ResultsReader& h5, const std::string& frame, std::size_t element, const double (&local)[3]) {
+  const auto written = h5.doubles(frame + "/shell4/stress");
+  const std::array<double, 6> expected = global_stress(h5, frame, element, local);
+  for (std::size_t d = 0; d < 6; ++d)
+    EXPECT_NEAR(written[6 * element + d], expected[d], 1e-9 * 1e7) << frame << " element " << element << " " << d;
+}
+
 }  // namespace
 
 TEST(ResultsFile, WritesMeshFramesAndHistories) {
@@ -162,13 +186,17 @@ TEST(ResultsFile, WritesMeshFramesAndHistories) {
   EXPECT_DOUBLE_EQ(v[3 * 3 + 1], -1.0);
   EXPECT_DOUBLE_EQ(v[3 * 3 + 2], 0.5);
 
-  EXPECT_EQ(h5.shape("/frames/0001/shell4/stress"), (std::vector<std::size_t>{2, 3}));
+  // The deformed positions: the initial ones plus the displacement.
+  const auto x1 = h5.doubles("/frames/0001/coordinates");
+  ASSERT_EQ(x1.size(), xyz.size());
+  for (std::size_t k = 0; k < x1.size(); ++k) EXPECT_NEAR(x1[k], xyz[k] + u[k], 1e-15) << k;
+
+  EXPECT_EQ(h5.shape("/frames/0001/shell4/stress"), (std::vector<std::size_t>{2, 6}));
+  // Element 2 owns points 3 and 4 (sxx 3e6, 4e6): mean 3.5e6; written as a tensor in the global axes.
+  expect_stress(h5, "/frames/0001", 0, {1.5e6, -3e6, 3e5});
+  expect_stress(h5, "/frames/0001", 1, {3.5e6, -7e6, 3e5});
   const auto stress = h5.doubles("/frames/0001/shell4/stress");
-  // Element 2 owns points 3 and 4 (sxx 3e6, 4e6): mean 3.5e6.
-  EXPECT_DOUBLE_EQ(stress[0], 1.5e6);
-  EXPECT_DOUBLE_EQ(stress[3 + 0], 3.5e6);
-  EXPECT_DOUBLE_EQ(stress[3 + 1], -7e6);
-  EXPECT_DOUBLE_EQ(stress[3 + 2], 3e5);
+  EXPECT_NEAR(stress[6] + stress[7] + stress[8], 3.5e6 - 7e6, 1e-3);  // the trace does not depend on the axes
   const auto eps = h5.doubles("/frames/0001/shell4/plastic_strain");
   ASSERT_EQ(eps.size(), 2u);
   EXPECT_DOUBLE_EQ(eps[0], 0.02);  // max of points 1 and 2
@@ -205,8 +233,9 @@ TEST(ResultsFile, XdmfBesideTheFileHasATemporalCollectionOverTheFrames) {
   EXPECT_NE(text.find("<Time Value=\"0.00050000000000000001\"/>"), std::string::npos) << text;
   EXPECT_EQ(occurrences(text, "TopologyType=\"Quadrilateral\" NumberOfElements=\"2\""), 2u);
   EXPECT_NE(text.find("TEST.h5:/mesh/shell4/connectivity"), std::string::npos);
-  EXPECT_NE(text.find("TEST.h5:/mesh/coordinates"), std::string::npos);
-  for (const char* ref : {"TEST.h5:/frames/0000/displacement", "TEST.h5:/frames/0001/displacement",
+  EXPECT_EQ(text.find("TEST.h5:/mesh/coordinates"), std::string::npos);  // each frame its deformed positions
+  for (const char* ref : {"TEST.h5:/frames/0000/coordinates", "TEST.h5:/frames/0001/coordinates",
+                          "TEST.h5:/frames/0000/displacement", "TEST.h5:/frames/0001/displacement",
                           "TEST.h5:/frames/0001/velocity", "TEST.h5:/frames/0001/shell4/stress",
                           "TEST.h5:/frames/0001/shell4/plastic_strain", "TEST.h5:/frames/0001/shell4/thickness",
                           "TEST.h5:/frames/0001/shell4/deleted"})
@@ -470,7 +499,8 @@ TEST(ResultsFile, MidSurfaceStressIsWeightedByTheIntegrationRuleWhenTheStateHasI
     file.write_frame(1e-4, 1, m, s);
   }
   const ResultsReader h5(path);
-  EXPECT_DOUBLE_EQ(h5.doubles("/frames/0000/shell4/stress")[0], 0.25 * 1e6 + 0.75 * 2e6);
+  // The points' sxx 1e6, 2e6 and syy -2e6, -4e6 weighted 1/4, 3/4; sxy 3e5 at both.
+  expect_stress(h5, "/frames/0000", 0, {0.25 * 1e6 + 0.75 * 2e6, -(0.25 * 2e6 + 0.75 * 4e6), 3e5});
 }
 
 TEST(ResultsFile, ShellsOfBothKindsAreWrittenAndGiveASpatialCollectionPerFrame) {
@@ -496,11 +526,11 @@ TEST(ResultsFile, ShellsOfBothKindsAreWrittenAndGiveASpatialCollectionPerFrame) 
   EXPECT_EQ(h5.shape("/mesh/shell3/connectivity"), (std::vector<std::size_t>{1, 3}));
   EXPECT_EQ(h5.ints("/mesh/shell3/connectivity"), (std::vector<std::int32_t>{2, 6, 5}));
   EXPECT_EQ(h5.longs("/mesh/shell3/ids"), (std::vector<std::int64_t>{9}));
-  EXPECT_EQ(h5.shape("/frames/0000/shell3/stress"), (std::vector<std::size_t>{1, 3}));
+  EXPECT_EQ(h5.shape("/frames/0000/shell3/stress"), (std::vector<std::size_t>{1, 6}));
   EXPECT_DOUBLE_EQ(h5.doubles("/frames/0000/shell3/stress")[0], 5e6);
   EXPECT_DOUBLE_EQ(h5.doubles("/frames/0000/shell3/plastic_strain")[0], 0.3);
   EXPECT_EQ(h5.bytes("/frames/0000/shell3/deleted"), (std::vector<std::uint8_t>{1}));
-  EXPECT_EQ(h5.shape("/frames/0000/shell4/stress"), (std::vector<std::size_t>{2, 3}));
+  EXPECT_EQ(h5.shape("/frames/0000/shell4/stress"), (std::vector<std::size_t>{2, 6}));
   const std::string text = read_text(dir.path() / "TEST.xdmf");
   EXPECT_NE(text.find("CollectionType=\"Spatial\""), std::string::npos);
   EXPECT_NE(text.find("TopologyType=\"Triangle\" NumberOfElements=\"1\""), std::string::npos);

@@ -14,6 +14,7 @@
 
 #include "crumple/output/progress.hpp"
 #include "crumple/output/run.hpp"
+#include "crumple/output/run_summary.hpp"
 #include "crumple/solver/solver_state.hpp"
 #include "deck_files.hpp"
 #include "crumple/output/results_reader.hpp"
@@ -123,6 +124,7 @@ TEST(RunListing, HeaderNamesTheVersionDeckUnitsAndModel) {
   EXPECT_TRUE(std::regex_search(l, std::regex(R"(\nSTARTED \d{4}-\d\d-\d\d \d\d:\d\d:\d\d\n)"))) << l;
   EXPECT_NE(l.find("\nDECK " + (dir.path() / "TEST_0000.rad").string() + "\n"), std::string::npos) << l;
   EXPECT_NE(l.find("\nWORKING UNITS (SI size of one unit): mass 1 kg  length 1 m  time 1 s\n"), std::string::npos) << l;
+  EXPECT_NE(l.find("\nUNITS mass kg, length m, time s, force N, energy J, stress Pa\n"), std::string::npos) << l;
   EXPECT_NE(l.find("\nnodes 6  4-node shells 2  3-node shells 0  8-node bricks 0  springs 0  trusses 0  beams 0  "
                    "element groups 1  parts 1  interfaces 0  rigid bodies 0  rigid walls 0\n"),
             std::string::npos)
@@ -204,3 +206,49 @@ TEST(RunListing, StopRequestAtTheEndStateLeavesANormalRun) {
 
 }  // namespace
 }  // namespace crumple::test_run_listing
+
+namespace test_run_listing_parts {
+
+using namespace crumple;
+
+// The part table at the end of a run (listing and NAME.summary.json, issue 29): /TH/PART's values for every part,
+// so its sums are the last history row's totals (the same state: the loop's, E-3), on the shell strip and the
+// brick of tests/regression/decks/th_strip, two parts.
+TEST(RunListing, PartTableAddsUpToTheLastHistoryRow) {
+  test::TempDir dir;
+  const std::filesystem::path deck = std::filesystem::path(CRUMPLE_TEST_DECKS) / "th_strip" / "THSTRIP_0000.rad";
+  const Deck d = read_deck(deck);
+  SimulationOptions options;
+  options.name = "PARTS";
+  options.output_directory = dir.path();
+  std::ostringstream console;
+  const RunSummary s = run_simulation(d.model, options, console);
+  ASSERT_EQ(s.status, RunStatus::Normal) << s.message;
+  ASSERT_EQ(s.parts.size(), 2u);
+  const ResultsReader h5(dir.path() / "PARTS.h5");
+  const auto last = [&](const char* series) { return h5.doubles(std::string("/history/") + series).back(); };
+  double internal = 0.0, kinetic = 0.0, hourglass = 0.0;
+  for (const PartResult& p : s.parts) {
+    internal += p.internal, kinetic += p.kinetic, hourglass += p.hourglass;
+    EXPECT_GT(p.mass, 0.0) << p.id;
+    EXPECT_GT(p.internal, 0.0) << p.id;  // both parts deform
+  }
+  const double scale = std::abs(last("internal")) + std::abs(last("kinetic_translational"));
+  EXPECT_NEAR(internal, last("internal"), 1e-12 * scale);
+  EXPECT_NEAR(kinetic, last("kinetic_translational") + last("kinetic_rotational"), 1e-12 * scale);
+  EXPECT_NEAR(hourglass, last("hourglass"), 1e-12 * scale);
+  const std::string listing = [&] {
+    std::ifstream in(dir.path() / "PARTS.out");
+    std::stringstream t;
+    t << in.rdbuf();
+    return t.str();
+  }();
+  EXPECT_NE(listing.find("PARTS AT THE END (mass kg, energies J):\n"), std::string::npos) << listing;
+  EXPECT_TRUE(std::regex_search(
+      listing, std::regex(R"(\nPART 1 +MASS [0-9.e+-]+  INTERNAL [0-9.e+-]+  KINETIC [0-9.e+-]+  HOURGLASS [0-9.e+-]+  )")))
+      << listing;
+  const std::string json = to_json(s);
+  EXPECT_NE(json.find("\"parts\": [\n    {\"id\": 1, \"title\": "), std::string::npos) << json;
+}
+
+}  // namespace test_run_listing_parts

@@ -54,16 +54,16 @@ TEST(ThCommand, ListsTheHistoriesWithTheirColumns) {
   const Output o = run(options);
   EXPECT_EQ(o.code, app::kExitNormal) << o.err;
   EXPECT_EQ(o.out,
-            "TEST.h5: 3 history rows, time 0 to 0.0002\n"
+            "TEST.h5: 3 history rows, time 0 to 0.0002 s\n"
             "/history/internal  global  1 column\n"
-            "  internal [E]\n"
+            "  internal [J]\n"
             "/history/th/NODE_2  NODE 2  \"nodes\"  /TH/NODE/2  2 columns\n"
-            "  NODE_2/6/DX [L]  (corner)\n"
-            "  NODE_2/6/VX [L/T]  (corner)\n");
+            "  NODE_2/6/DX [m]  (corner)\n"
+            "  NODE_2/6/VX [m/s]  (corner)\n");
   options.select.clear();
   const Output all = run(options);
-  EXPECT_NE(all.out.find("/history/dt  global  1 column\n  dt [T]\n"), std::string::npos) << all.out;
-  EXPECT_NE(all.out.find("/history/total  global  1 column\n  total [E]\n"), std::string::npos) << all.out;
+  EXPECT_NE(all.out.find("/history/dt  global  1 column\n  dt [s]\n"), std::string::npos) << all.out;
+  EXPECT_NE(all.out.find("/history/total  global  1 column\n  total [J]\n"), std::string::npos) << all.out;
   EXPECT_EQ(all.out.find("node_values"), std::string::npos) << all.out;  // no columns: not listed
 }
 
@@ -78,7 +78,7 @@ TEST(ThCommand, WritesTheSelectedColumnsAsCsv) {
   const Output o = run(options);
   EXPECT_EQ(o.code, app::kExitNormal) << o.err;
   EXPECT_EQ(o.out,
-            "time [T],total [E],NODE_2/6/DX [L],NODE_2/6/VX [L/T]\n"
+            "time [s],total [J],NODE_2/6/DX [m],NODE_2/6/VX [m/s]\n"
             "0,0,0,0.5\n"
             "0.0001,0.3333333333333333,5e-05,0.5\n"
             "0.0002,0.6666666666666666,0.0001,-1.25\n");

@@ -23,6 +23,48 @@ TEST(Units, CodesAndNumbers) {
   EXPECT_FALSE(parse_unit("-1", 2).has_value());
 }
 
+// The names shown for a deck's working units (core/units.hpp): its base units, and force, energy and stress by
+// their SI names where a prefix of a power of 1000 fits, else composed of the base units.
+TEST(Units, WorkingUnitsAreShownByName) {
+  struct Case {
+    double si[3];
+    const char* described;
+  };
+  const Case cases[] = {
+      {{1.0, 1e-3, 1e-3}, "mass kg, length mm, time ms, force kN, energy J, stress GPa"},
+      {{1e3, 1e-3, 1.0}, "mass Mg, length mm, time s, force N, energy mJ, stress MPa"},
+      {{1e-3, 1e-3, 1e-3}, "mass g, length mm, time ms, force N, energy mJ, stress MPa"},
+      {{1.0, 1.0, 1.0}, "mass kg, length m, time s, force N, energy J, stress Pa"},
+      {{1e-3, 1e-2, 1e-6}, "mass g, length cm, time us, force g cm/us^2, energy g cm/us^2 cm, stress g cm/us^2/cm^2"},
+      {{0.45359237, 0.0254, 1.0}, "mass lb, length in, time s, force lb in/s^2, energy lb in/s^2 in, stress lb in/s^2/in^2"},
+      {{2.5, 1e-3, 1e-3}, "mass 2.5 kg, length mm, time ms, force 2.5 kg mm/ms^2, energy 2.5 kg mm/ms^2 mm, "
+       "stress 2.5 kg mm/ms^2/mm^2"},
+  };
+  for (const Case& c : cases) EXPECT_EQ(describe(unit_names(c.si)), c.described);
+  // Read back with the same table the /BEGIN codes are read with.
+  const double deck[3] = {*parse_unit("Mg", 0), *parse_unit("mm", 1), *parse_unit("mus", 2)};
+  EXPECT_EQ(describe(unit_names(deck)), "mass Mg, length mm, time us, force TN, energy GJ, stress EPa");
+  const double imperial[3] = {*parse_unit("lb", 0), *parse_unit("ft", 1), *parse_unit("min", 2)};
+  EXPECT_EQ(describe(unit_names(imperial)).substr(0, 30), "mass lb, length ft, time min, ");
+}
+
+// A history column's unit: its dimension letters, each named in the working units.
+TEST(Units, DimensionLettersBecomeUnitNames) {
+  const double si[3] = {1.0, 1e-3, 1e-3};
+  const UnitNames n = unit_names(si);
+  EXPECT_EQ(unit_name("T", n), "ms");
+  EXPECT_EQ(unit_name("E", n), "J");
+  EXPECT_EQ(unit_name("F", n), "kN");
+  EXPECT_EQ(unit_name("F/L^2", n), "GPa");
+  EXPECT_EQ(unit_name("F L", n), "kN mm");
+  EXPECT_EQ(unit_name("L/T^2", n), "mm/ms^2");
+  EXPECT_EQ(unit_name("M L^2/T", n), "kg mm^2/ms");
+  EXPECT_EQ(unit_name("1/T", n), "1/ms");
+  EXPECT_EQ(unit_name("M/L^3", n), "kg/mm^3");
+  EXPECT_EQ(unit_name("-", n), "");
+  EXPECT_EQ(unit_name("", n), "");
+}
+
 TEST(Units, FactorsCombineDimensions) {
   UnitSystem u;
   u.input[0] = 1e-3;  // g

@@ -15,8 +15,10 @@
 // a hardening spring's rate effects (spring_rate_hardening), sensor-switched springs (spring_sensor_switches) and
 // joints (joint_free_bodies).
 #include <gtest/gtest.h>
+#include <fmt/format.h>
 #include <hdf5.h>
 
+#include <algorithm>
 #include <cstring>
 #include <fstream>
 #include <map>
@@ -69,7 +71,7 @@ std::map<std::string, std::string> snapshot_fields(const Model& model, const std
 
 // Runs the deck into `dir` with a snapshot at its end; `max_cycles` >= 0 stops it there in its first engine deck.
 RunSummary run(const std::filesystem::path& starter, const TempDir& dir, long long max_cycles,
-               const std::filesystem::path& restart = {}) {
+               const std::filesystem::path& restart = {}, bool overwrite = false) {
   Deck deck = read_deck(starter);
   deck.model.run.restart_every = 1LL << 60;  // no snapshot on the way: only the one at the end
   for (RunControl& r : deck.continued_runs) r.restart_every = 1LL << 60;
@@ -78,6 +80,7 @@ RunSummary run(const std::filesystem::path& starter, const TempDir& dir, long lo
   options.name = "RUN";
   options.output_directory = dir.path();
   options.max_cycles = max_cycles;
+  options.overwrite_results = overwrite;
   std::ostringstream console;
   return app::run_engine_decks(deck, options, console, restart);
 }
@@ -234,6 +237,124 @@ TEST(Restart, FileOfTheOtherPrecisionIsRefused) {
                                  " build of Crumple, and this is the " + kPrecision + " build";
     EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
   }
+}
+
+
+// A run resumed into the folder of the run it continues appends to that run's results (docs/output-format.md,
+// "Restart"), which the first run's frames and rows end at or before the restart: the shell strip of th_strip with
+// a frame every 1e-5 (its /TH of every kind), stopped at cycle 35 and resumed into its folder, against the same
+// deck run whole.
+std::filesystem::path strip_with_frames(const TempDir& deck) {
+  deck.write("THSTRIP_0000.rad", read_text(kTestDecks / "th_strip" / "THSTRIP_0000.rad"));
+  deck.write("THSTRIP_0001.rad", "/RUN/THSTRIP/1\n1e-4\n/TFILE\n1e-5\n/ANIM/DT\n0 1e-5\n");
+  return deck.path() / "THSTRIP_0000.rad";
+}
+
+std::vector<double> frame_times(const std::filesystem::path& h5) {
+  std::vector<double> times;
+  const ResultsReader r(h5);
+  for (int f = 0; r.exists(fmt::format("/frames/{:04}", f)); ++f)
+    times.push_back(r.attribute<double>(fmt::format("/frames/{:04}", f), "time"));
+  return times;
+}
+
+TEST(RestartResults, AResumedRunContinuesTheResultsOfItsFolder) {
+  TempDir deck, whole, folder;
+  const std::filesystem::path starter = strip_with_frames(deck);
+  ASSERT_EQ(run(starter, whole, -1).status, RunStatus::Normal);
+  const RunSummary stopped = run(starter, folder, 35);
+  ASSERT_EQ(stopped.cycles, 35);
+  const std::vector<double> first_frames = frame_times(folder.path() / "RUN.h5");
+  const std::size_t first_rows = ResultsReader(folder.path() / "RUN.h5").doubles("/history/time").size();
+  const RunSummary resumed = run(starter, folder, -1, folder.path() / "RUN.rst");
+  ASSERT_EQ(resumed.status, RunStatus::Normal) << resumed.message;
+
+  // Every row of the whole run is in the continued file, bit for bit, every series and /TH dataset; the only other
+  // row is the stopped run's last, at its last cycle.
+  const ResultsReader a(whole.path() / "RUN.h5"), b(folder.path() / "RUN.h5");
+  const std::vector<double> ta = a.doubles("/history/time"), tb = b.doubles("/history/time");
+  ASSERT_GT(tb.size(), first_rows);
+  EXPECT_TRUE(std::is_sorted(tb.begin(), tb.end()));
+  EXPECT_EQ(std::adjacent_find(tb.begin(), tb.end()), tb.end()) << "a time written twice";
+  std::vector<std::size_t> row_of(ta.size());
+  for (std::size_t i = 0; i < ta.size(); ++i) {
+    const auto at = std::find(tb.begin(), tb.end(), ta[i]);
+    ASSERT_NE(at, tb.end()) << "the whole run's row at t = " << ta[i] << " is not in the continued file";
+    row_of[i] = static_cast<std::size_t>(at - tb.begin());
+  }
+  EXPECT_LE(tb.size(), ta.size() + 1);
+  const HistoryFile listing(whole.path() / "RUN.h5");
+  for (const HistorySeries& s : listing.series()) {
+    const std::size_t width = s.columns.size();
+    const std::vector<double> ya = a.doubles(s.path), yb = b.doubles(s.path);
+    ASSERT_EQ(yb.size(), tb.size() * width) << s.path;
+    for (std::size_t i = 0; i < ta.size(); ++i)
+      EXPECT_EQ(0, std::memcmp(&ya[i * width], &yb[row_of[i] * width], width * sizeof(double)))
+          << s.path << " at t = " << ta[i];
+  }
+  // The frames: the first run's, then the resumed run's, every frame time of the whole run among them.
+  const std::vector<double> fa = frame_times(whole.path() / "RUN.h5"), fb = frame_times(folder.path() / "RUN.h5");
+  ASSERT_GT(first_frames.size(), 2u);
+  EXPECT_TRUE(std::equal(first_frames.begin(), first_frames.end(), fb.begin()));
+  for (double f : fa) EXPECT_NE(std::find(fb.begin(), fb.end(), f), fb.end()) << "frame at t = " << f;
+  EXPECT_TRUE(std::is_sorted(fb.begin(), fb.end()));
+  EXPECT_LE(fb.size(), fa.size() + 1);
+  // NAME.xdmf shows every frame; the listing holds both runs.
+  const std::string xdmf = read_text(folder.path() / "RUN.xdmf");
+  for (std::size_t f = 0; f < fb.size(); ++f)
+    EXPECT_NE(xdmf.find(fmt::format("RUN.h5:/frames/{:04}/coordinates", f)), std::string::npos) << f;
+  const std::string out = read_text(folder.path() / "RUN.out");
+  EXPECT_EQ(out.rfind("Crumple ", 0), 0u) << "the first run's header is kept";
+  EXPECT_NE(out.find("RESUMED at t = "), std::string::npos);
+  EXPECT_LT(out.find("ENGINE DECK 1"), out.find("RESUMED at t = "));
+  EXPECT_LT(out.find("RESUMED at t = "), out.rfind("NORMAL TERMINATION"));
+  EXPECT_NE(out.rfind("NORMAL TERMINATION"), std::string::npos);
+}
+
+// Continuing results past the restart would leave them out of order: refused, naming the file, the times and the
+// way out, with the file untouched; --overwrite replaces them by the resumed run's.
+TEST(RestartResults, ResultsPastTheRestartAreNotOverwrittenUnlessAsked) {
+  TempDir deck, whole, stopped;
+  const std::filesystem::path starter = strip_with_frames(deck);
+  ASSERT_EQ(run(starter, whole, -1).status, RunStatus::Normal);
+  ASSERT_EQ(run(starter, stopped, 35).cycles, 35);
+  const std::size_t rows = ResultsReader(whole.path() / "RUN.h5").doubles("/history/time").size();
+  const std::size_t frames = frame_times(whole.path() / "RUN.h5").size();
+  try {
+    run(starter, whole, -1, stopped.path() / "RUN.rst");
+    FAIL() << "a resumed run continued results past its restart";
+  } catch (const RestartError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find((whole.path() / "RUN.h5").string()), std::string::npos) << what;
+    EXPECT_NE(what.find("past the restart's t = "), std::string::npos) << what;
+    EXPECT_NE(what.find("--overwrite"), std::string::npos) << what;
+  }
+  EXPECT_EQ(ResultsReader(whole.path() / "RUN.h5").doubles("/history/time").size(), rows);
+  EXPECT_EQ(frame_times(whole.path() / "RUN.h5").size(), frames);
+
+  ASSERT_EQ(run(starter, whole, -1, stopped.path() / "RUN.rst", true).status, RunStatus::Normal);
+  const std::vector<double> t = ResultsReader(whole.path() / "RUN.h5").doubles("/history/time");
+  ASSERT_FALSE(t.empty());
+  EXPECT_LT(t.size(), rows);  // the resumed run's rows alone
+}
+
+// The snapshot of a run's own end (T-0 decided it there) leaves nothing to run: resumed into the same folder, no
+// cycle past the end time, no row or frame written twice, and the end's energies (it took a cycle past the end time
+// before, and on the example tube a step of 0).
+TEST(RestartResults, ResumingFromTheEndOfARunRunsNoCycle) {
+  TempDir deck, folder;
+  const std::filesystem::path starter = strip_with_frames(deck);
+  const RunSummary whole = run(starter, folder, -1);
+  ASSERT_EQ(whole.status, RunStatus::Normal);
+  const std::size_t rows = ResultsReader(folder.path() / "RUN.h5").doubles("/history/time").size();
+  const std::size_t frames = frame_times(folder.path() / "RUN.h5").size();
+  const RunSummary again = run(starter, folder, -1, folder.path() / "RUN.rst");
+  ASSERT_EQ(again.status, RunStatus::Normal) << again.message;
+  EXPECT_EQ(again.cycles_total, whole.cycles_total);
+  EXPECT_EQ(again.time, whole.time);
+  EXPECT_EQ(again.energy.error_percent, whole.energy.error_percent);
+  EXPECT_EQ(ResultsReader(folder.path() / "RUN.h5").doubles("/history/time").size(), rows);
+  EXPECT_EQ(frame_times(folder.path() / "RUN.h5").size(), frames);
 }
 
 }  // namespace

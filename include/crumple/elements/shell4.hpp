@@ -1,6 +1,7 @@
 #pragma once
 // 4-node shells: the one-point Belytschko-Tsay formulation with hourglass stiffness (Ishell 1, 24) and the fully
 // integrated Batoz shell (Ishell 12); the 3-node C0 triangle (docs/theory/shell4.md).
+#include <array>
 #include <cstdint>
 
 #include "crumple/core/vec3.hpp"
@@ -82,6 +83,11 @@ struct ShellElementOutput {
 // kind's ShellState.
 ShellElementOutput shell_element_output(const ShellGroupParameters& p, const ShellState& state,
                                         const ElementGroup& group, std::int32_t element);
+
+// A shell's membrane stress (sxx, syy, sxy in its co-rotational frame, eq. S-1, at node positions `x` of its
+// `nodes` = 3 or 4 nodes) as a symmetric tensor in the global axes, sxx syy szz sxy syz szx (VTK's order):
+// sigma = sxx e1 e1 + syy e2 e2 + sxy (e1 e2 + e2 e1). The zero tensor when the element has no normal.
+std::array<double, 6> shell_stress_in_global_axes(const Vec3* x, int nodes, const double (&local)[3]);
 
 // Lumped rotational inertia an element of mass `element_mass` gives each of its `nodes` nodes [M L^2]:
 // (m / n) (t^2 / 12 + A / 9) (docs/theory/shell4.md, eq. S-8), the reference solver's.

@@ -10,6 +10,7 @@
 
 #include "crumple/model/cut_sections.hpp"
 #include "crumple/model/model.hpp"
+#include "crumple/solver/run_summary.hpp"
 #include "crumple/solver/solver_state.hpp"
 
 namespace crumple {
@@ -46,6 +47,8 @@ class HistoryChannels {
   // history output time; `change` is the cycle's velocity update (accelerations and reactions are NaN without it).
   void evaluate(const SolverState& state, const VelocityChange& change,
                 std::vector<std::vector<double>>& values) const;
+  // Every part's mass and energies in `state`, /TH/PART's IE, KE + RKE, HE and MASS (the run's part table).
+  std::vector<PartResult> part_results(const SolverState& state) const;
 
  private:
   struct Request {

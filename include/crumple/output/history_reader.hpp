@@ -31,6 +31,9 @@ class HistoryFile {
   HistoryFile& operator=(const HistoryFile&) = delete;
 
   std::size_t rows() const;
+  // A column's unit by its name in the file's working units ("ms", "kN", "J"; core/units.hpp), or its dimension
+  // letters in a file written without them.
+  std::string unit_of(const HistoryColumn& column) const;
   // /history/time, then every dataset with at least one column: the global ones in file order, then /history/th.
   const std::vector<HistorySeries>& series() const;
   // The values of series `s`, rows x columns, row-major.

@@ -17,7 +17,8 @@ struct ListingRow {
 
 class Listing {
  public:
-  explicit Listing(const std::filesystem::path& path);  // throws std::runtime_error when it cannot be written
+  // Throws std::runtime_error when it cannot be written. `append`: after what the file holds (a resumed run).
+  explicit Listing(const std::filesystem::path& path, bool append = false);
   void line(const std::string& text);                    // free text (start, notes, end)
   void table_header();
   void row(const ListingRow& row);

@@ -3,6 +3,7 @@
 // Opened once before the first cycle; frames and history rows are appended outside the hot loops.
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,7 +32,12 @@ class ResultsFile {
  public:
   // Creates the file and writes the mesh (coordinates, connectivity, user ids) and the empty history datasets, the
   // /TH ones as `histories` lays them out. Throws std::runtime_error.
-  ResultsFile(const std::filesystem::path& path, const Model& model, std::vector<HistoryDataset> histories = {});
+  // With `continue_from` (a run resumed from a restart at that time [T]) an existing file is continued instead: its
+  // frames and history rows stay, the new ones are appended after them (docs/output-format.md, "Restart"). Throws
+  // RestartError, naming what differs, when the file holds another mesh or other /TH datasets, or results past
+  // `continue_from`, which continuing would leave out of order.
+  ResultsFile(const std::filesystem::path& path, const Model& model, std::vector<HistoryDataset> histories = {},
+              std::optional<double> continue_from = std::nullopt);
   ~ResultsFile();
   ResultsFile(const ResultsFile&) = delete;
   ResultsFile& operator=(const ResultsFile&) = delete;

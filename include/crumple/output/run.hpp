@@ -17,6 +17,8 @@ struct SimulationOptions : SolverOptions {
   std::string name;                          // run name: output files are NAME.out, NAME.h5, NAME.summary.json
   std::filesystem::path output_directory = ".";
   bool write_results = true;                 // NAME.h5 (field frames and histories)
+  // A resumed run replaces the folder's NAME.h5 and NAME.out instead of continuing them (--overwrite).
+  bool overwrite_results = false;
   // Every option of the deck that was skipped or approximated (DeckReport::skipped_options, one line each:
   // "[skipped] file:line: keyword: field F: what"), for the listing header and the summary. Filled by the app.
   std::vector<std::string> approximations;

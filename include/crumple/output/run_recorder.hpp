@@ -32,6 +32,9 @@ struct RunStart {
   std::vector<std::string> approximations;
   ProgressOptions progress;
   std::string accuracy = "standard";  // the --accuracy preset, for the listing header and the summary
+  // A run resumed from a restart at this time [T]: NAME.out and NAME.h5 of the folder, when there, are continued
+  // (appended to), not replaced (docs/output-format.md, "Restart").
+  std::optional<double> continue_from;
 };
 
 // What the energy warning adds under an --accuracy preset: the knobs it moved (its lines among the
@@ -79,6 +82,7 @@ class RunRecorder final : public RunObserver {
 
  private:
   void header(const RunStart& run);
+  void part_table(const std::vector<PartResult>& parts);
   void console_line(const std::string& text);  // on the console, below the progress line
   void clear_progress();
 

@@ -41,6 +41,14 @@ struct DeckFile {
   std::uint32_t crc32 = 0;  // zlib's CRC-32 of the file's bytes
 };
 
+// One part at the end of a run, as /TH/PART gives it (docs/output-format.md, "Parts": a node shared by parts is
+// split among them): its mass [M] and its internal, kinetic (translational and rotational) and hourglass energies.
+struct PartResult {
+  std::int64_t id = 0;
+  std::string title;
+  double mass = 0.0, internal = 0.0, kinetic = 0.0, hourglass = 0.0;
+};
+
 struct RunSummary {
   std::string name;
   std::string crumple_version;  // build::version()
@@ -63,6 +71,7 @@ struct RunSummary {
   int ranks = 1;
   std::string precision = "double";
   long long deleted_elements = 0;  // elements deleted over the run (failure, /DT/<type>/DEL), in every kind
+  std::vector<PartResult> parts;   // every part at the end, in deck order
   RunStatus status = RunStatus::Normal;
   std::string message;  // why the run ended when status is not normal
   bool stopped_on_request = false;  // status stopped because SIGINT or SIGTERM asked for it, not a /STOP limit

@@ -13,13 +13,25 @@ Writes into DIR (default: beside NAME.h5):
   NAME_selected.png        with --select: every /history/th column whose label contains one of the patterns
 Prints one line per file written. Exit code 0; 2 when the file is not a Crumple results file, a pattern selects
 nothing or matplotlib is missing.
+
+    crumple compare A.h5 B.h5 [...] [-o DIR] [--nodes ID ...]
+
+Runs of one model side by side (README, "Trading speed for accuracy"): a table of what decides between them (the
+cycles and wall time of each run from NAME.summary.json beside it, the internal energy at the end, the peak and
+mean force of each rigid wall, the final displacement of the selected nodes, each against the first run) and,
+into DIR (default: beside A.h5), NAME_compare_energy.png (internal and kinetic energy of every run),
+NAME_compare_walls.png (every run's wall forces) and NAME_compare_contact.png (interface forces).
 """
+import json
 import os
 import sys
 
 
+COMMAND = "crumple plot"
+
+
 def fail(message, code=2):
-    print(f"crumple plot: {message}", file=sys.stderr)
+    print(f"{COMMAND}: {message}", file=sys.stderr)
     sys.exit(code)
 
 
@@ -45,17 +57,29 @@ def labels_of(dataset, fallback):
 
 
 def unit_of(dataset, column=None):
-    if "units" not in dataset.attrs:
-        return ""
-    units = text(np.atleast_1d(dataset.attrs["units"]))
-    return units[column] if column is not None and column < len(units) else units[0]
+    """The unit of a history column by its name in the run's working units ("ms", "kN", "J"), or for a file written
+    before histories carried unit names its dimension letters ("T", "F", "E")."""
+    for key in ("unit_names", "unit_name", "units", "unit"):
+        if key in dataset.attrs:
+            units = text(np.atleast_1d(dataset.attrs[key]))
+            return units[column] if column is not None and column < len(units) else units[0]
+    return ""
+
+
+def axis_label(quantity, unit):
+    return f"{quantity} [{unit}]" if unit else quantity
 
 
 def save(fig, path):
     fig.tight_layout()
     fig.savefig(path, dpi=110)
+    labels = []  # the axes' quantities and units, each once, as a reader checks them
+    for ax in fig.axes:
+        for label in (ax.get_xlabel(), ax.get_ylabel()):
+            if label and label not in labels:
+                labels.append(label)
     plt.close(fig)
-    print(f"wrote {path}")
+    print(f"wrote {path} ({', '.join(labels)})")
 
 
 def energy_plot(h, name, out):
@@ -67,8 +91,8 @@ def energy_plot(h, name, out):
                        ("contact", "contact"), ("external_work", "external work"), ("total", "total")):
         if key in h and h[key].shape[0] == t.shape[0]:
             ax.plot(t, h[key][:], label=label, lw=2.0 if key == "total" else 1.2)
-    ax.set_xlabel(f"time [{unit_of(h['time']) or 'T'}]")
-    ax.set_ylabel(f"energy [{unit_of(h['internal']) if 'internal' in h else 'E'}]")
+    ax.set_xlabel(axis_label("time", unit_of(h["time"])))
+    ax.set_ylabel(axis_label("energy", unit_of(h["internal"]) if "internal" in h else ""))
     ax.set_title(f"{name}: energy balance")
     ax.grid(alpha=0.3)
     ax.legend()
@@ -97,8 +121,8 @@ def vector_magnitudes_plot(h, dataset, per_object, vectors, title, name, out, su
         for label, offset in vectors:
             first = k * per_object + offset
             ax.plot(t, np.linalg.norm(values[:, first:first + 3], axis=1), label=f"{title.split()[0]} {oid}: {label}")
-    ax.set_xlabel(f"time [{unit_of(h['time']) or 'T'}]")
-    ax.set_ylabel("force [F]")
+    ax.set_xlabel(axis_label("time", unit_of(h["time"])))
+    ax.set_ylabel(axis_label("force", unit_of(d, vectors[0][1])))
     ax.set_title(f"{name}: {title}")
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8)
@@ -118,12 +142,52 @@ def columns_plot(h, datasets, keep, title, path):
     if not ax.lines:
         plt.close(fig)
         return False
-    ax.set_xlabel("time")
+    ax.set_xlabel(axis_label("time", unit_of(h["time"])))
     ax.set_title(title)
     ax.grid(alpha=0.3)
     ax.legend(fontsize=7)
     save(fig, path)
     return True
+
+
+SECTIONS_PER_FIGURE = 6
+
+
+def sections_plot(h, datasets, name, out):
+    """One row of panels per cut section (its forces, its moments, each in its unit), at most SECTIONS_PER_FIGURE
+    rows a figure: NAME_sections.png, then NAME_sections_2.png..., never dozens of curves in one axes."""
+    t = h["time"][:]
+    rows = []  # (section label, [(column label, values, unit)])
+    for d in datasets:
+        if d.shape[0] != t.shape[0]:
+            continue
+        labels = labels_of(d, d.name)
+        by_object = {}
+        for k, label in enumerate(labels):
+            obj = "/".join(label.split("/")[:2])
+            by_object.setdefault(obj, []).append((label.split("/")[-1], d[:, k], unit_of(d, k)))
+        rows += list(by_object.items())
+    time_label = axis_label("time", unit_of(h["time"]))
+    for first in range(0, len(rows), SECTIONS_PER_FIGURE):
+        chunk = rows[first:first + SECTIONS_PER_FIGURE]
+        fig, axes = plt.subplots(len(chunk), 2, figsize=(11, 2.6 * len(chunk)), squeeze=False)
+        for (section, columns), (force_ax, moment_ax) in zip(chunk, axes):
+            units = [u for _, _, u in columns]
+            force_unit = units[0] if units else ""
+            for ax, wanted, quantity in ((force_ax, lambda u: u == force_unit, "force"),
+                                         (moment_ax, lambda u: u != force_unit, "moment, work")):
+                for variable, values, unit in columns:
+                    if wanted(unit):
+                        ax.plot(t, values, label=f"{variable} [{unit}]" if unit else variable, lw=1.0)
+                ax.set_title(f"{section}: {quantity}", fontsize=9)
+                ax.grid(alpha=0.3)
+                if ax.lines:
+                    ax.legend(fontsize=6, ncol=3)
+            force_ax.set_ylabel(axis_label("force", force_unit))
+        for ax in axes[-1]:
+            ax.set_xlabel(time_label)
+        suffix = "" if first == 0 else f"_{first // SECTIONS_PER_FIGURE + 1}"
+        save(fig, os.path.join(out, f"{name}_sections{suffix}.png"))
 
 
 def main(argv):
@@ -165,13 +229,188 @@ def main(argv):
         th = [h["th"][k] for k in h["th"]] if "th" in h else []
         sections = [d for d in th if os.path.basename(d.name).upper().startswith("SECTIO")]
         if sections:
-            columns_plot(h, sections, lambda label: True, f"{name}: section forces",
-                         os.path.join(out, f"{name}_sections.png"))
+            sections_plot(h, sections, name, out)
         if select:
             if not columns_plot(h, th, lambda label: any(p.lower() in label.lower() for p in select),
                                 f"{name}: {' '.join(select)}", os.path.join(out, f"{name}_selected.png")):
                 fail(f"no /history/th column matches {' '.join(select)}")
 
 
+# ---- crumple compare ----
+
+class Run:
+    """One run of a comparison: its histories, its last frame's displacements and its summary."""
+
+    def __init__(self, path):
+        self.path = path
+        try:
+            f = h5py.File(path, "r")
+        except OSError as e:
+            fail(f"cannot open {path}: {e}")
+        with f:
+            if "history" not in f or "time" not in f["history"]:
+                fail(f"{path} has no /history/time: not a Crumple results file")
+            h = f["history"]
+            self.time = h["time"][:]
+            self.units = {key: unit_of(h[key]) for key in ("time", "internal") if key in h}
+            self.series = {key: h[key][:] for key in ("internal", "kinetic_translational", "kinetic_rotational")
+                           if key in h}
+            self.walls = self.vectors(h, "rigid_wall_force", 3, 0)
+            self.contacts = self.vectors(h, "interface_values", 10, 0)
+            self.force_unit = unit_of(h["rigid_wall_force"], 0) if "rigid_wall_force" in h else ""
+            self.node_ids = f["mesh/node_ids"][:] if "mesh/node_ids" in f else np.zeros(0, dtype=int)
+            frames = sorted(f["frames"], key=int) if "frames" in f else []
+            self.displacement = f[f"frames/{frames[-1]}/displacement"][:] if frames else None
+            self.length_unit = unit_name_of(f, "L")
+        summary = os.path.splitext(path)[0] + ".summary.json"
+        self.summary = {}
+        if os.path.exists(summary):
+            with open(summary) as s:
+                self.summary = json.load(s)
+
+    @staticmethod
+    def vectors(h, name, per_object, offset):
+        """The magnitude of each object's vector (its first 3 columns from `offset`) over time."""
+        if name not in h or h[name].ndim != 2 or h[name].shape[1] < per_object:
+            return {}
+        d = h[name]
+        values = d[:]
+        return {oid: np.linalg.norm(values[:, k * per_object + offset:k * per_object + offset + 3], axis=1)
+                for k, oid in enumerate(object_ids(d, per_object))}
+
+    def label(self, others):
+        """The run's folder name (out_draft/TUBE.h5: out_draft), or its path when folders repeat."""
+        folder = os.path.basename(os.path.dirname(os.path.abspath(self.path)))
+        folders = [os.path.basename(os.path.dirname(os.path.abspath(o.path))) for o in others]
+        return folder if folders.count(folder) == 1 else self.path
+
+    def end(self, key):
+        values = self.series.get(key)
+        return float(values[-1]) if values is not None and len(values) else float("nan")
+
+    def node_displacement(self, node):
+        if self.displacement is None:
+            return float("nan")
+        rows = np.flatnonzero(self.node_ids == node)
+        return float(np.linalg.norm(self.displacement[rows[0]])) if len(rows) else float("nan")
+
+
+def unit_name_of(f, letters):
+    """The name of a base or named unit (M, L, T, F, E, F/L^2) in a file's working units (its root attribute
+    `working_unit_names`), or "" in a file written without it."""
+    order = ("M", "L", "T", "F", "E", "F/L^2")
+    if "working_unit_names" not in f.attrs or letters not in order:
+        return ""
+    names = text(np.atleast_1d(f.attrs["working_unit_names"]))
+    return names[order.index(letters)] if len(names) == len(order) else ""
+
+
+def relative(value, first):
+    if not np.isfinite(value) or not np.isfinite(first) or first == 0:
+        return "-"
+    return f"{100.0 * (value - first) / abs(first):+.1f} %"
+
+
+def mean_over_time(t, values):
+    if len(t) < 2 or t[-1] <= t[0]:
+        return float("nan")
+    return float(np.trapz(values, t) / (t[-1] - t[0]))
+
+
+def compare_table(runs, nodes):
+    """Rows of the comparison: each run's numbers, each against the first run's."""
+    labels = [r.label(runs) for r in runs]
+    energy = runs[0].units.get("internal", "")
+    columns = [("cycles", lambda r: r.summary.get("cycles_total", float("nan")), "{:.0f}"),
+               ("wall time [s]", lambda r: r.summary.get("wall_seconds", float("nan")), "{:.2f}"),
+               (f"IE at the end [{energy}]", lambda r: r.end("internal"), "{:.5g}")]
+    for wall in runs[0].walls:
+        columns.append((f"wall {wall} peak [{runs[0].force_unit}]",
+                        lambda r, w=wall: float(np.max(r.walls[w])) if w in r.walls else float("nan"), "{:.5g}"))
+        columns.append((f"wall {wall} mean [{runs[0].force_unit}]",
+                        lambda r, w=wall: mean_over_time(r.time, r.walls[w]) if w in r.walls else float("nan"),
+                        "{:.5g}"))
+    for node in nodes:
+        columns.append((f"node {node} |u| [{runs[0].length_unit}]", lambda r, n=node: r.node_displacement(n),
+                        "{:.5g}"))
+    print(f"{'run':<24} " + " ".join(f"{name:>22}" for name, _, _ in columns))
+    for k, run in enumerate(runs):
+        cells = []
+        for name, value, form in columns:
+            v = float(value(run))
+            shown = form.format(v) if np.isfinite(v) else "-"
+            if k > 0:
+                shown += f" ({relative(v, float(value(runs[0])))})"
+            cells.append(f"{shown:>22}")
+        print(f"{labels[k]:<24} " + " ".join(cells))
+    print("(each run against the first; cycles and wall time from NAME.summary.json beside each file)")
+
+
+def compare_plots(runs, name, out):
+    labels = [r.label(runs) for r in runs]
+    time_label = axis_label("time", runs[0].units.get("time", ""))
+    fig, ax = plt.subplots(figsize=(8, 5))
+    for run, label in zip(runs, labels):
+        if "internal" in run.series:
+            ax.plot(run.time, run.series["internal"], label=f"{label}: internal")
+        if "kinetic_translational" in run.series:
+            ax.plot(run.time, run.series["kinetic_translational"], ls="--", label=f"{label}: kinetic")
+    ax.set_xlabel(time_label)
+    ax.set_ylabel(axis_label("energy", runs[0].units.get("internal", "")))
+    ax.set_title(f"{name}: runs compared")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    save(fig, os.path.join(out, f"{name}_compare_energy.png"))
+    for attribute, suffix, title in (("walls", "walls", "wall force"), ("contacts", "contact", "interface normal force")):
+        if not any(getattr(r, attribute) for r in runs):
+            continue
+        fig, ax = plt.subplots(figsize=(8, 5))
+        for run, label in zip(runs, labels):
+            for oid, values in getattr(run, attribute).items():
+                ax.plot(run.time, values, label=f"{label}: {oid}", lw=1.0)
+        ax.set_xlabel(time_label)
+        ax.set_ylabel(axis_label("force", runs[0].force_unit))
+        ax.set_title(f"{name}: {title}, runs compared")
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=8)
+        save(fig, os.path.join(out, f"{name}_compare_{suffix}.png"))
+
+
+def compare_main(argv):
+    files, out, nodes = [], None, []
+    i = 0
+    while i < len(argv):
+        a = argv[i]
+        if a in ("-o", "--output"):
+            out = argv[i + 1]
+            i += 2
+        elif a == "--nodes":
+            i += 1
+            while i < len(argv) and not argv[i].startswith("-"):
+                try:
+                    nodes.append(int(argv[i]))
+                except ValueError:
+                    fail(f"--nodes takes node ids, not {argv[i]}")
+                i += 1
+        else:
+            files.append(a)
+            i += 1
+    if len(files) < 2:
+        fail("usage: crumple compare A.h5 B.h5 [...] [-o DIR] [--nodes ID ...]")
+    runs = [Run(p) for p in files]
+    for node in nodes:
+        if node not in runs[0].node_ids:
+            fail(f"node {node} is not in {runs[0].path}")
+    name = os.path.splitext(os.path.basename(files[0]))[0]
+    out = out or os.path.dirname(os.path.abspath(files[0]))
+    os.makedirs(out, exist_ok=True)
+    compare_table(runs, nodes)
+    compare_plots(runs, name, out)
+
+
 if __name__ == "__main__":
-    main(sys.argv[1:])
+    if sys.argv[1:2] == ["compare"]:
+        COMMAND = "crumple compare"
+        compare_main(sys.argv[2:])
+    else:
+        main(sys.argv[1:])

@@ -5,11 +5,13 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <array>
 #include <optional>
 #include <span>
 
 #include "../context.hpp"
+#include "../keyword_catalog.hpp"
 
 namespace crumple::deck {
 namespace {
@@ -38,6 +40,32 @@ constexpr std::array<AnimResult, 8> kVectorResults{{{"VEL", nullptr},
                                                     {"FEXT", &F::external_force},
                                                     {"VROT", &F::angular_velocity}}};
 constexpr std::array<AnimResult, 1> kNodalResults{{{"DMAS", &F::added_mass}}};
+
+// The results the reference manual lists for each kind of /ANIM request (its /ANIM/Eltyp/Restype,
+// /ANIM/SHELL/Restype, /ANIM/BRICK/..., /ANIM/VECT and /ANIM/NODA pages) that Crumple does not write: a named
+// warning. A name on no list is a typo: an error with the nearest name (or --skip-unknown).
+constexpr std::string_view kManualElementResults[] = {
+    "AMS",   "BFRAC", "BULK",  "DAM1",  "DAM2",   "DAM3",  "DAMA",  "DENS",  "EINT",  "ENERGY", "EPSD",  "ERROR",
+    "ESPN",  "FAIL",  "FLAY",  "FLDF",  "FLDZ",   "FORC",  "IDPLY", "K",     "MACH",  "NL_EPSP", "PHI",  "PLY",
+    "QVIS",  "SCHLIEREN", "SIGEQ", "SSP", "TDEL", "TDET",  "TEMP",  "THIN",  "THKERR", "TVIS",  "VDAM1", "VDAM2",
+    "VDAM3", "VFRAC", "VOLU",  "VORT",  "VORTX",  "VORTY", "VORTZ", "WPLA"};
+constexpr std::string_view kManualVectorResults[] = {"AROT", "CLUST", "CONT2", "DROT", "DXANI", "FOPT",
+                                                     "FREAC", "FVEL", "MREAC", "PCONT", "VFLU"};
+constexpr std::string_view kManualTensors[] = {"STRESS", "STRAIN", "EPSDOT", "EPSDO", "DAMA", "EPSP"};
+constexpr std::string_view kManualNodalResults[] = {"DAMA2", "DENS", "DINER", "DT", "GPS", "NDMAS", "P", "SSP",
+                                                    "TEMP", "VFRAC"};
+
+// Whether `name` is a result the manual lists (`manual`, or a user variable USR1 to USR18 or a LAW51 phase).
+bool manual_lists(std::span<const std::string_view> manual, std::string_view name) {
+  for (const std::string_view m : manual)
+    if (name == m) return true;
+  const auto numbered = [&](std::string_view prefix) {
+    return name.size() > prefix.size() && name.substr(0, prefix.size()) == prefix &&
+           std::all_of(name.begin() + static_cast<std::ptrdiff_t>(prefix.size()), name.end(),
+                       [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0 || c == '_'; });
+  };
+  return numbered("USR") || numbered("LAW51") || name.rfind("LAW51_", 0) == 0;
+}
 
 // Path part `index` of the keyword line as written (Card::path is upper-cased; a run name keeps its case).
 std::string written_part(const Card& card, std::size_t index) {
@@ -222,10 +250,31 @@ std::string result_names(std::span<const AnimResult> results) {
 
 std::string_view kind_words(unsigned kinds) { return kinds == kShells ? "shells" : "bricks"; }
 
-// Result `name` of a table: its flag set, or a named warning when Crumple does not write it for `kinds`.
+// A result name on neither list: a typo, an error naming the nearest result of either list.
+void unknown_result(CardReader& reader, DeckContext& context, std::span<const AnimResult> results,
+                    std::span<const std::string_view> manual, std::string_view name) {
+  std::string nearest;
+  std::size_t best = std::max<std::size_t>(2, name.size() / 3) + 1;
+  const auto consider = [&](std::string_view candidate) {
+    const std::size_t d = edit_distance(name, candidate);
+    if (d < best) best = d, nearest = std::string(candidate);
+  };
+  for (const AnimResult& r : results) consider(r.name);
+  for (const std::string_view m : manual) consider(m);
+  const std::string hint = nearest.empty() ? std::string() : fmt::format(" (nearest: {})", nearest);
+  context.unsupported(
+      DeckError(reader.card().where, reader.card().keyword, "restype",
+                fmt::format("a result the Radioss manual lists for this request{} (or --skip-unknown)", hint),
+                fmt::format("'{}', which is no result of {}", name, path_prefix(reader.card(), 2))),
+      fmt::format("unknown result {} skipped (--skip-unknown){}", name, hint));
+}
+
+// Result `name` of a table: its flag set, or a named warning when Crumple does not write it for `kinds` (a result
+// the manual lists for it, `manual`), or an error when the manual does not list it either (a typo).
 void request_result(CardReader& reader, DeckContext& context, std::span<const AnimResult> results,
-                    std::string_view name, unsigned kinds) {
+                    std::span<const std::string_view> manual, std::string_view name, unsigned kinds) {
   const auto found = std::find_if(results.begin(), results.end(), [&](const AnimResult& r) { return r.name == name; });
+  if (found == results.end() && !manual_lists(manual, name)) return unknown_result(reader, context, results, manual, name);
   if (found == results.end())
     return output_only(reader, context,
                        fmt::format("result {} is not written by Crumple (its frames hold {})", name,
@@ -238,7 +287,7 @@ void request_result(CardReader& reader, DeckContext& context, std::span<const An
 
 // /ANIM/ELEM/restype, /ANIM/VECT/restype, /ANIM/NODA/restype: each name kept once in `fields`.
 void read_anim_fields(CardReader& reader, DeckContext& context, std::vector<std::string>& fields,
-                      std::span<const AnimResult> results) {
+                      std::span<const AnimResult> results, std::span<const std::string_view> manual) {
   const Card& card = reader.card();
   if (card.path.size() < 3 || card.path[2].empty())
     reader.fail("restype", fmt::format("{}/<result name>", path_prefix(card, 2)), "no result name");
@@ -246,7 +295,7 @@ void read_anim_fields(CardReader& reader, DeckContext& context, std::vector<std:
   const std::string& name = card.path[2];
   reader.finish();
   if (std::find(fields.begin(), fields.end(), name) == fields.end()) fields.push_back(name);
-  request_result(reader, context, results, name, kAllKinds);
+  request_result(reader, context, results, manual, name, kAllKinds);
 }
 
 // /ANIM/[SHELL/|BRICK/]TENS/restype[/location]: the tensor at path part `at`. Frames hold the stress tensor
@@ -260,6 +309,7 @@ void read_anim_tensor(CardReader& reader, DeckContext& context, std::size_t at, 
   const std::string location = card.path.size() > at + 1 ? card.path[at + 1] : "";
   FrameRequests& anim = context.model.run.anim;
   std::string missing;
+  if (!manual_lists(kManualTensors, tensor)) return unknown_result(reader, context, {}, kManualTensors, tensor);
   if (tensor != "STRESS")
     missing = fmt::format("tensor {} is not written by Crumple (its frames hold the stress tensors)", tensor);
   else if (card.path.size() > at + 2)
@@ -283,23 +333,18 @@ void read_anim_kind(CardReader& reader, DeckContext& context, unsigned kinds) {
   if (card.path.size() < 3 || card.path[2].empty())
     reader.fail("restype", fmt::format("{}/<result name>", path_prefix(card, 2)), "no result name");
   reader.finish();
-  if (card.path.size() > 3)
-    return output_only(reader, context,
-                       fmt::format("result {} per layer or point is not written by Crumple", card.path[2]));
-  request_result(reader, context, kElementResults, card.path[2], kinds);
+  const std::string& name = card.path[2];
+  const bool written = std::any_of(kElementResults.begin(), kElementResults.end(),
+                                   [&](const AnimResult& r) { return r.name == name; });
+  if (card.path.size() > 3 && (written || manual_lists(kManualElementResults, name)))
+    return output_only(reader, context, fmt::format("result {} per layer or point is not written by Crumple", name));
+  request_result(reader, context, kElementResults, kManualElementResults, name, kinds);
 }
 
 void read_anim_mass(CardReader& reader, DeckContext& context) {
   path_at_most(reader, 2);
   reader.finish();
   context.model.run.anim.nodal_mass = true;
-}
-
-// Any other /ANIM request (/ANIM/BEAM/..., /ANIM/GPS/..., /ANIM/SENSOR, ...): a named warning.
-void read_anim_other(CardReader& reader, DeckContext& context) {
-  while (reader.next_nonblank()) {
-  }
-  output_only(reader, context, "animation request not written by Crumple");
 }
 
 void read_anim_gzip(CardReader& reader, DeckContext& context) {
@@ -588,8 +633,11 @@ void read_dtix(CardReader& reader, DeckContext& context) {
 }  // namespace
 
 void register_engine_keywords(KeywordTable& table) {
-  auto fields = [](std::vector<std::string> RunControl::*member, std::span<const AnimResult> results) {
-    return [member, results](CardReader& r, DeckContext& c) { read_anim_fields(r, c, c.model.run.*member, results); };
+  auto fields = [](std::vector<std::string> RunControl::*member, std::span<const AnimResult> results,
+                   std::span<const std::string_view> manual) {
+    return [member, results, manual](CardReader& r, DeckContext& c) {
+      read_anim_fields(r, c, c.model.run.*member, results, manual);
+    };
   };
   const DeckPart E = DeckPart::Engine;
   table.push_back({"/RUN", E, read_run});
@@ -598,9 +646,9 @@ void register_engine_keywords(KeywordTable& table) {
   table.push_back({"/VERS", E, read_engine_version});
   table.push_back({"/TITLE", E, read_engine_title});
   table.push_back({"/ANIM/DT", E, read_anim_dt});
-  table.push_back({"/ANIM/ELEM", E, fields(&RunControl::anim_element_fields, kElementResults)});
-  table.push_back({"/ANIM/VECT", E, fields(&RunControl::anim_vector_fields, kVectorResults)});
-  table.push_back({"/ANIM/NODA", E, fields(&RunControl::anim_nodal_fields, kNodalResults)});
+  table.push_back({"/ANIM/ELEM", E, fields(&RunControl::anim_element_fields, kElementResults, kManualElementResults)});
+  table.push_back({"/ANIM/VECT", E, fields(&RunControl::anim_vector_fields, kVectorResults, kManualVectorResults)});
+  table.push_back({"/ANIM/NODA", E, fields(&RunControl::anim_nodal_fields, kNodalResults, kManualNodalResults)});
   table.push_back({"/ANIM/SHELL", E, [](CardReader& r, DeckContext& c) { read_anim_kind(r, c, kShells); }});
   table.push_back({"/ANIM/BRICK", E, [](CardReader& r, DeckContext& c) { read_anim_kind(r, c, kBricks); }});
   table.push_back({"/ANIM/TENS", E, [](CardReader& r, DeckContext& c) { read_anim_tensor(r, c, 2, kAllKinds); }});
@@ -608,7 +656,8 @@ void register_engine_keywords(KeywordTable& table) {
   table.push_back({"/ANIM/GZIP", E, read_anim_gzip});
   table.push_back({"/TH/VERS", E, read_th_version});
   table.push_back({"/ANIM/VERS", E, read_anim_version});
-  table.push_back({"/ANIM", E, read_anim_other});
+  // Every other /ANIM request the manual lists (/ANIM/BEAM/..., /ANIM/GPS/..., /ANIM/SENSOR) is an output-only
+  // warning, anything else (/ANIM/TD) an unknown keyword with the nearest one (data/radioss_keywords.txt).
   table.push_back({"/DT", E, read_dt});
   table.push_back({"/DTIX", E, read_dtix});
   table.push_back({"/PARITH", E, [](CardReader& r, DeckContext& c) {
