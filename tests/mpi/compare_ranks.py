@@ -54,6 +54,8 @@ def compare(serial, parallel, ranks):
     for key in ENERGIES:
         if float(s["energy"][key]).hex() != float(p["energy"][key]).hex():
             problems.append(f"energy {key}: {s['energy'][key]!r} one process, {p['energy'][key]!r} with {ranks} ranks")
+    if s.get("parts") != p.get("parts"):  # the part table: the same numbers to their 17 digits
+        problems.append(f"parts: {s.get('parts')!r} one process, {p.get('parts')!r} with {ranks} ranks")
     if p.get("ranks") != ranks:
         problems.append(f"summary ranks {p.get('ranks')}, expected {ranks}")
     with h5py.File(s_h5, "r") as a, h5py.File(p_h5, "r") as b:
