@@ -190,35 +190,49 @@ def sections_plot(h, datasets, name, out):
         save(fig, os.path.join(out, f"{name}_sections{suffix}.png"))
 
 
-def main(argv):
-    args, out, select = [], None, []
+def open_results(path):
+    """A Crumple results file opened for reading; bad input (exit code 2) when it is not one."""
+    try:
+        f = h5py.File(path, "r")
+    except OSError as e:
+        fail(f"cannot open {path}: {e}")
+    if "history" not in f or "time" not in f["history"]:
+        f.close()
+        fail(f"{path} has no /history/time: not a Crumple results file")
+    return f
+
+
+def parse_arguments(argv, list_options):
+    """The positional arguments, -o/--output's folder, and the values after each option of `list_options` (the
+    command line crumple has checked already)."""
+    positional, out, lists = [], None, {option: [] for option in list_options}
     i = 0
     while i < len(argv):
         a = argv[i]
-        if a in ("-o", "--output"):
+        if a in ("-o", "--output") and i + 1 < len(argv):
             out = argv[i + 1]
             i += 2
-        elif a == "--select":
+        elif a in lists:
             i += 1
             while i < len(argv) and not argv[i].startswith("-"):
-                select.append(argv[i])
+                lists[a].append(argv[i])
                 i += 1
         else:
-            args.append(a)
+            positional.append(a)
             i += 1
+    return positional, out, lists
+
+
+def main(argv):
+    args, out, lists = parse_arguments(argv, ("--select",))
+    select = lists["--select"]
     if len(args) != 1:
         fail("usage: crumple plot NAME.h5 [-o DIR] [--select PATTERN ...]")
     path = args[0]
     name = os.path.splitext(os.path.basename(path))[0]
     out = out or os.path.dirname(os.path.abspath(path))
     os.makedirs(out, exist_ok=True)
-    try:
-        f = h5py.File(path, "r")
-    except OSError as e:
-        fail(f"cannot open {path}: {e}")
-    with f:
-        if "history" not in f or "time" not in f["history"]:
-            fail(f"{path} has no /history/time: not a Crumple results file")
+    with open_results(path) as f:
         h = f["history"]
         energy_plot(h, name, out)
         if "interface_values" in h:  # FNX FNY FNZ FTX FTY FTZ and 4 energies per interface
@@ -243,13 +257,7 @@ class Run:
 
     def __init__(self, path):
         self.path = path
-        try:
-            f = h5py.File(path, "r")
-        except OSError as e:
-            fail(f"cannot open {path}: {e}")
-        with f:
-            if "history" not in f or "time" not in f["history"]:
-                fail(f"{path} has no /history/time: not a Crumple results file")
+        with open_results(path) as f:
             h = f["history"]
             self.time = h["time"][:]
             self.units = {key: unit_of(h[key]) for key in ("time", "internal") if key in h}
@@ -377,24 +385,13 @@ def compare_plots(runs, name, out):
 
 
 def compare_main(argv):
-    files, out, nodes = [], None, []
-    i = 0
-    while i < len(argv):
-        a = argv[i]
-        if a in ("-o", "--output"):
-            out = argv[i + 1]
-            i += 2
-        elif a == "--nodes":
-            i += 1
-            while i < len(argv) and not argv[i].startswith("-"):
-                try:
-                    nodes.append(int(argv[i]))
-                except ValueError:
-                    fail(f"--nodes takes node ids, not {argv[i]}")
-                i += 1
-        else:
-            files.append(a)
-            i += 1
+    files, out, lists = parse_arguments(argv, ("--nodes",))
+    nodes = []
+    for node in lists["--nodes"]:
+        try:
+            nodes.append(int(node))
+        except ValueError:
+            fail(f"--nodes takes node ids, not {node}")
     if len(files) < 2:
         fail("usage: crumple compare A.h5 B.h5 [...] [-o DIR] [--nodes ID ...]")
     runs = [Run(p) for p in files]
