@@ -190,7 +190,8 @@ int run_deck_on_ranks(const RunOptions& options, std::ostream& out, std::ostream
   } catch (const std::exception& e) {
     fmt::print(err, "crumple: rank {} of {}: {}\n", mpi.rank(), mpi.size(), e.what());
     err.flush();
-    MpiSession::abort(kExitInternal);
+    // A restart file or results folder that does not fit the run is bad input, as on one process.
+    MpiSession::abort(dynamic_cast<const RestartError*>(&e) != nullptr ? kExitBadInput : kExitInternal);
   }
 }
 
