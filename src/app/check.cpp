@@ -1,4 +1,5 @@
 #include "app/check.hpp"
+#include "app/console.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ostream.h>
@@ -153,7 +154,7 @@ void print_check_report(const Deck& deck, std::ostream& out) {
   fmt::print(out, "Keywords\n");
   fmt::print(out, "  read                  {}\n", join(deck.report.keywords_read));
   fmt::print(out, "  accepted, no effect   {}\n", join(deck.report.accepted_without_effect));
-  for (const auto& w : deck.report.warnings) fmt::print(out, "warning: {}\n", w.text());
+  print_warnings(deck.report.warnings, deck.report.files.empty() ? "" : deck.report.files.front(), out);
 }
 
 void print_partition_report(const Partition& p, std::ostream& out) {
