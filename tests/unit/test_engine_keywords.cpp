@@ -114,7 +114,6 @@ TEST(EngineKeywords, AbsentCardsLeaveDefaults) {
   EXPECT_FALSE(run.monitor);
   EXPECT_EQ(run.print_every, 0);
   EXPECT_EQ(run.restart_every, 0);
-  EXPECT_TRUE(run.anim_element_fields.empty());
   // /TFILE without a type writes the default IEEE binary format.
   EXPECT_EQ(run_of(kRun + "/TFILE\n1e-4\n").history_format, 4);
   EXPECT_FALSE(run_of(kRun + "/TFILE\n1e-4\n").history_every_cycle());
@@ -190,9 +189,6 @@ TEST(EngineKeywords, EveryRunControlCardReads) {
   EXPECT_FALSE(run.stop_positive_error_only);
   EXPECT_EQ(run.restart_every, 1000);
   EXPECT_EQ(run.restart_sets, 5);
-  EXPECT_EQ(run.anim_element_fields, (std::vector<std::string>{"EPSP", "VONM"}));
-  EXPECT_EQ(run.anim_vector_fields, (std::vector<std::string>{"VEL", "CONT"}));
-  EXPECT_EQ(run.anim_nodal_fields, (std::vector<std::string>{"DMAS"}));
   EXPECT_EQ(run.anim_version, 44);
   const auto& ignored = d.report.accepted_without_effect;
   EXPECT_NE(std::find(ignored.begin(), ignored.end(), "/TITLE"), ignored.end());
@@ -204,7 +200,7 @@ TEST(EngineKeywords, EveryRunControlCardReads) {
   EXPECT_EQ(noted("/ANIM/ELEM/vonm", SkipKind::OutputOnly), 0);  // von Mises stress is written on request
   EXPECT_EQ(noted("/ANIM/ELEM/EPSP", SkipKind::OutputOnly), 0);  // plastic strain is in every frame
   EXPECT_EQ(noted("/ANIM/NODA/DMAS", SkipKind::OutputOnly), 0);
-  EXPECT_TRUE(run.anim.von_mises && run.anim.added_mass && run.anim.contact_force);
+  EXPECT_TRUE(run.anim.added_mass && run.anim.contact_force);
   EXPECT_FALSE(run.anim.pressure || run.anim.acceleration);
   EXPECT_EQ(noted("/RFILE/5", SkipKind::OutputOnly), 1);
   EXPECT_EQ(noted("/STOP", SkipKind::OutputOnly), 1);  // NTH, NANIM: no extra output at a stop
@@ -228,7 +224,7 @@ TEST(EngineKeywords, AnimRequestsSetTheirFrameFieldsOrNameWhatIsNotWritten) {
   test::TempDir dir;
   const Deck d = read_deck(test::write_deck(dir, "", engine));
   const FrameRequests& a = d.model.run.anim;
-  EXPECT_TRUE(a.pressure && a.von_mises && a.energy_density && a.hourglass_energy && a.time_step);
+  EXPECT_TRUE(a.pressure && a.energy_density && a.hourglass_energy && a.time_step);
   EXPECT_TRUE(a.bending_stress && a.surface_stress);
   EXPECT_TRUE(a.acceleration && a.internal_force && a.external_force && a.angular_velocity);
   EXPECT_TRUE(a.nodal_mass && a.added_mass);
@@ -284,10 +280,10 @@ TEST(EngineKeywords, AnimTyposAreErrorsWithTheNearestOption) {
   test::TempDir dir;
   ReadOptions skip;
   skip.skip_unknown = true;
-  const Deck d = read_deck(test::write_deck(dir, "", kRun + "/ANIM/ELEM/VONMM\n"), skip);
-  EXPECT_FALSE(d.model.run.anim.von_mises);
+  const Deck d = read_deck(test::write_deck(dir, "", kRun + "/ANIM/ELEM/HOURGG\n"), skip);
+  EXPECT_FALSE(d.model.run.anim.hourglass_energy);
   bool named = false;
-  for (const SkippedOption& o : d.report.skipped_options) named = named || contains(o.text(), "VONMM");
+  for (const SkippedOption& o : d.report.skipped_options) named = named || contains(o.text(), "HOURGG");
   EXPECT_TRUE(named);
 }
 

@@ -41,7 +41,6 @@ struct SelectiveMassControl {
 };
 
 struct FrameRequests {
-  bool von_mises = false;         // /ANIM/ELEM/VONM (also /ANIM/SHELL/..., /ANIM/BRICK/...)
   bool pressure = false;          // P
   bool energy_density = false;    // ENER: internal energy over element mass
   bool hourglass_energy = false;  // HOURG
@@ -67,7 +66,6 @@ struct RunControl {
   int history_format = 0;          // /TFILE/type: 1 binary, 2 coded ASCII, 3 ASCII, 4 IEEE 32-bit (0: no /TFILE)
   bool history_every_cycle() const { return history_format != 0 && history_interval == 0.0; }
   double anim_start = 0.0, anim_interval = 0.0;  // /ANIM/DT [T] (interval 0: no field output)
-  std::vector<std::string> anim_element_fields, anim_vector_fields, anim_nodal_fields;  // each once, upper case
   FrameRequests anim;
   bool anim_gzip = false;
   int anim_version = 0;           // /ANIM/VERS/n

@@ -29,7 +29,7 @@ using F = FrameRequests;
 constexpr std::array<AnimResult, 14> kElementResults{{
     {"EPSP", nullptr},  {"OFF", nullptr},   {"SIGX", nullptr},  {"SIGY", nullptr},
     {"SIGXY", nullptr}, {"THIC", nullptr, kShells}, {"SIGZ", nullptr, kBricks}, {"SIGYZ", nullptr, kBricks},
-    {"SIGZX", nullptr, kBricks}, {"VONM", &F::von_mises}, {"P", &F::pressure}, {"ENER", &F::energy_density},
+    {"SIGZX", nullptr, kBricks}, {"VONM", nullptr}, {"P", &F::pressure}, {"ENER", &F::energy_density},
     {"HOURG", &F::hourglass_energy}, {"DT", &F::time_step}}};
 constexpr std::array<AnimResult, 8> kVectorResults{{{"VEL", nullptr},
                                                     {"DISP", nullptr},
@@ -286,15 +286,14 @@ void request_result(CardReader& reader, DeckContext& context, std::span<const An
 }
 
 // /ANIM/ELEM/restype, /ANIM/VECT/restype, /ANIM/NODA/restype: each name kept once in `fields`.
-void read_anim_fields(CardReader& reader, DeckContext& context, std::vector<std::string>& fields,
-                      std::span<const AnimResult> results, std::span<const std::string_view> manual) {
+void read_anim_fields(CardReader& reader, DeckContext& context, std::span<const AnimResult> results,
+                      std::span<const std::string_view> manual) {
   const Card& card = reader.card();
   if (card.path.size() < 3 || card.path[2].empty())
     reader.fail("restype", fmt::format("{}/<result name>", path_prefix(card, 2)), "no result name");
   path_at_most(reader, 3);
   const std::string& name = card.path[2];
   reader.finish();
-  if (std::find(fields.begin(), fields.end(), name) == fields.end()) fields.push_back(name);
   request_result(reader, context, results, manual, name, kAllKinds);
 }
 
@@ -633,11 +632,8 @@ void read_dtix(CardReader& reader, DeckContext& context) {
 }  // namespace
 
 void register_engine_keywords(KeywordTable& table) {
-  auto fields = [](std::vector<std::string> RunControl::*member, std::span<const AnimResult> results,
-                   std::span<const std::string_view> manual) {
-    return [member, results, manual](CardReader& r, DeckContext& c) {
-      read_anim_fields(r, c, c.model.run.*member, results, manual);
-    };
+  auto fields = [](std::span<const AnimResult> results, std::span<const std::string_view> manual) {
+    return [results, manual](CardReader& r, DeckContext& c) { read_anim_fields(r, c, results, manual); };
   };
   const DeckPart E = DeckPart::Engine;
   table.push_back({"/RUN", E, read_run});
@@ -646,9 +642,9 @@ void register_engine_keywords(KeywordTable& table) {
   table.push_back({"/VERS", E, read_engine_version});
   table.push_back({"/TITLE", E, read_engine_title});
   table.push_back({"/ANIM/DT", E, read_anim_dt});
-  table.push_back({"/ANIM/ELEM", E, fields(&RunControl::anim_element_fields, kElementResults, kManualElementResults)});
-  table.push_back({"/ANIM/VECT", E, fields(&RunControl::anim_vector_fields, kVectorResults, kManualVectorResults)});
-  table.push_back({"/ANIM/NODA", E, fields(&RunControl::anim_nodal_fields, kNodalResults, kManualNodalResults)});
+  table.push_back({"/ANIM/ELEM", E, fields(kElementResults, kManualElementResults)});
+  table.push_back({"/ANIM/VECT", E, fields(kVectorResults, kManualVectorResults)});
+  table.push_back({"/ANIM/NODA", E, fields(kNodalResults, kManualNodalResults)});
   table.push_back({"/ANIM/SHELL", E, [](CardReader& r, DeckContext& c) { read_anim_kind(r, c, kShells); }});
   table.push_back({"/ANIM/BRICK", E, [](CardReader& r, DeckContext& c) { read_anim_kind(r, c, kBricks); }});
   table.push_back({"/ANIM/TENS", E, [](CardReader& r, DeckContext& c) { read_anim_tensor(r, c, 2, kAllKinds); }});
