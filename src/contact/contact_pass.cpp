@@ -279,12 +279,16 @@ void compute_pairs(ContactState& c, ContactInterface& in, const NodalState& node
       if (ps.mass_step > 0.0)
         in.node_reach_stiffness[i] += tangent_stiffness(k0, g, reach_penetration(g, p, penetration_rate, dt_estimate));
       in.node_friction_viscosity[i] += ct;
-      // What the pair gives its nodes' nodal step (time-step.md, T-4): its tangent stiffness. Under /DT/NODA/CST
+      // What the pair gives its nodes' nodal step (time-step.md, T-4): its tangent stiffness, or with viscous
+      // friction its dashpot over the last step where stiffer (T-4b; none at the first cycle). Under /DT/NODA/CST
       // the mass holds it (T-2) if the target step resolves the pair (its kinematic step above it), at most as stiff
       // as at half its gap (deeper the spring, and the mass, would grow without bound), with the friction's dashpot
       // over the target step where stiffer (T-4b; from the second cycle on, as the reference); the rest bounds the
       // step (T-3b).
-      double nodal = kt;
+      double nodal = c.interface_nodal_step && viscous_friction
+                         ? nodal_friction_stiffness(kt, k0, secant_stiffness(k0, g, p), in.friction_damping, mass,
+                                                    dt_previous)
+                         : kt;
       if (ps.nodal_mass_step > 0.0) {
         const double half = 0.5 * g;
         const bool resolved = scale * kinematic_step(g, p, penetration_rate) >= ps.nodal_mass_step;
@@ -380,6 +384,11 @@ void node_steps(ContactState& c, ContactInterface& in, NodalState& nodes, const 
       stiffness += entry;
       in.node_reach_stiffness[ui] += entry;
     }
+    // The interface nodal step holds the springs of a node that carries its own mass (T-4): no stiffness step here,
+    // unless an entry window counts pairs not yet in the gap, which that step does not see.
+    if (c.interface_nodal_step && ps.entry_window == 0.0 && !(body_mass > 0.0) &&
+        contact_mass(c, nodes, n) == nodes.mass[n])
+      continue;
     double node_step = scaled_stiffness_step(body_mass > 0.0 ? body_mass : scaled_mass(c, nodes, n), stiffness,
                                              viscosity, viss, ps.scale);
     if (!(ps.release_step > 0.0 && node_step < ps.release_step)) out.step_as_written.consider(node_step, pairs + ui);

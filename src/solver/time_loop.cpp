@@ -169,6 +169,7 @@ RunSummary run_engine_deck(const Model& m, const SolverOptions& options, RunObse
   setup_damping(m, s);
   const bool selective = selective_mass_on(m);
   if (!selective) s.selective_mass = SelectiveMassState{}, s.contact.selective_mass_added = nullptr;  // after one with it
+  s.contact.interface_nodal_step = interface_nodal_step_on(m);  // each engine deck: its /DT cards decide
   update_energies(m, s);  // for the listing's row of cycle 0
   observer.start(s, notes);
   RunEvents events;

@@ -120,6 +120,14 @@ PROBES = [
     # over the first two cycles; Crumple's T-4b, a fit of such probes, gives 1.394e-4 (-4.7 %).
     ("pair_noda_friction_mass", "pair --type7 0.1 --noda 0.9,2e-4 --fric 0.1 --visf 3 --time 0.0012 --print-every 1",
      1.2e-3, None, 0.0, "3.714e-5 (the tangent stiffness alone)", [("MA", 1.463e-4, 6.0)]),
+    # Without mass scaling a pair with viscous friction gives its nodes the larger of Kt and its dashpot over the last
+    # step (time-step.md, T-4b), and the nodal step holds the pair, not the node's own C-11 step: the second cycle's
+    # step of a 2 x 2 plate at rest barely inside the gap (a hundredth of it) and half into it, VisF 3. The row after
+    # the reference's second (Crumple prints the step that reached the row).
+    ("pair_friction_light", "pair --type7 0.1 --fric 0.1 --visf 3 --depth 0.099 --time 0.0005 --print-every 1",
+     3.581e-4, None, 0.0, "C-11's step with the dashpot", [("DT", 1.351e-4, 0.3)]),
+    ("pair_friction_half", "pair --type7 0.1 --fric 0.1 --visf 3 --time 0.0005 --print-every 1", 2.552e-4, None,
+     0.0, "4.44e-5 (C-11's step with the dashpot)", [("DT", 1.056e-4, 4.5)]),
     # A free 2 x 2 plate of 5 mm shells whose edge moves 0.1 mm along x over 0.1 ms, then stops: the plate rings
     # and the membrane damping dm settles it (shell4.md, S-9d). Its work is counted on the trapezoid (S-9e); counted
     # as the force times the rate it came from, the internal energy ran 8 to 39 % over the work done on the plate.

@@ -206,6 +206,11 @@ struct ContactState {
   // the solver before the pass (not owned; null without it). The pairs' and nodes' stiffness steps take it with the
   // node's mass, and leave out its elements, which the scaling holds at its step (docs/theory/time-step.md, SM-7).
   const std::vector<double>* selective_mass_added = nullptr;
+  // Set by the solver when the interface nodal step (docs/theory/time-step.md, T-4) bounds the cycle: each pair then
+  // gives its nodes the larger of its tangent stiffness and its viscous friction's (T-4b), and that step holds the
+  // nodes' contact springs in place of their stiffness step (C-11; not for a node whose springs push another mass,
+  // a rigid body's or a tie's, nor under an entry window, whose anticipated pairs are not in the gap yet).
+  bool interface_nodal_step = false;
   // Per node, for the interface nodal step (docs/theory/time-step.md, T-4; empty when it is off): the contact
   // stiffness of the cycle, Kt of its pairs as a secondary node plus w Kt of each pair on a segment it carries.
   std::vector<double> nodal_contact_stiffness;
