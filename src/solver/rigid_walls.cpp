@@ -97,9 +97,10 @@ bool holds_at(const RigidWall& w, const RigidWallState& st, std::size_t i, const
   double d = 0.0;
   if (!distance(w, st.origin, {n.x[k], n.y[k], n.z[k]}, d, normal)) return st.tied[i] != 0;
   const double vn = dot(velocity - wall_velocity, normal);
-  // Impenetrability at the end of the step: d + vn dt >= 0, without pulling a node that starts inside the wall
-  // back out in one step.
-  vn_new = d > 0.0 ? -d / dt_next : std::max(vn, 0.0);
+  // Impenetrability at the end of the step: a node that would cross the wall stops where it is (it ends the step
+  // at its distance d >= 0, as the reference's nodes do), without pulling a node that starts inside the wall back
+  // out in one step.
+  vn_new = d > 0.0 ? 0.0 : std::max(vn, 0.0);
   // A node inside the wall that moves out of it is left alone: held, it would only carry the wall's velocity, and a
   // light moving wall's exchange would then pull it along (eq. RW-1).
   if (d <= 0.0 && vn >= 0.0) return st.tied[i] != 0;
