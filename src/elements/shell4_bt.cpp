@@ -54,8 +54,8 @@ double hourglass_yield_stress(const ShellGroupParameters& p, const ShellState& s
 shell_hourglass::HourglassYieldCheck qeph_yield_check(const ShellGroupParameters& p, const ShellState& state,
                                                       std::size_t first, const shell_section::Update& section,
                                                       const shell_hourglass::ShapeTensor& H, double area, double t,
-                                                      const double* hq, const double (&increment)[5],
-                                                      const double (&rates)[5]) {
+                                                      const double* hq, const double (&increment)[kShellHourglassModes],
+                                                      const double (&rates)[kShellHourglassModes]) {
   shell_hourglass::HourglassYieldCheck check;
   if (section.min_tangent_ratio >= 1.0) check.yield = hourglass_yield_stress(p, state, first);
   check.mean_ratio = section.tangent_ratio, check.min_ratio = section.min_tangent_ratio;
@@ -248,8 +248,9 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
     // triangle has none.
     double gamma[NN] = {};
     double* hq = nullptr;
-    double damping[5] = {0, 0, 0, 0, 0};                  // viscous hourglass forces of the cycle (Ishell 24)
-    double shear_moment_x[NN] = {}, shear_moment_y[NN] = {};  // rotation coefficients of the shear mode (eq. S-13)
+    double damping[kShellHourglassModes] = {};            // viscous hourglass forces of the cycle (Ishell 24)
+    double shear_moment_x[NN] = {}, shear_moment_y[NN] = {};  // rotation coefficients of the shear modes' sum (S-13)
+    double split_moment_x[NN] = {}, split_moment_y[NN] = {};  // and of their difference (eq. S-13a)
     double rotation_damping_x[NN] = {}, rotation_damping_y[NN] = {};  // Ishell 1 to 3 rotation modes (S-18b, S-19)
     double warping = 0.0;  // Ishell 3 and 24: warping height W of eq. S-18a [L]
     double hourglass_work = 0.0;  // dissipated in the hourglass modes
@@ -258,7 +259,7 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
       shell_hourglass::hourglass_vector(lx, ly, b1, b2, p.orthogonal_hourglass, gamma);
       double bb = 0.0;
       for (int a = 0; a < 4; ++a) bb += b1[a] * b1[a] + b2[a] * b2[a];
-      double rates[5] = {0, 0, 0, 0, 0};
+      double rates[kShellHourglassModes] = {};
       for (int a = 0; a < 4; ++a) {
         rates[0] += gamma[a] * vx[a];
         rates[1] += gamma[a] * vy[a];
@@ -274,39 +275,44 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
         warping = shell_hourglass::warping_height(gamma, z);
         rates[0] += warping * slope_x, rates[1] += warping * slope_y;
       }
-      hq = &state.hourglass[ue * 5];
+      hq = &state.hourglass[ue * kShellHourglassModes];
       if (p.physical_hourglass) {
         // Ishell 24: stiffness of the assumed-strain field of each mode (eqs. S-10 to S-14). Membrane modes as
         // in-plane bending A11 t H q, rotation modes as plate bending (A11 t^3 / 12) H on (q_ry, -q_rx), the
-        // transverse mode as shear on the part of the bilinear w that the rotations do not explain.
+        // transverse modes as the shears gamma_xz varying along y and gamma_yz varying along x (S-13, S-13a).
         const shell_hourglass::ShapeTensor H = shell_hourglass::shape_tensor(lx, ly, area);
-        double cx[4], cy[4];
-        shell_hourglass::shear_rotation_coefficients(shell_hourglass::quadratic_moments(gamma, lx, ly), b1, b2, cx, cy);
-        for (int a = 0; a < 4; ++a) rates[2] += cx[a] * tx[a] + cy[a] * ty[a];
+        const shell_hourglass::QuadraticMoments g = shell_hourglass::quadratic_moments(gamma, lx, ly);
+        double cx[4], cy[4], dx[4], dy[4];
+        shell_hourglass::shear_rotation_coefficients(g, b1, b2, cx, cy);
+        shell_hourglass::shear_split_coefficients(g, b1, b2, dx, dy);
+        double split = 0.0;
+        for (int a = 0; a < 4; ++a) rates[2] += cx[a] * tx[a] + cy[a] * ty[a], split += dx[a] * tx[a] + dy[a] * ty[a];
+        rates[5] = rates[2] - split, rates[2] += split;
         // The plane-stress modulus E / (1 - nu^2) of the section (eq. S-11).
         const double a11 = E / (1.0 - nu * nu);
         const double membrane = a11 * t, plate = a11 * t * t * t / 12.0;
-        const double shear = p.shear_factor * G * t * (H.xx + H.yy);
-        const double increment[5] = {
+        const double shear = p.shear_factor * G * t;
+        const double increment[kShellHourglassModes] = {
             membrane * (H.xx * rates[0] + H.xy * rates[1]) * dt, membrane * (H.xy * rates[0] + H.yy * rates[1]) * dt,
-            shear * rates[2] * dt, -plate * (H.xy * rates[4] - H.yy * rates[3]) * dt,
-            plate * (H.xx * rates[4] - H.xy * rates[3]) * dt};
+            shear * H.xx * rates[2] * dt, -plate * (H.xy * rates[4] - H.yy * rates[3]) * dt,
+            plate * (H.xx * rates[4] - H.xy * rates[3]) * dt, shear * H.yy * rates[5] * dt};
         // The elastic-plastic hourglass (eq. S-12): a yielding section keeps part of the elastic increment.
         const shell_hourglass::HourglassKept kept =
             p.hardening.plastic()
                 ? shell_hourglass::qeph_hourglass_kept(qeph_yield_check(p, state, first, section, H, area, t, hq, increment, rates))
                 : shell_hourglass::HourglassKept{};
-        const double keep[5] = {kept.membrane, kept.membrane, 1.0, kept.bending, kept.bending};
+        const double keep[kShellHourglassModes] = {kept.membrane, kept.membrane, 1.0, kept.bending, kept.bending, 1.0};
         // Numerical damping dn: the elastic increment over the element's own transit time, not stored (eq. S-14).
         const double viscous = dt > 0.0 ? p.numerical_damping * step / dt : 0.0;
-        for (int m = 0; m < 5; ++m) {
+        for (std::size_t m = 0; m < kShellHourglassModes; ++m) {
           const double old = hq[m];
           hq[m] += keep[m] * increment[m];
           hourglass_stored += 0.5 * (old + hq[m]) * rates[m] * dt;
           damping[m] = viscous * increment[m];
           hourglass_work += shell_section::viscous_work(last_viscous[3 + m], damping[m], rates[m], dt);  // eq. S-9e
         }
-        for (int a = 0; a < 4; ++a) shear_moment_x[a] = cx[a], shear_moment_y[a] = cy[a];
+        for (int a = 0; a < 4; ++a)
+          shear_moment_x[a] = cx[a], shear_moment_y[a] = cy[a], split_moment_x[a] = dx[a], split_moment_y[a] = dy[a];
       } else {
         // Each coefficient is the fraction of the element's own stiffness for the matching deformation:
         // membrane E t A |B|^2, bending D A |B|^4 for the transverse mode; the rotation modes have none (below).
@@ -337,12 +343,13 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
       double mx = area * (-b2[a] * myy - b1[a] * mxy - mean * qy);
       double my = area * (b1[a] * mxx + b2[a] * mxy + mean * qx);
       if constexpr (NN == 4) {
-        const double q[5] = {hq[0] + damping[0], hq[1] + damping[1], hq[2] + damping[2], hq[3] + damping[3],
-                             hq[4] + damping[4]};
+        double q[kShellHourglassModes];
+        for (std::size_t m = 0; m < kShellHourglassModes; ++m) q[m] = hq[m] + damping[m];
+        const double shear_sum = q[2] + q[5], shear_difference = q[2] - q[5];  // the two shear modes (S-13a)
         fx += gamma[a] * q[0], fy += gamma[a] * q[1];
-        fz += gamma[a] * q[2] + warping * (b1[a] * q[0] + b2[a] * q[1]);  // eq. S-18a's transverse part
-        mx += gamma[a] * q[3] + shear_moment_x[a] * q[2] + rotation_damping_x[a];
-        my += gamma[a] * q[4] + shear_moment_y[a] * q[2] + rotation_damping_y[a];
+        fz += gamma[a] * shear_sum + warping * (b1[a] * q[0] + b2[a] * q[1]);  // eq. S-18a's transverse part
+        mx += gamma[a] * q[3] + shear_moment_x[a] * shear_sum + split_moment_x[a] * shear_difference + rotation_damping_x[a];
+        my += gamma[a] * q[4] + shear_moment_y[a] * shear_sum + split_moment_y[a] * shear_difference + rotation_damping_y[a];
       }
       if constexpr (NN == 3) shell_section::add_linked_shear_moments(lx, ly, b1, b2, qx, qy, area, a, mx, my);
       const Vec3 force{fx * e1.x + fy * e2.x + fz * e3.x, fx * e1.y + fy * e2.y + fz * e3.y,
@@ -383,25 +390,32 @@ namespace {
 // The margin the shear mode keeps over the step it must hold (eq. S-8a): stable at 1.05 times the scaled step.
 constexpr double kShearModeMargin = 1.05;
 
-// The Ishell 24 transverse-shear hourglass mode (eq. S-13) moves the deflections with gamma and the rotations with
-// cx, cy, which grow with the element's long side: on a sliver (aspect ratio 1000) its frequency on the
-// reference inertia is twice what the element step holds. Its rank-one stiffness k q q^T, k = kappa G t (H_xx +
-// H_yy), over the lumped masses m / 4 and inertias (m / 4) X gives omega^2 = k (4 / m) (sum gamma^2 + sum (cx^2 +
-// cy^2) / X) <= (2 / step)^2 for X at least the returned share (eq. S-8b); 0 when it holds for any X.
+// The Ishell 24 transverse-shear hourglass modes (eqs. S-13, S-13a) move the deflections with gamma and the rotations
+// with c + d and c - d, which grow with the element's long side: on a sliver (aspect ratio 1000) their frequency on
+// the reference inertia is twice what the element step holds. Their stiffness k (H_xx r1 r1^T + H_yy r2 r2^T),
+// k = kappa G t, over the lumped masses m / 4 and inertias (m / 4) X gives, summing the two rank-one bounds,
+// omega^2 <= k (4 / m) sum_modes H_m (sum gamma^2 + sum c_m^2 / X) <= (2 / step)^2 for X at least the returned share
+// (eq. S-8b); 0 when it holds for any X.
 double hourglass_shear_share(const ShellGroupParameters& p, const double (&lx)[4], const double (&ly)[4], double area,
                              double step, double shear_speed2) {
   double b1[4], b2[4], gamma[4];
   for (int a = 0; a < 4; ++a)
     b1[a] = (ly[(a + 1) % 4] - ly[(a + 3) % 4]) / (2.0 * area), b2[a] = (lx[(a + 3) % 4] - lx[(a + 1) % 4]) / (2.0 * area);
   shell_hourglass::hourglass_vector(lx, ly, b1, b2, p.orthogonal_hourglass, gamma);
-  double cx[4], cy[4];
-  shell_hourglass::shear_rotation_coefficients(shell_hourglass::quadratic_moments(gamma, lx, ly), b1, b2, cx, cy);
-  double deflection = 0.0, rotation = 0.0;
-  for (int a = 0; a < 4; ++a) deflection += gamma[a] * gamma[a], rotation += cx[a] * cx[a] + cy[a] * cy[a];
+  const shell_hourglass::QuadraticMoments g = shell_hourglass::quadratic_moments(gamma, lx, ly);
+  double cx[4], cy[4], dx[4], dy[4];
+  shell_hourglass::shear_rotation_coefficients(g, b1, b2, cx, cy);
+  shell_hourglass::shear_split_coefficients(g, b1, b2, dx, dy);
+  double deflection = 0.0, rotation_1 = 0.0, rotation_2 = 0.0;
+  for (int a = 0; a < 4; ++a) {
+    deflection += gamma[a] * gamma[a];
+    rotation_1 += (cx[a] + dx[a]) * (cx[a] + dx[a]) + (cy[a] + dy[a]) * (cy[a] + dy[a]);
+    rotation_2 += (cx[a] - dx[a]) * (cx[a] - dx[a]) + (cy[a] - dy[a]) * (cy[a] - dy[a]);
+  }
   const shell_hourglass::ShapeTensor H = shell_hourglass::shape_tensor(lx, ly, area);
-  // (4 / step^2) (m / 4) / k with m / k = rho A / (kappa G (H_xx + H_yy)) per unit thickness.
-  const double room = 4.0 / (step * step) * area / (4.0 * shear_speed2 * (H.xx + H.yy)) - deflection;
-  return room > 0.0 ? rotation / room : 0.0;  // room <= 0: the deflection alone is too fast, which X cannot mend
+  // (4 / step^2) (m / 4) / k with m / k = rho A / (kappa G) per unit thickness.
+  const double room = 4.0 / (step * step) * area / (4.0 * shear_speed2) - (H.xx + H.yy) * deflection;
+  return room > 0.0 ? (H.xx * rotation_1 + H.yy * rotation_2) / room : 0.0;  // room <= 0: X cannot mend it
 }
 
 template <int NN>

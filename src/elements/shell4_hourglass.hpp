@@ -100,6 +100,14 @@ inline void shear_rotation_coefficients(const QuadraticMoments& g, const double 
   }
 }
 
+// The transverse-shear hourglass split in its two assumed-strain modes (eq. S-13a): the shear gamma_xz varying
+// along y and gamma_yz varying along x have the rates q_s + D and q_s - D, with D = (theta_x,x + theta_y,y) g_xy / 2,
+// the part of the rotations' gradient no Kirchhoff field has. The coefficients of the nodal rotations in D.
+inline void shear_split_coefficients(const QuadraticMoments& g, const double b1[4], const double b2[4], double dx[4],
+                                     double dy[4]) {
+  for (int a = 0; a < 4; ++a) dx[a] = 0.5 * g.xy * b1[a], dy[a] = 0.5 * g.xy * b2[a];
+}
+
 // The QEPH shell's elastic-plastic hourglass (docs/theory/shell4.md, eq. S-12): the fractions of the elastic
 // increment of the membrane and of the rotation (bending) hourglass stresses an element keeps in the cycle. The
 // transverse-shear mode always keeps all of it.

@@ -14,6 +14,9 @@ can be compared. Kinds:
              the sheet rings, and what damps it and how its work is counted shows (shell4.md, S-9d, S-9e).
   pair       a free plate of side --top at --depth over a free 5 x 5 plate, inside a TYPE7 gap --type7: the first
              cycle's step is the interface nodal step's (docs/theory/time-step.md, T-4).
+  held       one element, every degree of freedom held but those --held names (node:DOF[:sign], nodes 1 to 4 of
+             the 1 x 1 mesh, e.g. "1:XX,1:YY"), each driven at sign times --speed: the energy is the element's
+             stiffness on exactly those degrees of freedom (docs/theory/shell4.md, S-13a).
 
 --tria splits each quadrilateral on its 1-3 diagonal into two 3-node shells. --law 1 is elastic steel, --law 2
 Johnson-Cook steel (a 0.21, b 0.45, n 0.45, the shared rails' sheet), --law 36 /MAT/PLAS_TAB yielding at 2 GPa. --skew s moves the free corner nodes of
@@ -221,6 +224,22 @@ ramp to 1 over the rise time, then held
         else:
             text += impvel(1, 1, "X", 2, -a.speed)
             text += "/BCS/2\ntip guide\n   011 111         0         2\n"
+    elif a.kind == "held":
+        drives = [(int(t.split(":")[0]), t.split(":")[1].upper(), float(t.split(":")[2]) if t.count(":") > 1 else 1.0)
+                  for t in a.held.split(",")]
+        driven = sorted({n for n, _, _ in drives})
+        held = [n for n in quads[0] if n not in driven]
+        if held:
+            text += grnod(1, "held", held) + "/BCS/1\nheld\n   111 111         0         1\n"
+        k = 0
+        for n in driven:  # the node's other degrees of freedom held (a blank /IMPVEL scale would mean 1)
+            dofs = {d: sign for m, d, sign in drives if m == n}
+            code = "".join("0" if d in dofs else "1" for d in ("X", "Y", "Z")) + " " + \
+                "".join("0" if d in dofs else "1" for d in ("XX", "YY", "ZZ"))
+            text += grnod(10 + n, f"node {n}", [n]) + f"/BCS/{10 + n}\nnode {n}\n   {code}{ints([0, 10 + n])}\n"
+            for d, sign in dofs.items():
+                k += 1
+                text += impvel(k, 1, d, 10 + n, sign * a.speed)
     else:
         direction, signs = MODES[a.mode]
         for k, (nid, s) in enumerate(zip(quads[0], signs)):
@@ -233,7 +252,7 @@ ramp to 1 over the rise time, then held
 
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("kind", choices=["strip", "mode", "fold", "pair", "edge"])
+    p.add_argument("kind", choices=["strip", "mode", "fold", "pair", "edge", "held"])
     p.add_argument("--out", required=True)
     p.add_argument("--nx", type=int, default=10)
     p.add_argument("--ny", type=int, default=2)
@@ -269,9 +288,10 @@ def main():
     p.add_argument("--fric", type=float, default=0.0, help="the TYPE7's Coulomb friction (kind pair)")
     p.add_argument("--visf", type=float, default=0.0, help="the TYPE7's VisF, blank 1 (kind pair)")
     p.add_argument("--noda", default="", help="/DT/NODA/CST scale,dtmin in the engine deck")
+    p.add_argument("--held", default="1:YY", help="the driven degrees of freedom, node:DOF[:sign],... (kind held)")
     p.add_argument("note", nargs="*")
     a = p.parse_args()
-    if a.kind == "mode":
+    if a.kind in ("mode", "held"):
         a.nx = a.ny = 1
         a.length = a.width = a.length if a.length != 50.0 else 5.0
     starter, engine = build_pair(a) if a.kind == "pair" else build(a)

@@ -12,8 +12,11 @@
 
 namespace crumple {
 
-// Viscous forces a shell keeps from one cycle to the next (ShellState::viscous): 3 membrane, 5 hourglass.
-inline constexpr std::size_t kShellViscousForces = 8;
+// Hourglass generalized stresses per 4-node shell (ShellState::hourglass): membrane x, y, the transverse shear
+// varying along y, rotations x, y, the transverse shear varying along x (docs/theory/shell4.md, S-5, S-11, S-13).
+inline constexpr std::size_t kShellHourglassModes = 6;
+// Viscous forces a shell keeps from one cycle to the next (ShellState::viscous): 3 membrane, 6 hourglass.
+inline constexpr std::size_t kShellViscousForces = 3 + kShellHourglassModes;
 
 struct ShellState : ElementKindState {  // points: through thickness
   // Per through-thickness point, in the element's co-rotational frame [stress]; stored in point_real (double, or
@@ -26,14 +29,14 @@ struct ShellState : ElementKindState {  // points: through thickness
   std::vector<double> qx, qy;           // transverse shear resultants (per unit length) [M T^-2]
   std::vector<double> thickness;        // current thickness [L]
   std::vector<double> bending_stress;   // 6 M / t^2 (xx, yy, xy) per element of N = 0 groups; empty if none [stress]
-  std::vector<double> hourglass;        // 5 hourglass generalized stresses per element (membrane x, y, w, rx, ry)
+  std::vector<double> hourglass;        // kShellHourglassModes hourglass generalized stresses per element
   std::vector<double> initial_length;   // characteristic length of the first cycle (Ismstr 1, 3) [L]
   std::vector<double> initial_shape;    // local x then y of the nodes of the reference shape (small strain) [L]
   std::vector<std::uint8_t> small_strain;  // 1 once an Ismstr 2 element runs on its frozen shape (eq. S-16)
   std::vector<double> gauss_shear;      // Ishell 12: Qx, Qy at each of the 4 Gauss points; empty if none [M T^-2]
   std::vector<double> gauss_bending;    // Ishell 12, N = 0: 6 M / t^2 (xx, yy, xy) at each Gauss point [stress]
   // The last cycle's viscous forces, whose work is counted on the trapezoid (docs/theory/shell4.md, eq. S-9e):
-  // dm's membrane resultants (xx, yy, xy) [M T^-2], then Ishell 24's five dn hourglass forces, per element. In
+  // dm's membrane resultants (xx, yy, xy) [M T^-2], then Ishell 24's six dn hourglass forces, per element. In
   // single precision: they only weigh the previous cycle's half of a damping work (a relative 6e-8 of it).
   std::vector<float> viscous;
 
@@ -42,7 +45,7 @@ struct ShellState : ElementKindState {  // points: through thickness
     resize_common(n);
     for (auto* v : {&qx, &qy, &initial_length}) v->assign(n, 0.0);
     thickness.assign(n, initial_thickness);
-    hourglass.assign(5 * n, 0.0);
+    hourglass.assign(kShellHourglassModes * n, 0.0);
     viscous.assign(kShellViscousForces * n, 0.0f);
     small_strain.assign(n, 0);
   }
