@@ -60,13 +60,13 @@ PROBES = [
     # One element, every degree of freedom held but the driven ones, driven slowly (0.5 ms): the energy is the
     # element's own stiffness on them (shell4.md, S-13a; measured 2026-12-07). A corner node turned about the
     # element's diagonal is resisted only by the second transverse-shear mode; with one mode (before S-13a) the
-    # same decks driven ten times faster gave -22 %, -9.8 % and -10.9 %.
+    # same decks gave -23.1 %, -11.0 % and -12.1 % (build of 2026-12-07 morning).
     ("qeph_held_corner_both", "held --held 1:XX,1:YY --speed 0.1 --time 0.5", 0.46, 0.3814, 1.0,
-     "-22 % with one transverse-shear mode", []),
+     "0.2934 (-23.1 %) with one transverse-shear mode", []),
     ("qeph_held_corner_y", "held --held 1:YY --speed 0.1 --time 0.5", 0.46, 0.1996, 1.0,
-     "-9.8 % with one transverse-shear mode", []),
+     "0.1777 (-11.0 %)", []),
     ("qeph_held_side_y", "held --held 1:YY,2:YY --speed 0.1 --time 0.5", 0.46, 0.7256, 1.0,
-     "-10.9 % with one transverse-shear mode", []),
+     "0.6379 (-12.1 %)", []),
     ("qeph_held_w_hourglass", "held --held 1:Z,2:Z:-1,4:Z,3:Z:-1 --speed 0.01 --time 0.5", 0.46, 2.255e-3, 1.0,
      "the w pattern's two modes together", []),
     ("qeph_strip_dm", "strip --law 2 --speed 20 --dm 0.05", 0.9624, 0.6233, 2.5, "refused",
