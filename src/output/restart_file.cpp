@@ -21,8 +21,8 @@ using hdf5::Handle;
 using hdf5::H5Types;
 
 // 2: marks/deleted_inverted and marks/step_drop_warned; 3: shells' hardening_term; 4: springs and /DAMP's alpha;
-// 6: trusses and beams
-constexpr int kRestartFormat = 7;
+// 6: trusses and beams; 8: six hourglass stresses per 4-node shell (kShellHourglassModes, docs/theory/shell4.md S-13a)
+constexpr int kRestartFormat = 8;
 
 // The counts a snapshot's arrays are sized by; a restart file is read only by a model with the same counts.
 std::array<long long, 9> model_counts(const Model& m, const SolverState& s) {
