@@ -280,7 +280,7 @@ def main():
     p.add_argument("--dtscale", type=float, default=0)
     p.add_argument("--type7", type=float, default=0.0, help="a TYPE7 self contact of the sheet with this Gapmin [mm]")
     p.add_argument("--imperfection", type=float, default=0.0, help="mm: a half sine out of the plane along x")
-    p.add_argument("--corners", default="", help="one element's corners, x,y,z;x,y,z;x,y,z;x,y,z (kind mode)")
+    p.add_argument("--corners", default="", help="one element's corners, x,y,z;x,y,z;x,y,z;x,y,z (kinds mode, held)")
     p.add_argument("--top", type=float, default=2.0, help="mm: the upper plate's side (kind pair)")
     p.add_argument("--centre", type=float, default=2.5, help="mm: the upper plate's centre, x = y (kind pair)")
     p.add_argument("--depth", type=float, default=0.05, help="mm: the upper plate's height (kind pair)")
