@@ -335,6 +335,12 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
       }
     }
 
+    // The hourglass forces of the cycle, stored plus viscous, and the two shear modes' sum and difference (S-13a).
+    double q[kShellHourglassModes] = {};
+    if constexpr (NN == 4)
+      for (std::size_t m = 0; m < kShellHourglassModes; ++m) q[m] = hq[m] + damping[m];
+    const double shear_sum = q[2] + q[5], shear_difference = q[2] - q[5];
+
     // Nodal forces and moments in the element frame (eq. S-7), back to global, subtracted.
     for (int a = 0; a < NN; ++a) {
       double fx = area * (b1[a] * nxx + b2[a] * nxy);
@@ -343,9 +349,6 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
       double mx = area * (-b2[a] * myy - b1[a] * mxy - mean * qy);
       double my = area * (b1[a] * mxx + b2[a] * mxy + mean * qx);
       if constexpr (NN == 4) {
-        double q[kShellHourglassModes];
-        for (std::size_t m = 0; m < kShellHourglassModes; ++m) q[m] = hq[m] + damping[m];
-        const double shear_sum = q[2] + q[5], shear_difference = q[2] - q[5];  // the two shear modes (S-13a)
         fx += gamma[a] * q[0], fy += gamma[a] * q[1];
         fz += gamma[a] * shear_sum + warping * (b1[a] * q[0] + b2[a] * q[1]);  // eq. S-18a's transverse part
         mx += gamma[a] * q[3] + shear_moment_x[a] * shear_sum + split_moment_x[a] * shear_difference + rotation_damping_x[a];
