@@ -65,11 +65,11 @@ constexpr Evaluator<P> kPart[] = {
     {"HE", scalar<P, &P::he>},   {"XCG", component<P, &P::cg, 0>}, {"YCG", component<P, &P::cg, 1>},
     {"ZCG", component<P, &P::cg, 2>}, {"RKE", scalar<P, &P::rke>}};
 
-struct ShellValues {
+struct ShellHistoryValues {
   Vec3 n, m;
   double q1, q2, off, thickness, eps_lower, eps_upper, eps_rate;
 };
-using S = ShellValues;
+using S = ShellHistoryValues;
 constexpr Evaluator<S> kShell[] = {
     {"F1", component<S, &S::n, 0>}, {"F2", component<S, &S::n, 1>}, {"F12", component<S, &S::n, 2>},
     {"Q1", scalar<S, &S::q1>},      {"Q2", scalar<S, &S::q2>},      {"M1", component<S, &S::m, 0>},
@@ -290,7 +290,7 @@ NodeValues in_skew(NodeValues values, const SolverState& s, std::int32_t skew) {
 }
 
 // ---- Element values.
-ShellValues shell_values(const Model& m, const SolverState& s, ElementKind kind, std::size_t group, std::int32_t e) {
+ShellHistoryValues shell_values(const Model& m, const SolverState& s, ElementKind kind, std::size_t group, std::int32_t e) {
   const ShellState& state = shell_state(s, kind);
   const ShellElementOutput o = shell_element_output(s.shell_groups[group], state, m.element_groups[group], e);
   const auto ue = static_cast<std::size_t>(e);

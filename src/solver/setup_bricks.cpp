@@ -9,7 +9,7 @@ namespace crumple::solver {
 namespace {
 
 // Radioss defaults of /PROP/SOLID (docs/cards/starter-model.md, section 8).
-constexpr double kDefaultHourglass = 0.1;  // viscous hourglass coefficient, Isolid 1 and 2
+constexpr double kDefaultBrickHourglass = 0.1;  // viscous hourglass coefficient, Isolid 1 and 2
 constexpr double kDefaultDamping = 0.1;    // numerical damping dn of Isolid 24 (the reference listing prints it)
 
 }  // namespace
@@ -37,7 +37,7 @@ void setup_bricks(const Model& m, SolverState& s) {
     p.ismstr = f.ismstr;
     p.corotational = f.iframe == 2;
     p.qa = prop.solid.qa_or_default(), p.qb = prop.solid.qb_or_default();
-    p.hourglass = prop.solid.h > 0.0 ? prop.solid.h : kDefaultHourglass;
+    p.hourglass = prop.solid.h > 0.0 ? prop.solid.h : kDefaultBrickHourglass;
     p.numerical_damping = prop.solid.dn > 0.0 ? prop.solid.dn : kDefaultDamping;
     p.failure_strain = p.hardening.failure_strain() >= 1e20 ? 0.0 : p.hardening.failure_strain();
     p.first_point = total_points;
