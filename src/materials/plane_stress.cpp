@@ -122,14 +122,15 @@ PlaneStressResult plane_stress_radial_return(const PlaneStressElastic& el, const
                                              double deyy, double dgxy, double rate, double eps_p, double& sxx,
                                              double& syy, double& sxy, point_real* kept_term) {
   const double E = el.young, nu = el.poisson;
-  const double G = E / (2.0 * (1.0 + nu));
   const Predictor pr = predict(el, hardening, dexx, deyy, dgxy, rate, eps_p, sxx, syy, sxy, kept_term);
   PlaneStressResult result = pr.elastic;
   if (!pr.plastic) return result;
   const double txx = sxx, tyy = syy, txy = sxy, old_sum = pr.old_sum, trial = pr.trial;
   const bool kept = pr.kept;
-  // PS-5: f(d) = trial - 3 G d - sigma_y(eps_p + d) = 0, decreasing in d; Newton from d = 0, safeguarded.
-  double d = 0.0, lo = 0.0, hi = trial / (3.0 * G);
+  // PS-5: f(d) = trial - H_r d - sigma_y(eps_p + d) = 0, decreasing in d; Newton from d = 0, safeguarded. H_r is E
+  // (law 2: in uniaxial stress d is the inelastic strain) or the three-dimensional return's 3 G (law 36).
+  const double modulus = hardening.uniaxial_radial_return() ? E : 3.0 * E / (2.0 * (1.0 + nu));
+  double d = 0.0, lo = 0.0, hi = trial / modulus;
   // The last strain the hardening was evaluated at and its term: when the iteration ends on the residual there,
   // the kept term needs no second power. The first step, at eps_p itself, takes the kept term: no power at all.
   double evaluated = -1.0, evaluated_term = 0.0;
@@ -146,10 +147,10 @@ PlaneStressResult plane_stress_radial_return(const PlaneStressElastic& el, const
     if (kept && evaluated >= Hardening::kSlopeFloor &&
         !(based && std::abs(evaluated - base.eps_p) <= Hardening::kSeriesReach * base.eps_p))
       base = {evaluated, evaluated_term, 1.0 / evaluated}, based = true;
-    const double f = trial - 3.0 * G * d - yield;
+    const double f = trial - modulus * d - yield;
     if (std::abs(f) <= 1e-12 * yield) break;
     if (f > 0.0) lo = d; else hi = d;
-    double next = d + f / (3.0 * G + std::max(slope, 0.0));
+    double next = d + f / (modulus + std::max(slope, 0.0));
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
     if (std::abs(next - d) <= 1e-14 * next) {
       d = next;
@@ -157,7 +158,7 @@ PlaneStressResult plane_stress_radial_return(const PlaneStressElastic& el, const
     }
     d = next;
   }
-  const double scale = (trial - 3.0 * G * d) / trial;
+  const double scale = (trial - modulus * d) / trial;
   sxx = txx * scale, syy = tyy * scale, sxy = txy * scale;
   result.plastic_strain_increment = d;
   if (kept)

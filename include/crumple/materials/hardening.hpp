@@ -18,6 +18,10 @@ struct Hardening {
   static Hardening of(const Material& material, const std::vector<Function>& functions);
 
   bool plastic() const { return law != MaterialLaw::Elastic; }
+  // The modulus that turns a shell point's excess of trial stress into plastic strain in the radial return (eq.
+  // PS-5): Young's modulus for law 2, whose plastic strain is then the inelastic strain of a uniaxial test, 3 G for
+  // law 36, the three-dimensional return's. The reference does so (measured on one element, materials.md).
+  bool uniaxial_radial_return() const { return law == MaterialLaw::JohnsonCook; }
   // Flow stress sigma_y(eps_p, eps_rate) [stress]; eps_rate is the equivalent strain rate [1/T] (>= 0).
   double yield(double eps_p, double eps_rate) const;
   // d sigma_y / d eps_p at fixed rate (for the return mapping's Newton iteration).
