@@ -89,8 +89,8 @@ void move_body_with_main_node(SolverState& s, RigidBodyState& b, const Vec3& cha
 }
 
 // Whether the wall moving at `wall_velocity` holds node k moving at `velocity` over the step (eq. RW-1): it would
-// cross the wall, or it already touches a tied wall. Gives the normal and the normal velocity relative to the wall
-// it ends with.
+// cross the wall, or it is tied to it and does not pull away. Gives the normal and the normal velocity relative to
+// the wall it ends with.
 bool holds_at(const RigidWall& w, const RigidWallState& st, std::size_t i, const NodalState& n, const Vec3& velocity,
               const Vec3& wall_velocity, double dt_next, Vec3& normal, double& vn_new) {
   const auto k = static_cast<std::size_t>(st.nodes[i]);
@@ -101,10 +101,12 @@ bool holds_at(const RigidWall& w, const RigidWallState& st, std::size_t i, const
   // at its distance d >= 0, as the reference's nodes do), without pulling a node that starts inside the wall back
   // out in one step.
   vn_new = d > 0.0 ? 0.0 : std::max(vn, 0.0);
+  // A tied node stays while it presses on the wall or slides along it, and leaves when it pulls away (eq. RW-1a).
+  if (st.tied[i] != 0) return vn <= 0.0;
   // A node inside the wall that moves out of it is left alone: held, it would only carry the wall's velocity, and a
   // light moving wall's exchange would then pull it along (eq. RW-1).
-  if (d <= 0.0 && vn >= 0.0) return st.tied[i] != 0;
-  return st.tied[i] != 0 || d + vn * dt_next < 0.0;
+  if (d <= 0.0 && vn >= 0.0) return false;
+  return d + vn * dt_next < 0.0;
 }
 
 bool holds(const RigidWall& w, const RigidWallState& st, std::size_t i, const NodalState& n, const Vec3& wall_velocity,
@@ -265,7 +267,10 @@ void apply_rigid_walls(const Model& m, SolverState& s, double dt_average, double
       if (!s.domain.is_local(k)) continue;
       Vec3 normal{};
       double vn_new = 0.0;
-      if (!holds(w, st, i, n, wall_velocity, dt_next, normal, vn_new)) continue;
+      if (!holds(w, st, i, n, wall_velocity, dt_next, normal, vn_new)) {
+        st.tied[i] = 0;  // a tied node that pulls away is free until it touches again (eq. RW-1a)
+        continue;
+      }
       const Vec3 before = node_velocity(n, k);
       const Vec3 rel = before - wall_velocity;
       Vec3 v = wall_velocity;  // tied
