@@ -134,17 +134,6 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
       continue;
     }
     const Vec3 e1 = frame.e1, e2 = frame.e2, e3 = frame.e3, centre = frame.centre;
-    // Ishell 24: each node turns the element about the axes of its own corner's plane; its rotation about the
-    // corner's normal is a drilling one the element does not see (eq. S-1a). The other kinds take the frame's.
-    const bool corner_planes = NN == 4 && p.physical_hourglass;
-    Vec3 corner_normal[NN];
-    if (corner_planes)
-      for (int a = 0; a < NN; ++a) {
-        const Vec3 n_a = cross(x[(a + 1) % NN] - x[a], x[(a + NN - 1) % NN] - x[a]);
-        const double length = std::sqrt(dot(n_a, n_a));
-        corner_normal[a] = length > 0.0 ? scaled(n_a, 1.0 / length) : e3;
-        w[a] = w[a] - scaled(corner_normal[a], dot(w[a], corner_normal[a]));
-      }
     double lx[NN], ly[NN], vx[NN], vy[NN], vz[NN], tx[NN], ty[NN];
     for (int a = 0; a < NN; ++a) {
       const Vec3 r = x[a] - centre;
@@ -368,8 +357,7 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
       if constexpr (NN == 3) shell_section::add_linked_shear_moments(lx, ly, b1, b2, qx, qy, area, a, mx, my);
       const Vec3 force{fx * e1.x + fy * e2.x + fz * e3.x, fx * e1.y + fy * e2.y + fz * e3.y,
                        fx * e1.z + fy * e2.z + fz * e3.z};
-      Vec3 moment{mx * e1.x + my * e2.x, mx * e1.y + my * e2.y, mx * e1.z + my * e2.z};
-      if (corner_planes) moment = moment - scaled(corner_normal[a], dot(moment, corner_normal[a]));  // eq. S-1a
+      const Vec3 moment{mx * e1.x + my * e2.x, mx * e1.y + my * e2.y, mx * e1.z + my * e2.z};
       subtract_internal(nodes, static_cast<std::size_t>(n[a]), force, moment);
       if (recording) record_load(state.records.load_at(ue, a), force, moment);
     }
