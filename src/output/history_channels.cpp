@@ -290,7 +290,8 @@ NodeValues in_skew(NodeValues values, const SolverState& s, std::int32_t skew) {
 }
 
 // ---- Element values.
-ShellHistoryValues shell_values(const Model& m, const SolverState& s, ElementKind kind, std::size_t group, std::int32_t e) {
+ShellHistoryValues shell_values(const Model& m, const SolverState& s, ElementKind kind, std::size_t group,
+                                std::int32_t e) {
   const ShellState& state = shell_state(s, kind);
   const ShellElementOutput o = shell_element_output(s.shell_groups[group], state, m.element_groups[group], e);
   const auto ue = static_cast<std::size_t>(e);
