@@ -134,6 +134,22 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
       continue;
     }
     const Vec3 e1 = frame.e1, e2 = frame.e2, e3 = frame.e3, centre = frame.centre;
+    // Ishell 24: each node turns the element about the axes of its own corner's plane; its rotation about the
+    // corner's normal is a drilling one the element does not see (eq. S-1a). The rotation of the step is taken in
+    // the corners' planes at its middle, the mean of their projections at its start and end, and the moments act in
+    // those at its end (eq. S-1b). The other kinds take the frame's.
+    const bool corner_planes = NN == 4 && p.physical_hourglass;
+    Vec3 corner_normal[NN];
+    if (corner_planes) {
+      Vec3 start[NN];  // the positions at the step's start [L]
+      for (int a = 0; a < NN; ++a) start[a] = x[a] - scaled(v[a], dt);
+      for (int a = 0; a < NN; ++a) {
+        corner_normal[a] = shell_section::corner_plane_normal(x, a, e3);
+        const Vec3 start_normal = shell_section::corner_plane_normal(start, a, corner_normal[a]);
+        w[a] = w[a] - scaled(corner_normal[a], 0.5 * dot(w[a], corner_normal[a])) -
+               scaled(start_normal, 0.5 * dot(w[a], start_normal));
+      }
+    }
     double lx[NN], ly[NN], vx[NN], vy[NN], vz[NN], tx[NN], ty[NN];
     for (int a = 0; a < NN; ++a) {
       const Vec3 r = x[a] - centre;
@@ -357,7 +373,8 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
       if constexpr (NN == 3) shell_section::add_linked_shear_moments(lx, ly, b1, b2, qx, qy, area, a, mx, my);
       const Vec3 force{fx * e1.x + fy * e2.x + fz * e3.x, fx * e1.y + fy * e2.y + fz * e3.y,
                        fx * e1.z + fy * e2.z + fz * e3.z};
-      const Vec3 moment{mx * e1.x + my * e2.x, mx * e1.y + my * e2.y, mx * e1.z + my * e2.z};
+      Vec3 moment{mx * e1.x + my * e2.x, mx * e1.y + my * e2.y, mx * e1.z + my * e2.z};
+      if (corner_planes) moment = moment - scaled(corner_normal[a], dot(moment, corner_normal[a]));  // eq. S-1a
       subtract_internal(nodes, static_cast<std::size_t>(n[a]), force, moment);
       if (recording) record_load(state.records.load_at(ue, a), force, moment);
     }

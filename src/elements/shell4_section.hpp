@@ -43,6 +43,14 @@ inline bool corotational_frame(const Vec3 (&x)[NN], Frame& f) {
   return true;
 }
 
+// The unit normal of corner a's plane, spanned by its two sides (eq. S-1a); `fallback` where they are parallel.
+template <int NN>
+inline Vec3 corner_plane_normal(const Vec3 (&x)[NN], int a, const Vec3& fallback) {
+  const Vec3 n = cross(x[(a + 1) % NN] - x[a], x[(a + NN - 1) % NN] - x[a]);
+  const double length = std::sqrt(dot(n, n));
+  return length > 0.0 ? scaled(n, 1.0 / length) : fallback;
+}
+
 // Area of the element's projection on its frame plane from the local coordinates (eqs. S-2, S-9).
 template <int NN>
 inline double local_area(const double (&lx)[NN], const double (&ly)[NN]) {

@@ -69,6 +69,13 @@ PROBES = [
      "0.6379 (-12.1 %)", []),
     ("qeph_held_w_hourglass", "held --held 1:Z,2:Z:-1,4:Z,3:Z:-1 --speed 0.01 --time 0.5", 0.46, 2.255e-3, 1.0,
      "the w pattern's two modes together", []),
+    # One element whose fourth corner stands 0.5 mm out of the others' plane, every degree of freedom held but the
+    # driven rotations about z: each node turns the element about its own corner's plane (shell4.md, S-1a). Without
+    # the corners' planes (every node in the frame's plane) these gave -80.4 % and -74.9 % (2026-12-07).
+    ("qeph_held_warped_drill_corner", "held --held 4:ZZ --speed 1 --time 0.5 --corners 0,0,0;5,0,0;5,5,0.5;0,5,0",
+     0.4596, 0.372, 1.0, "0.0730 (-80.4 %) in the frame's plane", []),
+    ("qeph_held_warped_drill_side", "held --held 1:ZZ,2:ZZ:-1 --speed 1 --time 0.5 --corners 0,0,0;5,0,0;5,5,0.5;0,5,0",
+     0.4596, 0.1964, 1.5, "0.0494 (-74.9 %) in the frame's plane", []),
     # The same element compressed along x past yield, its width held (plane strain), Johnson-Cook: the plastic strain
     # of the radial return (materials.md, PS-5) counted as law 2's uniaxial one, E in place of 3 G (measured
     # 2026-12-07; with 3 G the plastic strain is 0.867 of the reference's and the hardening, steep at small strains,
