@@ -139,15 +139,15 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
     // the corners' planes at its middle, the mean of their projections at its start and end, and the moments act in
     // those at its end (eq. S-1b). The other kinds take the frame's.
     const bool corner_planes = NN == 4 && p.physical_hourglass;
-    Vec3 corner_normal[NN];
+    shell_section::CornerPlane planes[NN];  // the corners' planes at the step's end
     if (corner_planes) {
       Vec3 start[NN];  // the positions at the step's start [L]
       for (int a = 0; a < NN; ++a) start[a] = x[a] - scaled(v[a], dt);
       for (int a = 0; a < NN; ++a) {
-        corner_normal[a] = shell_section::corner_plane_normal(x, a, e3);
-        const Vec3 start_normal = shell_section::corner_plane_normal(start, a, corner_normal[a]);
-        w[a] = w[a] - scaled(corner_normal[a], 0.5 * dot(w[a], corner_normal[a])) -
-               scaled(start_normal, 0.5 * dot(w[a], start_normal));
+        planes[a] = shell_section::corner_plane(x, a, e3);
+        const shell_section::CornerPlane at_start = shell_section::corner_plane(start, a, e3);
+        const Vec3 at_end = shell_section::in_corner_plane(w[a], planes[a]);
+        w[a] = scaled(at_end + shell_section::in_corner_plane(w[a], at_start), 0.5);
       }
     }
     double lx[NN], ly[NN], vx[NN], vy[NN], vz[NN], tx[NN], ty[NN];
@@ -374,7 +374,7 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
       const Vec3 force{fx * e1.x + fy * e2.x + fz * e3.x, fx * e1.y + fy * e2.y + fz * e3.y,
                        fx * e1.z + fy * e2.z + fz * e3.z};
       Vec3 moment{mx * e1.x + my * e2.x, mx * e1.y + my * e2.y, mx * e1.z + my * e2.z};
-      if (corner_planes) moment = moment - scaled(corner_normal[a], dot(moment, corner_normal[a]));  // eq. S-1a
+      if (corner_planes) moment = shell_section::in_corner_plane(moment, planes[a]);  // eq. S-1a
       subtract_internal(nodes, static_cast<std::size_t>(n[a]), force, moment);
       if (recording) record_load(state.records.load_at(ue, a), force, moment);
     }

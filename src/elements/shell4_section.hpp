@@ -43,12 +43,21 @@ inline bool corotational_frame(const Vec3 (&x)[NN], Frame& f) {
   return true;
 }
 
-// The unit normal of corner a's plane, spanned by its two sides (eq. S-1a); `fallback` where they are parallel.
+// Corner a's plane, spanned by its two sides (eq. S-1a): its normal of any length and `dual` = normal / |normal|^2,
+// so that v - dual (v . normal) is v in the plane without a square root. Parallel sides take the unit `fallback`.
+struct CornerPlane {
+  Vec3 normal, dual;
+};
 template <int NN>
-inline Vec3 corner_plane_normal(const Vec3 (&x)[NN], int a, const Vec3& fallback) {
+inline CornerPlane corner_plane(const Vec3 (&x)[NN], int a, const Vec3& fallback) {
   const Vec3 n = cross(x[(a + 1) % NN] - x[a], x[(a + NN - 1) % NN] - x[a]);
-  const double length = std::sqrt(dot(n, n));
-  return length > 0.0 ? scaled(n, 1.0 / length) : fallback;
+  const double length2 = dot(n, n);
+  if (!(length2 > 0.0)) return {fallback, fallback};
+  return {n, scaled(n, 1.0 / length2)};
+}
+// v without its component along the corner's normal.
+inline Vec3 in_corner_plane(const Vec3& v, const CornerPlane& plane) {
+  return v - scaled(plane.dual, dot(v, plane.normal));
 }
 
 // Area of the element's projection on its frame plane from the local coordinates (eqs. S-2, S-9).
