@@ -49,7 +49,7 @@ TEST(FreeVibration, AMillionCyclesKeepTheEnergyBalance) {
   // kinetic energy of the two half steps around a cycle, 1/2 v_(n-1/2) . M v_(n+1/2), with the internal energy of
   // the cycle (docs/theory/energy.md): the balance on it, read every cycle, must hold to 0.5 % for the whole run
   // (the strip's rotations of a few degrees make it slightly nonlinear). Measured: 0.159 % at worst, at 1.75 s,
-  // in both builds and at five launch speeds from 0.998 to 1.002 m/s; 0.098 % in the frame's plane, and 0.63 % to
+  // in both builds and at five launch speeds from 0.998 to 1.002 m/s; 0.098 % in the frame's plane, and 0.33 % to
   // 0.76 % with the QEPH corners' planes taken at the step's end instead of its middle (docs/theory/shell4.md,
   // S-1b): the nodes spin about their normals (84 % of the energy by 0.6 s, as in the reference) and, once a twist
   // breaks the strip's symmetry near 2 s, its elements warp.
