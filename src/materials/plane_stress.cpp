@@ -31,8 +31,7 @@ struct Predictor {
 
 Predictor predict(const PlaneStressElastic& el, const Hardening& hardening, double dexx, double deyy, double dgxy,
                   double rate, double eps_p, double& sxx, double& syy, double& sxy, point_real* kept_term) {
-  const double E = el.young, nu = el.poisson;
-  const double G = E / (2.0 * (1.0 + nu));
+  const double E = el.young, nu = el.poisson, G = el.shear_modulus();
   const double c = E / (1.0 - nu * nu);
   const double txx = sxx + c * (dexx + nu * deyy);
   const double tyy = syy + c * (deyy + nu * dexx);
@@ -55,9 +54,7 @@ Predictor predict(const PlaneStressElastic& el, const Hardening& hardening, doub
 PlaneStressResult plane_stress_update(const PlaneStressElastic& el, const Hardening& hardening, double dexx,
                                       double deyy, double dgxy, double rate, double eps_p, double& sxx, double& syy,
                                       double& sxy, point_real* kept_term) {
-  const double E = el.young;
-  const double nu = el.poisson;
-  const double G = E / (2.0 * (1.0 + nu));
+  const double E = el.young, nu = el.poisson, G = el.shear_modulus();
   const Predictor pr = predict(el, hardening, dexx, deyy, dgxy, rate, eps_p, sxx, syy, sxy, kept_term);
   PlaneStressResult result = pr.elastic;
   if (!pr.plastic) return result;
@@ -129,7 +126,7 @@ PlaneStressResult plane_stress_radial_return(const PlaneStressElastic& el, const
   const bool kept = pr.kept;
   // PS-5: f(d) = trial - H_r d - sigma_y(eps_p + d) = 0, decreasing in d; Newton from d = 0, safeguarded. H_r is E
   // (law 2: in uniaxial stress d is the inelastic strain) or the three-dimensional return's 3 G (law 36).
-  const double modulus = hardening.uniaxial_radial_return() ? E : 3.0 * E / (2.0 * (1.0 + nu));
+  const double modulus = hardening.uniaxial_radial_return() ? E : 3.0 * el.shear_modulus();
   double d = 0.0, lo = 0.0, hi = trial / modulus;
   // The last strain the hardening was evaluated at and its term: when the iteration ends on the residual there,
   // the kept term needs no second power. The first step, at eps_p itself, takes the kept term: no power at all.

@@ -8,6 +8,7 @@ namespace crumple::materials {
 struct PlaneStressElastic {
   double young;    // E
   double poisson;  // nu
+  double shear_modulus() const { return young / (2.0 * (1.0 + poisson)); }  // G
 };
 
 struct PlaneStressResult {
