@@ -31,6 +31,15 @@ inline double viscous_rotation_moment(double hr, double density, double young, d
   return q * (linear + quadratic * std::abs(q));
 }
 
+// Viscous force of the Ishell 1, 2 transverse hourglass mode for its rate q = gamma . vz [L/T] (eq. S-5b): c |q| q,
+// c = (800 / sqrt 3) hf rho t^2 sqrt(kappa / (1 + nu)) [M/L], as measured on the reference solver (in any units).
+inline double transverse_hourglass_damping(double hf, double density, double thickness, double shear_factor,
+                                           double poisson, double q) {
+  const double c = 800.0 / std::numbers::sqrt3 * hf * density * thickness * thickness *
+                   std::sqrt(shear_factor / (1.0 + poisson));
+  return c * std::abs(q) * q;
+}
+
 // A damper never reverses the motion it resists (eq. S-20): the moment of a rotation mode of rate q is at most the
 // one that stops the mode within the step dt on the element's share `inertia` of each node's rotational inertia,
 // I |q| / (|g|^2 dt) with g_norm = |g|^2 (4 for h).

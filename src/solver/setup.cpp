@@ -17,7 +17,7 @@ namespace crumple::solver {
 namespace {
 
 constexpr double kDefaultHourglass = 0.01;    // Radioss default hm, hf, hr for 4-node shells
-constexpr double kDefaultElastoplasticHourglass = 0.1;  // Radioss default hm, hr of Ishell 3
+constexpr double kDefaultElastoplasticHourglass = 0.1;  // Radioss default hm, hf of Ishell 3
 
 void setup_nodes(const Model& m, SolverState& s) {
   const std::size_t n = m.nodes.size();
@@ -74,11 +74,12 @@ void setup_shells(const Model& m, SolverState& s, ElementKind kind) {
     p.young = mat.young, p.poisson = mat.poisson, p.density = mat.density;
     // Ashear (default 5/6); a membrane (N = 1) has no transverse shear, as in the reference solver.
     p.shear_factor = f.n_points == 1 ? 0.0 : prop.shell.ashear > 0.0 ? prop.shell.ashear : 5.0 / 6.0;
-    // Ishell 3: hm and hr default to 0.1 (hf to 0.01), the other formulations to 0.01.
-    const double membrane_rotation_default = f.ishell == 3 ? kDefaultElastoplasticHourglass : kDefaultHourglass;
-    p.hm = prop.shell.hm > 0.0 ? prop.shell.hm : membrane_rotation_default;
-    p.hf = prop.shell.hf > 0.0 ? prop.shell.hf : kDefaultHourglass;
-    p.hr = prop.shell.hr > 0.0 ? prop.shell.hr : membrane_rotation_default;
+    // Ishell 3: hm and hf default to 0.1 (hr to 0.01), as the reference's starter resolves them (shell4.md, S-18);
+    // the other formulations to 0.01.
+    const double elastoplastic_default = f.ishell == 3 ? kDefaultElastoplasticHourglass : kDefaultHourglass;
+    p.hm = prop.shell.hm > 0.0 ? prop.shell.hm : elastoplastic_default;
+    p.hf = prop.shell.hf > 0.0 ? prop.shell.hf : elastoplastic_default;
+    p.hr = prop.shell.hr > 0.0 ? prop.shell.hr : kDefaultHourglass;
     // Ishell 2 never orthogonalises its hourglass vector (eq. S-17); the reference's Ishell 1 does not either with
     // Ismstr 1 (small strain from t = 0, eq. S-15).
     p.orthogonal_hourglass = f.ishell != 2 && !(f.ishell == 1 && f.ismstr == 1);

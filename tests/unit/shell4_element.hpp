@@ -53,8 +53,8 @@ struct Element {
     p.fully_integrated = false;
     p.orthogonal_hourglass = ishell != 2;
     p.elastoplastic_hourglass = ishell == 3;
-    p.hm = p.hr = ishell == 3 ? 0.1 : 0.01;
-    p.hf = 0.01;
+    p.hm = p.hf = ishell == 3 ? 0.1 : 0.01;
+    p.hr = 0.01;
     state.resize_points(static_cast<std::size_t>(p.points));
     state.bending_stress.assign(3, 0.0);
   }
