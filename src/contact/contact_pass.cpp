@@ -279,15 +279,16 @@ void compute_pairs(ContactState& c, ContactInterface& in, const NodalState& node
       if (ps.mass_step > 0.0)
         in.node_reach_stiffness[i] += tangent_stiffness(k0, g, reach_penetration(g, p, penetration_rate, dt_estimate));
       in.node_friction_viscosity[i] += ct;
-      // What the pair gives its nodes' nodal step (time-step.md, T-4): its tangent stiffness, or with viscous
-      // friction its dashpot over the last step where stiffer (T-4b; none at the first cycle). Under /DT/NODA/CST
+      // What the pair gives its nodes' nodal step (time-step.md, T-4): its tangent stiffness and its normal dashpot
+      // over the last step, or with viscous friction the friction's dashpot over it where stiffer (T-4b, T-4c; none
+      // at the first cycle). Under /DT/NODA/CST
       // the mass holds it (T-2) if the target step resolves the pair (its kinematic step above it), at most as stiff
       // as at half its gap (deeper the spring, and the mass, would grow without bound), with the friction's dashpot
       // over the target step where stiffer (T-4b; from the second cycle on, as the reference); the rest bounds the
       // step (T-3b).
-      double nodal = c.interface_nodal_step && viscous_friction
-                         ? nodal_friction_stiffness(kt, k0, secant_stiffness(k0, g, p), in.friction_damping, mass,
-                                                    dt_previous)
+      double nodal = c.interface_nodal_step
+                         ? nodal_pair_stiffness(kt, k0, secant_stiffness(k0, g, p), viss,
+                                                viscous_friction ? in.friction_damping : 0.0, mass, dt_previous)
                          : kt;
       if (ps.nodal_mass_step > 0.0) {
         const double half = 0.5 * g;

@@ -93,6 +93,11 @@ std::string describe(const StopReason& r, const Model& m) {
              "elements the rigid bodies or masses are attached to)";
     case K::EnergyNotFinite:
       return fmt::format("NaN or Inf in the energy balance at cycle {} (time {:.4e})", r.cycle, r.time);
+    case K::Diverged:
+      return fmt::format("the run diverged: energy error {:.3g} % at cycle {} (time {:.4e}), the energy balance off by "
+                         "more than {:.0f} times the energy put in; an instability grew (read the warnings above: "
+                         "hourglass, energy error, step drops), and the results are not physical",
+                         r.value, r.cycle, r.time, kDivergedEnergyErrorPercent / 100.0);
     case K::AddedMassLimit:
       return fmt::format("/STOP: added mass {:.4g} exceeds {:.3g} of the initial mass at cycle {}", r.value,
                          r.minimum, r.cycle);

@@ -264,9 +264,9 @@ void apply_loads(const Model& m, SolverState& s) {
   gather_rigid_body_forces(s);
 }
 
-// Once nothing bounds the step (every element deleted), it grows by a tenth a cycle, as the reference's does
-// (docs/theory/time-step.md, "No stable step").
-constexpr double kStepGrowthWithoutBound = 1.1;
+// The step grows by at most a tenth a cycle, as the reference's does (docs/theory/time-step.md, T-5): after a
+// contact releases its node, and once nothing bounds it (every element deleted, "No stable step").
+constexpr double kStepGrowthPerCycle = 1.1;
 
 double choose_time_step(const Model& m, SolverState& s, RunEvents& events, StepBound& bound) {
   const RunControl& rc = m.run;
@@ -301,8 +301,10 @@ double choose_time_step(const Model& m, SolverState& s, RunEvents& events, StepB
       events.stop.kind = StopReason::Kind::NoStableStep, events.stop.cycle = 0, events.stop.time = s.time;
       return bound.dt;
     }
-    bound.dt = kStepGrowthWithoutBound * s.dt;
+    bound.dt = kStepGrowthPerCycle * s.dt;
     bound.control.source = StepControl::Source::LastStep;
+  } else if (s.dt > 0.0 && bound.dt > kStepGrowthPerCycle * s.dt) {
+    bound.dt = kStepGrowthPerCycle * s.dt;  // eq. T-5; the listing still names what bounds the step
   }
   // A step of zero (a contact node through its gap, contact.md C-11): the run cannot advance; it stops with an
   // error rather than end short of its end time as if it had reached it.

@@ -175,6 +175,8 @@ void check_run_limits(const Model& m, const SolverState& s, RunEvents& events) {
     stop.value = static_cast<double>(events.deleted_below_minimum_step);
   } else if (!std::isfinite(total)) {
     stop.kind = StopReason::Kind::EnergyNotFinite, stop.cycle = s.cycle, stop.time = s.time;
+  } else if (const double error = s.energy.error_percent(); std::abs(error) > kDivergedEnergyErrorPercent) {
+    stop.kind = StopReason::Kind::Diverged, stop.cycle = s.cycle, stop.time = s.time, stop.value = error;
   } else if (rc.stop_mass_error > 0.0 && s.mass_added > rc.stop_mass_error * s.mass_initial) {
     stop.kind = StopReason::Kind::AddedMassLimit, stop.cycle = s.cycle, stop.time = s.time;
     stop.value = s.mass_added, stop.minimum = rc.stop_mass_error;

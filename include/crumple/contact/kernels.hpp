@@ -46,6 +46,14 @@ inline double nodal_friction_stiffness(double kt, double k0, double ks, double v
   return dt > 0.0 ? std::max(kt, visf * std::sqrt((k0 + ks) * mass) / dt) : kt;
 }
 
+// What a pair gives its nodes' interface nodal step (time-step.md, eq. T-4c): its tangent stiffness plus its normal
+// dashpot over the last step, Kt + VisS sqrt(2 Kt M) / dt, or with viscous friction the friction's dashpot over it
+// (eq. T-4b) where that is larger, as the reference solver counts them; dt = 0 (the first cycle): Kt.
+inline double nodal_pair_stiffness(double kt, double k0, double ks, double viss, double visf, double mass, double dt) {
+  if (!(dt > 0.0)) return kt;
+  return std::max(kt + viss * std::sqrt(2.0 * kt * mass) / dt, visf * std::sqrt((k0 + ks) * mass) / dt);
+}
+
 // Steps ahead of its entry into the gap that a node closing in counts K0 in its step when the entry is anticipated
 // (eq. C-11): with `--accuracy fine`, and for a node that /DT/INTER/CST mass scales at its entry (C-11c).
 inline constexpr int kAnticipatedEntrySteps = 3;

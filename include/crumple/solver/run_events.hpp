@@ -50,6 +50,10 @@ struct RunEvent {
   StepControl control{};  // StepDropped: what set the step
 };
 
+// An energy error beyond this [%] (the balance off by ten thousand times the energy put in) is no modelling choice
+// but a run blowing up: it stops as an error whatever /STOP says (docs/theory/energy.md, "A diverged run").
+inline constexpr double kDivergedEnergyErrorPercent = 1.0e6;
+
 // Why a run ended before its end time. `kind` None while it runs on.
 struct StopReason {
   enum class Kind : std::uint8_t {
@@ -60,6 +64,7 @@ struct StopReason {
     StepBelowMinimum,         // /DT Δt_min: dt, minimum, control
     NoStableStep,             // nothing bounds the step at the start
     EnergyNotFinite,          // NaN or Inf in the energy balance
+    Diverged,                 // the energy balance off by more than kDivergedEnergyErrorPercent: value = error %
     AddedMassLimit,           // /STOP Mmax: value = added mass, minimum = the card's ratio
     EnergyErrorLimit,         // /STOP Emax: value = |error| ratio
     Requested,                // asked from outside (SolverOptions::stop_request): index = the signal number
