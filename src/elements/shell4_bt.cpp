@@ -38,10 +38,12 @@ namespace {
 // A membrane: one point through the thickness (N = 1), without bending or transverse shear.
 bool is_membrane(const ShellGroupParameters& p) { return p.points == 1 && !p.resultant_plasticity; }
 
-// Modulus of the Ishell 1 to 3 transverse hourglass mode per |B|^2 (eq. S-5a, measured on the reference solver): the
-// transverse-shear stiffness times t^2 / 3, kappa G t^3 / 3 |B|^2, and on a membrane E t. [F/L]
-double transverse_hourglass_modulus(const ShellGroupParameters& p, double E, double G, double t, double bb) {
-  return is_membrane(p) ? E * t : p.shear_factor * G * t * t * t / 3.0 * bb;
+// Stiffness of the Ishell 1 to 3 transverse hourglass mode per hf (eq. S-5a, measured on the reference solver): the
+// transverse-shear stiffness times t^2 / 3 over the diagonals, kappa G t^3 / 3 * 16 / (d1^2 + d2^2), that is
+// 8 / (A^2 |B|^2); on a membrane 2 E t, as the membrane modes' (eq. S-5). [F/L]
+double transverse_hourglass_stiffness(const ShellGroupParameters& p, double E, double G, double t, double area,
+                                      double bb) {
+  return is_membrane(p) ? 2.0 * E * t : p.shear_factor * G * t * t * t / 3.0 * 8.0 / (area * area * bb);
 }
 
 // Yield stress of the section for the elasto-plastic hourglass of Ishell 3 (eq. S-18): the law at the points' mean
@@ -339,11 +341,11 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
         for (int a = 0; a < 4; ++a)
           shear_moment_x[a] = cx[a], shear_moment_y[a] = cy[a], split_moment_x[a] = dx[a], split_moment_y[a] = dy[a];
       } else {
-        // Each coefficient is a fraction of the element's own stiffness (eq. S-5): membrane E t A |B|^2; the
-        // transverse mode kappa G t^3 / 3 A |B|^4, or on a membrane (N = 1) E t A |B|^2; the rotation modes have
-        // none (below).
-        const double membrane = p.hm * E * t * area * bb;
-        const double bending = p.hf * transverse_hourglass_modulus(p, E, G, t, bb) * area * bb;
+        // Each coefficient is a fraction of a stiffness of the section (eqs. S-5, S-5a): the membrane modes' 2 E t
+        // whatever the element's shape, the transverse mode's kappa G t^3 / 3 over the diagonals (2 E t on a
+        // membrane); the rotation modes have none (below).
+        const double membrane = p.hm * 2.0 * E * t;
+        const double bending = p.hf * transverse_hourglass_stiffness(p, E, G, t, area, bb);
         const double stiffness[3] = {membrane, membrane, bending};
         // Ishell 3 (eq. S-18): the membrane and transverse modes carry at most what the section's yield stress
         // allows.
@@ -356,15 +358,19 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
           if (cap[m] > 0.0) hq[m] = std::clamp(hq[m], -cap[m], cap[m]);
           hourglass_work += 0.5 * (old + hq[m]) * rates[m] * dt;
         }
-        // Ishell 1 and 2 with bending points also damp the transverse mode (eq. S-5b), at most what stops it within
-        // the step on the element's quarter of each node's mass (eq. S-20).
+        // Ishell 1 and 2 with bending points also damp the membrane and transverse modes (eq. S-5b), each at most
+        // what stops it within the step on the element's quarter of each node's mass (eq. S-20).
         if (!p.elastoplastic_hourglass && !is_membrane(p)) {
+          using namespace shell_hourglass;
           double g_norm = 0.0;
           for (int a = 0; a < 4; ++a) g_norm += gamma[a] * gamma[a];
-          const double viscous =
-              shell_hourglass::transverse_hourglass_damping(p.hf, p.density, t, p.shear_factor, nu, rates[2]);
-          damping[2] = shell_hourglass::within_stopping_moment(viscous, rates[2], 0.25 * p.density * t * area, g_norm, dt);
-          hourglass_work += damping[2] * rates[2] * dt;
+          const double viscous[3] = {membrane_hourglass_damping(p.hm, p.density, t, area, rates[0]),
+                                     membrane_hourglass_damping(p.hm, p.density, t, area, rates[1]),
+                                     transverse_hourglass_damping(p.hf, p.density, t, p.shear_factor, nu, rates[2])};
+          for (std::size_t m = 0; m < 3; ++m) {
+            damping[m] = within_stopping_moment(viscous[m], rates[m], 0.25 * p.density * t * area, g_norm, dt);
+            hourglass_work += damping[m] * rates[m] * dt;
+          }
         }
         hourglass_work += rotation_mode_moments(p, gamma, tx, ty, t, area, dt, rotation_damping_x, rotation_damping_y);
       }

@@ -40,6 +40,12 @@ inline double transverse_hourglass_damping(double hf, double density, double thi
   return c * std::abs(q) * q;
 }
 
+// Viscous force of an Ishell 1, 2 membrane hourglass mode for its rate q = gamma . vx (or vy) [L/T] (eq. S-5b):
+// c |q| q, c = 800 hm rho t sqrt(A) [M/L], as measured on the reference solver (in any units).
+inline double membrane_hourglass_damping(double hm, double density, double thickness, double area, double q) {
+  return 800.0 * hm * density * thickness * std::sqrt(area) * std::abs(q) * q;
+}
+
 // A damper never reverses the motion it resists (eq. S-20): the moment of a rotation mode of rate q is at most the
 // one that stops the mode within the step dt on the element's share `inertia` of each node's rotational inertia,
 // I |q| / (|g|^2 dt) with g_norm = |g|^2 (4 for h).
