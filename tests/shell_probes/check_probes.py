@@ -175,6 +175,26 @@ PROBES = [
     # instant are a phase of it; the external work is what the edge did.)
     ("edge_tria_tab", EDGE + " --law 36 --tria --ishell 1", 0.5868, None, 0.0, "dt 6.152e-4 (the bar speed)",
      [("EW", 1.103e-3, 0.5), ("DT", 5.868e-4, 0.3)]),
+    # The Belytschko-Tsay hourglass modes (shell4.md, S-5a, S-5b; measured 2026-12-08): one 1 mm element driven in an
+    # hourglass pattern; the reference leaves its hourglass energy out of its internal energy, so the external work
+    # (the mode's work and its kinetic energy) is compared. Driven slowly, the stiffness: the transverse mode's is
+    # kappa G t^3 / 3 over the diagonals, a membrane's 2 hf E t, the membrane modes' 2 hm E t on any shape. Driven
+    # there and back at 1 mm/ms, the quadratic damping of the translational modes.
+    ("bt_bending_square", "mode --mode bending --ishell 1 --npt 2 --thick 1 --speed 0.01 --rise 1e-6 --time 0.2 "
+     "--print-every 20", 0.1914, None, 0.0, "EW 6.11e-8 (-19 %): D A |B|^4", [("EW", 7.558e-8, 0.5)]),
+    ("bt_bending_trapezoid", "mode --mode bending --ishell 1 --npt 2 --thick 1 --speed 0.01 --rise 1e-6 --time 0.2 "
+     "--print-every 20 --corners 0,0,0;6,0,0;4,4,0;2,4,0", 0.1969, None, 0.0, "D A |B|^4 over the shape",
+     [("EW", 1.150e-7, 0.5)]),
+    ("bt_bending_membrane_n1", "mode --mode bending --ishell 1 --npt 1 --thick 1 --speed 0.01 --rise 1e-6 "
+     "--time 0.2 --print-every 20", 0.1914, None, 0.0, "EW 6e-8 (-99 %): D A |B|^4 on a membrane",
+     [("EW", 7.704e-6, 0.5)]),
+    ("bt_membrane_rectangle", "mode --mode membrane --ishell 1 --npt 2 --thick 1 --speed 0.01 --rise 1e-6 "
+     "--time 0.2 --print-every 20 --corners 0,0,0;5,0,0;5,20,0;0,20,0", 0.1913, None, 0.0,
+     "EW 1.64e-5 (+112 %): hm E t A |B|^2", [("EW", 7.727e-6, 0.5)]),
+    ("bt_bending_there_and_back", "mode --mode bending --ishell 1 --npt 2 --thick 1 --speed 1 --reverse 0.04 "
+     "--time 0.12 --print-every 20", 0.1044, None, 0.0, "EW 1.36e-8 (-99 %): no damping", [("EW", 2.286e-6, 0.5)]),
+    ("bt_membrane_there_and_back", "mode --mode membrane --ishell 1 --npt 2 --thick 1 --speed 1 --reverse 0.01 "
+     "--time 0.03 --print-every 5", 0.02606, None, 0.0, "EW 1.59e-6 (-79 %): no damping", [("EW", 7.456e-6, 0.5)]),
 ]
 
 

@@ -8,7 +8,8 @@ can be compared. Kinds:
   strip      a cantilever strip nx x ny, clamped at x = 0; the tip nodes (x = L) driven along --drive
              (z: bending, x: membrane, y: in-plane bending) at --speed mm/ms for --time ms.
   mode       one element whose four nodes are driven in an hourglass pattern (--mode membrane, bending, twist,
-             shear): each node's velocity is --speed times the pattern's sign.
+             shear): each node's velocity is --speed times the pattern's sign. With --reverse T the drive turns
+             back after T and stops after 2 T: the work left is what the mode dissipated (shell4.md, S-5b).
   fold       a strip nx x ny, clamped at x = 0, its far edge pushed along -x (buckling into a fold) at --speed.
   edge       a free sheet nx x ny whose tip nodes (x = L) move along --drive at --speed for --rise ms, then stop:
              the sheet rings, and what damps it and how its work is counted shows (shell4.md, S-9d, S-9e).
@@ -205,7 +206,12 @@ def build(a):
         text += "/SHELL/1\n"
         for k, q in enumerate(quads):
             text += ints([k + 1, *q]) + "\n"
-    text += """/FUNCT/1
+    if a.reverse:  # there and back: +1 for --reverse ms, -1 for as long, then at rest (what a mode dissipates)
+        t = a.reverse
+        text += "/FUNCT/1\nthere and back\n" + "".join(
+            fmt_row(row) + "\n" for row in ([0, 1], [t, 1], [t * 1.0001, -1], [2 * t, -1], [2 * t * 1.0001, 0], [1e6, 0]))
+    else:
+        text += """/FUNCT/1
 ramp to 1 over the rise time, then held
                    0                   0
 """ + fmt_row([a.rise, 1]) + "\n" + fmt_row([1e6, 1]) + "\n"
@@ -275,6 +281,8 @@ def main():
     p.add_argument("--mode", default="membrane", choices=sorted(MODES))
     p.add_argument("--speed", type=float, default=1.0, help="mm/ms")
     p.add_argument("--rise", type=float, default=0.1, help="ms")
+    p.add_argument("--reverse", type=float, default=0.0,
+                   help="ms: drive at +speed that long, then at -speed as long, then stop (kinds mode, held)")
     p.add_argument("--time", type=float, default=1.0, help="ms")
     p.add_argument("--print-every", type=int, default=100)
     p.add_argument("--dtscale", type=float, default=0)
