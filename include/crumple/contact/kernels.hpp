@@ -51,7 +51,7 @@ inline double nodal_friction_stiffness(double kt, double k0, double ks, double v
 // (eq. T-4b) where that is larger, as the reference solver counts them; dt = 0 (the first cycle): Kt.
 inline double nodal_pair_stiffness(double kt, double k0, double ks, double viss, double visf, double mass, double dt) {
   if (!(dt > 0.0)) return kt;
-  return std::max(kt + viss * std::sqrt(2.0 * kt * mass) / dt, visf * std::sqrt((k0 + ks) * mass) / dt);
+  return std::max(kt + viss * std::sqrt(2.0 * kt * mass) / dt, nodal_friction_stiffness(kt, k0, ks, visf, mass, dt));
 }
 
 // Steps ahead of its entry into the gap that a node closing in counts K0 in its step when the entry is anticipated
