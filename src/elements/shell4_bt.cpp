@@ -102,7 +102,7 @@ double rotation_mode_moments(const ShellGroupParameters& p, const double (&gamma
     using namespace shell_hourglass;
     const double viscous = p.elastoplastic_hourglass ? viscous_rotation_moment(p.hr, p.density, p.young, t, area, q[r])
                                                      : rotation_damping_moment(p.hr, p.density, t, area, q[r]);
-    moment[r] = within_stopping_moment(viscous, q[r], inertia, g_norm, dt);
+    moment[r] = within_stopping_load(viscous, q[r], inertia, g_norm, dt);
   }
   for (int a = 0; a < 4; ++a) moment_x[a] = 4.0 * gamma[a] * moment[0], moment_y[a] = 4.0 * gamma[a] * moment[1];
   return (moment[0] * q[0] + moment[1] * q[1]) * dt;
@@ -368,7 +368,7 @@ GroupStepResult shell_forces(const ElementTable& table, const ElementGroup& grou
                                      membrane_hourglass_damping(p.hm, p.density, t, area, rates[1]),
                                      transverse_hourglass_damping(p.hf, p.density, t, p.shear_factor, nu, rates[2])};
           for (std::size_t m = 0; m < 3; ++m) {
-            damping[m] = within_stopping_moment(viscous[m], rates[m], 0.25 * p.density * t * area, g_norm, dt);
+            damping[m] = within_stopping_load(viscous[m], rates[m], 0.25 * p.density * t * area, g_norm, dt);
             hourglass_work += damping[m] * rates[m] * dt;
           }
         }

@@ -46,13 +46,13 @@ inline double membrane_hourglass_damping(double hm, double density, double thick
   return 800.0 * hm * density * thickness * std::sqrt(area) * std::abs(q) * q;
 }
 
-// A damper never reverses the motion it resists (eq. S-20): the moment of a rotation mode of rate q is at most the
-// one that stops the mode within the step dt on the element's share `inertia` of each node's rotational inertia,
-// I |q| / (|g|^2 dt) with g_norm = |g|^2 (4 for h).
-inline double within_stopping_moment(double moment, double q, double inertia, double g_norm, double dt) {
-  if (!(dt > 0.0)) return moment;
+// A damper never reverses the motion it resists (eq. S-20): the viscous load of a mode of rate q (the moment of a
+// rotation mode, the force of a translational one) is at most the one that stops the mode within the step dt on the
+// element's share `inertia` of each node's inertia (rotational, or its mass), I |q| / (|g|^2 dt), g_norm = |g|^2.
+inline double within_stopping_load(double load, double q, double inertia, double g_norm, double dt) {
+  if (!(dt > 0.0)) return load;
   const double limit = inertia * std::abs(q) / (g_norm * dt);
-  return std::clamp(moment, -limit, limit);
+  return std::clamp(load, -limit, limit);
 }
 
 // Warping height W = sum_a gamma_a z_a of a quadrilateral whose nodes stand z_a off its frame plane (eq. S-18a):
